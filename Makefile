@@ -1,0 +1,25 @@
+# `make test` and `make reproduce` each set up .venv on their own (idempotently).
+VENV := .venv
+PYTHON := $(VENV)/bin/python
+STAMP := $(VENV)/.installed
+
+.PHONY: test reproduce bench clean
+
+$(STAMP): pyproject.toml
+	python3 -m venv $(VENV)
+	$(PYTHON) -m pip install --quiet --disable-pip-version-check -e '.[test]'
+	touch $(STAMP)
+
+test: $(STAMP)
+	$(PYTHON) -m pytest -q
+
+reproduce: $(STAMP)
+	$(VENV)/bin/bearing-sweep study all
+	$(VENV)/bin/bearing-sweep report
+
+bench: $(STAMP)
+	$(PYTHON) benchmarks/crb_radial_throughput.py
+	$(PYTHON) benchmarks/worker_scaling.py
+
+clean:
+	rm -rf results figures .pytest_cache

@@ -1,0 +1,63 @@
+"""The papers' bearings as named presets.
+
+Values are written as a user writes them in a sweep definition (numbers with units), so a
+preset goes through the same validation as the user's own values and any field can be
+overridden. Each preset says where its numbers come from and which were not stated.
+"""
+from __future__ import annotations
+
+from dataclasses import dataclass
+
+
+@dataclass(frozen=True)
+class Preset:
+    name: str
+    model: str
+    values: dict
+    source: str
+    notes: str = ""
+
+
+_PRESETS = (
+    Preset(
+        name="paper000-A",
+        model="crb_radial",
+        values={"roller_count": 13, "pitch_diameter": "39 mm", "roller_diameter": "7.5 mm",
+                "effective_length": "8.6 mm", "clearance": "0.04 mm", "crown": "0 mm"},
+        source="Paper 000, Table 1 (bearing A, compared with Lim's model in Fig. 6)",
+        notes="Roller length 9 mm and width 15 mm are not model inputs. Straight rollers: the "
+              "comparison of section 2.1 has no crown and no speed.",
+    ),
+    Preset(
+        name="paper000-B",
+        model="crb_radial",
+        values={"roller_count": 14, "pitch_diameter": "170 mm", "roller_diameter": "34.8 mm",
+                "effective_length": "25 mm", "clearance": "0.05 mm", "crown": "0.0045 mm"},
+        source="Paper 000, Table 2 (bearing B, compared with reference [5] in Fig. 7)",
+        notes="Table 2 is inconsistent: 14 rollers of 34.8 mm cannot sit on its 39 mm pitch "
+              "circle (bearing A's value). The pitch diameter is set to 170 mm so that they fit; "
+              "it enters only the centrifugal force, which is zero in Fig. 7 (no speed). The "
+              "effective length is not stated; the paper tries 25 and 28 mm and 25 mm is the "
+              "default here.",
+    ),
+    Preset(
+        name="paper000-C",
+        model="crb_radial",
+        values={"roller_count": 22, "pitch_diameter": "102 mm", "roller_diameter": "10 mm",
+                "effective_length": "9 mm", "clearance": "0 mm", "crown": "0 mm"},
+        source="Paper 000, Table 3 (bearing C, compared with the numerical method in Fig. 8)",
+        notes="Pitch diameter = (outer diameter 122 + bore 82) / 2. The clearance is not stated "
+              "and is taken as zero; straight rollers as in section 2.3 (k_j = 1, c = 0).",
+    ),
+    Preset(
+        name="paper000-D",
+        model="crb_radial",
+        values={"roller_count": 14, "pitch_diameter": "65 mm", "roller_diameter": "10 mm",
+                "effective_length": "9.6 mm"},
+        source="Paper 000, Table 4 (bearing D, the parametric study of Figs. 9-14)",
+        notes="Pitch diameter = (outer diameter 75 + bore 55) / 2. Roller length 10 mm is not a "
+              "model input. Clearance, crown, speed and load are the study's axes.",
+    ),
+)
+
+PRESETS = {preset.name: preset for preset in _PRESETS}

@@ -1,0 +1,390 @@
+"""Cylindrical roller bearing under radial load: load distribution and radial stiffness.
+
+Outer ring fixed, inner ring displaced radially by ``delta_r``; crowned rollers cut into
+slices, centrifugal force from the inner-ring speed, diametral clearance (paper 000).
+"""
+from __future__ import annotations
+
+import numpy as np
+
+from models.contact import LINE_CONTACT_EXPONENT, SLICE_LAWS, palmgren_constant, sliced_line_contact
+from models.profiles import PROFILES, distinct_slices
+from models.registry import CONVERGED, NOT_CONVERGED, Constraint, Input, Model, Output
+from models.solvers import solve_increasing
+
+OUTER_CONTACTS = ("crowned", "paper")
+
+_NO_GAP = np.zeros(1)
+_ONE_SLICE = np.ones(1)
+# A roller counts as loaded when it carries more than this fraction of the radial load.
+_LOADED_FRACTION = 1e-9
+_XTOL = 1e-13  # relative tolerance of the displacement solves [-]
+
+
+def cage_speed(speed, roller_diameter, pitch_diameter):
+    """Orbital speed of the rollers with the inner ring turning and the outer ring fixed.
+
+    Parameters
+    ----------
+    speed : array_like
+        Inner-ring speed ``omega_i`` [rad/s].
+    roller_diameter, pitch_diameter : array_like
+        ``D`` and ``d_m`` [m].
+
+    Returns
+    -------
+    numpy.ndarray
+        ``omega_c = omega_i / 2 (1 - D/d_m)`` [rad/s] (eq. 4 of [1], zero contact angle).
+
+    References
+    ----------
+    .. [1] Paper 000, eq. 4; T. A. Harris, Rolling Bearing Analysis, ch. 8.
+    """
+    return 0.5 * np.asarray(speed) * (1.0 - np.asarray(roller_diameter) / np.asarray(pitch_diameter))
+
+
+def centrifugal_force(roller_diameter, effective_length, pitch_diameter, speed, roller_density):
+    """Centrifugal force of one cylindrical roller on its orbit.
+
+    Parameters
+    ----------
+    roller_diameter, effective_length, pitch_diameter : array_like
+        ``D``, ``l``, ``d_m`` [m].
+    speed : array_like
+        Inner-ring speed [rad/s].
+    roller_density : array_like
+        ``rho`` [kg/m^3].
+
+    Returns
+    -------
+    numpy.ndarray
+        ``F_c = m omega_c^2 d_m / 2`` with ``m = rho pi D^2 l / 4`` [N]; the same as eq. 3 of
+        [1], ``pi^3 rho D^2 l d_m n_m^2 / 7200`` with ``n_m`` in r/min.
+
+    References
+    ----------
+    .. [1] Paper 000, eq. 3.
+    """
+    mass = roller_density * np.pi / 4.0 * np.asarray(roller_diameter) ** 2 * effective_length
+    orbit = cage_speed(speed, roller_diameter, pitch_diameter)
+    return mass * orbit**2 * np.asarray(pitch_diameter) / 2.0
+
+
+class _RollerSet:
+    """The rollers of ``P`` bearings (one per grid point): geometry and contact laws."""
+
+    def __init__(self, cos_azimuth, half_clearance, crown, constant, centrifugal,
+                 gap_shape, gap_count, slice_law, outer_contact):
+        self.cos = cos_azimuth  # (P, Z)
+        self.half_clearance, self.crown = half_clearance, crown  # (P,)
+        self.constant, self.centrifugal = constant, centrifugal  # (P,)
+        self.gap_shape, self.gap_count = gap_shape, gap_count  # (m,)
+        self.slice_law, self.outer_contact = slice_law, outer_contact
+        self.free_outer_approach = self._free_outer_approach()
+
+    def contacts(self, inner_approach, outer_approach, points):
+        """Inner load, outer load and the load the outer contact is balanced against.
+
+        Returns ``(Qi, dQi, Qo, dQo, Qt, dQt)`` [N, N/m]: the roller's force balance is
+        ``Qo(outer) = Qt(inner) + Fc``. With ``outer_contact='crowned'`` both contacts are the
+        same sliced crowned contact and ``Qt = Qi``. With ``'paper'`` (eq. 6 of paper 000) the
+        outer contact is a straight roller, ``Qo = K delta_o^n``, balanced against
+        ``Qt = K delta_i^n`` rather than the crowned ``Qi`` of eq. 9.
+        """
+        constant = self.constant[points]
+        gaps = self.crown[points, None] * self.gap_shape
+        inner = sliced_line_contact(inner_approach, gaps, self.gap_count, constant, self.slice_law)
+        if self.outer_contact == "crowned":
+            outer = sliced_line_contact(outer_approach, gaps, self.gap_count, constant, self.slice_law)
+            return inner + outer + inner
+        outer = sliced_line_contact(outer_approach, _NO_GAP, _ONE_SLICE, constant)
+        balanced = sliced_line_contact(inner_approach, _NO_GAP, _ONE_SLICE, constant)
+        return inner + outer + balanced
+
+    def _free_outer_approach(self):
+        """Outer-contact approach of a roller held by its centrifugal force alone [m]."""
+        n = LINE_CONTACT_EXPONENT
+        plain = (self.centrifugal / self.constant) ** (1.0 / n)
+        if self.outer_contact == "paper":
+            return plain
+        approach = np.zeros_like(plain)
+        spinning = np.flatnonzero(self.centrifugal > 0.0)
+        if spinning.size:
+            # Every slice is in contact beyond the largest gap, so Qo >= K (delta - gap)^n.
+            upper = self.crown[spinning] * self.gap_shape.max() + plain[spinning]
+
+            def residual(outer, index):
+                points = spinning[index]
+                _, _, load, stiffness, _, _ = self.contacts(outer, outer, points)
+                return load - self.centrifugal[points], stiffness
+
+            approach[spinning], _ = solve_increasing(
+                residual, np.zeros(spinning.size), upper, 0.5 * upper, _XTOL * upper)
+        return approach
+
+    def loads(self, displacement, points, share):
+        """Roller loads and bearing load and stiffness at given radial displacements.
+
+        Parameters
+        ----------
+        displacement : numpy.ndarray
+            Radial displacement ``delta_r`` of the bearings ``points`` [m], shape ``(p,)``.
+        points : numpy.ndarray
+            Indices of the bearings evaluated.
+        share : numpy.ndarray
+            Initial guess of each roller's inner deflection as a fraction of its available
+            approach, shape ``(p, Z)``; updated in place with the solution.
+
+        Returns
+        -------
+        radial_load, radial_stiffness : numpy.ndarray
+            ``F_r = sum Qi_j cos phi_j`` (eq. 10) [N] and ``dF_r/d delta_r`` [N/m], ``(p,)``.
+        roller_load, inner_deflection : numpy.ndarray
+            ``Qi_j`` [N] and the inner-contact approach [m] (negative: the gap of an unloaded
+            roller), ``(p, Z)``.
+        converged : numpy.ndarray of bool
+            Every roller's force balance converged, ``(p,)``.
+        """
+        total = displacement[:, None] * self.cos[points] - self.half_clearance[points, None]  # eq. 1
+        available = total - self.free_outer_approach[points, None]
+        loaded = available > 0.0
+        owner = np.broadcast_to(points[:, None], loaded.shape)[loaded]
+        entry_total, entry_available = total[loaded], available[loaded]
+        cache = {}
+
+        def residual(inner, index):
+            # Roller force balance Qo(total - inner) = Qt(inner) + Fc (eq. 2, 6).
+            result = self.contacts(inner, entry_total[index] - inner, owner[index])
+            for name, value in zip(("qi", "ki", "qo", "ko", "qt", "kt"), result):
+                cache.setdefault(name, np.empty(entry_total.size))[index] = value
+            return result[4] + self.centrifugal[owner[index]] - result[2], result[5] + result[3]
+
+        inner, converged = solve_increasing(
+            residual, np.zeros(entry_total.size), entry_available,
+            share[loaded] * entry_available, _XTOL * entry_available)
+        share[loaded] = inner / entry_available
+        roller_load = np.zeros(total.shape)
+        roller_stiffness = np.zeros(total.shape)
+        inner_deflection = available.copy()
+        if entry_total.size:
+            roller_load[loaded] = cache["qi"]
+            # Series contacts: dQi/d(delta_rj) = Qi' Qo' / (Qo' + Qt') (eq. 14, generalised).
+            with np.errstate(invalid="ignore"):
+                roller_stiffness[loaded] = cache["ki"] * cache["ko"] / (cache["ko"] + cache["kt"])
+            roller_stiffness[loaded] = np.nan_to_num(roller_stiffness[loaded])  # 0/0 at contact
+            inner_deflection[loaded] = inner
+        all_converged = np.ones(total.shape, dtype=bool)
+        all_converged[loaded] = converged
+        cos = self.cos[points]
+        radial_load = (roller_load * cos).sum(axis=-1)
+        radial_stiffness = (roller_stiffness * cos**2).sum(axis=-1)  # eq. 13-16
+        return radial_load, radial_stiffness, roller_load, inner_deflection, all_converged.all(axis=-1)
+
+
+def crb_radial(radial_load, roller_count, pitch_diameter, roller_diameter, effective_length,
+               clearance=0.0, crown=0.0, crown_profile="logarithmic", slices=60,
+               slice_law="uniform", outer_contact="crowned", speed=0.0, roller_density=7850.0,
+               contact_constant=None, cage_position=0.0, perturbation=1e-6):
+    """Load distribution and radial stiffness of a cylindrical roller bearing.
+
+    Solves the inner ring's radial displacement under a radial load, with crowned rollers
+    cut into slices, centrifugal force and clearance, and the radial stiffness by implicit
+    differentiation (exact derivative of the solved load-displacement relation). All numeric
+    inputs broadcast against each other; counts and choices are scalars.
+
+    Parameters
+    ----------
+    radial_load : array_like
+        Radial load ``F_r`` on the inner ring [N].
+    roller_count : int
+        Number of rollers ``Z`` [-].
+    pitch_diameter, roller_diameter, effective_length : array_like
+        ``d_m``, ``D``, ``l`` [m].
+    clearance : array_like
+        Diametral clearance ``P_d`` [m]; negative for a preloaded bearing.
+    crown : array_like
+        Crown drop at the roller ends ``c_max`` [m].
+    crown_profile : {'logarithmic', 'none'}
+        Crown profile, eq. 8.
+    slices : int
+        Number of slices ``k`` [-].
+    slice_law : {'uniform', 'paper'}
+        How the slices share the roller's constant; see
+        :func:`models.contact.sliced_line_contact`.
+    outer_contact : {'crowned', 'paper'}
+        ``'crowned'`` (default): both raceway contacts are the crowned roller's and the roller
+        is in force balance, ``Qo = Qi + Fc``. ``'paper'``: eq. 6 as printed, a straight outer
+        contact loaded by ``Fc + K delta_i^n``; the same as ``'crowned'`` without crown.
+    speed : array_like
+        Inner-ring speed [rad/s].
+    roller_density : array_like
+        Roller density ``rho`` [kg/m^3].
+    contact_constant : array_like or None
+        Whole-roller constant ``K`` of one contact, ``Q = K delta^(10/9)`` [N/m^(10/9)];
+        None: Palmgren's ``8.06e4 l^(8/9)`` (N, mm).
+    cage_position : array_like
+        Azimuth of roller 1 from the load direction [rad]; roller ``j`` sits at
+        ``cage_position + 2 pi (j - 1) / Z``.
+    perturbation : array_like
+        Displacement step ``Delta`` of the forward-difference stiffness [m] (section 2.3).
+
+    Returns
+    -------
+    dict of numpy.ndarray
+        ``radial_displacement`` [m], ``radial_stiffness`` [N/m], ``perturbation_stiffness``
+        ``(F_r(delta_r + Delta) - F_r) / Delta`` [N/m], ``loaded_rollers`` [-],
+        ``centrifugal_force`` [N], ``roller_load`` (inner contact, ``(..., Z)``) [N],
+        ``inner_contact_deflection`` (``(..., Z)``, negative: gap) [m], ``status``.
+        Points that did not converge are NaN with ``status`` = 1.
+
+    References
+    ----------
+    .. [1] Paper 000, "Radial stiffness analysis of cylindrical roller bearing", eq. 1-16.
+    """
+    roller_count, slices = int(roller_count), int(slices)
+    if contact_constant is None:
+        contact_constant = palmgren_constant(effective_length)
+    arrays = np.broadcast_arrays(*(np.asarray(a, dtype=float) for a in (
+        radial_load, pitch_diameter, roller_diameter, effective_length, clearance, crown,
+        speed, roller_density, contact_constant, cage_position, perturbation)))
+    shape = arrays[0].shape
+    (load, pitch, diameter, length, clearance, crown, speed, density, constant,
+     cage_position, perturbation) = (a.ravel() for a in arrays)
+    azimuth = cage_position[:, None] + 2.0 * np.pi * np.arange(roller_count) / roller_count
+    gap_shape, gap_count = distinct_slices(slices, crown_profile)
+    if slice_law not in SLICE_LAWS or outer_contact not in OUTER_CONTACTS or crown_profile not in PROFILES:
+        raise ValueError(f"unknown option: slice_law={slice_law!r}, outer_contact={outer_contact!r}")
+    outputs = _solve(load, np.cos(azimuth), 0.5 * clearance, crown, constant,
+                     centrifugal_force(diameter, length, pitch, speed, density),
+                     gap_shape, gap_count, slice_law, outer_contact, perturbation)
+    return {name: value.reshape(shape + value.shape[1:]) for name, value in outputs.items()}
+
+
+def _solve(load, cos_azimuth, half_clearance, crown, constant, centrifugal, gap_shape,
+                 gap_count, slice_law, outer_contact, perturbation):
+    """Solve a flat batch of bearings; see :func:`crb_radial`."""
+    rollers = _RollerSet(cos_azimuth, half_clearance, crown, constant, centrifugal,
+                         gap_shape, gap_count, slice_law, outer_contact)
+    count, n = load.size, LINE_CONTACT_EXPONENT
+    everyone = np.arange(count)
+    share = np.full(cos_azimuth.shape, 0.5)
+    # Bracket: no roller touches below max(Pd/2, 0); above, the best-placed roller alone
+    # would carry the load through both crowned contacts. Doubled where that falls short.
+    lower = np.maximum(half_clearance, 0.0)
+    reach = (half_clearance + 2.0 * crown * gap_shape.max()
+             + 2.0 * ((load + centrifugal) / constant) ** (1.0 / n))
+    upper = np.maximum(reach / cos_azimuth.max(axis=-1), lower) + 1e-12
+    for _ in range(64):
+        short = rollers.loads(upper, everyone, share)[0] < load
+        if not short.any():
+            break
+        lower = np.where(short, upper, lower)
+        upper = np.where(short, 2.0 * upper, upper)
+
+    # At zero load the ring of a bearing with clearance may sit anywhere in its play: take the
+    # limit of a vanishing load, resting on the best-placed roller, which carries nothing.
+    resting = (load == 0.0) & (half_clearance >= 0.0)
+    touch = (half_clearance + rollers.free_outer_approach) / cos_azimuth.max(axis=-1)
+    lower = np.where(resting, touch, lower)
+    upper = np.where(resting, touch, upper)
+
+    cache = {"converged": np.ones(count, dtype=bool)}
+
+    def residual(displacement, index):
+        guess = share[index]
+        result = rollers.loads(displacement, index, guess)
+        share[index] = guess
+        for name, value in zip(("load", "stiffness", "roller_load", "deflection"), result):
+            cache.setdefault(name, np.empty((count,) + value.shape[1:]))[index] = value
+        cache["converged"][index] &= result[4]
+        return result[0] - load[index], result[1]
+
+    displacement, converged = solve_increasing(residual, lower, upper, upper, _XTOL * upper)
+    cache["roller_load"][resting] = 0.0
+    cache["stiffness"][resting] = 0.0
+    # Forward-difference stiffness with the paper's perturbation (section 2.3).
+    perturbed = rollers.loads(displacement + perturbation, everyone, share.copy())[0]
+    balanced = np.abs(cache["load"] - load) <= 1e-9 * load + 1e-6
+    ok = converged & cache["converged"] & balanced
+    status = np.where(ok, CONVERGED, NOT_CONVERGED).astype(np.int8)
+    outputs = {
+        "radial_displacement": displacement,
+        "radial_stiffness": cache["stiffness"],
+        "perturbation_stiffness": (perturbed - cache["load"]) / perturbation,
+        "loaded_rollers": (cache["roller_load"] > _LOADED_FRACTION * load[:, None]).sum(axis=-1),
+        "centrifugal_force": centrifugal,
+        "roller_load": cache["roller_load"],
+        "inner_contact_deflection": cache["deflection"],
+    }
+    outputs = {name: np.where(ok.reshape((-1,) + (1,) * (value.ndim - 1)), value, np.nan)
+               for name, value in outputs.items()}
+    outputs["status"] = status
+    return outputs
+
+
+def _rollers_fit(roller_count, pitch_diameter, roller_diameter):
+    return pitch_diameter * np.sin(np.pi / roller_count) > roller_diameter
+
+
+MODELS = [Model(
+    name="crb_radial",
+    function=crb_radial,
+    summary="Cylindrical roller bearing under radial load: load distribution and radial stiffness "
+            "with crowned rollers (slices), centrifugal force and clearance.",
+    reference="Paper 000, Radial stiffness analysis of cylindrical roller bearing, eq. 1-16",
+    version="1",
+    inputs=(
+        Input("radial_load", "N", "radial load Fr on the inner ring", minimum=0.0),
+        Input("roller_count", "1", "number of rollers Z", kind="count", minimum=3, maximum=1000),
+        Input("pitch_diameter", "mm", "pitch diameter dm", minimum=0.0, exclusive_minimum=True),
+        Input("roller_diameter", "mm", "roller diameter D", minimum=0.0, exclusive_minimum=True),
+        Input("effective_length", "mm", "effective contact length l of a roller",
+              minimum=0.0, exclusive_minimum=True),
+        Input("clearance", "mm", "diametral clearance Pd (negative: preload)", default=0.0),
+        Input("crown", "mm", "crown drop at the roller ends cmax", default=0.0, minimum=0.0),
+        Input("crown_profile", "", "roller crown profile (eq. 8)", default="logarithmic",
+              kind="choice", choices=PROFILES),
+        Input("slices", "1", "number of slices k per roller", default=60, kind="count",
+              minimum=1, maximum=100000),
+        Input("slice_law", "", "uniform: each slice carries K/k (delta - c)^n; paper: eq. 9, "
+              "divided by the number of loaded slices", default="uniform", kind="choice",
+              choices=SLICE_LAWS),
+        Input("outer_contact", "", "crowned: both contacts crowned, roller in force balance; "
+              "paper: eq. 6 as printed (straight outer contact)", default="crowned",
+              kind="choice", choices=OUTER_CONTACTS),
+        Input("speed", "rpm", "inner-ring speed ni", default=0.0, minimum=0.0),
+        Input("roller_density", "kg/m^3", "roller density rho", default=7850.0, minimum=0.0),
+        Input("contact_constant", "N/mm^(10/9)", "load-deflection constant K of one contact, "
+              "Q = K delta^(10/9); default Palmgren 8.06e4 l^(8/9) (N, mm)", default=None,
+              minimum=0.0, exclusive_minimum=True),
+        Input("cage_position", "deg", "azimuth of roller 1 from the load direction",
+              default=0.0, minimum=-360.0, maximum=360.0),
+        Input("perturbation", "mm", "displacement step of the forward-difference stiffness "
+              "(section 2.3)", default=0.001, minimum=0.0, exclusive_minimum=True),
+    ),
+    outputs=(
+        Output("radial_displacement", "mm", "radial displacement of the inner ring"),
+        Output("radial_stiffness", "N/mm", "radial stiffness dFr/d(delta_r), implicit "
+               "differentiation (eq. 12-16)"),
+        Output("perturbation_stiffness", "N/mm", "forward-difference radial stiffness with the "
+               "displacement step 'perturbation'"),
+        Output("loaded_rollers", "1", "number of rollers carrying load"),
+        Output("centrifugal_force", "N", "centrifugal force of one roller (eq. 3)"),
+        Output("roller_load", "N", "inner-raceway contact load of each roller (eq. 9)",
+               dims=("roller",)),
+        Output("inner_contact_deflection", "mm", "inner-raceway contact approach of each roller; "
+               "negative: its gap", dims=("roller",)),
+    ),
+    dim_sizes={"roller": "roller_count"},
+    constraints=(
+        Constraint(("crown", "roller_diameter"), lambda crown, roller_diameter:
+                   crown < roller_diameter / 2, "the crown must be smaller than the roller radius"),
+        Constraint(("clearance", "roller_diameter"), lambda clearance, roller_diameter:
+                   np.abs(clearance) < roller_diameter,
+                   "the clearance must be smaller than the roller diameter"),
+        Constraint(("roller_count", "pitch_diameter", "roller_diameter"), _rollers_fit,
+                   "the rollers do not fit on the pitch circle: pitch_diameter * sin(180 deg / "
+                   "roller_count) must exceed roller_diameter"),
+    ),
+    seconds_per_point=2e-4,
+)]

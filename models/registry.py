@@ -1,0 +1,138 @@
+"""Model registry: every model's inputs and outputs, with units, defaults and valid ranges.
+
+A model is a pure function of numpy arrays in SI base units. Its declaration here says, in the
+units engineers customarily write (mm, N, r/min, ...), what each input means, its default and
+the range in which the model is valid, and what each output is, with its own dimensions.
+The sweep engine uses the declarations to validate definitions, convert units at the boundary
+and label the netCDF output; the models never see a unit string.
+"""
+from __future__ import annotations
+
+import importlib
+from dataclasses import dataclass, field
+from typing import Callable
+
+#: Status codes shared by all models (netCDF ``flag_values`` / ``flag_meanings``).
+CONVERGED, NOT_CONVERGED, INFEASIBLE, MODEL_ERROR = 0, 1, 2, 3
+STATUS_MEANINGS = ("converged", "not_converged", "infeasible", "model_error")
+
+#: Marks an input that has no default and must be given.
+REQUIRED = object()
+
+# Modules that declare models (each defines a list ``MODELS``), imported on first use so that
+# model modules can import the declaration classes below without a cycle.
+_DECLARING_MODULES = ("models.cylindrical",)
+
+
+@dataclass(frozen=True)
+class Input:
+    """One model input.
+
+    ``kind`` is ``"quantity"`` (a number with units), ``"number"`` (a dimensionless number),
+    ``"count"`` (a positive integer that sets array shapes) or ``"choice"`` (one of
+    ``choices``). Counts and choices are *structural*: the engine calls the model once per
+    distinct combination of them. ``minimum``/``maximum`` are in ``unit``. A ``default`` of
+    ``None`` means the model derives the value itself when it is not given (the meaning says
+    how). ``dims`` names the dimensions of an array-valued input (a per-roller pattern).
+    """
+
+    name: str
+    unit: str
+    meaning: str
+    default: object = REQUIRED
+    kind: str = "quantity"
+    minimum: float | None = None
+    maximum: float | None = None
+    exclusive_minimum: bool = False
+    choices: tuple[str, ...] = ()
+    dims: tuple[str, ...] = ()
+
+    @property
+    def structural(self) -> bool:
+        return self.kind in ("count", "choice")
+
+    @property
+    def required(self) -> bool:
+        return self.default is REQUIRED
+
+    def range_text(self) -> str:
+        """The valid range in words, for error messages and ``describe``."""
+        if self.kind == "choice":
+            return "one of " + ", ".join(repr(c) for c in self.choices)
+        unit = "" if self.unit in ("1", "") else " " + self.unit
+        low = high = ""
+        if self.minimum is not None:
+            low = (">" if self.exclusive_minimum else ">=") + f" {self.minimum:g}{unit}"
+        if self.maximum is not None:
+            high = f"<= {self.maximum:g}{unit}"
+        kind = "an integer " if self.kind == "count" else ""
+        return kind + (" and ".join(t for t in (low, high) if t) or "any value")
+
+
+@dataclass(frozen=True)
+class Output:
+    """One model output: customary ``unit`` and the output's own ``dims`` after the grid's."""
+
+    name: str
+    unit: str
+    meaning: str
+    dims: tuple[str, ...] = ()
+
+
+@dataclass(frozen=True)
+class Constraint:
+    """A condition between inputs, checked on every combination before any computing.
+
+    ``check`` takes the named inputs as SI arrays and returns True where they are valid.
+    """
+
+    inputs: tuple[str, ...]
+    check: Callable[..., object]
+    message: str
+
+
+@dataclass(frozen=True)
+class Model:
+    """A registered model: its function and its declared interface."""
+
+    name: str
+    function: Callable[..., dict]
+    summary: str
+    reference: str
+    version: str
+    inputs: tuple[Input, ...]
+    outputs: tuple[Output, ...]
+    #: Size of each output dimension: the name of a count input (its largest value on the
+    #: grid is used) or a fixed integer.
+    dim_sizes: dict[str, str | int] = field(default_factory=dict)
+    constraints: tuple[Constraint, ...] = ()
+    #: Rough cost of one grid point on one core [s], to choose chunk sizes and whether a
+    #: cluster is worth starting.
+    seconds_per_point: float = 1e-3
+
+    def input(self, name: str) -> Input:
+        return next(i for i in self.inputs if i.name == name)
+
+    def output(self, name: str) -> Output:
+        return next(o for o in self.outputs if o.name == name)
+
+    @property
+    def input_names(self) -> tuple[str, ...]:
+        return tuple(i.name for i in self.inputs)
+
+
+_MODELS: dict[str, Model] = {}
+
+
+def all_models() -> dict[str, Model]:
+    """Every registered model, by name."""
+    if not _MODELS:
+        for module_name in _DECLARING_MODULES:
+            for model in importlib.import_module(module_name).MODELS:
+                _MODELS[model.name] = model
+    return dict(_MODELS)
+
+
+def get_model(name: str) -> Model:
+    """The model called ``name``; ``KeyError`` if there is none."""
+    return all_models()[name]

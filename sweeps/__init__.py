@@ -1,0 +1,1 @@
+"""The sweep engine: definition -> grid -> dask map -> labelled netCDF dataset."""

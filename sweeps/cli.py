@@ -1,0 +1,129 @@
+"""Command line: ``bearing-sweep run | study | report | models | describe | presets``."""
+from __future__ import annotations
+
+import argparse
+import sys
+from pathlib import Path
+
+from models.catalogue import PRESETS
+from models.registry import all_models
+from sweeps import spec, study
+from sweeps.run import Executor, run_sweep
+from sweeps.spec import SpecError
+
+#: Exit status for a mistake in the user's input (a definition, a name, an option).
+USAGE_ERROR = 2
+
+
+def _parser() -> argparse.ArgumentParser:
+    parser = argparse.ArgumentParser(
+        prog="bearing-sweep", description="Parametric studies of rolling bearings.")
+    commands = parser.add_subparsers(dest="command", required=True)
+
+    def cluster_options(command):
+        command.add_argument("--workers", type=int, metavar="N",
+                             help="size of the local dask cluster (default 2; 0: in-process)")
+        command.add_argument("--scheduler", metavar="ADDRESS",
+                             help="run on an existing dask.distributed scheduler")
+
+    run = commands.add_parser("run", help="compute a sweep definition into a netCDF file")
+    run.add_argument("definition", type=Path)
+    run.add_argument("-o", "--output", type=Path,
+                     help="netCDF file to write (default results/<definition name>.nc)")
+    run.add_argument("--chunk-size", type=int, metavar="POINTS",
+                     help="grid points per task (default: chosen from the model's cost)")
+    run.add_argument("--quiet", action="store_true", help="no progress bar")
+    cluster_options(run)
+
+    run_study = commands.add_parser("study", help="run a paper's sweeps (missing or stale) and "
+                                    "draw its figures")
+    run_study.add_argument("name", help="a study name, or 'all'")
+    run_study.add_argument("--force", action="store_true", help="rerun every sweep")
+    cluster_options(run_study)
+
+    commands.add_parser("report", help="write figures/<study>/README.md and figures/README.md")
+    commands.add_parser("models", help="list the models")
+    describe = commands.add_parser("describe", help="show one model's inputs and outputs")
+    describe.add_argument("model")
+    commands.add_parser("presets", help="list the catalogue's bearings")
+    for command in commands.choices.values():
+        if command.prog.split()[-1] in ("study", "report"):
+            command.add_argument("--studies", type=Path, default=None,
+                                 help="folder of studies (default ./studies)")
+            command.add_argument("--results", type=Path, default=Path("results"))
+            command.add_argument("--figures", type=Path, default=Path("figures"))
+    return parser
+
+
+def _check_cluster_options(args):
+    if args.workers is not None and args.workers < 0:
+        raise SpecError(f"--workers {args.workers}: expected 0 (in-process) or more workers")
+    if args.workers == 0 and args.scheduler:
+        raise SpecError("--workers 0 and --scheduler exclude each other")
+
+
+def _describe(name: str) -> str:
+    models = all_models()
+    if name not in models:
+        raise SpecError(f"unknown model {name!r} (models: {', '.join(sorted(models))})")
+    model = models[name]
+    lines = [f"{model.name} (version {model.version}): {model.summary}",
+             f"Reference: {model.reference}", "", "Inputs:"]
+    for i in model.inputs:
+        default = "required" if i.required else (
+            "derived" if i.default is None else f"default {i.default}")
+        unit = f" [{i.unit}]" if i.unit not in ("", "1") else ""
+        dims = f" per {', '.join(i.dims)}" if i.dims else ""
+        lines.append(f"  {i.name}{unit}{dims}: {i.meaning}; {default}; {i.range_text()}")
+    lines += ["", "Outputs:"]
+    for o in model.outputs:
+        dims = f" (dims: {', '.join(o.dims)})" if o.dims else ""
+        lines.append(f"  {o.name} [{o.unit}]{dims}: {o.meaning}")
+    lines.append("  status: " + "converged / not_converged / infeasible / model_error")
+    for c in model.constraints:
+        lines.append(f"Condition: {c.message}")
+    return "\n".join(lines)
+
+
+def main(argv=None) -> int:
+    args = _parser().parse_args(argv)
+    try:
+        if args.command == "models":
+            for model in all_models().values():
+                print(f"{model.name}: {model.summary}")
+        elif args.command == "describe":
+            print(_describe(args.model))
+        elif args.command == "presets":
+            for preset in PRESETS.values():
+                print(f"{preset.name} ({preset.model}): {preset.source}")
+        elif args.command == "run":
+            _check_cluster_options(args)
+            if args.chunk_size is not None and args.chunk_size < 1:
+                raise SpecError(f"--chunk-size {args.chunk_size}: expected a positive integer")
+            sweep = spec.load(args.definition)
+            output = args.output or Path("results") / f"{args.definition.stem}.nc"
+            with Executor(args.workers, args.scheduler) as executor:
+                summary = run_sweep(sweep, output, executor, args.chunk_size, not args.quiet)
+            print(summary.text())
+        elif args.command == "study":
+            _check_cluster_options(args)
+            folder = args.studies or study.default_studies_folder()
+            chosen = study.select(folder, args.name)
+            with Executor(args.workers, args.scheduler) as executor:
+                for one in chosen:
+                    study.run_study(one, args.results, args.figures, executor, args.force)
+        elif args.command == "report":
+            folder = args.studies or study.default_studies_folder()
+            for path in study.write_report(study.select(folder, "all"), args.results, args.figures):
+                print(f"wrote {path}")
+    except SpecError as error:
+        print(f"error: {error}", file=sys.stderr)
+        return USAGE_ERROR
+    except KeyboardInterrupt:
+        print("interrupted: no result file was written for the unfinished sweep", file=sys.stderr)
+        return 130
+    return 0
+
+
+if __name__ == "__main__":
+    sys.exit(main())

@@ -1,0 +1,112 @@
+"""The labelled grid of a sweep: coordinates, and the model inputs of any range of its points.
+
+Points are numbered in C order over the axes (the last axis varies fastest). A chunk of points
+is a range of those numbers, so its inputs are built where it is computed, from the axes alone:
+the grid never holds per-point arrays for all points at once.
+"""
+from __future__ import annotations
+
+from dataclasses import dataclass
+
+import numpy as np
+
+from sweeps.spec import Sweep, Value
+
+
+@dataclass
+class Grid:
+    """Everything a worker needs to build the model inputs of a chunk (small and picklable)."""
+
+    model_name: str
+    dims: tuple[str, ...]
+    shape: tuple[int, ...]
+    fixed: dict  # input name -> SI value (or None) shared by all points
+    axis_values: dict  # input name -> (axis position, SI values of that axis, stacked)
+    dim_sizes: dict  # output dimension -> size
+
+    @classmethod
+    def from_sweep(cls, sweep: Sweep) -> "Grid":
+        fixed = {name: None if v is None else v.si for name, v in sweep.fixed.items()}
+        axis_values = {}
+        for position, axis in enumerate(sweep.axes):
+            for name, values in axis.values.items():
+                axis_values[name] = (position, _stack(values))
+        dim_sizes = {}
+        for dim, size in sweep.model.dim_sizes.items():
+            if isinstance(size, str):
+                size = int(np.max(axis_values[size][1]) if size in axis_values else fixed[size])
+            dim_sizes[dim] = size
+        return cls(sweep.model.name, tuple(a.name for a in sweep.axes),
+                   tuple(len(a) for a in sweep.axes), fixed, axis_values, dim_sizes)
+
+    @property
+    def size(self) -> int:
+        return int(np.prod(self.shape, dtype=np.int64))
+
+    def chunks(self, chunk_size: int) -> list[tuple[int, int]]:
+        """Ranges ``[start, stop)`` of point numbers covering the grid."""
+        return [(start, min(start + chunk_size, self.size))
+                for start in range(0, self.size, chunk_size)]
+
+    def inputs(self, start: int, stop: int) -> tuple[dict, dict]:
+        """Model inputs of points ``start..stop-1``.
+
+        Returns the inputs that vary on the grid as arrays with the points first, and the
+        axis index of each point on every axis (to group points by structural inputs).
+        """
+        index = np.unravel_index(np.arange(start, stop), self.shape) if self.shape else ()
+        varying = {name: values[index[position]]
+                   for name, (position, values) in self.axis_values.items()}
+        return varying, dict(zip(self.dims, index))
+
+
+def _stack(values: list[Value]):
+    first = values[0].si
+    if isinstance(first, str):
+        return np.array([v.si for v in values], dtype=object)
+    if isinstance(first, (int, np.integer)):
+        return np.array([v.si for v in values], dtype=np.int64)
+    return np.stack([np.asarray(v.si, dtype=float) for v in values])
+
+
+def coordinates(sweep: Sweep) -> dict:
+    """xarray coordinates of the grid: values and units as the user wrote them.
+
+    Returns ``{name: (dims, values, attrs)}``: one dimension coordinate per axis (a zipped
+    axis' labels), a coordinate along its axis for each zipped parameter, and a scalar
+    coordinate for every fixed input.
+    """
+    coords = {}
+    for axis in sweep.axes:
+        if axis.labels is None:
+            name, values = next(iter(axis.values.items()))
+            coords[name] = ((name,), _shown(values), _attrs(sweep, name, values[0].unit))
+            continue
+        coords[axis.name] = ((axis.name,), np.array(axis.labels),
+                             {"long_name": f"{axis.name} (labels of a zipped axis)", "units": "1"})
+        for name, values in axis.values.items():
+            extra = sweep.model.input(name).dims
+            coords[name] = ((axis.name,) + extra, _shown(values), _attrs(sweep, name, values[0].unit))
+    for name, value in sweep.fixed.items():
+        if value is None:
+            continue
+        attrs = _attrs(sweep, name, value.unit)
+        attrs["origin"] = sweep.origin.get(name, "")
+        dims = sweep.model.input(name).dims
+        coords[name] = (dims, np.asarray(value.shown), attrs)
+    return coords
+
+
+def _shown(values: list[Value]) -> np.ndarray:
+    first = values[0].shown
+    if isinstance(first, str):
+        return np.array([v.shown for v in values])
+    return np.stack([np.asarray(v.shown) for v in values])
+
+
+def _attrs(sweep: Sweep, name: str, unit: str) -> dict:
+    spec = sweep.model.input(name)
+    attrs = {"long_name": spec.meaning, "units": unit or "1"}
+    if spec.kind == "choice":
+        attrs["accepted_values"] = " ".join(spec.choices)
+    return attrs

@@ -1,0 +1,252 @@
+"""Map a model over a grid in chunks: in this process, on a LocalCluster or on a scheduler."""
+from __future__ import annotations
+
+import logging
+import math
+import sys
+import time
+from dataclasses import dataclass, field
+
+import numpy as np
+
+from models.registry import MODEL_ERROR, STATUS_MEANINGS, get_model
+from sweeps import store, units
+from sweeps.grid import Grid
+from sweeps.spec import Sweep
+
+#: Below this estimated single-core time [s] a sweep runs in-process: starting a cluster
+#: would take longer than the work.
+IN_PROCESS_SECONDS = 3.0
+#: Largest chunk, in estimated seconds of work on one core.
+CHUNK_SECONDS = 1.0
+
+
+def evaluate_chunk(grid: Grid, start: int, stop: int) -> dict:
+    """Run the model on points ``start..stop-1``.
+
+    Returns ``{"outputs": {name: array}, "status": array, "errors": [str]}``; outputs are in
+    their declared units, with the grid's largest size on each own dimension (NaN beyond a
+    point's own size). Points are grouped by their structural inputs (counts, choices) and the
+    model is called once per group. An exception in the model marks that group's points with
+    ``model_error`` and records its message; it does not stop the sweep.
+    """
+    model = get_model(grid.model_name)
+    count = stop - start
+    varying, axis_index = grid.inputs(start, stop)
+    outputs = {o.name: np.full((count,) + tuple(grid.dim_sizes[d] for d in o.dims), np.nan)
+               for o in model.outputs}
+    status = np.full(count, MODEL_ERROR, dtype=np.int8)
+    errors = []
+    structural = [i.name for i in model.inputs if i.structural and i.name in varying]
+    if structural:
+        axes = sorted({grid.axis_values[name][0] for name in structural})
+        codes = np.ravel_multi_index([axis_index[grid.dims[a]] for a in axes],
+                                     [grid.shape[a] for a in axes])
+        groups = [np.flatnonzero(codes == code) for code in np.unique(codes)]
+    else:
+        groups = [np.arange(count)]
+    for members in groups:
+        arguments = dict(grid.fixed)
+        for name, values in varying.items():
+            arguments[name] = values[members[0]].item() if name in structural else values[members]
+        try:
+            result = model.function(**arguments)
+        except Exception as error:  # one bad group must not cost the whole sweep
+            errors.append(f"{type(error).__name__}: {error}".splitlines()[0])
+            continue
+        for spec in model.outputs:
+            value = _per_point(result[spec.name], members.size, len(spec.dims))
+            region = (members,) + tuple(slice(0, n) for n in value.shape[1:])
+            outputs[spec.name][region] = units.from_si(value, spec.unit)
+        status[members] = _per_point(result["status"], members.size, 0)
+    return {"outputs": outputs, "status": status, "errors": errors}
+
+
+def _per_point(value, count: int, own_dims: int) -> np.ndarray:
+    """``value`` with one leading entry per point (a model given no per-point array returns
+    unbatched results)."""
+    value = np.asarray(value)
+    own = value.shape[value.ndim - own_dims:]
+    return np.broadcast_to(value.reshape((-1,) + own), (count,) + own)
+
+
+@dataclass
+class Summary:
+    """What a finished sweep reports."""
+
+    model: str
+    points: int
+    status_counts: dict
+    seconds: float
+    output: str
+    scheduler: str
+    errors: list = field(default_factory=list)
+
+    @property
+    def failed(self) -> int:
+        return self.points - self.status_counts.get("converged", 0)
+
+    def text(self) -> str:
+        counts = ", ".join(f"{n} {name}" for name, n in self.status_counts.items() if n)
+        line = (f"{self.model}: {self.points} points ({counts or 'none'}) in {self.seconds:.1f} s "
+                f"on {self.scheduler} -> {self.output}")
+        if self.errors:
+            line += f"\n  model errors: {self.errors[0]}" + (
+                f" (and {len(self.errors) - 1} more)" if len(self.errors) > 1 else "")
+        return line
+
+
+class Executor:
+    """Where chunks are computed. A cluster is started only when a sweep is worth it.
+
+    ``workers=0`` always computes in-process; ``scheduler`` connects to a running
+    dask.distributed scheduler; otherwise a LocalCluster of ``workers`` (default 2)
+    single-threaded processes is started on first need and kept for later sweeps.
+    """
+
+    def __init__(self, workers: int | None = None, scheduler: str | None = None):
+        self.workers, self.scheduler = workers, scheduler
+        self.client = None
+        self.cluster = None
+
+    def __enter__(self):
+        return self
+
+    def __exit__(self, *exc):
+        self.close()
+
+    def close(self):
+        if self.client is not None:
+            self.client.close()
+        if self.cluster is not None:
+            self.cluster.close()
+        self.client = self.cluster = None
+
+    def parallel(self, grid: Grid) -> bool:
+        if self.scheduler:
+            return True
+        if self.workers == 0:
+            return False
+        cost = grid.size * get_model(grid.model_name).seconds_per_point
+        return cost > IN_PROCESS_SECONDS
+
+    def worker_count(self) -> int:
+        if self.client is not None:
+            return max(1, len(self.client.scheduler_info()["workers"]))
+        return self.workers or 2
+
+    def connect(self):
+        from distributed import Client, LocalCluster
+
+        if self.client is None:
+            if self.scheduler:
+                self.client = Client(self.scheduler, timeout="20s")
+            else:
+                self.cluster = LocalCluster(n_workers=self.workers or 2, threads_per_worker=1,
+                                            processes=True, dashboard_address=None,
+                                            silence_logs=logging.ERROR)
+                self.client = Client(self.cluster)
+        return self.client
+
+    def describe(self, parallel: bool) -> str:
+        if not parallel:
+            return "in-process"
+        if self.scheduler:
+            return f"dask scheduler {self.scheduler} ({self.worker_count()} workers)"
+        return f"dask LocalCluster ({self.worker_count()} single-threaded worker processes)"
+
+    def map(self, grid: Grid, chunks, parallel: bool):
+        """Yield ``(start, stop, result)`` as chunks finish."""
+        if not parallel:
+            for start, stop in chunks:
+                yield start, stop, evaluate_chunk(grid, start, stop)
+            return
+        from distributed import as_completed
+
+        client = self.connect()
+        shared = client.scatter(grid, broadcast=True)
+        futures = {client.submit(evaluate_chunk, shared, start, stop, pure=False): (start, stop)
+                   for start, stop in chunks}
+        try:
+            for future in as_completed(futures):
+                start, stop = futures[future]
+                yield start, stop, future.result()
+        finally:
+            client.cancel(list(futures))
+
+
+class Progress:
+    """A progress bar on stderr for work that takes longer than a moment."""
+
+    def __init__(self, total: int, label: str, enabled: bool = True, stream=None):
+        self.total, self.label, self.enabled = total, label, enabled
+        self.stream = stream or sys.stderr
+        self.start = self.last = time.monotonic()
+        self.done = 0
+        self.shown = False
+        self.tty = hasattr(self.stream, "isatty") and self.stream.isatty()
+
+    def advance(self, count: int):
+        self.done += count
+        now = time.monotonic()
+        if not self.enabled or now - self.start < 0.5:
+            return
+        if self.shown and now - self.last < (0.1 if self.tty else 10.0) and self.done < self.total:
+            return
+        self.last, self.shown = now, True
+        fraction = self.done / max(self.total, 1)
+        bar = "#" * int(30 * fraction)
+        line = (f"{self.label} [{bar:<30}] {self.done}/{self.total} points "
+                f"{now - self.start:.0f} s")
+        self.stream.write(("\r" + line) if self.tty else line + "\n")
+        self.stream.flush()
+
+    def close(self):
+        if self.shown and self.tty:
+            self.stream.write("\n")
+            self.stream.flush()
+
+
+def choose_chunk_size(grid: Grid, workers: int) -> int:
+    """Enough chunks to balance the workers, each at most about ``CHUNK_SECONDS`` of work."""
+    cost = get_model(grid.model_name).seconds_per_point
+    largest = max(1, int(CHUNK_SECONDS / cost))
+    return max(1, min(largest, math.ceil(grid.size / (4 * workers))))
+
+
+def run_sweep(sweep: Sweep, output, executor: Executor | None = None,
+              chunk_size: int | None = None, progress: bool = True) -> Summary:
+    """Compute ``sweep`` and write its netCDF file atomically at ``output``."""
+    own = executor is None
+    executor = executor or Executor()
+    began = time.monotonic()
+    try:
+        grid = Grid.from_sweep(sweep)
+        model = get_model(grid.model_name)
+        parallel = executor.parallel(grid)
+        if parallel:
+            executor.connect()
+        size = chunk_size or choose_chunk_size(grid, executor.worker_count() if parallel else 1)
+        outputs = {o.name: np.empty((grid.size,) + tuple(grid.dim_sizes[d] for d in o.dims))
+                   for o in model.outputs}
+        status = np.empty(grid.size, dtype=np.int8)
+        errors = []
+        bar = Progress(grid.size, model.name, progress)
+        try:
+            for start, stop, result in executor.map(grid, grid.chunks(size), parallel):
+                for name, values in result["outputs"].items():
+                    outputs[name][start:stop] = values
+                status[start:stop] = result["status"]
+                errors.extend(result["errors"])
+                bar.advance(stop - start)
+        finally:
+            bar.close()
+        scheduler = executor.describe(parallel)
+        dataset = store.build_dataset(sweep, grid, outputs, status, scheduler, errors)
+        store.write_netcdf(dataset, output)
+        counts = {name: int(np.sum(status == code)) for code, name in enumerate(STATUS_MEANINGS)}
+        return Summary(model.name, grid.size, counts, time.monotonic() - began, str(output),
+                       scheduler, sorted(set(errors)))
+    finally:
+        if own:
+            executor.close()

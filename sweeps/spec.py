@@ -1,0 +1,409 @@
+"""Sweep definitions: read a TOML file and validate it completely before any computing.
+
+Every mistake is reported as a :class:`SpecError` whose message is one line: the file, the key,
+what is wrong and what would be accepted.
+"""
+from __future__ import annotations
+
+import difflib
+import hashlib
+import tomllib
+from dataclasses import dataclass, field
+from pathlib import Path
+
+import numpy as np
+
+from models.catalogue import PRESETS
+from models.registry import Input, Model, all_models
+from sweeps import units
+
+_RANGE_KEYS = {"start", "stop", "num", "step", "units"}
+_VALUES_KEYS = {"values", "units"}
+_RESERVED = {"status"}
+
+
+class SpecError(Exception):
+    """A mistake in a sweep definition; ``str(error)`` is the line shown to the user."""
+
+
+@dataclass(frozen=True)
+class Value:
+    """One parameter value: in SI for the model, and as written for the netCDF file."""
+
+    si: object  # float, int, str or numpy array, in SI base units
+    shown: object  # the magnitude in ``unit``
+    unit: str  # the unit the user wrote; "1" when dimensionless, "" for a choice
+
+
+@dataclass
+class Axis:
+    """One dimension of the grid: a parameter's values, or several parameters zipped."""
+
+    name: str
+    values: dict[str, list[Value]]
+    labels: list | None = None  # a zipped axis' labels
+
+    def __len__(self) -> int:
+        return len(next(iter(self.values.values())))
+
+
+@dataclass
+class Sweep:
+    """A validated sweep definition."""
+
+    path: str
+    text: str
+    model: Model
+    title: str
+    bearing: str | None
+    fixed: dict[str, Value | None]  # every input not on an axis; None: derived by the model
+    axes: list[Axis]
+    origin: dict[str, str] = field(default_factory=dict)  # where each fixed value came from
+
+    @property
+    def sha256(self) -> str:
+        return hashlib.sha256(self.text.encode()).hexdigest()
+
+
+def load(path) -> Sweep:
+    """Read and validate the sweep definition at ``path``."""
+    try:
+        text = Path(path).read_text()
+    except OSError as error:
+        raise SpecError(f"{path}: cannot read the definition: {error.strerror}") from None
+    return parse(text, str(path))
+
+
+def parse(text: str, where: str = "<definition>") -> Sweep:
+    """Validate the sweep definition ``text``; ``where`` names it in error messages."""
+    try:
+        document = tomllib.loads(text)
+    except tomllib.TOMLDecodeError as error:
+        raise SpecError(f"{where}: not valid TOML: {error}") from None
+    return _Parser(where).sweep(document, text)
+
+
+def _suggestion(name: str, options) -> str:
+    close = difflib.get_close_matches(name, list(options), n=1, cutoff=0.6)
+    return f"; did you mean {close[0]!r}?" if close else ""
+
+
+class _Parser:
+    def __init__(self, where: str):
+        self.where = where
+        self.seen: dict[str, str] = {}
+
+    def fail(self, key: str, message: str):
+        raise SpecError(f"{self.where}: {key}: {message}")
+
+    def table(self, document: dict, key: str, allowed) -> dict:
+        table = document.get(key, {})
+        if not isinstance(table, dict):
+            self.fail(key, f"expected a table [{key}]")
+        for name in table:
+            if allowed is not None and name not in allowed:
+                self.fail(f"{key}.{name}", "unknown key" + _suggestion(name, allowed)
+                          + f" (accepted: {', '.join(sorted(allowed))})")
+        return table
+
+    # -- the whole definition -------------------------------------------------------------
+    def sweep(self, document: dict, text: str) -> Sweep:
+        for key in document:
+            if key not in ("sweep", "fixed", "axes"):
+                self.fail(key, "unknown section" + _suggestion(key, ("sweep", "fixed", "axes"))
+                          + " (accepted: [sweep], [fixed], [axes])")
+        head = self.table(document, "sweep", ("model", "bearing", "title"))
+        models = all_models()
+        name = head.get("model")
+        if not isinstance(name, str):
+            self.fail("sweep.model", "missing: name a model, one of " + ", ".join(sorted(models)))
+        if name not in models:
+            self.fail("sweep.model", f"unknown model {name!r}" + _suggestion(name, models)
+                      + " (models: " + ", ".join(sorted(models)) + ")")
+        model = models[name]
+        inputs = {i.name: i for i in model.inputs}
+        fixed_raw = self.table(document, "fixed", None)
+        axes_raw = self.table(document, "axes", None)
+
+        fixed: dict[str, Value | None] = {}
+        origin: dict[str, str] = {}
+        bearing = head.get("bearing")
+        if bearing is not None:
+            for key, value in self.preset(bearing, model).items():
+                fixed[key], origin[key] = value, f"preset {bearing}"
+        for key, raw in fixed_raw.items():
+            where = f"fixed.{key}"
+            self.claim(key, where, inputs, model)
+            fixed[key], origin[key] = self.value(inputs[key], raw, where), "fixed"
+        axes = [self.axis(key, raw, inputs, model) for key, raw in axes_raw.items()]
+        on_axes = {p for axis in axes for p in axis.values}
+        for key in on_axes:
+            fixed.pop(key, None)
+            origin.pop(key, None)
+        for spec in model.inputs:
+            if spec.name in fixed or spec.name in on_axes:
+                continue
+            if spec.required:
+                unit = "" if spec.unit in ("", "1") else f" [{spec.unit}]"
+                self.fail("fixed", f"missing parameter {spec.name!r}{unit} ({spec.meaning}); "
+                          "give it in [fixed] or [axes]")
+            default = spec.default
+            fixed[spec.name] = None if default is None else self.default(spec)
+            origin[spec.name] = "default"
+        sweep = Sweep(self.where, text, model, str(head.get("title") or f"{model.name}: "
+                      f"{Path(self.where).stem}"), bearing, fixed, axes, origin)
+        self.check_constraints(sweep)
+        return sweep
+
+    def preset(self, name, model: Model) -> dict[str, Value]:
+        if not isinstance(name, str) or name not in PRESETS:
+            self.fail("sweep.bearing", f"unknown preset {name!r}" + _suggestion(str(name), PRESETS)
+                      + " (`bearing-sweep presets` lists them)")
+        preset = PRESETS[name]
+        if preset.model != model.name:
+            self.fail("sweep.bearing", f"preset {name!r} is for model {preset.model!r}, "
+                      f"not {model.name!r}")
+        return {key: self.value(model.input(key), raw, f"preset {name}.{key}")
+                for key, raw in preset.values.items()}
+
+    def claim(self, name: str, key: str, inputs: dict, model: Model):
+        """Check that ``name`` is an input of the model, given only once."""
+        if name not in inputs:
+            self.fail(key, f"unknown parameter {name!r} of model {model.name}"
+                      + _suggestion(name, inputs)
+                      + f" (`bearing-sweep describe {model.name}` lists them)")
+        if name in self.seen:
+            self.fail(key, f"parameter {name!r} is given twice (also at {self.seen[name]})")
+        self.seen[name] = key
+
+    def default(self, spec: Input) -> Value:
+        if spec.kind in ("choice", "count"):
+            return Value(spec.default, spec.default, spec.unit)
+        unit = units.parse_unit(spec.unit)
+        return Value(float(units.to_si(spec.default, unit)), spec.default, spec.unit)
+
+    # -- axes -----------------------------------------------------------------------------
+    def axis(self, name: str, raw, inputs: dict, model: Model) -> Axis:
+        key = f"axes.{name}"
+        if name in inputs:
+            if isinstance(raw, dict) and "labels" in raw:
+                self.fail(key, f"a zipped axis needs a name that is not a parameter of {model.name}")
+            self.claim(name, key, inputs, model)
+            spec = inputs[name]
+            if spec.dims:
+                self.fail(key, f"{name!r} is a pattern (one value per {spec.dims[0]}): vary it "
+                          f"on a labelled axis, [axes.<name>] labels = [...], {name} = [...]")
+            return Axis(name, {name: self.axis_values(spec, raw, key)})
+        if not isinstance(raw, dict):
+            self.fail(key, f"unknown parameter {name!r} of model {model.name}"
+                      + _suggestion(name, inputs)
+                      + f" (`bearing-sweep describe {model.name}` lists them)")
+        taken = {o.name for o in model.outputs} | {d for o in model.outputs for d in o.dims}
+        if name in taken | _RESERVED:
+            self.fail(key, f"the axis name {name!r} is taken by an output or its dimension")
+        values = {}
+        for parameter, column in raw.items():
+            if parameter == "labels":
+                continue
+            self.claim(parameter, f"{key}.{parameter}", inputs, model)
+            values[parameter] = self.axis_values(inputs[parameter], column, f"{key}.{parameter}")
+        if not values:
+            self.fail(key, "a zipped axis needs at least one parameter besides 'labels'")
+        lengths = {p: len(v) for p, v in values.items()}
+        labels = raw.get("labels")
+        if labels is not None:
+            if not isinstance(labels, list) or not labels or not all(
+                    isinstance(x, (str, int)) and not isinstance(x, bool) for x in labels):
+                self.fail(f"{key}.labels", "expected a non-empty list of strings or integers")
+            if len(set(labels)) != len(labels):
+                self.fail(f"{key}.labels", "labels must be unique")
+            lengths["labels"] = len(labels)
+        if len(set(lengths.values())) > 1:
+            described = ", ".join(f"{p} has {n}" for p, n in lengths.items())
+            self.fail(key, f"ragged zipped axis: {described} values; all must have the same number")
+        return Axis(name, values, labels if labels is not None else list(range(len(
+            next(iter(values.values()))))))
+
+    def axis_values(self, spec: Input, raw, key: str) -> list[Value]:
+        if isinstance(raw, list):
+            values = [self.value(spec, item, f"{key}[{i}]") for i, item in enumerate(raw)]
+        elif isinstance(raw, dict) and set(raw) <= _VALUES_KEYS and "values" in raw:
+            if not isinstance(raw["values"], list):
+                self.fail(f"{key}.values", "expected a list")
+            unit = raw.get("units")
+            values = [self.value(spec, item, f"{key}.values[{i}]", unit)
+                      for i, item in enumerate(raw["values"])]
+        elif isinstance(raw, dict) and set(raw) <= _RANGE_KEYS and {"start", "stop"} <= set(raw):
+            values = self.value_range(spec, raw, key)
+        else:
+            self.fail(key, "an axis is a list of values, {values = [...], units = \"...\"} or "
+                      "{start = ..., stop = ..., num = ... (or step = ...)}")
+        if not values:
+            self.fail(key, "empty axis: give at least one value")
+        return self.same_unit(values)
+
+    def value_range(self, spec: Input, raw: dict, key: str) -> list[Value]:
+        if spec.kind == "choice" or spec.dims:
+            self.fail(key, f"{spec.name!r} cannot take a range; list its values")
+        if ("num" in raw) == ("step" in raw):
+            self.fail(key, "a range needs exactly one of 'num' (number of values) or 'step'")
+        unit = raw.get("units")
+        start = self.value(spec, raw["start"], f"{key}.start", unit, check_range=False)
+        stop = self.value(spec, raw["stop"], f"{key}.stop", unit, check_range=False)
+        stop_shown = units.convert(stop.shown, units.parse_unit(stop.unit), units.parse_unit(
+            start.unit)) if start.unit not in ("", "1") else stop.shown
+        if "num" in raw:
+            num = raw["num"]
+            if isinstance(num, bool) or not isinstance(num, int) or num < 1:
+                self.fail(f"{key}.num", f"{num!r}: expected an integer >= 1")
+            shown = np.linspace(start.shown, stop_shown, num)
+        else:
+            step = self.value(spec, raw["step"], f"{key}.step", unit, check_range=False)
+            step_shown = units.convert(step.shown, units.parse_unit(step.unit), units.parse_unit(
+                start.unit)) if start.unit not in ("", "1") else step.shown
+            if not step_shown > 0:
+                self.fail(f"{key}.step", "the step must be positive")
+            count = int(np.floor((stop_shown - start.shown) / step_shown + 1e-9)) + 1
+            if count < 1:
+                self.fail(key, "empty axis: 'stop' is below 'start'")
+            shown = start.shown + step_shown * np.arange(count)
+        if spec.kind == "count":
+            return [self.value(spec, float(x), f"{key}") for x in shown]
+        return [self.value(spec, float(x), f"{key}", start.unit) for x in shown]
+
+    def same_unit(self, values: list[Value]) -> list[Value]:
+        """Express every value of an axis in the unit of its first value."""
+        first = values[0].unit
+        if first in ("", "1"):
+            return values
+        target = units.parse_unit(first)
+        return [v if v.unit == first else
+                Value(v.si, units.convert(v.shown, units.parse_unit(v.unit), target), first)
+                for v in values]
+
+    # -- single values --------------------------------------------------------------------
+    def value(self, spec: Input, raw, key: str, unit_text=None, check_range=True) -> Value:
+        """One value of ``spec`` (a whole pattern for an array input)."""
+        if spec.kind == "choice":
+            if not isinstance(raw, str) or raw not in spec.choices:
+                self.fail(key, f"{raw!r} is not accepted; {spec.name} is {spec.range_text()}"
+                          + _suggestion(str(raw), spec.choices))
+            return Value(raw, raw, "")
+        if unit_text is not None and spec.kind == "count":
+            self.fail(key, f"{spec.name!r} is a count and takes no units")
+        if spec.kind == "count":
+            if isinstance(raw, bool) or not isinstance(raw, (int, float)) or raw != int(raw):
+                self.fail(key, f"{raw!r}: {spec.name} must be {spec.range_text()}")
+            self.in_range(spec, int(raw), "1", key, raw)
+            return Value(int(raw), int(raw), "1")
+        magnitude, unit_text = self.magnitude(spec, raw, key, unit_text)
+        try:
+            unit = units.parse_unit(unit_text)
+        except units.UnitError as error:
+            self.fail(key, f"{error}; {spec.name} is in units like {spec.unit!r}")
+        declared = units.parse_unit(spec.unit)
+        if not units.compatible(unit, declared):
+            self.fail(key, f"units {unit_text!r} do not fit {spec.name}, which is in units like "
+                      f"{spec.unit!r}")
+        if check_range:
+            self.in_range(spec, units.convert(magnitude, unit, declared), spec.unit, key, raw)
+        si = units.to_si(magnitude, unit)
+        return Value(si if spec.dims else float(si), magnitude, unit_text)
+
+    def magnitude(self, spec: Input, raw, key: str, unit_text):
+        """The number(s) and unit text of a quantity written in any accepted form."""
+        dimensionless = spec.unit == "1"
+        if spec.dims:
+            if isinstance(raw, dict) and set(raw) <= _VALUES_KEYS and "values" in raw:
+                raw, unit_text = raw["values"], raw.get("units", unit_text)
+            if not isinstance(raw, list) or not raw:
+                self.fail(key, f"{spec.name!r} is a pattern: a non-empty list, or "
+                          "{values = [...], units = \"...\"}")
+            if all(isinstance(x, str) for x in raw) and unit_text is None:
+                parts = [self.split(x, spec, f"{key}[{i}]") for i, x in enumerate(raw)]
+                unit_text = parts[0][1] or "1"
+                target = self.unit_of(unit_text, key)
+                return np.array([units.convert(m, self.unit_of(u or "1", key), target)
+                                 for m, u in parts]), unit_text
+            if not all(isinstance(x, (int, float)) and not isinstance(x, bool) for x in raw):
+                self.fail(key, f"{spec.name!r}: the pattern must hold numbers (with 'units') or "
+                          "quantity strings")
+            raw = np.array(raw, dtype=float)
+        elif isinstance(raw, str):
+            if unit_text is not None:
+                self.fail(key, f"{raw!r}: give plain numbers together with 'units'")
+            raw, unit_text = self.split(raw, spec, key)
+            unit_text = unit_text or None
+        elif isinstance(raw, bool) or not isinstance(raw, (int, float)):
+            self.fail(key, f"{raw!r}: expected a number with units, e.g. '1.5 {spec.unit}'")
+        if unit_text is None:
+            if not dimensionless:
+                self.fail(key, f"{raw!r} has no units; {spec.name} needs units like "
+                          f"{spec.unit!r} (write e.g. '{_plain(raw)} {spec.unit}')")
+            unit_text = "1"
+        return raw, unit_text
+
+    def split(self, text: str, spec: Input, key: str) -> tuple[float, str]:
+        try:
+            return units.split_quantity(text)
+        except units.UnitError as error:
+            self.fail(key, f"{error}; write e.g. '1.5 {spec.unit}'")
+
+    def unit_of(self, text: str, key: str):
+        try:
+            return units.parse_unit(text)
+        except units.UnitError as error:
+            self.fail(key, str(error))
+
+    def in_range(self, spec: Input, magnitude, unit: str, key: str, raw):
+        values = np.atleast_1d(np.asarray(magnitude, dtype=float))
+        low = spec.minimum
+        bad = ~np.isfinite(values)
+        if low is not None:
+            bad |= values <= low if spec.exclusive_minimum else values < low
+        if spec.maximum is not None:
+            bad |= values > spec.maximum
+        if bad.any():
+            shown = raw if not isinstance(raw, (list, dict)) else f"{values[bad][0]:g} {unit}"
+            self.fail(key, f"{shown!r} is out of range: {spec.name} must be {spec.range_text()}")
+
+    # -- conditions between parameters ----------------------------------------------------
+    def check_constraints(self, sweep: Sweep):
+        for constraint in sweep.model.constraints:
+            columns, axis_of = {}, {}
+            for name in constraint.inputs:
+                if name in sweep.fixed:
+                    if sweep.fixed[name] is None:
+                        break
+                    columns[name] = [sweep.fixed[name]]
+                else:
+                    axis = next(a for a in sweep.axes if name in a.values)
+                    columns[name], axis_of[name] = axis.values[name], axis.name
+            else:
+                self.check_constraint(constraint, columns, axis_of)
+
+    def check_constraint(self, constraint, columns: dict, axis_of: dict):
+        axis_names = list(dict.fromkeys(axis_of.values()))
+        arrays = {}
+        for name, column in columns.items():
+            shape = [1] * len(axis_names)
+            if name in axis_of:
+                shape[axis_names.index(axis_of[name])] = len(column)
+            arrays[name] = np.array([v.si for v in column]).reshape(shape)
+        valid = np.broadcast_to(constraint.check(**arrays), np.broadcast_shapes(
+            *(a.shape for a in arrays.values())))
+        if not valid.all():
+            where = np.unravel_index(np.argmin(valid), valid.shape) if valid.ndim else ()
+            shown = []
+            for name, column in columns.items():
+                index = where[axis_names.index(axis_of[name])] if name in axis_of else 0
+                value = column[index]
+                unit = "" if value.unit in ("", "1") else f" {value.unit}"
+                shown.append(f"{name} = {_plain(value.shown)}{unit}")
+            section = "axes" if axis_of else "fixed"
+            raise SpecError(f"{self.where}: {section}: {constraint.message} "
+                            f"({', '.join(shown)})")
+
+
+def _plain(number) -> str:
+    return f"{number:g}" if isinstance(number, (int, float)) else str(number)

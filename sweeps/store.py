@@ -1,0 +1,108 @@
+"""CF-style netCDF datasets: labelled results, units, status flags, provenance, atomic writes."""
+from __future__ import annotations
+
+import os
+import subprocess
+from datetime import datetime, timezone
+from importlib.metadata import PackageNotFoundError, version
+from pathlib import Path
+
+import numpy as np
+import xarray as xr
+
+from models.registry import STATUS_MEANINGS, get_model
+from sweeps.grid import Grid, coordinates
+from sweeps.spec import Sweep
+
+CONVENTIONS = "CF-1.10"
+
+
+def package_version() -> str:
+    try:
+        return version("bearing-sweep")
+    except PackageNotFoundError:
+        return "unknown"
+
+
+def git_commit() -> str | None:
+    """The project's commit (``-dirty`` when it has uncommitted changes), if it is a checkout."""
+    root = Path(__file__).resolve().parents[1]
+    try:
+        commit = subprocess.run(["git", "-C", str(root), "rev-parse", "HEAD"], capture_output=True,
+                                text=True, timeout=10, check=True).stdout.strip()
+        dirty = subprocess.run(["git", "-C", str(root), "status", "--porcelain",
+                                "--untracked-files=no"], capture_output=True, text=True,
+                               timeout=10, check=True).stdout.strip()
+    except (OSError, subprocess.SubprocessError):
+        return None
+    return commit + ("-dirty" if dirty else "")
+
+
+def build_dataset(sweep: Sweep, grid: Grid, outputs: dict, status: np.ndarray,
+                  scheduler: str, errors=()) -> xr.Dataset:
+    """The labelled dataset of a finished sweep (outputs flat over points, as computed)."""
+    model = get_model(grid.model_name)
+    data_vars = {}
+    for spec in model.outputs:
+        values = outputs[spec.name].reshape(grid.shape + outputs[spec.name].shape[1:])
+        values = np.where(status.reshape(grid.shape + (1,) * len(spec.dims)) == 0, values, np.nan)
+        data_vars[spec.name] = (grid.dims + spec.dims, values,
+                                {"long_name": spec.meaning, "units": spec.unit})
+    data_vars["status"] = (grid.dims, status.reshape(grid.shape), {
+        "long_name": "solver status of the grid point",
+        "units": "1",
+        "flag_values": np.arange(len(STATUS_MEANINGS), dtype=np.int8),
+        "flag_meanings": " ".join(STATUS_MEANINGS),
+    })
+    coords = coordinates(sweep)
+    for dim in {d for o in model.outputs for d in o.dims}:
+        coords[dim] = ((dim,), np.arange(1, grid.dim_sizes[dim] + 1),
+                       {"long_name": f"{dim} number", "units": "1"})
+    attrs = {
+        "Conventions": CONVENTIONS,
+        "title": sweep.title,
+        "source": f"bearing-sweep {package_version()}, model {model.name} version {model.version}",
+        "history": f"{datetime.now(timezone.utc).isoformat(timespec='seconds')} "
+                   f"bearing-sweep run {sweep.path}",
+        "references": model.reference,
+        "model": model.name,
+        "model_version": model.version,
+        "package_version": package_version(),
+        "definition": sweep.text,
+        "definition_file": str(sweep.path),
+        "definition_sha256": sweep.sha256,
+        "scheduler": scheduler,
+    }
+    if sweep.bearing:
+        attrs["bearing"] = sweep.bearing
+    commit = git_commit()
+    if commit:
+        attrs["git_commit"] = commit
+    if errors:
+        attrs["model_errors"] = "\n".join(sorted(set(errors)))
+    return xr.Dataset(data_vars, coords, attrs)
+
+
+def write_netcdf(dataset: xr.Dataset, path) -> Path:
+    """Write ``dataset`` to ``path`` atomically: a temporary file in the same folder, renamed.
+
+    An existing file at ``path`` stays intact until the new one is complete.
+    """
+    path = Path(path)
+    path.parent.mkdir(parents=True, exist_ok=True)
+    temporary = path.with_name(f".{path.name}.{os.getpid()}.tmp")
+    encoding = {name: {"zlib": True, "complevel": 1} for name, var in dataset.data_vars.items()
+                if var.dtype.kind == "f"}
+    try:
+        dataset.to_netcdf(temporary, engine="netcdf4", encoding=encoding)
+        os.replace(temporary, path)
+    finally:
+        if temporary.exists():
+            temporary.unlink()
+    return path
+
+
+def open_result(path) -> xr.Dataset:
+    """Open a sweep's netCDF file fully into memory (the file is closed afterwards)."""
+    with xr.open_dataset(path, engine="netcdf4") as dataset:
+        return dataset.load()

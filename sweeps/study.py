@@ -1,0 +1,152 @@
+"""Studies: a paper's sweep definitions, its figure script and the numbers it states.
+
+A study is a folder ``studies/<name>/`` holding ``*.toml`` sweep definitions, ``figures.py``
+(``FIGURES``: file name -> caption; ``draw(results, figures)``; ``ours(results)``: our value
+of each stated number, from the netCDF files only), ``claims.toml`` (the paper's numbers) and
+``about.md`` (what the study shows and assumes). The figure script is loaded from its file:
+studies are data for the engine, not part of the package.
+"""
+from __future__ import annotations
+
+import importlib.util
+import tomllib
+from dataclasses import dataclass
+from pathlib import Path
+
+import xarray as xr
+
+from models.registry import get_model
+from sweeps import spec as spec_module
+from sweeps.run import Executor, run_sweep
+from sweeps.spec import SpecError
+
+
+@dataclass(frozen=True)
+class Study:
+    name: str
+    folder: Path
+
+    @property
+    def definitions(self) -> list[Path]:
+        return sorted(self.folder.glob("*.toml"))
+
+    def result(self, results: Path, definition: Path) -> Path:
+        return results / self.name / f"{definition.stem}.nc"
+
+    def figures_module(self):
+        path = self.folder / "figures.py"
+        loader = importlib.util.spec_from_file_location(f"_study_{self.name}_figures", path)
+        module = importlib.util.module_from_spec(loader)
+        loader.loader.exec_module(module)
+        return module
+
+    def claims(self) -> list[dict]:
+        path = self.folder / "claims.toml"
+        if not path.exists():
+            return []
+        return tomllib.loads(path.read_text()).get("claim", [])
+
+    def about(self) -> str:
+        path = self.folder / "about.md"
+        return path.read_text() if path.exists() else ""
+
+
+def default_studies_folder() -> Path:
+    """``./studies`` when run from a checkout's root, else the one beside the package."""
+    here = Path("studies")
+    return here if here.is_dir() else Path(__file__).resolve().parents[1] / "studies"
+
+
+def find_studies(folder: Path) -> dict[str, Study]:
+    return {p.parent.name: Study(p.parent.name, p.parent)
+            for p in sorted(Path(folder).glob("*/figures.py"))}
+
+
+def select(folder: Path, name: str) -> list[Study]:
+    studies = find_studies(folder)
+    if name == "all":
+        return list(studies.values())
+    if name not in studies:
+        raise SpecError(f"study {name!r}: no such study in {folder} (studies: "
+                        + ", ".join(sorted(studies) + ["all"]) + ")")
+    return [studies[name]]
+
+
+def is_stale(definition: Path, result: Path, sweep) -> bool:
+    """Whether ``result`` is missing or was made from another definition or model version."""
+    if not result.exists():
+        return True
+    try:
+        with xr.open_dataset(result, engine="netcdf4") as dataset:
+            attrs = dataset.attrs
+    except (OSError, ValueError):
+        return True
+    return (attrs.get("definition_sha256") != sweep.sha256
+            or attrs.get("model_version") != get_model(sweep.model.name).version)
+
+
+def run_study(study: Study, results: Path, figures: Path, executor: Executor,
+              force: bool = False, log=print) -> None:
+    """Run the study's missing or stale sweeps, then draw its figures."""
+    sweeps = [(d, spec_module.load(d)) for d in study.definitions]  # all valid before any run
+    for definition, sweep in sweeps:
+        result = study.result(results, definition)
+        if not force and not is_stale(definition, result, sweep):
+            log(f"{study.name}/{definition.name}: up to date ({result})")
+            continue
+        log(run_sweep(sweep, result, executor).text())
+    target = figures / study.name
+    target.mkdir(parents=True, exist_ok=True)
+    study.figures_module().draw(results / study.name, target)
+    log(f"{study.name}: figures in {target}")
+
+
+def write_report(studies: list[Study], results: Path, figures: Path) -> list[Path]:
+    """Write ``figures/<study>/README.md`` for each study and the index ``figures/README.md``."""
+    written, index = [], ["# Reproduced figures and stated numbers", ""]
+    for study in studies:
+        module = study.figures_module()
+        folder = figures / study.name
+        missing = [d.name for d in study.definitions if not study.result(results, d).exists()]
+        if missing:
+            index.append(f"- {study.name}: not run yet (`bearing-sweep study {study.name}`)")
+            continue
+        ours = module.ours(results / study.name)
+        rows, agreeing = _claim_rows(study.claims(), ours)
+        page = [study.about().rstrip(), "", "## The paper's numbers beside ours", "",
+                "| stated number | source | paper | ours | agreement | assumptions |",
+                "|---|---|---|---|---|---|", *rows, "", "## Figures", ""]
+        for file, caption in module.FIGURES.items():
+            if (folder / file).exists():
+                page += [f"![{caption}]({file})", "", f"*{caption}*", ""]
+        folder.mkdir(parents=True, exist_ok=True)
+        (folder / "README.md").write_text("\n".join(page))
+        written.append(folder / "README.md")
+        index.append(f"- [{study.name}]({study.name}/README.md): {agreeing} of {len(rows)} "
+                     "stated numbers agree within their tolerance")
+    figures.mkdir(parents=True, exist_ok=True)
+    (figures / "README.md").write_text("\n".join(index) + "\n")
+    written.append(figures / "README.md")
+    return written
+
+
+def _claim_rows(claims: list[dict], ours: dict) -> tuple[list[str], int]:
+    rows, agreeing = [], 0
+    for claim in claims:
+        value = ours.get(claim["id"])
+        unit = claim.get("unit", "")
+        paper = claim.get("paper")
+        if value is None or paper is None:
+            shown, verdict = "not computed" if value is None else f"{value:.3g} {unit}", \
+                "not comparable"
+        else:
+            tolerance = claim["tolerance"]
+            agrees = abs(value - paper) <= tolerance
+            agreeing += agrees
+            shown = f"{value:.3g} {unit}"
+            verdict = (f"agrees (within {tolerance:g} {unit})" if agrees
+                       else f"differs by {value - paper:+.3g} {unit}")
+        paper_text = "—" if paper is None else f"{paper:g} {unit}"
+        rows.append(f"| {claim['statement']} | {claim.get('source', '')} | {paper_text} | "
+                    f"{shown} | {verdict} | {claim.get('assumptions', '')} |")
+    return rows, agreeing

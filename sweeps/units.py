@@ -1,0 +1,61 @@
+"""Units at the boundary: parse what users write, convert to SI for the models and back."""
+from __future__ import annotations
+
+import re
+
+import numpy as np
+import pint
+
+UREG = pint.UnitRegistry()
+
+_QUANTITY = re.compile(r"^\s*([-+]?(?:\d+\.?\d*|\.\d+)(?:[eE][-+]?\d+)?)\s*(.*?)\s*$")
+
+
+class UnitError(ValueError):
+    """A unit that cannot be read or does not fit; the message is for the user."""
+
+
+def parse_unit(text: str) -> pint.Unit:
+    """The pint unit for ``text`` ("mm", "N/mm^(10/9)", "rpm", "1", ...)."""
+    try:
+        return UREG.parse_units(text)
+    except (pint.errors.UndefinedUnitError, pint.errors.DefinitionSyntaxError,
+            AttributeError, TypeError, ValueError, AssertionError) as error:
+        raise UnitError(f"unknown unit {text!r}") from error
+
+
+def split_quantity(text: str) -> tuple[float, str]:
+    """Split ``"0.04 mm"`` into ``(0.04, "mm")``; the unit is ``""`` when none is written."""
+    match = _QUANTITY.match(text)
+    if not match:
+        raise UnitError(f"{text!r} is not a number followed by a unit")
+    return float(match.group(1)), match.group(2)
+
+
+def _angle_power(unit: pint.Unit) -> float:
+    # pint treats angles as dimensionless, so 'Hz' would pass for 'rpm' by dimension alone;
+    # comparing the power of radian in the root units keeps cycles and radians apart.
+    return dict(UREG.get_root_units(unit)[1]._units).get("radian", 0.0)
+
+
+def compatible(unit: pint.Unit, declared: pint.Unit) -> bool:
+    """Whether a value in ``unit`` can be given for a parameter declared in ``declared``."""
+    return (unit.dimensionality == declared.dimensionality
+            and np.isclose(_angle_power(unit), _angle_power(declared)))
+
+
+def to_si(magnitude, unit: pint.Unit):
+    """``magnitude`` in ``unit``, converted to SI base units (rad/s for rpm, m for mm, ...)."""
+    return UREG.Quantity(np.asarray(magnitude, dtype=float), unit).to_base_units().magnitude
+
+
+def convert(magnitude, unit: pint.Unit, target: pint.Unit):
+    """``magnitude`` in ``unit`` expressed in ``target``."""
+    return UREG.Quantity(np.asarray(magnitude, dtype=float), unit).to(target).magnitude
+
+
+def from_si(values, unit_text: str):
+    """SI values expressed in ``unit_text`` (the customary unit of a model output)."""
+    unit = parse_unit(unit_text)
+    base = UREG.get_base_units(unit)[1]
+    return UREG.Quantity(np.asarray(values, dtype=float), base).to(unit).magnitude

@@ -1,0 +1,143 @@
+"""crb_radial: the load distribution and radial stiffness of paper 000."""
+import numpy as np
+import pytest
+from hypothesis import given, settings, strategies as st
+
+import models.cylindrical as cylindrical
+from models.contact import LINE_CONTACT_EXPONENT, palmgren_constant
+from models.cylindrical import centrifugal_force, crb_radial
+from models.registry import CONVERGED, NOT_CONVERGED
+
+from conftest import BEARING_D, MM, RPM
+
+N = LINE_CONTACT_EXPONENT
+
+
+def test_centrifugal_force_is_eq3():
+    # Eq. 3 with n_m in r/min from eq. 4: Fc = pi^3 rho D^2 l dm n_m^2 / 7200.
+    rho, d, l, dm, ni = 7850.0, 10e-3, 9.6e-3, 65e-3, 5000.0
+    nm = ni / 2 * (1 - d / dm)
+    expected = np.pi**3 * rho * d**2 * l * dm * nm**2 / 7200
+    assert centrifugal_force(d, l, dm, ni * RPM, rho) == pytest.approx(expected, rel=1e-12)
+
+
+def test_reduces_to_the_classical_model_without_speed_crown_or_slices():
+    # Paper 000 section 1.3: with Fc = 0, k_j = 1, c = 0 eq. 16 is the classical
+    # Kr = sum K n delta_j^(n-1) cos^2 phi_j, with the two contacts of a roller in series:
+    # K_roller = K / 2^n on the total approach delta_j = delta_r cos phi_j - Pd/2.
+    load = np.array([1000.0, 4000.0, 12000.0])
+    clearance = 0.02 * MM
+    result = crb_radial(load, clearance=clearance, crown=0.0, slices=1, **BEARING_D)
+    k_roller = palmgren_constant(BEARING_D["effective_length"]) / 2**N
+    phi = 2 * np.pi * np.arange(14) / 14
+    approach = np.maximum(result["radial_displacement"][:, None] * np.cos(phi) - clearance / 2, 0)
+    load_sum = (k_roller * approach**N * np.cos(phi)).sum(axis=1)
+    stiffness_sum = (k_roller * N * approach ** (N - 1) * np.cos(phi) ** 2).sum(axis=1)
+    np.testing.assert_allclose(load_sum, load, rtol=1e-9)
+    np.testing.assert_allclose(result["radial_stiffness"], stiffness_sum, rtol=1e-9)
+    np.testing.assert_allclose(result["roller_load"], k_roller * approach**N, rtol=1e-9, atol=1e-9)
+
+
+def test_roller_loads_balance_the_radial_load():
+    result = crb_radial(5000.0, clearance=0.01 * MM, crown=0.004 * MM, speed=8000 * RPM, **BEARING_D)
+    phi = 2 * np.pi * np.arange(14) / 14
+    assert (result["roller_load"] * np.cos(phi)).sum() == pytest.approx(5000.0, rel=1e-9)
+    assert result["status"] == CONVERGED
+
+
+def _solve_fd(load, relative=1e-4, **kw):
+    """dFr/d(delta_r) from the solved displacement at two nearby loads."""
+    plus = crb_radial(load * (1 + relative), **kw)["radial_displacement"]
+    minus = crb_radial(load * (1 - relative), **kw)["radial_displacement"]
+    return 2 * relative * load / (plus - minus)
+
+
+@settings(max_examples=40, deadline=None)
+@given(load=st.floats(200.0, 20000.0), clearance=st.floats(-0.005, 0.05),
+       crown=st.floats(0.0, 0.008), speed=st.floats(0.0, 15000.0),
+       slices=st.integers(1, 90), outer=st.sampled_from(["crowned", "paper"]),
+       cage=st.floats(0.0, 30.0))
+def test_analytic_stiffness_equals_finite_difference(load, clearance, crown, speed, slices,
+                                                     outer, cage):
+    kw = dict(clearance=clearance * MM, crown=crown * MM, speed=speed * RPM, slices=slices,
+              outer_contact=outer, cage_position=np.radians(cage), **BEARING_D)
+    result = crb_radial(load, **kw)
+    assert result["status"] == CONVERGED
+    assert result["radial_stiffness"] == pytest.approx(_solve_fd(load, **kw), rel=5e-3)
+
+
+def test_perturbation_stiffness_tends_to_the_analytic_one():
+    kw = dict(crown=0.004 * MM, speed=5000 * RPM, **BEARING_D)
+    fine = crb_radial(4000.0, perturbation=1e-11, **kw)
+    assert fine["perturbation_stiffness"] == pytest.approx(fine["radial_stiffness"], rel=1e-4)
+
+
+def test_stiffness_rises_with_load_and_speed_and_falls_with_clearance_and_crown():
+    kw = dict(crown=0.004 * MM, speed=5000 * RPM, clearance=0.01 * MM, **BEARING_D)
+    by_load = crb_radial(np.linspace(500, 12000, 40), **{**kw})["radial_stiffness"]
+    assert np.all(np.diff(by_load) > 0)
+    by_speed = crb_radial(4000.0, **{**kw, "speed": np.linspace(0, 15000, 16) * RPM})
+    assert np.all(np.diff(by_speed["radial_stiffness"]) > 0)
+    by_clearance = crb_radial(4000.0, **{**kw, "clearance": np.linspace(0, 0.05, 26) * MM})
+    assert np.all(np.diff(by_clearance["radial_stiffness"]) < 0)
+    by_crown = crb_radial(4000.0, **{**kw, "crown": np.linspace(0, 0.008, 17) * MM})
+    assert np.all(np.diff(by_crown["radial_stiffness"]) < 0)
+
+
+def test_loaded_rollers_fall_with_clearance():
+    result = crb_radial(4000.0, clearance=np.linspace(-0.01, 0.08, 91) * MM, crown=0.004 * MM,
+                        speed=5000 * RPM, **BEARING_D)
+    loaded = result["loaded_rollers"]
+    assert np.all(np.diff(loaded) <= 0) and loaded[0] > loaded[-1]
+
+
+def test_zero_load_leaves_the_ring_resting_on_the_top_roller():
+    # With clearance and speed, F -> 0 puts delta_r at Pd/2 plus the outer approach that the
+    # centrifugal force alone causes; nothing is stiff there.
+    result = crb_radial(0.0, clearance=0.02 * MM, speed=8000 * RPM, **BEARING_D)
+    fc = result["centrifugal_force"]
+    free = (fc / palmgren_constant(BEARING_D["effective_length"])) ** (1 / N)
+    assert result["status"] == CONVERGED
+    assert result["radial_displacement"] == pytest.approx(0.01 * MM + free, rel=1e-6)
+    assert result["radial_stiffness"] == 0.0 and result["loaded_rollers"] == 0
+
+
+def test_unconverged_points_are_flagged_and_nan(monkeypatch):
+    original = cylindrical.solve_increasing
+
+    def starved(residual, lower, upper, start, xtol, max_iter=200):
+        return original(residual, lower, upper, start, xtol, max_iter=2)
+
+    monkeypatch.setattr(cylindrical, "solve_increasing", starved)
+    result = crb_radial(np.array([3000.0, 6000.0]), clearance=0.02 * MM, **BEARING_D)
+    assert np.all(result["status"] == NOT_CONVERGED)
+    assert np.all(np.isnan(result["radial_stiffness"])) and np.all(np.isnan(result["roller_load"]))
+
+
+def test_results_do_not_depend_on_the_other_points_in_the_batch():
+    loads = np.linspace(500, 15000, 37)
+    kw = dict(clearance=0.02 * MM, crown=0.004 * MM, speed=6000 * RPM, **BEARING_D)
+    together = crb_radial(loads, **kw)
+    for i in (0, 17, 36):
+        alone = crb_radial(loads[i:i + 1], **kw)
+        for name in ("radial_displacement", "radial_stiffness", "roller_load"):
+            assert np.array_equal(alone[name][0], together[name][i])
+
+
+def test_paper_section_2_3_perturbation_agrees_within_1_3_percent():
+    # Paper 000 section 2.3, Fig. 8: bearing C (Table 3), Fr = 4000 N, straight rollers; the
+    # numerical method with a perturbation of 0.001 mm agrees with eq. 16 within 1.3 %.
+    speeds = np.linspace(0, 10000, 11) * RPM
+    result = crb_radial(4000.0, roller_count=22, pitch_diameter=102 * MM, roller_diameter=10 * MM,
+                        effective_length=9 * MM, speed=speeds, crown=0.0, perturbation=0.001 * MM)
+    error = np.abs(result["perturbation_stiffness"] / result["radial_stiffness"] - 1)
+    assert error.max() <= 0.013
+
+
+def test_uniform_law_converges_by_60_slices_for_rollers_up_to_100_mm():
+    # Paper 000 section 3: k = 60 suffices for rollers shorter than 100 mm.
+    for length in (9.6, 50.0, 100.0):
+        kw = dict(BEARING_D, effective_length=length * MM, crown=0.004 * MM, speed=5000 * RPM)
+        k60 = crb_radial(4000.0, slices=60, **kw)["radial_stiffness"]
+        k2000 = crb_radial(4000.0, slices=2000, **kw)["radial_stiffness"]
+        assert k60 == pytest.approx(k2000, rel=0.01)
