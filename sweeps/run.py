@@ -48,7 +48,11 @@ def evaluate_chunk(grid: Grid, start: int, stop: int) -> dict:
     for members in groups:
         arguments = dict(grid.fixed)
         for name, values in varying.items():
-            arguments[name] = values[members[0]].item() if name in structural else values[members]
+            if name in structural:
+                value = values[members[0]]
+                arguments[name] = value.item() if isinstance(value, np.generic) else value
+            else:
+                arguments[name] = values[members]
         try:
             result = model.function(**arguments)
         except Exception as error:  # one bad group must not cost the whole sweep
@@ -99,9 +103,10 @@ class Summary:
 class Executor:
     """Where chunks are computed. A cluster is started only when a sweep is worth it.
 
-    ``workers=0`` always computes in-process; ``scheduler`` connects to a running
-    dask.distributed scheduler; otherwise a LocalCluster of ``workers`` (default 2)
-    single-threaded processes is started on first need and kept for later sweeps.
+    ``scheduler`` connects to a running dask.distributed scheduler; ``workers=0`` computes
+    in-process; ``workers=N`` uses a LocalCluster of N single-threaded processes; by default
+    a sweep worth it gets a LocalCluster of two, and a small one runs in-process. A cluster
+    is started on first need and kept for later sweeps.
     """
 
     def __init__(self, workers: int | None = None, scheduler: str | None = None):
@@ -125,8 +130,8 @@ class Executor:
     def parallel(self, grid: Grid) -> bool:
         if self.scheduler:
             return True
-        if self.workers == 0:
-            return False
+        if self.workers is not None:  # asked for: 0 in-process, N a local cluster of N
+            return self.workers > 0
         cost = grid.size * get_model(grid.model_name).seconds_per_point
         return cost > IN_PROCESS_SECONDS
 

@@ -140,16 +140,17 @@ class _Parser:
         for key in on_axes:
             fixed.pop(key, None)
             origin.pop(key, None)
+        missing = [s for s in model.inputs
+                   if s.required and s.name not in fixed and s.name not in on_axes]
+        if missing:
+            described = ", ".join(f"{s.name!r}" + ("" if s.unit in ("", "1") else f" [{s.unit}]")
+                                  for s in missing)
+            self.fail("fixed", f"missing parameter{'s' * (len(missing) > 1)} {described}; give "
+                      "them in [fixed] or [axes], or name a preset in [sweep] bearing")
         for spec in model.inputs:
-            if spec.name in fixed or spec.name in on_axes:
-                continue
-            if spec.required:
-                unit = "" if spec.unit in ("", "1") else f" [{spec.unit}]"
-                self.fail("fixed", f"missing parameter {spec.name!r}{unit} ({spec.meaning}); "
-                          "give it in [fixed] or [axes]")
-            default = spec.default
-            fixed[spec.name] = None if default is None else self.default(spec)
-            origin[spec.name] = "default"
+            if spec.name not in fixed and spec.name not in on_axes:
+                fixed[spec.name] = None if spec.default is None else self.default(spec)
+                origin[spec.name] = "default"
         sweep = Sweep(self.where, text, model, str(head.get("title") or f"{model.name}: "
                       f"{Path(self.where).stem}"), bearing, fixed, axes, origin)
         self.check_constraints(sweep)

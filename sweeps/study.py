@@ -28,7 +28,7 @@ class Study:
 
     @property
     def definitions(self) -> list[Path]:
-        return sorted(self.folder.glob("*.toml"))
+        return sorted(p for p in self.folder.glob("*.toml") if p.name != "claims.toml")
 
     def result(self, results: Path, definition: Path) -> Path:
         return results / self.name / f"{definition.stem}.nc"

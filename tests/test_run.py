@@ -1,0 +1,121 @@
+"""The engine: chunking and worker-count invariance, failures flagged, netCDF round trip."""
+import numpy as np
+import pytest
+import xarray as xr
+
+import models.registry as registry
+from models.registry import MODEL_ERROR
+from sweeps import spec, store
+from sweeps.run import Executor, Summary, run_sweep
+
+TEXT = """
+[sweep]
+model = "crb_radial"
+bearing = "paper000-D"
+title = "invariance"
+[fixed]
+crown = "4 um"
+speed = "6000 rpm"
+[axes]
+radial_load = { start = "0.5 kN", stop = "12 kN", num = 9 }
+clearance = ["0 mm", "0.02 mm", "0.05 mm"]
+slices = [1, 30]
+[axes.arrangement]
+labels = ["uniform", "paper"]
+slice_law = ["uniform", "paper"]
+"""
+
+
+def compute(tmp_path, name, executor=None, chunk_size=None):
+    path = tmp_path / f"{name}.nc"
+    summary = run_sweep(spec.parse(TEXT, "inv.toml"), path, executor or Executor(workers=0),
+                        chunk_size, progress=False)
+    return summary, store.open_result(path)
+
+
+def assert_same_numbers(a: xr.Dataset, b: xr.Dataset):
+    for name in a.data_vars:
+        np.testing.assert_array_equal(a[name].values, b[name].values, err_msg=name)
+
+
+def test_results_do_not_depend_on_chunking(tmp_path):
+    _, whole = compute(tmp_path, "whole", chunk_size=10_000)
+    for size in (1, 7, 50):
+        _, chunked = compute(tmp_path, f"chunk{size}", chunk_size=size)
+        assert_same_numbers(whole, chunked)
+    assert (whole.status == 0).all()
+
+
+@pytest.mark.slow
+def test_results_do_not_depend_on_the_number_of_workers(tmp_path):
+    _, alone = compute(tmp_path, "alone")
+    for workers in (1, 2):
+        with Executor(workers=workers) as executor:
+            summary, clustered = compute(tmp_path, f"w{workers}", executor, chunk_size=13)
+        assert f"{workers} single-threaded worker" in summary.scheduler
+        assert_same_numbers(alone, clustered)
+
+
+def test_netcdf_round_trip_keeps_values_and_attributes(tmp_path):
+    summary, data = compute(tmp_path, "trip")
+    assert summary.points == 9 * 3 * 2 * 2 and summary.status_counts["converged"] == 108
+    for name, variable in {**data.data_vars, **data.coords}.items():
+        assert "units" in variable.attrs and "long_name" in variable.attrs, name
+    assert data.radial_stiffness.attrs["units"] == "N/mm"
+    assert data.roller_load.dims == ("radial_load", "clearance", "slices", "arrangement", "roller")
+    assert data.status.attrs["flag_meanings"] == "converged not_converged infeasible model_error"
+    np.testing.assert_array_equal(data.status.attrs["flag_values"], [0, 1, 2, 3])
+    assert data.attrs["Conventions"].startswith("CF-")
+    assert data.attrs["definition"] == TEXT
+    assert data.attrs["definition_sha256"] == spec.parse(TEXT).sha256
+    assert data.attrs["model"] == "crb_radial" and data.attrs["title"] == "invariance"
+    assert data.attrs["scheduler"] == "in-process"
+    assert data.radial_load.attrs["units"] == "kN" and data.clearance.values.tolist() == [0, 0.02, 0.05]
+    assert data.speed.attrs["units"] == "rpm" and float(data.speed) == 6000
+    again = tmp_path / "again.nc"
+    store.write_netcdf(data, again)
+    xr.testing.assert_identical(store.open_result(again), data)
+
+
+def test_atomic_write_leaves_the_previous_file_intact_on_failure(tmp_path, monkeypatch):
+    path = tmp_path / "result.nc"
+    _, data = compute(tmp_path, "result")
+    before = path.read_bytes()
+
+    def broken(self, target, **kwargs):
+        open(target, "wb").write(b"half")
+        raise OSError("disk full")
+
+    monkeypatch.setattr(xr.Dataset, "to_netcdf", broken)
+    with pytest.raises(OSError):
+        store.write_netcdf(data, path)
+    assert path.read_bytes() == before
+    assert [p.name for p in tmp_path.iterdir()] == ["result.nc"]
+
+
+def test_a_model_exception_marks_its_points_and_the_rest_completes(tmp_path, monkeypatch):
+    model = registry.get_model("crb_radial")
+    original = model.function
+
+    def fragile(**kwargs):
+        if kwargs["slice_law"] == "paper":
+            raise RuntimeError("simulated failure")
+        return original(**kwargs)
+
+    monkeypatch.setitem(registry._MODELS, "crb_radial",
+                        registry.Model(**{**model.__dict__, "function": fragile}))
+    summary, data = compute(tmp_path, "fragile")
+    failed = data.status.sel(arrangement="paper")
+    assert (failed == MODEL_ERROR).all() and (data.status.sel(arrangement="uniform") == 0).all()
+    assert data.radial_stiffness.sel(arrangement="paper").isnull().all()
+    assert summary.status_counts["model_error"] == 54
+    assert "RuntimeError: simulated failure" in summary.text()
+    assert "simulated failure" in data.attrs["model_errors"]
+
+
+def test_summary_reads_well():
+    summary = Summary("crb_radial", 10, {"converged": 8, "not_converged": 2}, 1.234, "out.nc",
+                      "in-process")
+    assert summary.text() == ("crb_radial: 10 points (8 converged, 2 not_converged) in 1.2 s "
+                              "on in-process -> out.nc")
+    assert summary.failed == 2

@@ -1,0 +1,157 @@
+"""Sweep definitions: what is accepted, and one clear line for each kind of mistake."""
+import numpy as np
+import pytest
+
+from sweeps import spec
+from sweeps.cli import main
+from sweeps.spec import SpecError
+
+GOOD = """
+[sweep]
+model = "crb_radial"
+bearing = "paper000-D"
+[fixed]
+crown = "0.004 mm"
+slices = 60
+crown_profile = "logarithmic"
+[axes]
+radial_load = ["2 kN", "4 kN", "8 kN"]
+"""
+
+
+def parse(text):
+    return spec.parse(text, "def.toml")
+
+
+def test_a_good_definition_resolves_presets_defaults_and_units():
+    sweep = parse(GOOD)
+    assert sweep.model.name == "crb_radial"
+    assert sweep.fixed["roller_count"].si == 14 and sweep.origin["roller_count"] == "preset paper000-D"
+    assert sweep.fixed["crown"].si == pytest.approx(4e-6)
+    assert sweep.fixed["speed"].si == 0.0 and sweep.origin["speed"] == "default"
+    assert sweep.fixed["contact_constant"] is None
+    axis = sweep.axes[0]
+    assert [v.si for v in axis.values["radial_load"]] == [2000.0, 4000.0, 8000.0]
+    assert [v.shown for v in axis.values["radial_load"]] == [2.0, 4.0, 8.0]
+    assert axis.values["radial_load"][0].unit == "kN"
+
+
+def test_fixed_values_override_the_preset():
+    sweep = parse(GOOD + '[axes.x]\nlabels = ["a"]\neffective_length = ["25 mm"]\n'
+                  .replace("[axes.x]", "[axes.case]"))
+    assert "effective_length" not in sweep.fixed
+    sweep = parse(GOOD.replace('crown = "0.004 mm"', 'crown = "0.004 mm"\nroller_count = 20'))
+    assert sweep.fixed["roller_count"].si == 20 and sweep.origin["roller_count"] == "fixed"
+
+
+def test_axis_forms():
+    sweep = parse("""
+        [sweep]
+        model = "crb_radial"
+        bearing = "paper000-D"
+        [fixed]
+        radial_load = "4 kN"
+        [axes]
+        clearance = { start = "0 mm", stop = "0.04 mm", num = 5 }
+        crown = { start = "0 um", stop = "4 um", step = "1 um" }
+        speed = { values = [0, 5000], units = "rpm" }
+        slices = [10, 60]
+        slice_law = ["uniform", "paper"]
+        [axes.case]
+        labels = ["l25", "l28"]
+        effective_length = ["25 mm", "28000 um"]
+        """.replace("        ", ""))
+    shown = {a.name: [v.shown for v in next(iter(a.values.values()))] for a in sweep.axes}
+    np.testing.assert_allclose(shown["clearance"], [0, 0.01, 0.02, 0.03, 0.04])
+    np.testing.assert_allclose(shown["crown"], [0, 1, 2, 3, 4])
+    assert shown["speed"] == [0, 5000] and shown["slices"] == [10, 60]
+    case = sweep.axes[-1]
+    assert case.labels == ["l25", "l28"]
+    assert [v.shown for v in case.values["effective_length"]] == [25, 28]  # in the first's unit
+    assert case.values["effective_length"][1].si == pytest.approx(0.028)
+    assert sweep.axes[2].values["speed"][1].si == pytest.approx(5000 * 2 * np.pi / 60)
+
+
+def test_an_empty_axes_table_is_one_point():
+    sweep = parse(GOOD.replace('radial_load = ["2 kN", "4 kN", "8 kN"]', "")
+                  .replace("[fixed]", '[fixed]\nradial_load = "3 kN"'))
+    assert sweep.axes == []
+
+
+BAD = [
+    # (what is wrong, replace this, with this, words the message must contain)
+    ("TOML syntax", 'slices = 60', 'slices = = 60', ["not valid TOML"]),
+    ("unknown model", '"crb_radial"', '"crb_radal"', ["sweep.model", "unknown model", "crb_radial"]),
+    ("unknown parameter", 'crown = "0.004 mm"', 'crwn = "0.004 mm"',
+     ["fixed.crwn", "unknown parameter", "did you mean 'crown'"]),
+    ("unknown axis parameter", "radial_load = [", "radial_lod = [",
+     ["axes.radial_lod", "did you mean 'radial_load'"]),
+    ("given twice", "slices = 60", 'slices = 60\nradial_load = "3 kN"',
+     ["given twice", "radial_load"]),
+    ("bare number", 'crown = "0.004 mm"', "crown = 0.004", ["fixed.crown", "no units", "mm"]),
+    ("missing units in a string", 'crown = "0.004 mm"', 'crown = "0.004"', ["no units"]),
+    ("incompatible units", 'crown = "0.004 mm"', 'crown = "0.004 kN"',
+     ["fixed.crown", "do not fit"]),
+    ("angle units for a speed", "slices = 60", 'slices = 60\nspeed = "100 Hz"',
+     ["fixed.speed", "do not fit"]),
+    ("unknown unit", 'crown = "0.004 mm"', 'crown = "0.004 furlongz"', ["unknown unit"]),
+    ("negative length", 'crown = "0.004 mm"', 'crown = "-0.004 mm"', ["out of range", ">= 0"]),
+    ("crown larger than the roller", 'crown = "0.004 mm"', 'crown = "6 mm"',
+     ["crown must be smaller than the roller radius", "roller_diameter = 10 mm"]),
+    ("too few slices", "slices = 60", "slices = 0", ["fixed.slices", ">= 1"]),
+    ("non-integer count", "slices = 60", "slices = 6.5", ["fixed.slices", "integer"]),
+    ("unknown choice", '"logarithmic"', '"logaritmic"', ["crown_profile", "did you mean 'logarithmic'"]),
+    ("empty axis", '["2 kN", "4 kN", "8 kN"]', "[]", ["axes.radial_load", "empty axis"]),
+    ("empty range", '["2 kN", "4 kN", "8 kN"]', '{ start = "2 kN", stop = "1 kN", step = "1 kN" }',
+     ["empty axis"]),
+    ("range with num and step", '["2 kN", "4 kN", "8 kN"]',
+     '{ start = "2 kN", stop = "4 kN", step = "1 kN", num = 3 }', ["exactly one of"]),
+    ("unknown preset", '"paper000-D"', '"paper000-E"', ["sweep.bearing", "unknown preset"]),
+    ("unknown section", "[fixed]", "[fixd]", ["unknown section", "did you mean 'fixed'"]),
+    ("rollers do not fit", 'crown = "0.004 mm"', 'crown = "0.004 mm"\nroller_count = 30',
+     ["do not fit on the pitch circle", "roller_count = 30"]),
+    ("missing required", 'bearing = "paper000-D"', "", ["missing parameters", "'roller_count', 'pitch_diameter' [mm]"]),
+    ("scalar axis", '["2 kN", "4 kN", "8 kN"]', '"2 kN"', ["an axis is a list"]),
+]
+
+
+@pytest.mark.parametrize("what, old, new, words", BAD, ids=[b[0] for b in BAD])
+def test_each_mistake_is_one_clear_line(what, old, new, words):
+    assert old in GOOD
+    with pytest.raises(SpecError) as caught:
+        parse(GOOD.replace(old, new, 1))
+    message = str(caught.value)
+    assert "\n" not in message
+    assert message.startswith("def.toml: ")
+    for word in words:
+        assert word in message, message
+
+
+def test_ragged_zipped_axis():
+    text = GOOD + '[axes.case]\nlabels = ["a", "b"]\neffective_length = ["25 mm", "26 mm", "27 mm"]\n'
+    with pytest.raises(SpecError, match="ragged zipped axis: effective_length has 3, labels has 2"):
+        parse(text)
+
+
+def test_out_of_range_value_on_an_axis_names_the_position():
+    with pytest.raises(SpecError, match=r"axes.radial_load\[1\]: '-4 kN' is out of range"):
+        parse(GOOD.replace('"4 kN"', '"-4 kN"'))
+
+
+def test_constraint_across_axes_names_the_failing_combination():
+    text = GOOD + 'crown = ["1 um", "6 mm"]\n'
+    text = text.replace('crown = "0.004 mm"\n', "")
+    with pytest.raises(SpecError, match="crown = 6000 um, roller_diameter = 10 mm"):
+        parse(text)
+
+
+@pytest.mark.parametrize("what, old, new, words", BAD[:6], ids=[b[0] for b in BAD[:6]])
+def test_the_command_line_exits_2_and_writes_nothing(what, old, new, words, tmp_path, capsys):
+    path = tmp_path / "def.toml"
+    path.write_text(GOOD.replace(old, new, 1))
+    output = tmp_path / "out" / "result.nc"
+    assert main(["run", str(path), "-o", str(output), "--workers", "0"]) == 2
+    error = capsys.readouterr().err.strip()
+    assert error.startswith("error: ") and len(error.splitlines()) == 1
+    assert "Traceback" not in error
+    assert not output.exists() and not output.parent.exists()
