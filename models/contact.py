@@ -68,14 +68,16 @@ def sliced_line_contact(approach, gaps, counts, contact_constant, slice_law="uni
     .. [1] Paper 000, "Radial stiffness analysis of cylindrical roller bearing", eq. 5, 7, 9, 15.
     """
     n = LINE_CONTACT_EXPONENT
-    penetration = np.maximum(approach[..., None] - gaps, 0.0)
+    penetration = approach[..., None] - gaps
+    np.maximum(penetration, 0.0, out=penetration)
     slope_term = penetration ** (n - 1.0)  # one power gives both load and stiffness
-    load_sum = (penetration * slope_term * counts).sum(axis=-1)
-    slope_sum = (slope_term * counts).sum(axis=-1)
+    # einsum sums each point's slices in one pass, in the same order whatever the batch.
+    load_sum = np.einsum("...m,...m,m->...", penetration, slope_term, counts)
+    slope_sum = np.einsum("...m,m->...", slope_term, counts)
     if slice_law == "uniform":
         divisor = counts.sum()
     elif slice_law == "paper":
-        divisor = ((penetration > 0.0) * counts).sum(axis=-1)
+        divisor = np.einsum("...m,m->...", (penetration > 0.0).astype(float), counts)
         divisor = np.where(divisor > 0.0, divisor, 1.0)  # no loaded slice: the sums are zero
     else:
         raise ValueError(f"unknown slice law {slice_law!r}; expected one of {SLICE_LAWS}")

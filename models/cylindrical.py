@@ -268,23 +268,30 @@ def _solve(load, cos_azimuth, half_clearance, crown, constant, centrifugal, gap_
     count, n = load.size, LINE_CONTACT_EXPONENT
     everyone = np.arange(count)
     share = np.full(cos_azimuth.shape, 0.5)
-    # Bracket: no roller touches below max(Pd/2, 0); above, the best-placed roller alone
-    # would carry the load through both crowned contacts. Doubled where that falls short.
+    # Bracket: no roller touches below max(Pd/2, 0); at the upper bound the best-placed roller
+    # (at cos_max) alone carries F / cos_max through both contacts, each needing at most the
+    # largest gap plus ((F / cos_max + Fc)/K)^(1/n) of approach. With preload, rollers opposite
+    # the load push back, so there the bound is checked and doubled until it holds.
+    cos_max = cos_azimuth.max(axis=-1)
     lower = np.maximum(half_clearance, 0.0)
     reach = (half_clearance + 2.0 * crown * gap_shape.max()
-             + 2.0 * ((load + centrifugal) / constant) ** (1.0 / n))
-    upper = np.maximum(reach / cos_azimuth.max(axis=-1), lower) + 1e-12
+             + 2.0 * ((load / cos_max + centrifugal) / constant) ** (1.0 / n))
+    upper = np.maximum(1.001 * reach / cos_max, lower) + 1e-12
+    preloaded = np.flatnonzero(half_clearance < 0.0)
     for _ in range(64):
-        short = rollers.loads(upper, everyone, share)[0] < load
-        if not short.any():
+        if preloaded.size == 0:
             break
-        lower = np.where(short, upper, lower)
-        upper = np.where(short, 2.0 * upper, upper)
+        guess = share[preloaded]
+        short = rollers.loads(upper[preloaded], preloaded, guess)[0] < load[preloaded]
+        share[preloaded] = guess
+        lower[preloaded[short]] = upper[preloaded[short]]
+        upper[preloaded[short]] *= 2.0
+        preloaded = preloaded[short]
 
     # At zero load the ring of a bearing with clearance may sit anywhere in its play: take the
     # limit of a vanishing load, resting on the best-placed roller, which carries nothing.
     resting = (load == 0.0) & (half_clearance >= 0.0)
-    touch = (half_clearance + rollers.free_outer_approach) / cos_azimuth.max(axis=-1)
+    touch = (half_clearance + rollers.free_outer_approach) / cos_max
     lower = np.where(resting, touch, lower)
     upper = np.where(resting, touch, upper)
 
@@ -386,5 +393,5 @@ MODELS = [Model(
                    "the rollers do not fit on the pitch circle: pitch_diameter * sin(180 deg / "
                    "roller_count) must exceed roller_diameter"),
     ),
-    seconds_per_point=2e-4,
+    seconds_per_point=1e-4,
 )]

@@ -63,6 +63,9 @@ def evaluate_chunk(grid: Grid, start: int, stop: int) -> dict:
             region = (members,) + tuple(slice(0, n) for n in value.shape[1:])
             outputs[spec.name][region] = units.from_si(value, spec.unit)
         status[members] = _per_point(result["status"], members.size, 0)
+    failed = status != 0
+    for values in outputs.values():
+        values[failed] = np.nan  # whatever a model left there, a failed point is NaN
     return {"outputs": outputs, "status": status, "errors": errors}
 
 
@@ -141,15 +144,20 @@ class Executor:
         return self.workers or 2
 
     def connect(self):
+        import dask
         from distributed import Client, LocalCluster
 
         if self.client is None:
             if self.scheduler:
                 self.client = Client(self.scheduler, timeout="20s")
             else:
-                self.cluster = LocalCluster(n_workers=self.workers or 2, threads_per_worker=1,
-                                            processes=True, dashboard_address=None,
-                                            silence_logs=logging.ERROR)
+                # dask sets MALLOC_TRIM_THRESHOLD_=65536 in its workers, which makes glibc map
+                # and unmap every large numpy temporary of a model afresh: twice the time.
+                with dask.config.set({"distributed.nanny.pre-spawn-environ."
+                                      "MALLOC_TRIM_THRESHOLD_": None}):
+                    self.cluster = LocalCluster(n_workers=self.workers or 2, threads_per_worker=1,
+                                                processes=True, dashboard_address=":0",
+                                                silence_logs=logging.ERROR)
                 self.client = Client(self.cluster)
         return self.client
 
@@ -169,7 +177,8 @@ class Executor:
         from distributed import as_completed
 
         client = self.connect()
-        shared = client.scatter(grid, broadcast=True)
+        # A key of its own: the same grid scattered again must not share a released key.
+        shared = client.scatter(grid, broadcast=True, hash=False)
         futures = {client.submit(evaluate_chunk, shared, start, stop, pure=False): (start, stop)
                    for start, stop in chunks}
         try:
@@ -213,10 +222,10 @@ class Progress:
 
 
 def choose_chunk_size(grid: Grid, workers: int) -> int:
-    """Enough chunks to balance the workers, each at most about ``CHUNK_SECONDS`` of work."""
+    """Eight chunks per worker to balance uneven points, each at most ``CHUNK_SECONDS``."""
     cost = get_model(grid.model_name).seconds_per_point
     largest = max(1, int(CHUNK_SECONDS / cost))
-    return max(1, min(largest, math.ceil(grid.size / (4 * workers))))
+    return max(1, min(largest, math.ceil(grid.size / (8 * workers))))
 
 
 def run_sweep(sweep: Sweep, output, executor: Executor | None = None,

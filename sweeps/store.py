@@ -45,7 +45,6 @@ def build_dataset(sweep: Sweep, grid: Grid, outputs: dict, status: np.ndarray,
     data_vars = {}
     for spec in model.outputs:
         values = outputs[spec.name].reshape(grid.shape + outputs[spec.name].shape[1:])
-        values = np.where(status.reshape(grid.shape + (1,) * len(spec.dims)) == 0, values, np.nan)
         data_vars[spec.name] = (grid.dims + spec.dims, values,
                                 {"long_name": spec.meaning, "units": spec.unit})
     data_vars["status"] = (grid.dims, status.reshape(grid.shape), {
@@ -91,10 +90,10 @@ def write_netcdf(dataset: xr.Dataset, path) -> Path:
     path = Path(path)
     path.parent.mkdir(parents=True, exist_ok=True)
     temporary = path.with_name(f".{path.name}.{os.getpid()}.tmp")
-    encoding = {name: {"zlib": True, "complevel": 1} for name, var in dataset.data_vars.items()
-                if var.dtype.kind == "f"}
     try:
-        dataset.to_netcdf(temporary, engine="netcdf4", encoding=encoding)
+        # Uncompressed: zlib would make writing ten times slower for half the size; a user who
+        # wants it smaller can run `nccopy -d 1`.
+        dataset.to_netcdf(temporary, engine="netcdf4")
         os.replace(temporary, path)
     finally:
         if temporary.exists():

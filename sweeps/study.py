@@ -140,12 +140,16 @@ def _claim_rows(claims: list[dict], ours: dict) -> tuple[list[str], int]:
             shown, verdict = "not computed" if value is None else f"{value:.3g} {unit}", \
                 "not comparable"
         else:
-            tolerance = claim["tolerance"]
-            agrees = abs(value - paper) <= tolerance
+            tolerance = claim.get("tolerance", 0.0)
+            comparison = claim.get("comparison", "within")
+            agrees = {"within": abs(value - paper) <= tolerance,
+                      "at_most": value <= paper + tolerance,
+                      "at_least": value >= paper - tolerance}[comparison]
             agreeing += agrees
             shown = f"{value:.3g} {unit}"
-            verdict = (f"agrees (within {tolerance:g} {unit})" if agrees
-                       else f"differs by {value - paper:+.3g} {unit}")
+            band = {"within": f"within {tolerance:g} {unit}", "at_most": "at most the paper's",
+                    "at_least": "at least the paper's"}[comparison]
+            verdict = f"agrees ({band})" if agrees else f"differs: ours - paper = {value - paper:+.3g} {unit}"
         paper_text = "—" if paper is None else f"{paper:g} {unit}"
         rows.append(f"| {claim['statement']} | {claim.get('source', '')} | {paper_text} | "
                     f"{shown} | {verdict} | {claim.get('assumptions', '')} |")

@@ -1,0 +1,262 @@
+"""Paper 000's trend figures (Figs. 6-14) and its stated numbers, from the netCDF results only."""
+from pathlib import Path
+
+import matplotlib
+
+matplotlib.use("Agg")
+import matplotlib.pyplot as plt  # noqa: E402
+import numpy as np  # noqa: E402
+import xarray as xr  # noqa: E402
+
+FIGURES = {
+    "fig06_bearing_a.png": "Fig. 6: bearing A, radial stiffness against radial load (no speed, "
+                           "straight rollers, one slice: the classical model).",
+    "fig07_bearing_b.png": "Fig. 7: bearing B, radial stiffness against radial load for the two "
+                           "effective lengths the paper tries (crowned rollers, no speed).",
+    "fig08_bearing_c.png": "Fig. 8: bearing C, radial stiffness against speed at 4000 N: implicit "
+                           "differentiation (eq. 16) and the perturbation method (0.001 mm).",
+    "fig09_crown.png": "Fig. 9: bearing D, displacement and stiffness against crown for k = 10, "
+                       "30, 60, 90 slices; top: consistent slicing, bottom: the paper's eq. 6 and 9.",
+    "fig10_clearance.png": "Fig. 10: bearing D, load distribution for four clearances, and "
+                           "stiffness with the number of loaded rollers against clearance.",
+    "fig11_load_clearance.png": "Fig. 11: bearing D, radial stiffness against radial load for "
+                                "several clearances.",
+    "fig12_loaded_rollers.png": "Fig. 12: bearing D, number of loaded rollers against radial load.",
+    "fig13_crown_load.png": "Fig. 13: bearing D, radial stiffness against radial load for several "
+                            "crowns.",
+    "fig14_speed_load.png": "Fig. 14: bearing D, displacement and stiffness against speed for "
+                            "several radial loads.",
+    "slices_convergence.png": "Section 3: stiffness with k slices relative to k = 1000, for roller "
+                              "lengths 10-100 mm; left: consistent slicing, right: eq. 9.",
+    "contact_constant.png": "Beyond the paper: the stated percentages against the unstated "
+                            "load-deflection constant K (multiples of Palmgren's); dotted: the "
+                            "paper's values.",
+}
+
+
+def _open(results: Path, name: str) -> xr.Dataset:
+    with xr.open_dataset(results / f"{name}.nc") as data:
+        return data.load()
+
+
+def _label(variable: xr.DataArray) -> str:
+    return f"{variable.name.replace('_', ' ')} [{variable.attrs['units']}]"
+
+
+def _family(axis, x, y, over: str, label: str, plot: str = "plot", **settings):
+    """One line of ``y`` against ``x`` for each value along the dimension ``over``."""
+    style = {"where": "post"} if plot == "step" else {"marker": "o", "ms": 2}
+    for value in y[over].values:
+        getattr(axis, plot)(x, y.sel({over: value}), label=label.format(value), **style)
+    axis.set(**settings)
+    axis.legend(fontsize=7)
+    axis.grid(alpha=0.3)
+
+
+def _save(figure, figures: Path, name: str):
+    figure.tight_layout()
+    figure.savefig(figures / name, dpi=110)
+    plt.close(figure)
+
+
+def draw(results: Path, figures: Path):
+    results, figures = Path(results), Path(figures)
+    _bearing_a(results, figures)
+    _bearing_b(results, figures)
+    _bearing_c(results, figures)
+    _crown(results, figures)
+    _clearance(results, figures)
+    _load_clearance(results, figures)
+    _crown_load(results, figures)
+    _speed_load(results, figures)
+    _slices(results, figures)
+    _contact_constant(results, figures)
+
+
+def _bearing_a(results, figures):
+    data = _open(results, "fig06_bearing_a")
+    figure, axis = plt.subplots(figsize=(5, 3.6))
+    axis.plot(data.radial_load, data.radial_stiffness / 1e5, "o-", ms=3)
+    axis.set(xlabel=_label(data.radial_load), ylabel="radial stiffness [1e5 N/mm]",
+             title="Bearing A (Table 1)")
+    axis.grid(alpha=0.3)
+    _save(figure, figures, "fig06_bearing_a.png")
+
+
+def _bearing_b(results, figures):
+    data = _open(results, "fig07_bearing_b")
+    figure, axis = plt.subplots(figsize=(5, 3.6))
+    _family(axis, data.radial_load, data.radial_stiffness / 1e5, "length", "{}",
+            xlabel=_label(data.radial_load), ylabel="radial stiffness [1e5 N/mm]",
+            title="Bearing B (Table 2)")
+    _save(figure, figures, "fig07_bearing_b.png")
+
+
+def _bearing_c(results, figures):
+    data = _open(results, "fig08_bearing_c")
+    figure, axis = plt.subplots(figsize=(5, 3.6))
+    axis.plot(data.speed, data.radial_stiffness / 1e5, label="implicit differentiation (eq. 16)")
+    axis.plot(data.speed, data.perturbation_stiffness / 1e5, "--",
+              label=f"perturbation {float(data.perturbation):g} {data.perturbation.units}")
+    axis.set(xlabel=_label(data.speed), ylabel="radial stiffness [1e5 N/mm]",
+             title="Bearing C (Table 3), Fr = 4000 N")
+    axis.legend()
+    axis.grid(alpha=0.3)
+    _save(figure, figures, "fig08_bearing_c.png")
+
+
+def _crown(results, figures):
+    data = _open(results, "fig09_crown")
+    figure, axes = plt.subplots(2, 2, figsize=(9, 6.4), sharex=True)
+    for row, form in enumerate(data.form.values):
+        point = data.sel(form=form)
+        _family(axes[row, 0], data.crown * 1e3, point.radial_displacement * 1e3, "slices",
+                "k = {}", ylabel="radial displacement [um]", title=f"{form} slicing: displacement")
+        _family(axes[row, 1], data.crown * 1e3, point.radial_stiffness / 1e5, "slices", "k = {}",
+                ylabel="radial stiffness [1e5 N/mm]", title=f"{form} slicing: stiffness")
+    for axis in axes[1]:
+        axis.set_xlabel("crown cmax [um]")
+    _save(figure, figures, "fig09_crown.png")
+
+
+def _clearance(results, figures):
+    data = _open(results, "fig10_clearance")
+    figure, (left, right) = plt.subplots(1, 2, figsize=(10, 3.8))
+    count = data.roller.size
+    azimuth = 360.0 * (data.roller - 1) / count
+    azimuth = (azimuth + 180.0) % 360.0 - 180.0
+    order = np.argsort(azimuth.values)
+    for clearance in (0.0, 0.01, 0.02, 0.04):
+        loads = data.roller_load.sel(clearance=clearance, method="nearest")
+        left.plot(azimuth[order], loads[order], "o-", ms=3, label=f"Pd = {clearance:g} mm")
+    left.set(xlabel="roller azimuth from the load direction [deg]", ylabel="roller load [N]",
+             title="Load distribution")
+    left.legend(fontsize=7)
+    right.plot(data.clearance, data.radial_stiffness / 1e5, color="C0")
+    right.set(xlabel=_label(data.clearance), ylabel="radial stiffness [1e5 N/mm]",
+              title="Stiffness and loaded rollers")
+    twin = right.twinx()
+    twin.step(data.clearance, data.loaded_rollers, where="post", color="C3", alpha=0.7)
+    twin.set_ylabel("loaded rollers", color="C3")
+    for axis in (left, right):
+        axis.grid(alpha=0.3)
+    _save(figure, figures, "fig10_clearance.png")
+
+
+def _load_clearance(results, figures):
+    data = _open(results, "fig11_12_load_clearance")
+    title = "Bearing D, 5000 r/min, cmax = 0.004 mm"
+    figure, axis = plt.subplots(figsize=(5, 3.6))
+    _family(axis, data.radial_load, data.radial_stiffness / 1e5, "clearance", "Pd = {:g} mm",
+            xlabel=_label(data.radial_load), ylabel="radial stiffness [1e5 N/mm]", title=title)
+    _save(figure, figures, "fig11_load_clearance.png")
+    figure, axis = plt.subplots(figsize=(5, 3.6))
+    _family(axis, data.radial_load, data.loaded_rollers.sel(clearance=[0.0, 0.01, 0.02]),
+            "clearance", "Pd = {:g} mm", plot="step", xlabel=_label(data.radial_load),
+            ylabel="loaded rollers", ylim=(0, 9), title=title)
+    _save(figure, figures, "fig12_loaded_rollers.png")
+
+
+def _crown_load(results, figures):
+    data = _open(results, "fig13_crown_load")
+    figure, axis = plt.subplots(figsize=(5, 3.6))
+    _family(axis, data.radial_load, data.radial_stiffness / 1e5, "crown", "cmax = {:g} mm",
+            xlabel=_label(data.radial_load), ylabel="radial stiffness [1e5 N/mm]",
+            title="Bearing D, 5000 r/min, Pd = 0")
+    _save(figure, figures, "fig13_crown_load.png")
+
+
+def _speed_load(results, figures):
+    data = _open(results, "fig14_speed_load")
+    figure, (left, right) = plt.subplots(1, 2, figsize=(10, 3.8))
+    _family(left, data.speed, data.radial_displacement * 1e3, "radial_load", "Fr = {:g} kN",
+            xlabel=_label(data.speed), ylabel="radial displacement [um]", title="Displacement")
+    _family(right, data.speed, data.radial_stiffness / 1e5, "radial_load", "Fr = {:g} kN",
+            xlabel=_label(data.speed), ylabel="radial stiffness [1e5 N/mm]", title="Stiffness")
+    _save(figure, figures, "fig14_speed_load.png")
+
+
+def _slices(results, figures):
+    data = _open(results, "slices_convergence")
+    relative = 100 * (data.radial_stiffness / data.radial_stiffness.sel(slices=1000) - 1)
+    figure, axes = plt.subplots(1, 2, figsize=(10, 3.8), sharey=True)
+    for axis, form in zip(axes, data.form.values):
+        axis.axvline(60, color="k", lw=0.8, ls=":")
+        _family(axis, data.slices, relative.sel(form=form), "effective_length", "l = {:g} mm",
+                plot="semilogx", xlabel="slices k", title=f"{form} slicing")
+    axes[0].set_ylabel("stiffness relative to k = 1000 [%]")
+    _save(figure, figures, "slices_convergence.png")
+
+
+def _contact_constant(results, figures):
+    data = _open(results, "contact_constant")
+    multiple = data.contact_constant / data.contact_constant[0]
+    curves = {"crown 0 -> 0.0032 mm (4.1 %)": (4.1, []), "5 -> 3 loaded rollers (21.3 %)": (21.3, []),
+              "Pd 0 -> 0.04 mm at 6 kN (18.7 %)": (18.7, []),
+              "Pd 0 -> 0.04 mm at 8 kN (13.6 %)": (13.6, [])}
+    for constant in data.contact_constant.values:
+        point = data.sel(contact_constant=constant)
+        values = _stated_percentages(point.radial_stiffness, point.loaded_rollers)
+        for (_, series), value in zip(curves.values(), values):
+            series.append(value)
+    figure, axis = plt.subplots(figsize=(6, 4))
+    for index, (label, (paper, series)) in enumerate(curves.items()):
+        axis.semilogx(multiple, series, "o-", color=f"C{index}", label=label)
+        axis.axhline(paper, color=f"C{index}", ls=":", lw=1)
+    axis.set(xlabel="K / Palmgren's K", ylabel="fall of radial stiffness [%]",
+             title="Bearing D, 5000 r/min, k = 60")
+    axis.legend(fontsize=7)
+    axis.grid(alpha=0.3)
+    _save(figure, figures, "contact_constant.png")
+
+
+# -- the paper's stated numbers, recomputed ---------------------------------------------------
+
+def _drop(before, after) -> float:
+    """Relative fall from ``before`` to ``after`` [%]."""
+    return float(100.0 * (1.0 - after / before))
+
+
+def _shedding_drop(stiffness, loaded) -> float:
+    """Fall of stiffness between the first clearance with 5 loaded rollers and the first with 3."""
+    five = stiffness.clearance[loaded <= 5][0]
+    three = stiffness.clearance[loaded <= 3][0]
+    return _drop(stiffness.sel(clearance=five), stiffness.sel(clearance=three))
+
+
+def _stated_percentages(stiffness, loaded):
+    """The crown, shedding and clearance percentages from a load x crown x clearance grid."""
+    at = dict(radial_load=4000, crown=0.004)
+    return (_drop(stiffness.sel(radial_load=4000, crown=0, clearance=0),
+                  stiffness.sel(radial_load=4000, crown=0.0032, clearance=0)),
+            _shedding_drop(stiffness.sel(**at), loaded.sel(**at)),
+            *(_drop(stiffness.sel(radial_load=load, crown=0.004, clearance=0),
+                    stiffness.sel(radial_load=load, crown=0.004, clearance=0.04))
+              for load in (6000, 8000)))
+
+
+def ours(results: Path) -> dict:
+    results = Path(results)
+    values = {}
+    crown = _open(results, "fig09_crown").radial_stiffness.sel(slices=60)
+    for form in crown.form.values:
+        values[f"crown_{form}"] = _drop(crown.sel(form=form, crown=0.0),
+                                        crown.sel(form=form).sel(crown=0.0032, method="nearest"))
+    clearance = _open(results, "fig10_clearance")
+    values["rollers_5_to_3"] = _shedding_drop(clearance.radial_stiffness, clearance.loaded_rollers)
+    grid = _open(results, "fig11_12_load_clearance").radial_stiffness
+    for load in (6, 8):
+        point = grid.sel(radial_load=load, method="nearest")
+        values[f"clearance_{load}kN"] = _drop(point.sel(clearance=0.0), point.sel(clearance=0.04))
+    speed = _open(results, "fig08_bearing_c")
+    values["perturbation_c"] = float(100 * np.abs(
+        speed.perturbation_stiffness / speed.radial_stiffness - 1).max())
+    slices = _open(results, "slices_convergence").radial_stiffness.sel(form="consistent")
+    error = np.abs(slices / slices.sel(slices=1000) - 1).max("effective_length").values
+    # The fewest slices from which on every finer slicing stays within 0.5 % of k = 1000.
+    outside = np.flatnonzero(error > 0.005)
+    first = outside[-1] + 1 if outside.size else 0
+    values["slices_enough"] = float(slices.slices[first])
+    counts = _open(results, "fig11_12_load_clearance").loaded_rollers.sel(clearance=0.0)
+    values["rollers_fixed_at_zero_clearance"] = float(np.unique(counts).size)
+    return values

@@ -1,0 +1,32 @@
+"""The README's worked example runs as written."""
+import re
+import subprocess
+import sys
+from pathlib import Path
+
+README = (Path(__file__).resolve().parents[1] / "README.md").read_text()
+
+
+def blocks(language):
+    return re.findall(rf"```{language}\n(.*?)```", README, flags=re.S)
+
+
+def test_worked_example(tmp_path):
+    definition, python = blocks("toml")[0], blocks("python")[0]
+    (tmp_path / "example.toml").write_text(definition)
+    run = subprocess.run([sys.executable, "-m", "sweeps", "run", "example.toml"], cwd=tmp_path,
+                         capture_output=True, text=True, timeout=300)
+    assert run.returncode == 0, run.stderr
+    script = "import matplotlib\nmatplotlib.use('Agg')\n" + python
+    done = subprocess.run([sys.executable, "-c", script], cwd=tmp_path, capture_output=True,
+                          text=True, timeout=300)
+    assert done.returncode == 0, done.stderr
+
+
+def test_the_documented_error_line_is_the_real_one(tmp_path):
+    definition = blocks("toml")[0].replace("crown =", "crwn =")
+    (tmp_path / "example.toml").write_text(definition)
+    run = subprocess.run([sys.executable, "-m", "sweeps", "run", "example.toml"], cwd=tmp_path,
+                         capture_output=True, text=True, timeout=300)
+    assert run.returncode == 2
+    assert run.stderr.strip() in README
