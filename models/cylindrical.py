@@ -7,7 +7,8 @@ from __future__ import annotations
 
 import numpy as np
 
-from models.contact import LINE_CONTACT_EXPONENT, SLICE_LAWS, palmgren_constant, sliced_line_contact
+from models.contact import (LINE_CONTACT_EXPONENT, SLICE_LAWS, palmgren_constant,
+                            sliced_line_contact)
 from models.profiles import PROFILES, distinct_slices
 from models.registry import CONVERGED, NOT_CONVERGED, Constraint, Input, Model, Output
 from models.solvers import solve_increasing
@@ -40,7 +41,8 @@ def cage_speed(speed, roller_diameter, pitch_diameter):
     ----------
     .. [1] Paper 000, eq. 4; T. A. Harris, Rolling Bearing Analysis, ch. 8.
     """
-    return 0.5 * np.asarray(speed) * (1.0 - np.asarray(roller_diameter) / np.asarray(pitch_diameter))
+    ratio = np.asarray(roller_diameter) / np.asarray(pitch_diameter)
+    return 0.5 * np.asarray(speed) * (1.0 - ratio)
 
 
 def centrifugal_force(roller_diameter, effective_length, pitch_diameter, speed, roller_density):
@@ -95,7 +97,8 @@ class _RollerSet:
         gaps = self.crown[points, None] * self.gap_shape
         inner = sliced_line_contact(inner_approach, gaps, self.gap_count, constant, self.slice_law)
         if self.outer_contact == "crowned":
-            outer = sliced_line_contact(outer_approach, gaps, self.gap_count, constant, self.slice_law)
+            outer = sliced_line_contact(outer_approach, gaps, self.gap_count, constant,
+                                        self.slice_law)
             return inner + outer + inner
         outer = sliced_line_contact(outer_approach, _NO_GAP, _ONE_SLICE, constant)
         balanced = sliced_line_contact(inner_approach, _NO_GAP, _ONE_SLICE, constant)
@@ -145,7 +148,8 @@ class _RollerSet:
         converged : numpy.ndarray of bool
             Every roller's force balance converged, ``(p,)``.
         """
-        total = displacement[:, None] * self.cos[points] - self.half_clearance[points, None]  # eq. 1
+        # Approach of roller j's two contacts together (eq. 1).
+        total = displacement[:, None] * self.cos[points] - self.half_clearance[points, None]
         available = total - self.free_outer_approach[points, None]
         loaded = available > 0.0
         owner = np.broadcast_to(points[:, None], loaded.shape)[loaded]
@@ -178,7 +182,8 @@ class _RollerSet:
         cos = self.cos[points]
         radial_load = (roller_load * cos).sum(axis=-1)
         radial_stiffness = (roller_stiffness * cos**2).sum(axis=-1)  # eq. 13-16
-        return radial_load, radial_stiffness, roller_load, inner_deflection, all_converged.all(axis=-1)
+        converged = all_converged.all(axis=-1)
+        return radial_load, radial_stiffness, roller_load, inner_deflection, converged
 
 
 def crb_radial(radial_load, roller_count, pitch_diameter, roller_diameter, effective_length,
@@ -252,8 +257,8 @@ def crb_radial(radial_load, roller_count, pitch_diameter, roller_diameter, effec
      cage_position, perturbation) = (a.ravel() for a in arrays)
     azimuth = cage_position[:, None] + 2.0 * np.pi * np.arange(roller_count) / roller_count
     gap_shape, gap_count = distinct_slices(slices, crown_profile)
-    if slice_law not in SLICE_LAWS or outer_contact not in OUTER_CONTACTS or crown_profile not in PROFILES:
-        raise ValueError(f"unknown option: slice_law={slice_law!r}, outer_contact={outer_contact!r}")
+    if outer_contact not in OUTER_CONTACTS:
+        raise ValueError(f"unknown outer_contact {outer_contact!r}; expected {OUTER_CONTACTS}")
     outputs = _solve(load, np.cos(azimuth), 0.5 * clearance, crown, constant,
                      centrifugal_force(diameter, length, pitch, speed, density),
                      gap_shape, gap_count, slice_law, outer_contact, perturbation)

@@ -86,7 +86,8 @@ def coordinates(sweep: Sweep) -> dict:
                              {"long_name": f"{axis.name} (labels of a zipped axis)", "units": "1"})
         for name, values in axis.values.items():
             extra = sweep.model.input(name).dims
-            coords[name] = ((axis.name,) + extra, _shown(values), _attrs(sweep, name, values[0].unit))
+            coords[name] = ((axis.name,) + extra, _shown(values),
+                            _attrs(sweep, name, values[0].unit))
     for name, value in sweep.fixed.items():
         if value is None:
             continue

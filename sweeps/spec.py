@@ -188,7 +188,8 @@ class _Parser:
         key = f"axes.{name}"
         if name in inputs:
             if isinstance(raw, dict) and "labels" in raw:
-                self.fail(key, f"a zipped axis needs a name that is not a parameter of {model.name}")
+                self.fail(key, "a zipped axis needs a name that is not a parameter of "
+                          f"{model.name}")
             self.claim(name, key, inputs, model)
             spec = inputs[name]
             if spec.dims:
@@ -322,10 +323,17 @@ class _Parser:
                           "{values = [...], units = \"...\"}")
             if all(isinstance(x, str) for x in raw) and unit_text is None:
                 parts = [self.split(x, spec, f"{key}[{i}]") for i, x in enumerate(raw)]
-                unit_text = parts[0][1] or "1"
-                target = self.unit_of(unit_text, key)
-                return np.array([units.convert(m, self.unit_of(u or "1", key), target)
-                                 for m, u in parts]), unit_text
+                found = []
+                for i, (_, text) in enumerate(parts):
+                    if not text and spec.unit != "1":
+                        self.fail(f"{key}[{i}]", f"{raw[i]!r} has no units; {spec.name} needs "
+                                  f"units like {spec.unit!r}")
+                    found.append(self.unit_of(text or "1", f"{key}[{i}]"))
+                    if not units.compatible(found[-1], found[0]):
+                        self.fail(f"{key}[{i}]", f"{raw[i]!r}: units differ in kind from "
+                                  f"{raw[0]!r}")
+                return np.array([units.convert(m, u, found[0]) for (m, _), u in
+                                 zip(parts, found)]), parts[0][1] or "1"
             if not all(isinstance(x, (int, float)) and not isinstance(x, bool) for x in raw):
                 self.fail(key, f"{spec.name!r}: the pattern must hold numbers (with 'units') or "
                           "quantity strings")

@@ -149,7 +149,8 @@ def _claim_rows(claims: list[dict], ours: dict) -> tuple[list[str], int]:
             shown = f"{value:.3g} {unit}"
             band = {"within": f"within {tolerance:g} {unit}", "at_most": "at most the paper's",
                     "at_least": "at least the paper's"}[comparison]
-            verdict = f"agrees ({band})" if agrees else f"differs: ours - paper = {value - paper:+.3g} {unit}"
+            verdict = (f"agrees ({band})" if agrees
+                       else f"differs: ours - paper = {value - paper:+.3g} {unit}")
         paper_text = "—" if paper is None else f"{paper:g} {unit}"
         rows.append(f"| {claim['statement']} | {claim.get('source', '')} | {paper_text} | "
                     f"{shown} | {verdict} | {claim.get('assumptions', '')} |")

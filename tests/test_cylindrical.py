@@ -15,10 +15,10 @@ N = LINE_CONTACT_EXPONENT
 
 def test_centrifugal_force_is_eq3():
     # Eq. 3 with n_m in r/min from eq. 4: Fc = pi^3 rho D^2 l dm n_m^2 / 7200.
-    rho, d, l, dm, ni = 7850.0, 10e-3, 9.6e-3, 65e-3, 5000.0
+    rho, d, length, dm, ni = 7850.0, 10e-3, 9.6e-3, 65e-3, 5000.0
     nm = ni / 2 * (1 - d / dm)
-    expected = np.pi**3 * rho * d**2 * l * dm * nm**2 / 7200
-    assert centrifugal_force(d, l, dm, ni * RPM, rho) == pytest.approx(expected, rel=1e-12)
+    expected = np.pi**3 * rho * d**2 * length * dm * nm**2 / 7200
+    assert centrifugal_force(d, length, dm, ni * RPM, rho) == pytest.approx(expected, rel=1e-12)
 
 
 def test_reduces_to_the_classical_model_without_speed_crown_or_slices():

@@ -119,3 +119,32 @@ def test_summary_reads_well():
     assert summary.text() == ("crb_radial: 10 points (8 converged, 2 not_converged) in 1.2 s "
                               "on in-process -> out.nc")
     assert summary.failed == 2
+
+
+class Clock:
+    def __init__(self):
+        self.now = 0.0
+
+    def __call__(self):
+        return self.now
+
+
+def test_progress_appears_only_after_a_moment(monkeypatch):
+    import io
+
+    import sweeps.run as run
+
+    clock = Clock()
+    monkeypatch.setattr(run.time, "monotonic", clock)
+    stream = io.StringIO()
+    bar = run.Progress(100, "crb_radial", stream=stream)
+    bar.advance(10)
+    assert stream.getvalue() == ""  # a quick run shows nothing
+    clock.now = 2.0
+    bar.advance(40)
+    clock.now = 30.0
+    bar.advance(50)
+    bar.close()
+    lines = stream.getvalue().splitlines()
+    assert lines[0].startswith("crb_radial [###############               ] 50/100 points 2 s")
+    assert lines[-1].startswith("crb_radial [##############################] 100/100 points 30 s")

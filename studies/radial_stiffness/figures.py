@@ -16,7 +16,8 @@ FIGURES = {
     "fig08_bearing_c.png": "Fig. 8: bearing C, radial stiffness against speed at 4000 N: implicit "
                            "differentiation (eq. 16) and the perturbation method (0.001 mm).",
     "fig09_crown.png": "Fig. 9: bearing D, displacement and stiffness against crown for k = 10, "
-                       "30, 60, 90 slices; top: consistent slicing, bottom: the paper's eq. 6 and 9.",
+                       "30, 60, 90 slices; top: consistent slicing, bottom: the paper's eq. 6 "
+                       "and 9.",
     "fig10_clearance.png": "Fig. 10: bearing D, load distribution for four clearances, and "
                            "stiffness with the number of loaded rollers against clearance.",
     "fig11_load_clearance.png": "Fig. 11: bearing D, radial stiffness against radial load for "
@@ -191,7 +192,8 @@ def _slices(results, figures):
 def _contact_constant(results, figures):
     data = _open(results, "contact_constant")
     multiple = data.contact_constant / data.contact_constant[0]
-    curves = {"crown 0 -> 0.0032 mm (4.1 %)": (4.1, []), "5 -> 3 loaded rollers (21.3 %)": (21.3, []),
+    curves = {"crown 0 -> 0.0032 mm (4.1 %)": (4.1, []),
+              "5 -> 3 loaded rollers (21.3 %)": (21.3, []),
               "Pd 0 -> 0.04 mm at 6 kN (18.7 %)": (18.7, []),
               "Pd 0 -> 0.04 mm at 8 kN (13.6 %)": (13.6, [])}
     for constant in data.contact_constant.values:
