@@ -93,7 +93,11 @@ class Constraint:
 
 @dataclass(frozen=True)
 class Model:
-    """A registered model: its function and its declared interface."""
+    """A registered model: its function and its declared interface.
+
+    ``version`` changes whenever the model's numbers change: results made by another version
+    are stale and a study recomputes them.
+    """
 
     name: str
     function: Callable[..., dict]
