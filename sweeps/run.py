@@ -152,9 +152,11 @@ class Executor:
                 self.client = Client(self.scheduler, timeout="20s")
             else:
                 # dask sets MALLOC_TRIM_THRESHOLD_=65536 in its workers, which makes glibc map
-                # and unmap every large numpy temporary of a model afresh: twice the time.
+                # and unmap every large numpy temporary of a model afresh: twice the time. Its
+                # statistical profiler serves only the dashboard and costs compute time.
                 with dask.config.set({"distributed.nanny.pre-spawn-environ."
-                                      "MALLOC_TRIM_THRESHOLD_": None}):
+                                      "MALLOC_TRIM_THRESHOLD_": None,
+                                      "distributed.worker.profile.enabled": False}):
                     self.cluster = LocalCluster(n_workers=self.workers or 2, threads_per_worker=1,
                                                 processes=True, dashboard_address=":0",
                                                 silence_logs=logging.ERROR)
