@@ -119,6 +119,9 @@ def main(argv=None) -> int:
     except SpecError as error:
         print(f"error: {error}", file=sys.stderr)
         return USAGE_ERROR
+    except OSError as error:  # a folder that cannot be written, a full disk, ...
+        print(f"error: {error.filename or ''}: {error.strerror or error}", file=sys.stderr)
+        return 1
     except KeyboardInterrupt:
         print("interrupted: no result file was written for the unfinished sweep", file=sys.stderr)
         return 130

@@ -68,9 +68,11 @@ class Sweep:
 def load(path) -> Sweep:
     """Read and validate the sweep definition at ``path``."""
     try:
-        text = Path(path).read_text()
+        text = Path(path).read_text(encoding="utf-8")
     except OSError as error:
         raise SpecError(f"{path}: cannot read the definition: {error.strerror}") from None
+    except UnicodeDecodeError:
+        raise SpecError(f"{path}: not a text file (a definition is UTF-8 TOML)") from None
     return parse(text, str(path))
 
 
@@ -343,6 +345,8 @@ class _Parser:
                 self.fail(key, f"{raw!r}: give plain numbers together with 'units'")
             raw, unit_text = self.split(raw, spec, key)
             unit_text = unit_text or None
+        elif isinstance(raw, list) and key.startswith("fixed."):
+            self.fail(key, "[fixed] takes one value; a list of values is an axis: put it in [axes]")
         elif isinstance(raw, bool) or not isinstance(raw, (int, float)):
             self.fail(key, f"{raw!r}: expected a number with units, e.g. '1.5 {spec.unit}'")
         if unit_text is None:

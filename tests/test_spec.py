@@ -112,6 +112,8 @@ BAD = [
      ["do not fit on the pitch circle", "roller_count = 30"]),
     ("missing required", 'bearing = "paper000-D"', "", ["missing parameters", "'roller_count', 'pitch_diameter' [mm]"]),
     ("scalar axis", '["2 kN", "4 kN", "8 kN"]', '"2 kN"', ["an axis is a list"]),
+    ("list in fixed", 'crown = "0.004 mm"', 'crown = ["1 um", "2 um"]', ["put it in [axes]"]),
+    ("wrong type", "slices = 60", "slices = true", ["fixed.slices", "must be an integer"]),
 ]
 
 
@@ -155,3 +157,22 @@ def test_the_command_line_exits_2_and_writes_nothing(what, old, new, words, tmp_
     assert error.startswith("error: ") and len(error.splitlines()) == 1
     assert "Traceback" not in error
     assert not output.exists() and not output.parent.exists()
+
+
+def test_unreadable_definitions(tmp_path):
+    with pytest.raises(SpecError, match="cannot read the definition"):
+        spec.load(tmp_path / "missing.toml")
+    binary = tmp_path / "binary.toml"
+    binary.write_bytes(b"\xff\xfe\x00garbage")
+    with pytest.raises(SpecError, match="not a text file"):
+        spec.load(binary)
+
+
+def test_an_unwritable_output_is_one_line(tmp_path, capsys):
+    path = tmp_path / "def.toml"
+    path.write_text(GOOD)
+    blocked = tmp_path / "file"
+    blocked.write_text("")
+    assert main(["run", str(path), "-o", str(blocked / "out.nc"), "--workers", "0"]) == 1
+    error = capsys.readouterr().err.strip()
+    assert error.startswith("error: ") and len(error.splitlines()) == 1
