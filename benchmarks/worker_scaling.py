@@ -28,7 +28,7 @@ clearance = { start = "0 mm", stop = "0.05 mm", num = 200 }
 """
 
 
-def paired_times(folder: Path, pairs: int = 7):
+def paired_times(folder: Path, pairs: int = 9):
     """Wall times on one and on two workers, run in interleaved pairs so that the machine's
     passing load falls on both alike; the clusters are started before any clock runs."""
     sweep = spec.parse(DEFINITION, "scaling.toml")
