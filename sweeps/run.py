@@ -157,10 +157,15 @@ class Executor:
             else:
                 # dask sets MALLOC_TRIM_THRESHOLD_=65536 in its workers, which makes glibc map
                 # and unmap every large numpy temporary of a model afresh: twice the time. Its
-                # statistical profiler serves only the dashboard and costs compute time.
+                # profiler serves only the dashboard; slower housekeeping cuts an idle two-worker
+                # cluster's CPU use from about 10 % to 4 % of a core, which the workers need
+                # when they occupy every core.
                 with dask.config.set({"distributed.nanny.pre-spawn-environ."
                                       "MALLOC_TRIM_THRESHOLD_": None,
-                                      "distributed.worker.profile.enabled": False}):
+                                      "distributed.worker.profile.enabled": False,
+                                      "distributed.admin.tick.interval": "500ms",
+                                      "distributed.admin.system-monitor.interval": "2s",
+                                      "distributed.worker.memory.monitor-interval": "1s"}):
                     self.cluster = LocalCluster(n_workers=self.workers or 2, threads_per_worker=1,
                                                 processes=True, dashboard_address=":0",
                                                 silence_logs=logging.ERROR)

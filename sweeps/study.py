@@ -112,7 +112,7 @@ def write_report(studies: list[Study], results: Path, figures: Path) -> list[Pat
             index.append(f"- {study.name}: not run yet (`bearing-sweep study {study.name}`)")
             continue
         ours = module.ours(results / study.name)
-        rows, agreeing = _claim_rows(study.claims(), ours)
+        rows, agreeing, comparable = _claim_rows(study.claims(), ours)
         page = [study.about().rstrip(), "", "## The paper's numbers beside ours", "",
                 "| stated number | source | paper | ours | agreement | assumptions |",
                 "|---|---|---|---|---|---|", *rows, "", "## Figures", ""]
@@ -122,16 +122,17 @@ def write_report(studies: list[Study], results: Path, figures: Path) -> list[Pat
         folder.mkdir(parents=True, exist_ok=True)
         (folder / "README.md").write_text("\n".join(page))
         written.append(folder / "README.md")
-        index.append(f"- [{study.name}]({study.name}/README.md): {agreeing} of {len(rows)} "
-                     "stated numbers agree within their tolerance")
+        index.append(f"- [{study.name}]({study.name}/README.md): {agreeing} of {comparable} "
+                     f"comparable stated numbers agree within their tolerance ({len(rows)} stated)")
     figures.mkdir(parents=True, exist_ok=True)
     (figures / "README.md").write_text("\n".join(index) + "\n")
     written.append(figures / "README.md")
     return written
 
 
-def _claim_rows(claims: list[dict], ours: dict) -> tuple[list[str], int]:
-    rows, agreeing = [], 0
+def _claim_rows(claims: list[dict], ours: dict) -> tuple[list[str], int, int]:
+    """Table rows, and how many claims agree and how many could be compared."""
+    rows, agreeing, comparable = [], 0, 0
     for claim in claims:
         value = ours.get(claim["id"])
         unit = claim.get("unit", "")
@@ -146,6 +147,7 @@ def _claim_rows(claims: list[dict], ours: dict) -> tuple[list[str], int]:
                       "at_most": value <= paper + tolerance,
                       "at_least": value >= paper - tolerance}[comparison]
             agreeing += agrees
+            comparable += 1
             shown = f"{value:.3g} {unit}"
             band = {"within": f"within {tolerance:g} {unit}", "at_most": "at most the paper's",
                     "at_least": "at least the paper's"}[comparison]
@@ -154,4 +156,4 @@ def _claim_rows(claims: list[dict], ours: dict) -> tuple[list[str], int]:
         paper_text = "—" if paper is None else f"{paper:g} {unit}"
         rows.append(f"| {claim['statement']} | {claim.get('source', '')} | {paper_text} | "
                     f"{shown} | {verdict} | {claim.get('assumptions', '')} |")
-    return rows, agreeing
+    return rows, agreeing, comparable

@@ -101,6 +101,6 @@ def test_study_runs_what_is_stale_draws_and_reports(tmp_path):
     assert "| four points |  | 4  | 4  | agrees (within 0 ) |  |" in page
     assert "![stiffness against load](stiffness.png)" in page
     index = (tmp_path / "figures" / "README.md").read_text()
-    assert "[tiny](tiny/README.md): 1 of 1 stated numbers agree" in index
+    assert "[tiny](tiny/README.md): 1 of 1 comparable stated numbers agree" in index
     missing = cli("study", "nothing", cwd=tmp_path)
     assert missing.returncode == 2 and "no such study" in missing.stderr
