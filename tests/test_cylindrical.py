@@ -141,3 +141,24 @@ def test_uniform_law_converges_by_60_slices_for_rollers_up_to_100_mm():
         k60 = crb_radial(4000.0, slices=60, **kw)["radial_stiffness"]
         k2000 = crb_radial(4000.0, slices=2000, **kw)["radial_stiffness"]
         assert k60 == pytest.approx(k2000, rel=0.01)
+
+
+def test_paper_fig10_shedding_from_5_to_3_rollers_costs_about_21_percent():
+    # Paper 000 section 3, Fig. 10: bearing D, 5000 r/min, cmax = 0.004 mm, Fr = 4000 N; as the
+    # clearance grows and the loaded rollers fall from 5 to 3, Kr falls by 21.3 %. Tolerance
+    # 3.2 points (15 %): the paper's load-deflection constant is not stated (Palmgren's here).
+    clearance = np.arange(0, 0.06001, 0.0001) * MM
+    result = crb_radial(4000.0, clearance=clearance, crown=0.004 * MM, speed=5000 * RPM,
+                        **BEARING_D)
+    loaded, stiffness = result["loaded_rollers"], result["radial_stiffness"]
+    five, three = np.argmax(loaded <= 5), np.argmax(loaded <= 3)
+    assert loaded[five] == 5 and loaded[three] == 3
+    assert 100 * (1 - stiffness[three] / stiffness[five]) == pytest.approx(21.3, abs=3.2)
+
+
+def test_paper_fig12_zero_clearance_keeps_the_loaded_rollers():
+    # Paper 000 section 3, Fig. 12 and conclusion 2: with zero clearance the number of loaded
+    # rollers does not change with the radial load (bearing D, 5000 r/min, cmax = 0.004 mm).
+    result = crb_radial(np.linspace(1000, 12000, 45), clearance=0.0, crown=0.004 * MM,
+                        speed=5000 * RPM, **BEARING_D)
+    assert np.unique(result["loaded_rollers"]).size == 1
