@@ -399,4 +399,5 @@ MODELS = [Model(
                    "roller_count) must exceed roller_diameter"),
     ),
     seconds_per_point=1e-4,
+    points_per_call=500,
 )]

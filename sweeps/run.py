@@ -17,10 +17,9 @@ from sweeps.spec import Sweep
 #: Below this estimated single-core time [s] a sweep runs in-process: starting a cluster
 #: would take longer than the work.
 IN_PROCESS_SECONDS = 3.0
-#: Largest chunk, in estimated seconds of work on one core: a task's overhead is a few
-#: milliseconds, and larger chunks only hold larger temporaries (about 8 MB per array for
-#: 2500 points of crb_radial) in workers that share the machine's caches and memory.
-CHUNK_SECONDS = 0.25
+#: Largest chunk, in estimated seconds of work on one core (a task costs a few milliseconds of
+#: scheduling; within a chunk the model runs in blocks of its ``points_per_call``).
+CHUNK_SECONDS = 1.0
 
 
 def evaluate_chunk(grid: Grid, start: int, stop: int) -> dict:
@@ -47,6 +46,8 @@ def evaluate_chunk(grid: Grid, start: int, stop: int) -> dict:
         groups = [np.flatnonzero(codes == code) for code in np.unique(codes)]
     else:
         groups = [np.arange(count)]
+    block = model.points_per_call
+    groups = [g[i:i + block] for g in groups for i in range(0, g.size, block)]
     for members in groups:
         arguments = dict(grid.fixed)
         for name, values in varying.items():
