@@ -1,7 +1,12 @@
-"""Contact mechanics: the sliced line contact of a (crowned) roller on a raceway."""
+"""Contact mechanics: the sliced line contact of a crowned roller, and Hertz point contact."""
 from __future__ import annotations
 
 import numpy as np
+from scipy.special import ellipe, ellipk
+
+from models.registry import (CONVERGED, INFEASIBLE, NOT_CONVERGED, Constraint, Input, Model,
+                             Output)
+from models.solvers import solve_increasing
 
 #: Load-deflection exponent of a line contact, Q = K delta^n [-] (Palmgren).
 LINE_CONTACT_EXPONENT = 10.0 / 9.0
@@ -83,3 +88,219 @@ def sliced_line_contact(approach, gaps, counts, contact_constant, slice_law="uni
         raise ValueError(f"unknown slice law {slice_law!r}; expected one of {SLICE_LAWS}")
     scale = contact_constant / divisor
     return scale * load_sum, scale * n * slope_sum
+
+
+# -- point contact (Hertz) ------------------------------------------------------------------
+
+POINT_CONTACT_EXPONENT = 1.5
+POINT_METHODS = ("exact", "hamrock_brewe")
+# Below this elliptic parameter the closed form of F(rho) loses digits to cancellation; its
+# series (both are within 1e-8 of each other there) takes over.
+_SMALL_PARAMETER = 1e-4
+
+
+def _curvature_difference(parameter):
+    """F(rho) of an ellipse with elliptic parameter ``m = 1 - (b/a)^2``, and dF/dm.
+
+    ``F = [(k^2 + 1) E - 2 K] / [(k^2 - 1) E]`` with ``k = a/b`` (Harris, eq. 6.28), written in
+    ``m``; its series ``3m/8 + 3m^2/16`` is used below ``_SMALL_PARAMETER``.
+    """
+    m = np.asarray(parameter, dtype=float)
+    small = m < _SMALL_PARAMETER
+    safe = np.where(small, 0.5, m)
+    first, second = ellipk(safe), ellipe(safe)
+    numerator = (2.0 - safe) * second - 2.0 * (1.0 - safe) * first
+    denominator = safe * second
+    d_second = (second - first) / (2.0 * safe)
+    d_first = (second - (1.0 - safe) * first) / (2.0 * safe * (1.0 - safe))
+    d_numerator = -second + (2.0 - safe) * d_second + 2.0 * first - 2.0 * (1.0 - safe) * d_first
+    d_denominator = second + safe * d_second
+    value = numerator / denominator
+    slope = (d_numerator * denominator - numerator * d_denominator) / denominator**2
+    value = np.where(small, 3.0 * m / 8.0 + 3.0 * m**2 / 16.0, value)
+    slope = np.where(small, 3.0 / 8.0 + 3.0 * m / 8.0, slope)
+    return value, slope
+
+
+def ellipse_parameters(curvature_difference, method="exact"):
+    """Ellipticity and complete elliptic integrals of a Hertz point contact.
+
+    Parameters
+    ----------
+    curvature_difference : array_like
+        ``F(rho) = |(rho_1x - rho_1y) + (rho_2x - rho_2y)| / sum(rho)`` [-], in [0, 1).
+    method : {'exact', 'hamrock_brewe'}
+        ``'exact'``: ``k`` solves Harris' eq. 6.28 with scipy's complete elliptic integrals
+        (safeguarded Newton, all points at once). ``'hamrock_brewe'``: the closed forms
+        ``k = alpha^(2/pi)``, ``E = 1 + (pi/2 - 1)/alpha``, ``K = pi/2 + (pi/2 - 1) ln alpha``
+        with ``alpha = R_y/R_x = (1 + F)/(1 - F)`` [2].
+
+    Returns
+    -------
+    ellipticity, second_kind, first_kind : numpy.ndarray
+        ``k = a/b`` [-], ``E`` and ``K`` [-].
+    converged : numpy.ndarray of bool
+
+    References
+    ----------
+    .. [1] T. A. Harris, M. N. Kotzalas, Rolling Bearing Analysis, ch. 6 (Hertz point contact).
+    .. [2] B. J. Hamrock, D. E. Brewe, Simplified solution for stresses and deformations,
+       J. Lubrication Technology 105 (1983) 171-177.
+    """
+    difference = np.asarray(curvature_difference, dtype=float)
+    alpha = (1.0 + difference) / (1.0 - difference)
+    if method == "hamrock_brewe":
+        return (alpha ** (2.0 / np.pi), 1.0 + (np.pi / 2 - 1.0) / alpha,
+                np.pi / 2 + (np.pi / 2 - 1.0) * np.log(alpha), np.ones(difference.shape, bool))
+    if method != "exact":
+        raise ValueError(f"unknown point-contact method {method!r}; expected {POINT_METHODS}")
+    flat = difference.ravel()
+    start = np.clip(1.0 - alpha.ravel() ** (-4.0 / np.pi), 0.0, 1.0 - 1e-15)  # Hamrock-Brewe k
+
+    def residual(parameter, index):
+        value, slope = _curvature_difference(parameter)
+        return value - flat[index], slope
+
+    parameter, converged = solve_increasing(residual, np.zeros(flat.size),
+                                            np.full(flat.size, 1.0 - 1e-15), start, 1e-15)
+    parameter = parameter.reshape(difference.shape)
+    return (1.0 / np.sqrt(1.0 - parameter), ellipe(parameter), ellipk(parameter),
+            converged.reshape(difference.shape))
+
+
+def effective_modulus(youngs_modulus, poisson_ratio, youngs_modulus_2=None, poisson_ratio_2=None):
+    """``E* = 1 / [(1 - nu_1^2)/E_1 + (1 - nu_2^2)/E_2]`` [Pa]; body 2 defaults to body 1."""
+    youngs_modulus_2 = youngs_modulus if youngs_modulus_2 is None else youngs_modulus_2
+    poisson_ratio_2 = poisson_ratio if poisson_ratio_2 is None else poisson_ratio_2
+    return 1.0 / ((1.0 - np.asarray(poisson_ratio) ** 2) / youngs_modulus
+                  + (1.0 - np.asarray(poisson_ratio_2) ** 2) / youngs_modulus_2)
+
+
+def point_contact_constant(curvature_sum, curvature_difference, modulus, method="exact"):
+    """Load-deflection constant ``K`` of a Hertz point contact, ``Q = K delta^1.5`` [N/m^1.5].
+
+    Parameters
+    ----------
+    curvature_sum : array_like
+        ``sum(rho)`` [1/m]. curvature_difference : ``F(rho)`` [-]. modulus : ``E*`` [Pa].
+    method : {'exact', 'hamrock_brewe'}
+        See :func:`ellipse_parameters`.
+
+    Returns
+    -------
+    constant, converged : numpy.ndarray
+        From ``delta = delta* [3Q/(2 sum(rho) E*)]^(2/3) sum(rho)/2`` (Harris, eq. 6.43 with
+        ``delta* = (2K/pi) (pi/(2 k^2 E))^(1/3)``), which is ``Q^(2/3)`` times a constant.
+    """
+    kappa, second, first, converged = ellipse_parameters(curvature_difference, method)
+    total = np.asarray(curvature_sum, dtype=float)
+    approach_star = 2.0 * first / np.pi * (np.pi / (2.0 * kappa**2 * second)) ** (1.0 / 3.0)
+    unit_approach = approach_star * (1.5 / (total * modulus)) ** (2.0 / 3.0) * total / 2.0
+    return unit_approach ** (-POINT_CONTACT_EXPONENT), converged
+
+
+def hertz_point(load, curvature_1x, curvature_1y, curvature_2x=0.0, curvature_2y=0.0,
+                youngs_modulus=207e9, poisson_ratio=0.3, youngs_modulus_2=None,
+                poisson_ratio_2=None, method="exact"):
+    """Hertz contact of two bodies touching at a point.
+
+    Parameters
+    ----------
+    load : array_like
+        Normal load ``Q`` [N].
+    curvature_1x, curvature_1y, curvature_2x, curvature_2y : array_like
+        Principal curvatures of body 1 and body 2 in two common planes x and y [1/m]:
+        positive convex, zero flat, negative concave. Both relative curvatures
+        ``rho_1x + rho_2x`` and ``rho_1y + rho_2y`` must be positive.
+    youngs_modulus, poisson_ratio : array_like
+        ``E_1`` [Pa] and ``nu_1`` [-]; ``youngs_modulus_2``, ``poisson_ratio_2`` for body 2
+        (default: the same material).
+    method : {'exact', 'hamrock_brewe'}
+        Ellipticity and elliptic integrals exact or by Hamrock and Brewe's closed forms.
+
+    Returns
+    -------
+    dict of numpy.ndarray
+        ``semi_major`` ``a`` and ``semi_minor`` ``b`` [m], ``approach`` ``delta`` [m],
+        ``max_pressure`` ``p0 = 3Q/(2 pi a b)`` [Pa], ``ellipticity`` ``k = a/b`` [-],
+        ``contact_constant`` ``K = Q/delta^1.5`` [N/m^1.5], ``status``.
+
+    References
+    ----------
+    .. [1] T. A. Harris, M. N. Kotzalas, Rolling Bearing Analysis, 5th ed., ch. 6: a, b, delta
+       and the maximum pressure from a*, b*, delta* (eq. 6.36-6.44).
+    .. [2] B. J. Hamrock, D. E. Brewe, J. Lubrication Technology 105 (1983) 171-177.
+    """
+    arrays = np.broadcast_arrays(*(np.asarray(a, dtype=float) for a in (
+        load, curvature_1x, curvature_1y, curvature_2x, curvature_2y)))
+    load, rho_1x, rho_1y, rho_2x, rho_2y = arrays
+    relative_x, relative_y = rho_1x + rho_2x, rho_1y + rho_2y
+    touching = (relative_x > 0) & (relative_y > 0)  # else no point contact: infeasible
+    relative_x = np.where(touching, relative_x, 1.0)
+    relative_y = np.where(touching, relative_y, 1.0)
+    total = relative_x + relative_y
+    difference = np.abs(relative_x - relative_y) / total
+    modulus = effective_modulus(youngs_modulus, poisson_ratio, youngs_modulus_2, poisson_ratio_2)
+    kappa, second, first, converged = ellipse_parameters(difference, method)
+    scale = (1.5 * load / (total * modulus)) ** (1.0 / 3.0)
+    semi_major = (2.0 * kappa**2 * second / np.pi) ** (1.0 / 3.0) * scale
+    semi_minor = (2.0 * second / (np.pi * kappa)) ** (1.0 / 3.0) * scale
+    constant, _ = point_contact_constant(total, difference, modulus, method)
+    approach = (load / constant) ** (1.0 / POINT_CONTACT_EXPONENT)
+    with np.errstate(invalid="ignore", divide="ignore"):
+        pressure = np.where(load > 0, 1.5 * load / (np.pi * semi_major * semi_minor), 0.0)
+    outputs = {"semi_major": semi_major, "semi_minor": semi_minor, "approach": approach,
+               "max_pressure": pressure, "ellipticity": kappa, "contact_constant": constant}
+    ok = converged & touching
+    outputs = {name: np.where(ok, value, np.nan) for name, value in outputs.items()}
+    outputs["status"] = np.select([ok, ~touching], [CONVERGED, INFEASIBLE],
+                                  NOT_CONVERGED).astype(np.int8)
+    return outputs
+
+
+def _point_contact(curvature_1x, curvature_1y, curvature_2x, curvature_2y):
+    return (curvature_1x + curvature_2x > 0) & (curvature_1y + curvature_2y > 0)
+
+
+MODELS = [Model(
+    name="hertz_point",
+    function=hertz_point,
+    summary="Hertz point contact of two elastic bodies: contact ellipse, approach, maximum "
+            "pressure and load-deflection constant, exact or by Hamrock and Brewe.",
+    reference="Harris & Kotzalas, Rolling Bearing Analysis, ch. 6; Hamrock & Brewe (1983)",
+    version="1",
+    inputs=(
+        Input("load", "N", "normal load Q", minimum=0.0),
+        Input("curvature_1x", "1/mm", "principal curvature of body 1 in plane x (negative: "
+              "concave)"),
+        Input("curvature_1y", "1/mm", "principal curvature of body 1 in plane y"),
+        Input("curvature_2x", "1/mm", "principal curvature of body 2 in plane x (0: flat)",
+              default=0.0),
+        Input("curvature_2y", "1/mm", "principal curvature of body 2 in plane y", default=0.0),
+        Input("youngs_modulus", "GPa", "Young's modulus of body 1 (and 2 unless given)",
+              default=207.0, minimum=0.0, exclusive_minimum=True),
+        Input("poisson_ratio", "1", "Poisson's ratio of body 1 (and 2 unless given)",
+              default=0.3, minimum=0.0, maximum=0.5),
+        Input("youngs_modulus_2", "GPa", "Young's modulus of body 2; default: body 1's",
+              default=None, minimum=0.0, exclusive_minimum=True),
+        Input("poisson_ratio_2", "1", "Poisson's ratio of body 2; default: body 1's",
+              default=None, minimum=0.0, maximum=0.5),
+        Input("method", "", "exact: elliptic integrals; hamrock_brewe: closed-form "
+              "approximation", default="exact", kind="choice", choices=POINT_METHODS),
+    ),
+    outputs=(
+        Output("semi_major", "mm", "semi-major axis a of the contact ellipse"),
+        Output("semi_minor", "mm", "semi-minor axis b of the contact ellipse"),
+        Output("approach", "mm", "approach delta of the two bodies"),
+        Output("max_pressure", "MPa", "maximum contact pressure p0"),
+        Output("ellipticity", "1", "ellipticity k = a/b"),
+        Output("contact_constant", "N/mm^1.5", "load-deflection constant K, Q = K delta^1.5"),
+    ),
+    constraints=(
+        Constraint(("curvature_1x", "curvature_1y", "curvature_2x", "curvature_2y"),
+                   _point_contact, "the bodies must touch at a point: curvature_1x + "
+                   "curvature_2x and curvature_1y + curvature_2y must both be positive (zero is "
+                   "a line contact)"),
+    ),
+    seconds_per_point=2e-6,
+)]
