@@ -193,10 +193,15 @@ def point_contact_constant(curvature_sum, curvature_difference, modulus, method=
         ``delta* = (2K/pi) (pi/(2 k^2 E))^(1/3)``), which is ``Q^(2/3)`` times a constant.
     """
     kappa, second, first, converged = ellipse_parameters(curvature_difference, method)
+    unit = _unit_approach(kappa, second, first, curvature_sum, modulus)
+    return unit ** (-POINT_CONTACT_EXPONENT), converged
+
+
+def _unit_approach(kappa, second, first, curvature_sum, modulus):
+    """Approach under a unit load, ``delta / Q^(2/3)`` [m/N^(2/3)]."""
     total = np.asarray(curvature_sum, dtype=float)
     approach_star = 2.0 * first / np.pi * (np.pi / (2.0 * kappa**2 * second)) ** (1.0 / 3.0)
-    unit_approach = approach_star * (1.5 / (total * modulus)) ** (2.0 / 3.0) * total / 2.0
-    return unit_approach ** (-POINT_CONTACT_EXPONENT), converged
+    return approach_star * (1.5 / (total * modulus)) ** (2.0 / 3.0) * total / 2.0
 
 
 def hertz_point(load, curvature_1x, curvature_1y, curvature_2x=0.0, curvature_2y=0.0,
@@ -245,8 +250,9 @@ def hertz_point(load, curvature_1x, curvature_1y, curvature_2x=0.0, curvature_2y
     scale = (1.5 * load / (total * modulus)) ** (1.0 / 3.0)
     semi_major = (2.0 * kappa**2 * second / np.pi) ** (1.0 / 3.0) * scale
     semi_minor = (2.0 * second / (np.pi * kappa)) ** (1.0 / 3.0) * scale
-    constant, _ = point_contact_constant(total, difference, modulus, method)
-    approach = (load / constant) ** (1.0 / POINT_CONTACT_EXPONENT)
+    unit = _unit_approach(kappa, second, first, total, modulus)
+    approach = unit * load ** (2.0 / 3.0)
+    constant = unit ** (-POINT_CONTACT_EXPONENT)
     with np.errstate(invalid="ignore", divide="ignore"):
         pressure = np.where(load > 0, 1.5 * load / (np.pi * semi_major * semi_minor), 0.0)
     outputs = {"semi_major": semi_major, "semi_minor": semi_minor, "approach": approach,

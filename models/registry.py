@@ -121,12 +121,6 @@ class Model:
     def input(self, name: str) -> Input:
         return next(i for i in self.inputs if i.name == name)
 
-    def output(self, name: str) -> Output:
-        return next(o for o in self.outputs if o.name == name)
-
-    @property
-    def input_names(self) -> tuple[str, ...]:
-        return tuple(i.name for i in self.inputs)
 
 
 _MODELS: dict[str, Model] = {}

@@ -92,10 +92,6 @@ class Summary:
     scheduler: str
     errors: list = field(default_factory=list)
 
-    @property
-    def failed(self) -> int:
-        return self.points - self.status_counts.get("converged", 0)
-
     def text(self) -> str:
         counts = ", ".join(f"{n} {name}" for name, n in self.status_counts.items() if n)
         line = (f"{self.model}: {self.points} points ({counts or 'none'}) in {self.seconds:.1f} s "
