@@ -58,6 +58,21 @@ _PRESETS = (
         notes="Pitch diameter = (outer diameter 75 + bore 55) / 2. Roller length 10 mm is not a "
               "model input. Clearance, crown, speed and load are the study's axes.",
     ),
+    Preset(
+        name="paper001-71807AC",
+        model="ball_5dof",
+        values={"ball_count": 25, "ball_diameter": "3.14 mm", "pitch_diameter": "41 mm",
+                "contact_angle": "25 deg", "inner_curvature_ratio": 0.52,
+                "outer_curvature_ratio": 0.53, "clearance": "0 mm", "youngs_modulus": "207 GPa",
+                "poisson_ratio": 0.3, "contact_constant": "1.0649e10 N/m^1.5"},
+        source="Paper 001, Table 1 (71807AC angular contact ball bearing)",
+        notes="Pitch diameter = (35 + 47) / 2 from the table's inner and outer ring diameters. "
+              "The groove curvature ratios are not stated: 0.52 (inner) and 0.53 (outer) are "
+              "usual for angular contact bearings. They set the contact angle's change under "
+              "load; the contact constant is the paper's, where Hertz theory gives "
+              "5.45e9 N/m^1.5 for these ratios (remove contact_constant to use it). Zero "
+              "clearance: the axial preload of 1000 N is a load of the study.",
+    ),
 )
 
 PRESETS = {preset.name: preset for preset in _PRESETS}

@@ -176,6 +176,30 @@ def effective_modulus(youngs_modulus, poisson_ratio, youngs_modulus_2=None, pois
                   + (1.0 - np.asarray(poisson_ratio_2) ** 2) / youngs_modulus_2)
 
 
+def curvature_sum_difference(curvature_1x, curvature_1y, curvature_2x, curvature_2y):
+    """Curvature sum and difference of two bodies touching at a point.
+
+    Parameters
+    ----------
+    curvature_1x, curvature_1y, curvature_2x, curvature_2y : array_like
+        Principal curvatures [1/m] (positive convex, negative concave) in planes x and y.
+
+    Returns
+    -------
+    curvature_sum, curvature_difference, touching : numpy.ndarray
+        ``sum(rho)`` [1/m] and ``F(rho) = |rho_x - rho_y| / sum(rho)`` [-] (Harris eq. 6.5-6.6,
+        with ``rho_x``, ``rho_y`` the relative curvatures), and whether both relative
+        curvatures are positive (a point contact); elsewhere the sum is 2 and ``F`` is 0.
+    """
+    relative_x = np.asarray(curvature_1x) + curvature_2x
+    relative_y = np.asarray(curvature_1y) + curvature_2y
+    touching = (relative_x > 0) & (relative_y > 0)  # else no point contact: infeasible
+    relative_x = np.where(touching, relative_x, 1.0)
+    relative_y = np.where(touching, relative_y, 1.0)
+    total = relative_x + relative_y
+    return total, np.abs(relative_x - relative_y) / total, touching
+
+
 def point_contact_constant(curvature_sum, curvature_difference, modulus, method="exact"):
     """Load-deflection constant ``K`` of a Hertz point contact, ``Q = K delta^1.5`` [N/m^1.5].
 
@@ -238,13 +262,8 @@ def hertz_point(load, curvature_1x, curvature_1y, curvature_2x=0.0, curvature_2y
     """
     arrays = np.broadcast_arrays(*(np.asarray(a, dtype=float) for a in (
         load, curvature_1x, curvature_1y, curvature_2x, curvature_2y)))
-    load, rho_1x, rho_1y, rho_2x, rho_2y = arrays
-    relative_x, relative_y = rho_1x + rho_2x, rho_1y + rho_2y
-    touching = (relative_x > 0) & (relative_y > 0)  # else no point contact: infeasible
-    relative_x = np.where(touching, relative_x, 1.0)
-    relative_y = np.where(touching, relative_y, 1.0)
-    total = relative_x + relative_y
-    difference = np.abs(relative_x - relative_y) / total
+    load = arrays[0]
+    total, difference, touching = curvature_sum_difference(*arrays[1:])
     modulus = effective_modulus(youngs_modulus, poisson_ratio, youngs_modulus_2, poisson_ratio_2)
     kappa, second, first, converged = ellipse_parameters(difference, method)
     scale = (1.5 * load / (total * modulus)) ** (1.0 / 3.0)

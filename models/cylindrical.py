@@ -9,6 +9,7 @@ import numpy as np
 
 from models.contact import (LINE_CONTACT_EXPONENT, SLICE_LAWS, palmgren_constant,
                             sliced_line_contact)
+from models.geometry import elements_fit
 from models.profiles import PROFILES, distinct_slices
 from models.registry import CONVERGED, NOT_CONVERGED, Constraint, Input, Model, Output
 from models.solvers import solve_increasing
@@ -334,10 +335,6 @@ def _solve(load, cos_azimuth, half_clearance, crown, constant, centrifugal, gap_
     return outputs
 
 
-def _rollers_fit(roller_count, pitch_diameter, roller_diameter):
-    return pitch_diameter * np.sin(np.pi / roller_count) > roller_diameter
-
-
 MODELS = [Model(
     name="crb_radial",
     function=crb_radial,
@@ -394,7 +391,9 @@ MODELS = [Model(
         Constraint(("clearance", "roller_diameter"), lambda clearance, roller_diameter:
                    np.abs(clearance) < roller_diameter,
                    "the clearance must be smaller than the roller diameter"),
-        Constraint(("roller_count", "pitch_diameter", "roller_diameter"), _rollers_fit,
+        Constraint(("roller_count", "pitch_diameter", "roller_diameter"),
+                   lambda roller_count, pitch_diameter, roller_diameter:
+                   elements_fit(roller_count, pitch_diameter, roller_diameter),
                    "the rollers do not fit on the pitch circle: pitch_diameter * sin(180 deg / "
                    "roller_count) must exceed roller_diameter"),
     ),

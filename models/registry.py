@@ -21,7 +21,7 @@ REQUIRED = object()
 
 # Modules that declare models (each defines a list ``MODELS``), imported on first use so that
 # model modules can import the declaration classes below without a cycle.
-_DECLARING_MODULES = ("models.cylindrical", "models.contact")
+_DECLARING_MODULES = ("models.cylindrical", "models.contact", "models.ball")
 
 
 @dataclass(frozen=True)
@@ -29,9 +29,10 @@ class Input:
     """One model input.
 
     ``kind`` is ``"quantity"`` (a number with units), ``"number"`` (a dimensionless number),
-    ``"count"`` (a positive integer that sets array shapes) or ``"choice"`` (one of
-    ``choices``). Counts and choices are *structural*: the engine calls the model once per
-    distinct combination of them. ``minimum``/``maximum`` are in ``unit``. A ``default`` of
+    ``"count"`` (a positive integer that sets array shapes), ``"choice"`` (one of
+    ``choices``) or ``"subset"`` (a list of distinct ``choices``, possibly empty, passed to the
+    model as their names in the order of ``choices``, separated by spaces). Counts, choices
+    and subsets are *structural*: the engine calls the model once per distinct combination. ``minimum``/``maximum`` are in ``unit``. A ``default`` of
     ``None`` means the model derives the value itself when it is not given (the meaning says
     how). ``dims`` names the dimensions of an array-valued input (a per-roller pattern).
     """
@@ -49,7 +50,7 @@ class Input:
 
     @property
     def structural(self) -> bool:
-        return self.kind in ("count", "choice")
+        return self.kind in ("count", "choice", "subset")
 
     @property
     def required(self) -> bool:
@@ -59,6 +60,8 @@ class Input:
         """The valid range in words, for error messages and ``describe``."""
         if self.kind == "choice":
             return "one of " + ", ".join(repr(c) for c in self.choices)
+        if self.kind == "subset":
+            return "a list of distinct values from " + ", ".join(repr(c) for c in self.choices)
         unit = "" if self.unit in ("1", "") else " " + self.unit
         low = high = ""
         if self.minimum is not None:
@@ -71,12 +74,18 @@ class Input:
 
 @dataclass(frozen=True)
 class Output:
-    """One model output: customary ``unit`` and the output's own ``dims`` after the grid's."""
+    """One model output: customary ``unit`` and the output's own ``dims`` after the grid's.
+
+    An output whose entries differ in kind (a displacement vector of translations and tilts)
+    gives ``entry_units``: one unit per entry, nested like its own dims; ``unit`` then names
+    them all ("mm, rad"), and the dataset carries the units of each entry beside it.
+    """
 
     name: str
     unit: str
     meaning: str
     dims: tuple[str, ...] = ()
+    entry_units: tuple = ()
 
 
 @dataclass(frozen=True)
@@ -107,8 +116,8 @@ class Model:
     inputs: tuple[Input, ...]
     outputs: tuple[Output, ...]
     #: Size of each output dimension: the name of a count input (its largest value on the
-    #: grid is used) or a fixed integer.
-    dim_sizes: dict[str, str | int] = field(default_factory=dict)
+    #: grid is used; entries are numbered from 1) or a tuple of the entries' labels.
+    dim_sizes: dict[str, str | tuple[str, ...]] = field(default_factory=dict)
     constraints: tuple[Constraint, ...] = ()
     #: Rough cost of one grid point on one core [s], to choose chunk sizes and whether a
     #: cluster is worth starting.

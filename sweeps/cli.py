@@ -70,8 +70,9 @@ def _describe(name: str) -> str:
     lines = [f"{model.name} (version {model.version}): {model.summary}",
              f"Reference: {model.reference}", "", "Inputs:"]
     for i in model.inputs:
+        shown = list(i.default) if i.kind == "subset" else i.default
         default = "required" if i.required else (
-            "derived" if i.default is None else f"default {i.default}")
+            "derived" if i.default is None else f"default {shown}")
         unit = f" [{i.unit}]" if i.unit not in ("", "1") else ""
         dims = f" per {', '.join(i.dims)}" if i.dims else ""
         lines.append(f"  {i.name}{unit}{dims}: {i.meaning}; {default}; {i.range_text()}")

@@ -35,7 +35,7 @@ class Grid:
         for dim, size in sweep.model.dim_sizes.items():
             if isinstance(size, str):
                 size = int(np.max(axis_values[size][1]) if size in axis_values else fixed[size])
-            dim_sizes[dim] = size
+            dim_sizes[dim] = size if isinstance(size, int) else len(size)
         return cls(sweep.model.name, tuple(a.name for a in sweep.axes),
                    tuple(len(a) for a in sweep.axes), fixed, axis_values, dim_sizes)
 
@@ -108,6 +108,6 @@ def _shown(values: list[Value]) -> np.ndarray:
 def _attrs(sweep: Sweep, name: str, unit: str) -> dict:
     spec = sweep.model.input(name)
     attrs = {"long_name": spec.meaning, "units": unit or "1"}
-    if spec.kind == "choice":
+    if spec.kind in ("choice", "subset"):
         attrs["accepted_values"] = " ".join(spec.choices)
     return attrs

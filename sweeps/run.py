@@ -64,12 +64,21 @@ def evaluate_chunk(grid: Grid, start: int, stop: int) -> dict:
         for spec in model.outputs:
             value = _per_point(result[spec.name], members.size, len(spec.dims))
             region = (members,) + tuple(slice(0, n) for n in value.shape[1:])
-            outputs[spec.name][region] = units.from_si(value, spec.unit)
+            outputs[spec.name][region] = _from_si(value, spec)
         status[members] = _per_point(result["status"], members.size, 0)
     failed = status != 0
     for values in outputs.values():
         values[failed] = np.nan  # whatever a model left there, a failed point is NaN
     return {"outputs": outputs, "status": status, "errors": errors}
+
+
+def _from_si(value: np.ndarray, spec) -> np.ndarray:
+    """An output's SI values in its declared unit, or in each entry's own unit."""
+    if not spec.entry_units:
+        return units.from_si(value, spec.unit)
+    factors = np.vectorize(lambda unit: float(units.from_si(1.0, unit)))(
+        np.array(spec.entry_units))
+    return value * factors
 
 
 def _per_point(value, count: int, own_dims: int) -> np.ndarray:

@@ -180,6 +180,8 @@ class _Parser:
         self.seen[name] = key
 
     def default(self, spec: Input) -> Value:
+        if spec.kind == "subset":
+            return Value(" ".join(spec.default), " ".join(spec.default), "")
         if spec.kind in ("choice", "count"):
             return Value(spec.default, spec.default, spec.unit)
         unit = units.parse_unit(spec.unit)
@@ -247,7 +249,7 @@ class _Parser:
         return self.same_unit(values)
 
     def value_range(self, spec: Input, raw: dict, key: str) -> list[Value]:
-        if spec.kind == "choice" or spec.dims:
+        if spec.kind in ("choice", "subset") or spec.dims:
             self.fail(key, f"{spec.name!r} cannot take a range; list its values")
         if ("num" in raw) == ("step" in raw):
             self.fail(key, "a range needs exactly one of 'num' (number of values) or 'step'")
@@ -293,6 +295,8 @@ class _Parser:
                 self.fail(key, f"{raw!r} is not accepted; {spec.name} is {spec.range_text()}"
                           + _suggestion(str(raw), spec.choices))
             return Value(raw, raw, "")
+        if spec.kind == "subset":
+            return self.subset(spec, raw, key)
         if unit_text is not None and spec.kind == "count":
             self.fail(key, f"{spec.name!r} is a count and takes no units")
         if spec.kind == "count":
@@ -313,6 +317,21 @@ class _Parser:
             self.in_range(spec, units.convert(magnitude, unit, declared), spec.unit, key, raw)
         si = units.to_si(magnitude, unit)
         return Value(si if spec.dims else float(si), magnitude, unit_text)
+
+    def subset(self, spec: Input, raw, key: str) -> Value:
+        """A list of distinct choices, as their names in declared order joined by spaces."""
+        if not isinstance(raw, list) or not all(isinstance(x, str) for x in raw):
+            self.fail(key, f"{raw!r}: {spec.name} is {spec.range_text()}, e.g. "
+                      f"[{', '.join(repr(c) for c in spec.choices[:2])}] (on an axis: a list "
+                      "of such lists)")
+        for item in raw:
+            if item not in spec.choices:
+                self.fail(key, f"{item!r} is not accepted; {spec.name} is {spec.range_text()}"
+                          + _suggestion(item, spec.choices))
+        if len(set(raw)) != len(raw):
+            self.fail(key, f"{raw!r}: a value is listed twice")
+        names = " ".join(c for c in spec.choices if c in raw)
+        return Value(names, names, "")
 
     def magnitude(self, spec: Input, raw, key: str, unit_text):
         """The number(s) and unit text of a quantity written in any accepted form."""

@@ -45,8 +45,13 @@ def build_dataset(sweep: Sweep, grid: Grid, outputs: dict, status: np.ndarray,
     data_vars = {}
     for spec in model.outputs:
         values = outputs[spec.name].reshape(grid.shape + outputs[spec.name].shape[1:])
-        data_vars[spec.name] = (grid.dims + spec.dims, values,
-                                {"long_name": spec.meaning, "units": spec.unit})
+        attrs = {"long_name": spec.meaning, "units": spec.unit}
+        if spec.entry_units:
+            # CF has one unit per variable: entries of different kinds carry theirs beside it.
+            attrs["units"] = f"{spec.unit} (each entry's in {spec.name}_units)"
+            data_vars[f"{spec.name}_units"] = (spec.dims, np.array(spec.entry_units), {
+                "long_name": f"units of each entry of {spec.name}", "units": "1"})
+        data_vars[spec.name] = (grid.dims + spec.dims, values, attrs)
     data_vars["status"] = (grid.dims, status.reshape(grid.shape), {
         "long_name": "solver status of the grid point",
         "units": "1",
@@ -55,8 +60,13 @@ def build_dataset(sweep: Sweep, grid: Grid, outputs: dict, status: np.ndarray,
     })
     coords = coordinates(sweep)
     for dim in {d for o in model.outputs for d in o.dims}:
-        coords[dim] = ((dim,), np.arange(1, grid.dim_sizes[dim] + 1),
-                       {"long_name": f"{dim} number", "units": "1"})
+        labels = model.dim_sizes[dim]
+        if isinstance(labels, str):
+            coords[dim] = ((dim,), np.arange(1, grid.dim_sizes[dim] + 1),
+                           {"long_name": f"{dim} number", "units": "1"})
+        else:
+            coords[dim] = ((dim,), np.array(labels), {"long_name": dim.replace("_", " "),
+                                                      "units": "1"})
     attrs = {
         "Conventions": CONVENTIONS,
         "title": sweep.title,

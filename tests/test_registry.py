@@ -19,6 +19,8 @@ def test_inputs_match_the_function_signature(model):
         default = parameters[declared.name].default
         if declared.default is REQUIRED:
             assert default is inspect.Parameter.empty, declared.name
+        elif declared.kind == "subset":  # passed as the names joined by spaces
+            assert default == " ".join(declared.default), declared.name
         elif declared.kind in ("choice", "count") or declared.default is None:
             assert default == declared.default, declared.name
         else:  # the function's default is the declared one in SI
@@ -29,11 +31,23 @@ def test_inputs_match_the_function_signature(model):
 @pytest.mark.parametrize("model", MODELS, ids=[m.name for m in MODELS])
 def test_declared_units_are_readable_and_dims_have_sizes(model):
     for item in model.inputs + model.outputs:
-        if item.unit:
+        if item.unit and not getattr(item, "entry_units", ()):
             units.parse_unit(item.unit)
     for output in model.outputs:
         for dim in output.dims:
             assert dim in model.dim_sizes
+        if output.entry_units:  # one readable unit per entry, nested like the dims
+            shape = tuple(len(model.dim_sizes[d]) for d in output.dims)
+            assert np.array(output.entry_units).shape == shape
+            for unit in np.ravel(output.entry_units):
+                units.parse_unit(unit)
+
+
+@pytest.mark.parametrize("model", MODELS, ids=[m.name for m in MODELS])
+def test_outputs_and_inputs_have_distinct_names(model):
+    # An output named like an input would clash with that input's coordinate in the dataset.
+    names = [i.name for i in model.inputs] + [o.name for o in model.outputs] + ["status"]
+    assert len(set(names)) == len(names)
 
 
 @pytest.mark.parametrize("name", sorted(PRESETS))

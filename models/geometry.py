@@ -1,0 +1,13 @@
+"""Geometry shared by the bearing models."""
+from __future__ import annotations
+
+import numpy as np
+
+
+def elements_fit(count, pitch_diameter, element_diameter):
+    """Whether ``count`` rolling elements of ``element_diameter`` fit on the pitch circle.
+
+    Neighbouring centres are a chord ``d_m sin(pi / Z)`` apart; the elements fit without
+    touching each other when that chord exceeds their diameter. Any consistent length unit.
+    """
+    return np.asarray(pitch_diameter) * np.sin(np.pi / np.asarray(count)) > element_diameter

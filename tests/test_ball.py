@@ -1,0 +1,175 @@
+"""ball_5dof: equilibrium, stiffness matrix against finite differences, classical results."""
+import numpy as np
+import pytest
+from hypothesis import assume, given, settings
+from hypothesis import strategies as st
+from scipy.optimize import brentq
+
+from models.ball import DOFS, _Rings, ball_5dof, series_constant
+from models.registry import CONVERGED, INFEASIBLE
+
+MM = 1e-3
+#: The 71807AC of paper 001, Table 1, with the paper's contact constant.
+ACBB = dict(ball_count=25, ball_diameter=3.14 * MM, pitch_diameter=41 * MM,
+            contact_angle=np.radians(25), inner_curvature_ratio=0.52,
+            outer_curvature_ratio=0.53, contact_constant=1.0649e10)
+COMBINED = dict(axial_load=2000.0, radial_load=900.0, radial_load_z=-400.0, moment_y=6.0,
+                moment_z=-4.0)
+
+
+def groove_radius(bearing):
+    return (0.5 * bearing["pitch_diameter"] + (bearing["inner_curvature_ratio"] - 0.5)
+            * bearing["ball_diameter"] * np.cos(bearing["contact_angle"]))
+
+
+def test_the_stiffness_matrix_is_the_derivative_of_the_equilibrium():
+    # dq/dF by central differences of the solved equilibrium must be the inverse of K.
+    base = ball_5dof(**ACBB, **COMBINED)
+    assert base["status"][0] == CONVERGED
+    steps = (0.5, 0.5, 0.5, 0.005, 0.005)  # N, N, N, N m, N m
+    columns = []
+    for name, step in zip(("axial_load", "radial_load", "radial_load_z", "moment_y",
+                           "moment_z"), steps):
+        up = ball_5dof(**ACBB, **{**COMBINED, name: COMBINED[name] + step})
+        down = ball_5dof(**ACBB, **{**COMBINED, name: COMBINED[name] - step})
+        columns.append((up["displacement"][0] - down["displacement"][0]) / (2 * step))
+    compliance = np.stack(columns, axis=1)
+    product = base["stiffness_matrix"][0] @ compliance  # dF_i/dF_j
+    # Entries between a force and a moment have units (1/m, m): compare them per the groove
+    # radius R, the ratio of the moment and force scales.
+    scale = np.array([1, 1, 1, groove_radius(ACBB), groove_radius(ACBB)])
+    assert np.abs(product * scale[None, :] / scale[:, None] - np.eye(5)).max() < 1e-5
+
+
+@settings(max_examples=40, deadline=None)
+@given(geometry=st.sampled_from(("jones", "fixed_angle")),
+       displacement=st.lists(st.floats(-2e-5, 2e-5), min_size=5, max_size=5),
+       clearance=st.floats(-5e-6, 1e-5))
+def test_the_tangent_stiffness_is_the_derivative_of_the_ball_forces(geometry, displacement,
+                                                                     clearance):
+    distance = np.array([0.05 * 3.14 * MM])
+    rings = _Rings(25, distance, np.array([np.radians(25)]), np.array([0.5 * clearance]),
+                   np.array([1.0649e10]), geometry)
+    point = np.array([displacement])
+    index = np.array([0])
+    # A ball whose approach is within the step of zero has a kink there (Q ~ delta^1.5).
+    assume(np.abs(rings.contacts(point, index)[0]).min() > 1e-8)
+    analytic = rings.stiffness(point, index)[0]
+    step = 1e-10
+    numeric = np.empty((5, 5))
+    for j in range(5):
+        shift = np.zeros((1, 5))
+        shift[0, j] = step
+        numeric[:, j] = (rings.reaction(point + shift, index)
+                         - rings.reaction(point - shift, index))[0] / (2 * step)
+    assert np.abs(analytic - numeric).max() < 1e-6 * (np.abs(analytic).max() + 1.0)
+
+
+def test_the_stiffness_matrix_is_symmetric_and_has_the_cross_terms():
+    matrix = ball_5dof(**ACBB, **COMBINED)["stiffness_matrix"][0]
+    assert np.abs(matrix - matrix.T).max() < 1e-9 * np.abs(matrix).max()
+    # Under axial and radial load the two directions couple: K_xy is not small.
+    matrix = ball_5dof(**ACBB, axial_load=1000.0, radial_load=1000.0)["stiffness_matrix"][0]
+    assert abs(matrix[0, 1]) > 0.1 * np.sqrt(matrix[0, 0] * matrix[1, 1])
+
+
+def test_the_balls_balance_the_applied_loads():
+    # Paper 001 eq. 7: the sums of the ball forces are the applied loads.
+    result = ball_5dof(**ACBB, **COMBINED)
+    load, angle = result["ball_load"][0], result["ball_contact_angle"][0]
+    azimuth = 2 * np.pi * np.arange(25) / 25
+    radius = groove_radius(ACBB)
+    sums = [np.sum(load * np.sin(angle)),
+            np.sum(load * np.cos(angle) * np.cos(azimuth)),
+            np.sum(load * np.cos(angle) * np.sin(azimuth)),
+            np.sum(radius * load * np.sin(angle) * np.sin(azimuth)),
+            -np.sum(radius * load * np.sin(angle) * np.cos(azimuth))]
+    expected = [COMBINED[k] for k in ("axial_load", "radial_load", "radial_load_z",
+                                      "moment_y", "moment_z")]
+    assert sums == pytest.approx(expected, rel=1e-8)
+
+
+def test_the_fixed_angle_diagonal_is_the_papers_eq_10():
+    # Eq. 10 with Q = K delta^1.5 at the fixed angle: K_11 = sum Q' sin^2 a, K_22 = sum Q'
+    # cos^2 a cos^2 psi, K_44 = sum Q' R^2 sin^2 a sin^2 psi, Q' = 1.5 K^(2/3) Q^(1/3).
+    result = ball_5dof(**ACBB, axial_load=2800.0, radial_load=1500.0, geometry="fixed_angle",
+                       fixed_dofs=["tilt_y", "tilt_z"])
+    assert result["status"][0] == CONVERGED
+    load = result["ball_load"][0]
+    slope = 1.5 * ACBB["contact_constant"] ** (2 / 3) * load ** (1 / 3)
+    azimuth = 2 * np.pi * np.arange(25) / 25
+    alpha, radius = ACBB["contact_angle"], groove_radius(ACBB)
+    assert result["axial_stiffness"][0] == pytest.approx(np.sum(slope) * np.sin(alpha)**2,
+                                                         rel=1e-12)
+    assert result["radial_stiffness"][0] == pytest.approx(
+        np.sum(slope * np.cos(azimuth)**2) * np.cos(alpha)**2, rel=1e-12)
+    assert result["tilt_stiffness"][0] == pytest.approx(
+        np.sum(slope * np.sin(azimuth)**2) * (radius * np.sin(alpha))**2, rel=1e-12)
+    assert np.allclose(result["ball_contact_angle"][0], alpha)
+
+
+def test_fixed_angle_with_free_tilts_is_singular_and_reported():
+    # A radial shift with a tilt about the contact-cone apex changes no ball's approach.
+    result = ball_5dof(**ACBB, axial_load=2800.0, radial_load=1000.0, geometry="fixed_angle")
+    assert result["status"][0] == INFEASIBLE
+
+
+def test_pure_axial_load_follows_the_closed_form():
+    # Harris & Kotzalas, Rolling Bearing Analysis, eq. 7.31 (zero clearance):
+    # Fa / (Z K A^1.5) = sin(a) (cos(a0)/cos(a) - 1)^1.5, and delta_a = A (cos a0 tan a - sin a0).
+    fa = 1500.0
+    result = ball_5dof(**ACBB, axial_load=fa)
+    distance = 0.05 * ACBB["ball_diameter"]
+    a0, k, z = ACBB["contact_angle"], ACBB["contact_constant"], 25
+    alpha = brentq(lambda a: z * k * distance**1.5 * np.sin(a) * (np.cos(a0) / np.cos(a) - 1)
+                   ** 1.5 - fa, a0 + 1e-9, np.radians(60))
+    assert result["ball_contact_angle"][0] == pytest.approx(np.full(25, alpha), rel=1e-9)
+    assert result["axial_displacement"][0] == pytest.approx(
+        distance * (np.cos(a0) * np.tan(alpha) - np.sin(a0)), rel=1e-8)
+    assert result["displacement"][0, 1:] == pytest.approx(np.zeros(4), abs=1e-15)
+
+
+def test_deep_groove_bearing_has_stribecks_load_distribution():
+    # Zero clearance, many balls, pure radial load: Q_max Z / F_r = 1/J_r(0.5) = 4.37
+    # (Stribeck 1901; Harris & Kotzalas, table 7.1, J_r = 0.2288).
+    result = ball_5dof(ball_count=60, ball_diameter=10 * MM, pitch_diameter=400 * MM,
+                       contact_angle=0.0, radial_load=np.array([500.0, 8000.0]),
+                       fixed_dofs="axial tilt_y tilt_z")
+    ratio = result["ball_load"].max(axis=1) * 60 / np.array([500.0, 8000.0])
+    assert ratio == pytest.approx(1 / 0.2288, rel=2e-3)
+
+
+def test_clearance_gives_the_free_contact_angle():
+    # Harris & Kotzalas eq. 2.21: a deep-groove bearing with diametral clearance Pd takes the
+    # free contact angle acos(1 - Pd/(2A)) as soon as an axial load seats it.
+    clearance = 0.02 * MM
+    result = ball_5dof(ball_count=9, ball_diameter=7.9 * MM, pitch_diameter=38.5 * MM,
+                       contact_angle=0.0, inner_curvature_ratio=0.52, outer_curvature_ratio=0.52,
+                       clearance=clearance, axial_load=0.01)
+    distance = 0.04 * 7.9 * MM
+    assert result["status"][0] == CONVERGED
+    free = np.degrees(np.arccos(1 - clearance / (2 * distance)))
+    assert np.degrees(result["ball_contact_angle"][0]) == pytest.approx(np.full(9, free), abs=0.01)
+
+
+def test_no_load_is_the_centred_ring():
+    result = ball_5dof(**ACBB)
+    assert result["status"][0] == CONVERGED
+    assert np.all(result["displacement"] == 0) and np.all(result["ball_load"] == 0)
+
+
+def test_the_hertz_constant_is_used_when_none_is_given():
+    bearing = {k: v for k, v in ACBB.items() if k != "contact_constant"}
+    result = ball_5dof(**bearing, axial_load=1000.0)
+    # Paper 001 eq. 4 as corrected: two contacts in series, K = (Ki^-2/3 + Ko^-2/3)^-3/2.
+    assert series_constant(8.0, 8.0) == pytest.approx(8.0 / 2**1.5)
+    assert 3e9 < result["hertz_contact_constant"][0] < 1e10
+    given = ball_5dof(**bearing, axial_load=1000.0,
+                      contact_constant=result["hertz_contact_constant"][0])
+    assert given["displacement"] == pytest.approx(result["displacement"], rel=1e-12)
+
+
+def test_dofs_are_named_in_order():
+    assert DOFS == ("axial", "radial_y", "radial_z", "tilt_y", "tilt_z")
+    with pytest.raises(ValueError):
+        ball_5dof(**ACBB, fixed_dofs=["radial"])
