@@ -32,9 +32,10 @@ class Input:
     ``"count"`` (a positive integer that sets array shapes), ``"choice"`` (one of
     ``choices``) or ``"subset"`` (a list of distinct ``choices``, possibly empty, passed to the
     model as their names in the order of ``choices``, separated by spaces). Counts, choices
-    and subsets are *structural*: the engine calls the model once per distinct combination. ``minimum``/``maximum`` are in ``unit``. A ``default`` of
-    ``None`` means the model derives the value itself when it is not given (the meaning says
-    how). ``dims`` names the dimensions of an array-valued input (a per-roller pattern).
+    and subsets are *structural*: the engine calls the model once per distinct combination.
+    ``minimum``/``maximum`` are in ``unit``. A ``default`` of ``None`` means the model derives
+    the value itself when it is not given (the meaning says how). ``dims`` names the
+    dimensions of an array-valued input (a per-roller pattern).
     """
 
     name: str

@@ -1,12 +1,13 @@
 """Paper 000's trend figures (Figs. 6-14) and its stated numbers, from the netCDF results only."""
 from pathlib import Path
 
-import matplotlib
+import matplotlib.pyplot as plt
+import numpy as np
 
-matplotlib.use("Agg")
-import matplotlib.pyplot as plt  # noqa: E402
-import numpy as np  # noqa: E402
-import xarray as xr  # noqa: E402
+from sweeps.plotting import family as _family
+from sweeps.plotting import label as _label
+from sweeps.plotting import result as _open
+from sweeps.plotting import save as _save
 
 FIGURES = {
     "fig06_bearing_a.png": "Fig. 6: bearing A, radial stiffness against radial load (no speed, "
@@ -33,31 +34,6 @@ FIGURES = {
                             "load-deflection constant K (multiples of Palmgren's); dotted: the "
                             "paper's values.",
 }
-
-
-def _open(results: Path, name: str) -> xr.Dataset:
-    with xr.open_dataset(results / f"{name}.nc") as data:
-        return data.load()
-
-
-def _label(variable: xr.DataArray) -> str:
-    return f"{variable.name.replace('_', ' ')} [{variable.attrs['units']}]"
-
-
-def _family(axis, x, y, over: str, label: str, plot: str = "plot", **settings):
-    """One line of ``y`` against ``x`` for each value along the dimension ``over``."""
-    style = {"where": "post"} if plot == "step" else {"marker": "o", "ms": 2}
-    for value in y[over].values:
-        getattr(axis, plot)(x, y.sel({over: value}), label=label.format(value), **style)
-    axis.set(**settings)
-    axis.legend(fontsize=7)
-    axis.grid(alpha=0.3)
-
-
-def _save(figure, figures: Path, name: str):
-    figure.tight_layout()
-    figure.savefig(figures / name, dpi=110)
-    plt.close(figure)
 
 
 def draw(results: Path, figures: Path):
