@@ -28,6 +28,7 @@ _LOADS = ("axial_load", "radial_load", "radial_load_z", "moment_y", "moment_z")
 _TILTS = slice(3, 5)
 _RESIDUAL_TOLERANCE = 1e-10  # relative to the load [-]
 _MAX_ITERATIONS = 200
+_START_DAMPING = 0.01  # of the preloaded stiffness: a start close to Newton
 _SINGULAR = 1e-9  # reciprocal condition number below which the stiffness is singular [-]
 
 
@@ -94,55 +95,90 @@ class _Rings:
     def __init__(self, ball_count, distance, contact_angle, half_clearance, constant, geometry):
         azimuth = 2.0 * np.pi * np.arange(ball_count) / ball_count
         zero, one = np.zeros(ball_count), np.ones(ball_count)
-        # Maps the scaled ring displacement to each ball's (axial, radial) displacement.
-        self.influence = np.stack([
-            np.stack([one, zero, zero, np.sin(azimuth), -np.cos(azimuth)], axis=-1),
-            np.stack([zero, np.cos(azimuth), np.sin(azimuth), zero, zero], axis=-1)], axis=1)
-        self.azimuth = azimuth
+        # Rows that map the scaled ring displacement to each ball's axial and radial
+        # displacement, (Z, 5), and their outer products flattened, (Z, 25): with them the
+        # sums over balls are matrix products.
+        self.axial = np.stack([one, zero, zero, np.sin(azimuth), -np.cos(azimuth)], axis=-1)
+        self.radial = np.stack([zero, np.cos(azimuth), np.sin(azimuth), zero, zero], axis=-1)
+        def pair(a, b):
+            return (a[:, :, None] * b[:, None, :]).reshape(ball_count, 25)
+
+        self.axial_axial = pair(self.axial, self.axial)
+        self.radial_radial = pair(self.radial, self.radial)
+        self.mixed = pair(self.axial, self.radial) + pair(self.radial, self.axial)
         self.distance, self.constant = distance, constant
         self.jones = geometry == "jones"
-        sin0, cos0 = np.sin(contact_angle), np.cos(contact_angle)
-        self.reference = np.stack([distance * sin0, distance * cos0 - half_clearance], -1)
-        self.normal0 = np.stack([sin0, cos0], -1)
-        self.offset0 = half_clearance * cos0
+        self.sin0, self.cos0 = np.sin(contact_angle), np.cos(contact_angle)
+        self.axial0 = distance * self.sin0
+        self.radial0 = distance * self.cos0 - half_clearance
+        self.offset0 = half_clearance * self.cos0
 
     def contacts(self, scaled, index):
-        """Ball approach, load, load slope and unit normal at the displacement ``scaled``."""
-        shift = np.einsum("zak,nk->nza", self.influence, scaled)
+        """Each ball's approach, load, load slope, unit normal (axial and radial parts) and
+        centre distance at the displacement ``scaled`` (``(N, Z)`` each)."""
+        axial_shift, radial_shift = scaled @ self.axial.T, scaled @ self.radial.T
         if self.jones:
-            separation = self.reference[index, None, :] + shift
-            length = np.hypot(separation[..., 0], separation[..., 1])
-            normal = separation / length[..., None]
+            separation_axial = self.axial0[index, None] + axial_shift
+            separation_radial = self.radial0[index, None] + radial_shift
+            length = np.hypot(separation_axial, separation_radial)
+            normal_axial, normal_radial = separation_axial / length, separation_radial / length
             approach = length - self.distance[index, None]
         else:
-            normal = np.broadcast_to(self.normal0[index, None, :], shift.shape)
+            sin0, cos0 = self.sin0[index, None], self.cos0[index, None]
+            normal_axial = np.broadcast_to(sin0, axial_shift.shape)
+            normal_radial = np.broadcast_to(cos0, axial_shift.shape)
             length = None
-            approach = np.einsum("nza,na->nz", shift, self.normal0[index]) \
-                - self.offset0[index, None]
-        compressed = np.maximum(approach, 0.0)
+            approach = axial_shift * sin0 + radial_shift * cos0 - self.offset0[index, None]
+        root = np.sqrt(np.maximum(approach, 0.0))
         constant = self.constant[index, None]
-        load = constant * compressed**POINT_CONTACT_EXPONENT
-        slope = POINT_CONTACT_EXPONENT * constant * np.sqrt(compressed)
-        return approach, load, slope, normal, length
+        load = constant * root**3  # K delta^1.5
+        slope = POINT_CONTACT_EXPONENT * constant * root
+        return approach, load, slope, normal_axial, normal_radial, length
+
+    def uniform_stiffness(self, approach, index):
+        """Stiffness with every ball at the approach ``approach`` ``(N,)`` and its unloaded
+        contact angle: a preloaded bearing's, to start the equilibrium iteration from."""
+        shape = (approach.size, self.axial.shape[0])
+        approach = np.broadcast_to(approach[:, None], shape)
+        root = np.sqrt(approach)
+        constant = self.constant[index, None]
+        return self.stiffness_of((
+            approach, constant * root**3, POINT_CONTACT_EXPONENT * constant * root,
+            np.broadcast_to(self.sin0[index, None], shape),
+            np.broadcast_to(self.cos0[index, None], shape),
+            self.distance[index, None] + approach))
 
     def reaction(self, scaled, index):
         """Scaled generalised force the balls put on the inner ring (paper eq. 6-7)."""
-        _, load, _, normal, _ = self.contacts(scaled, index)
-        return np.einsum("zak,nza->nk", self.influence, load[..., None] * normal)
+        return self.reaction_of(self.contacts(scaled, index))
+
+    def reaction_of(self, contacts):
+        _, load, _, normal_axial, normal_radial, _ = contacts
+        return (load * normal_axial) @ self.axial + (load * normal_radial) @ self.radial
 
     def stiffness(self, scaled, index):
-        """Scaled tangent stiffness d(reaction)/d(displacement), ``(N, 5, 5)`` (eq. 9).
+        """Scaled tangent stiffness d(reaction)/d(displacement), ``(N, 5, 5)`` (eq. 9)."""
+        return self.stiffness_of(self.contacts(scaled, index))
+
+    def stiffness_of(self, contacts):
+        """The stiffness from :meth:`contacts`' results.
 
         A ball's force ``Q(s) s/|s|`` on the centre separation ``s`` has the derivative
         ``Q' n n^T + (Q/|s|)(I - n n^T)``: the second term, the turning of the line of
         action, is what the fixed-angle geometry leaves out.
         """
-        _, load, slope, normal, length = self.contacts(scaled, index)
-        outer = normal[..., :, None] * normal[..., None, :]
-        ball = slope[..., None, None] * outer
+        _, load, slope, normal_axial, normal_radial, length = contacts
+        axial_axial = slope * normal_axial**2
+        radial_radial = slope * normal_radial**2
+        mixed = slope * normal_axial * normal_radial
         if self.jones:
-            ball = ball + (load / length)[..., None, None] * (np.eye(2) - outer)
-        return np.einsum("zai,nzab,zbk->nik", self.influence, ball, self.influence)
+            turning = load / length
+            axial_axial = axial_axial + turning * normal_radial**2
+            radial_radial = radial_radial + turning * normal_axial**2
+            mixed = mixed - turning * normal_axial * normal_radial
+        matrix = axial_axial @ self.axial_axial + radial_radial @ self.radial_radial \
+            + mixed @ self.mixed
+        return matrix.reshape(-1, 5, 5)
 
 
 def ball_5dof(ball_count, ball_diameter, pitch_diameter, contact_angle,
@@ -231,7 +267,7 @@ def ball_5dof(ball_count, ball_diameter, pitch_diameter, contact_angle,
     loaded = np.linalg.norm(load, axis=-1) > 0
     status = np.select([~hertz_ok, ~converged & singular, ~converged, singular & loaded],
                        [NOT_CONVERGED, INFEASIBLE, NOT_CONVERGED, INFEASIBLE], CONVERGED)
-    approach, ball_load, _, normal, _ = rings.contacts(scaled, everything)
+    approach, ball_load, _, normal_axial, normal_radial, _ = rings.contacts(scaled, everything)
     displacement = scaled / scale
     matrix = stiffness * scale[:, :, None] * scale[:, None, :]
     outputs = {
@@ -243,7 +279,7 @@ def ball_5dof(ball_count, ball_diameter, pitch_diameter, contact_angle,
         "radial_stiffness": matrix[:, 1, 1],
         "tilt_stiffness": matrix[:, 3, 3],
         "ball_load": ball_load,
-        "ball_contact_angle": np.arctan2(normal[..., 0], normal[..., 1]),
+        "ball_contact_angle": np.arctan2(normal_axial, normal_radial),
         "loaded_balls": np.count_nonzero(approach > 0, axis=-1).astype(float),
         "hertz_contact_constant": series_constant(inner, outer),
     }
@@ -256,30 +292,38 @@ def _equilibrium(rings: _Rings, load, free, ball_count):
 
     Newton's method damped in the manner of Levenberg and Marquardt, vectorised over points:
     a step ``(K + mu I)^-1 r`` is taken where it lowers the residual, and ``mu`` shrinks
-    then, so that the iteration ends as Newton's; where it does not, ``mu`` grows. ``mu``
-    starts at the stiffness of all balls compressed as much as the load would compress
-    them, which makes the first step from an unloaded bearing (zero stiffness) the right
-    size.
+    then, so that the iteration ends as Newton's; where it does not, ``mu`` grows. An
+    unloaded bearing has no stiffness, so the iteration starts from the displacement the load
+    gives a bearing whose balls are all compressed as much as the load would compress them
+    (``Z K delta^1.5 = |F|``), with ``mu`` a hundredth of that bearing's stiffness.
     """
     count = load.shape[0]
     magnitude = np.linalg.norm(load, axis=-1)
     tolerance = _RESIDUAL_TOLERANCE * magnitude
     typical = (magnitude / (ball_count * rings.constant)) ** (1.0 / POINT_CONTACT_EXPONENT)
-    damping = ball_count * rings.constant * np.sqrt(typical)
-    scaled = np.zeros((count, 5))
-    residual = load.copy()
-    norm = magnitude.copy()
+    damping = _START_DAMPING * POINT_CONTACT_EXPONENT * ball_count * rings.constant * np.sqrt(
+        typical)
     identity = np.eye(int(free.sum()))
-    active = np.flatnonzero(norm > tolerance)
+    active = np.flatnonzero(magnitude > tolerance)  # unloaded points stay centred
+    scaled = np.zeros((count, 5))
+    start = rings.uniform_stiffness(typical[active], active)[:, free][:, :, free]
+    scaled[active[:, None], free] = np.linalg.solve(
+        start + damping[active, None, None] * identity, load[active][:, free, None])[..., 0]
+    contacts = rings.contacts(scaled[active], active)  # of the active points, kept in step
+    residual = np.zeros_like(load)
+    residual[active] = load[active] - rings.reaction_of(contacts)
+    residual[:, ~free] = 0.0
+    norm = np.linalg.norm(residual, axis=-1)
     for _ in range(_MAX_ITERATIONS):
         if active.size == 0:
             break
-        tangent = rings.stiffness(scaled[active], active)[:, free][:, :, free]
+        tangent = rings.stiffness_of(contacts)[:, free][:, :, free]
         step = np.zeros((active.size, 5))
         step[:, free] = np.linalg.solve(tangent + damping[active, None, None] * identity,
                                         residual[active][:, free, None])[..., 0]
         trial = scaled[active] + step
-        trial_residual = load[active] - rings.reaction(trial, active)
+        trial_contacts = rings.contacts(trial, active)
+        trial_residual = load[active] - rings.reaction_of(trial_contacts)
         trial_residual[:, ~free] = 0.0
         trial_norm = np.linalg.norm(trial_residual, axis=-1)
         better = trial_norm <= norm[active]  # equal: a step through the clearance
@@ -287,7 +331,10 @@ def _equilibrium(rings: _Rings, load, free, ball_count):
         scaled[taken], residual[taken], norm[taken] = trial[better], trial_residual[better], \
             trial_norm[better]
         damping[active] *= np.where(better, 0.2, 5.0)
-        active = active[norm[active] > tolerance[active]]
+        going = norm[active] > tolerance[active]
+        contacts = tuple(None if new is None else np.where(better[:, None], new, old)[going]
+                         for new, old in zip(trial_contacts, contacts))
+        active = active[going]
     return scaled, norm <= tolerance
 
 

@@ -173,3 +173,36 @@ def test_dofs_are_named_in_order():
     assert DOFS == ("axial", "radial_y", "radial_z", "tilt_y", "tilt_z")
     with pytest.raises(ValueError):
         ball_5dof(**ACBB, fixed_dofs=["radial"])
+
+
+@settings(max_examples=60, deadline=None)
+@given(loads=st.lists(st.floats(-3000, 4000), min_size=3, max_size=3),
+       moments=st.lists(st.floats(-10, 10), min_size=2, max_size=2),
+       clearance=st.floats(-0.004, 0.02), geometry=st.sampled_from(("jones", "fixed_angle")),
+       held=st.sampled_from(((), ("tilt_y", "tilt_z"))))
+def test_any_load_is_balanced_or_flagged(loads, moments, clearance, geometry, held):
+    # Whatever the load, a point either balances it in every free direction or says it did
+    # not; a single-row bearing cannot carry a pulling axial load, for one.
+    bearing = {**ACBB, "inner_curvature_ratio": 0.52, "outer_curvature_ratio": 0.53}
+    values = dict(zip(("axial_load", "radial_load", "radial_load_z"), loads))
+    values.update(zip(("moment_y", "moment_z"), moments))
+    for name in ("moment_y", "moment_z")[:len(held)]:
+        values[name] = 0.0
+    result = ball_5dof(**bearing, clearance=clearance * MM, geometry=geometry, fixed_dofs=held,
+                       **values)
+    if result["status"][0] != CONVERGED:
+        return
+    load, angle = result["ball_load"][0], result["ball_contact_angle"][0]
+    azimuth = 2 * np.pi * np.arange(25) / 25
+    radius = groove_radius(bearing)
+    sums = np.array([np.sum(load * np.sin(angle)),
+                     np.sum(load * np.cos(angle) * np.cos(azimuth)),
+                     np.sum(load * np.cos(angle) * np.sin(azimuth)),
+                     np.sum(load * np.sin(angle) * np.sin(azimuth)) * radius,
+                     -np.sum(load * np.sin(angle) * np.cos(azimuth)) * radius])
+    applied = np.array([values[k] for k in ("axial_load", "radial_load", "radial_load_z",
+                                            "moment_y", "moment_z")])
+    free = slice(0, 3) if held else slice(0, 5)
+    scale = np.array([1, 1, 1, radius, radius])[free]
+    assert np.abs((sums[free] - applied[free]) / scale).max() <= 1e-7 * (
+        np.linalg.norm(applied[free] / scale) + 1e-9)
