@@ -434,6 +434,6 @@ MODELS = [Model(
                    "radial_load, radial_load_z, moment_y, moment_z go with axial, radial_y, "
                    "radial_z, tilt_y, tilt_z)"),
     ),
-    seconds_per_point=2e-4,
+    seconds_per_point=3e-5,
     points_per_call=500,
 )]
