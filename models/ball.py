@@ -21,6 +21,7 @@ from models.contact import (POINT_CONTACT_EXPONENT, curvature_sum_difference,
 from models.geometry import elements_fit
 from models.registry import (CONVERGED, INFEASIBLE, NOT_CONVERGED, Constraint, Input, Model,
                              Output)
+from models.solvers import solve_equilibrium
 
 DOFS = ("axial", "radial_y", "radial_z", "tilt_y", "tilt_z")
 GEOMETRIES = ("jones", "fixed_angle")
@@ -290,52 +291,28 @@ def ball_5dof(ball_count, ball_diameter, pitch_diameter, contact_angle,
 def _equilibrium(rings: _Rings, load, free, ball_count):
     """Displacements where the balls' reaction balances ``load`` in the free directions.
 
-    Newton's method damped in the manner of Levenberg and Marquardt, vectorised over points:
-    a step ``(K + mu I)^-1 r`` is taken where it lowers the residual, and ``mu`` shrinks
-    then, so that the iteration ends as Newton's; where it does not, ``mu`` grows. An
-    unloaded bearing has no stiffness, so the iteration starts from the displacement the load
-    gives a bearing whose balls are all compressed as much as the load would compress them
-    (``Z K delta^1.5 = |F|``), with ``mu`` a hundredth of that bearing's stiffness.
+    An unloaded bearing has no stiffness, so the damped Newton iteration starts from the
+    displacement the load gives a bearing whose balls are all compressed as much as the load
+    would compress them (``Z K delta^1.5 = |F|``), with a damping of a hundredth of that
+    bearing's stiffness.
     """
-    count = load.shape[0]
     magnitude = np.linalg.norm(load, axis=-1)
-    tolerance = _RESIDUAL_TOLERANCE * magnitude
     typical = (magnitude / (ball_count * rings.constant)) ** (1.0 / POINT_CONTACT_EXPONENT)
     damping = _START_DAMPING * POINT_CONTACT_EXPONENT * ball_count * rings.constant * np.sqrt(
         typical)
-    identity = np.eye(int(free.sum()))
-    active = np.flatnonzero(magnitude > tolerance)  # unloaded points stay centred
-    scaled = np.zeros((count, 5))
-    start = rings.uniform_stiffness(typical[active], active)[:, free][:, :, free]
-    scaled[active[:, None], free] = np.linalg.solve(
-        start + damping[active, None, None] * identity, load[active][:, free, None])[..., 0]
-    contacts = rings.contacts(scaled[active], active)  # of the active points, kept in step
-    residual = np.zeros_like(load)
-    residual[active] = load[active] - rings.reaction_of(contacts)
-    residual[:, ~free] = 0.0
-    norm = np.linalg.norm(residual, axis=-1)
-    for _ in range(_MAX_ITERATIONS):
-        if active.size == 0:
-            break
-        tangent = rings.stiffness_of(contacts)[:, free][:, :, free]
-        step = np.zeros((active.size, 5))
-        step[:, free] = np.linalg.solve(tangent + damping[active, None, None] * identity,
-                                        residual[active][:, free, None])[..., 0]
-        trial = scaled[active] + step
-        trial_contacts = rings.contacts(trial, active)
-        trial_residual = load[active] - rings.reaction_of(trial_contacts)
-        trial_residual[:, ~free] = 0.0
-        trial_norm = np.linalg.norm(trial_residual, axis=-1)
-        better = trial_norm <= norm[active]  # equal: a step through the clearance
-        taken = active[better]
-        scaled[taken], residual[taken], norm[taken] = trial[better], trial_residual[better], \
-            trial_norm[better]
-        damping[active] *= np.where(better, 0.2, 5.0)
-        going = norm[active] > tolerance[active]
-        contacts = tuple(None if new is None else np.where(better[:, None], new, old)[going]
-                         for new, old in zip(trial_contacts, contacts))
-        active = active[going]
-    return scaled, norm <= tolerance
+    active = np.flatnonzero(magnitude > 0)  # unloaded points stay centred
+    start = np.zeros_like(load)
+    preloaded = rings.uniform_stiffness(typical[active], active)[:, free][:, :, free]
+    start[active[:, None], free] = np.linalg.solve(
+        preloaded + damping[active, None, None] * np.eye(int(free.sum())),
+        load[active][:, free, None])[..., 0]
+
+    def evaluate(scaled, index):
+        contacts = rings.contacts(scaled, index)
+        return rings.reaction_of(contacts), rings.stiffness_of(contacts)
+
+    return solve_equilibrium(evaluate, start, load, damping,
+                             _RESIDUAL_TOLERANCE * magnitude, free, _MAX_ITERATIONS)
 
 
 def _reciprocal_condition(matrices):

@@ -59,3 +59,71 @@ def solve_increasing(residual, lower, upper, start, xtol, max_iter=200):
         converged[active[done]] = True
         active = active[~done]
     return x, converged
+
+
+def solve_equilibrium(evaluate, start, load, damping, tolerance, free=None, max_iter=200):
+    """Displacements ``x`` where a structure's reaction balances ``load``, for many points.
+
+    Newton's method damped in the manner of Levenberg and Marquardt: a step
+    ``(K + mu I)^-1 (F - R)`` is taken where it does not raise the residual ``|F - R|``, and
+    ``mu`` shrinks fivefold then, so that the iteration ends as Newton's; where it does, the
+    step is refused and ``mu`` grows fivefold. A step that leaves the residual unchanged is
+    taken: it may cross a clearance, where nothing resists. Each iteration evaluates the
+    structure once, at the trial point.
+
+    Parameters
+    ----------
+    evaluate : callable
+        ``evaluate(x, index) -> (reaction, stiffness)`` for the points ``index``: ``(n, d)``
+        and ``(n, d, d)``, the stiffness ``d(reaction)/dx`` (symmetric, not negative).
+    start : numpy.ndarray
+        ``(N, d)`` first displacements.
+    load : numpy.ndarray
+        ``(N, d)`` loads ``F``.
+    damping : numpy.ndarray
+        ``(N,)`` first ``mu``, in the units of the stiffness.
+    tolerance : numpy.ndarray
+        ``(N,)`` residual norm at which a point is done.
+    free : numpy.ndarray of bool, optional
+        ``(d,)`` the displacements that may move (the others stay at ``start``; their
+        residuals are not counted). Default: all.
+
+    Returns
+    -------
+    x, converged : numpy.ndarray
+    """
+    x = np.array(start, dtype=float)
+    count, size = x.shape
+    free = np.ones(size, dtype=bool) if free is None else np.asarray(free)
+    identity = np.eye(int(free.sum()))
+    damping = np.array(damping, dtype=float)
+
+    def residual_of(reaction, index):
+        residual = load[index] - reaction
+        residual[:, ~free] = 0.0
+        return residual, np.linalg.norm(residual, axis=-1)
+
+    everything = np.arange(count)
+    reaction, stiffness = evaluate(x, everything)
+    residual, norm = residual_of(reaction, everything)
+    active = np.flatnonzero(norm > tolerance)
+    stiffness = stiffness[active]
+    for _ in range(max_iter):
+        if active.size == 0:
+            break
+        step = np.zeros((active.size, size))
+        step[:, free] = np.linalg.solve(
+            stiffness[:, free][:, :, free] + damping[active, None, None] * identity,
+            residual[active][:, free, None])[..., 0]
+        trial = x[active] + step
+        trial_reaction, trial_stiffness = evaluate(trial, active)
+        trial_residual, trial_norm = residual_of(trial_reaction, active)
+        better = trial_norm <= norm[active]
+        taken = active[better]
+        x[taken], residual[taken], norm[taken] = trial[better], trial_residual[better], \
+            trial_norm[better]
+        damping[active] *= np.where(better, 0.2, 5.0)
+        stiffness = np.where(better[:, None, None], trial_stiffness, stiffness)
+        going = norm[active] > tolerance[active]
+        stiffness, active = stiffness[going], active[going]
+    return x, norm <= tolerance
