@@ -18,6 +18,10 @@ class Preset:
     notes: str = ""
 
 
+_PAPER003_LOADING = {"roller_count": 16, "effective_length": "21.5 mm",
+                     "roller_mean_diameter": "13.71 mm", "outer_contact_angle": "28 deg",
+                     "radial_load": "40 kN", "axial_load": "27 kN"}
+
 _PRESETS = (
     Preset(
         name="paper000-A",
@@ -72,6 +76,27 @@ _PRESETS = (
               "load; the contact constant is the paper's, where Hertz theory gives "
               "5.45e9 N/m^1.5 for these ratios (remove contact_constant to use it). Zero "
               "clearance: the axial preload of 1000 N is a load of the study.",
+    ),
+    Preset(
+        name="paper003-table1",
+        model="trb_load",
+        values=_PAPER003_LOADING,
+        source="Paper 003, Table 1 (single-row tapered roller bearing of a vehicle reducer)",
+        notes="Roller length 21.5 mm is taken as the effective length l of eq. 14; the "
+              "contact constant is eq. 14's default.",
+    ),
+    Preset(
+        name="paper003-table1-rib",
+        model="trb_rib",
+        values={**_PAPER003_LOADING, "roller_large_diameter": "15.21 mm",
+                "roller_half_angle": "4 deg", "roller_end_radius": "103 mm",
+                "oil_groove_size": "1 mm", "rib_diameter": "74.007 mm",
+                "youngs_modulus": "206 GPa", "poisson_ratio": 0.3},
+        source="Paper 003, Table 1",
+        notes="The rib diameter di is not stated. 74.007 mm makes the rib's radius of curvature "
+              "R12 at the design method's rib angle 88 deg 53' (contact at the middle of the "
+              "rib) equal to Table 1's arc-rib radius rho = 109 mm. The rib angle is the "
+              "study's axis.",
     ),
 )
 

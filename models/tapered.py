@@ -1,0 +1,401 @@
+"""Tapered roller bearing: load distribution under combined load, and the roller-end / rib
+contact (paper 003).
+
+Outer ring (cup) fixed; the inner ring (cone) is displaced radially by ``delta_r`` along the
+radial load and axially by ``delta_a``; roller ``i`` sits at azimuth ``2 pi (i - 1) / Z`` from
+the radial load, so roller 1 carries the most (the paper's Table 2 numbering).
+
+The rib contact is drawn in the plane through the bearing axis and the most loaded roller,
+in a frame on the inner raceway line: ``x`` along it towards the rib, ``y`` across it towards
+the roller axis, origin at the roller's large-end corner. The roller is a cone of half angle
+``phi`` whose large end, of diameter ``D_w1``, is a sphere of radius ``SR`` through the
+large-end edge, centred on the roller axis; the rib is a cone of the inner ring whose
+generatrix makes the rib angle ``Psi`` with the raceway line and meets it at ``A``; the oil
+groove takes the first ``m`` of the rib from ``A``.
+"""
+from __future__ import annotations
+
+import numpy as np
+
+from models.contact import hertz_point
+from models.registry import (CONVERGED, INFEASIBLE, NOT_CONVERGED, Constraint, Input, Model,
+                             Output)
+from models.solvers import solve_equilibrium, solve_increasing
+
+#: Load-deflection exponent of a roller between its raceways, Q = K delta^1.11 (eq. 13-18).
+LOAD_EXPONENT = 1.11
+RIB_FORCES = ("balance", "paper")
+_RESIDUAL_TOLERANCE = 1e-12  # relative to the load [-]
+_LIMIT_BRACKET = (np.radians(80.0), np.radians(90.0))  # rib angles searched for the limit
+_ANGLE_TOLERANCE = 1e-9  # [rad], 0.0002 arcsec
+
+
+def paper_contact_constant(effective_length, roller_mean_diameter):
+    """``K_ne = 2.89e4 l^0.82 D_w^0.11`` (paper 003 eq. 14; N, mm) in SI, [N/m^1.11].
+
+    Parameters
+    ----------
+    effective_length, roller_mean_diameter : array_like
+        ``l`` and ``D_w`` [m].
+    """
+    per_mm = 2.89e4 * (1e3 * np.asarray(effective_length)) ** 0.82 * (
+        1e3 * np.asarray(roller_mean_diameter)) ** 0.11
+    return per_mm * 1e3**LOAD_EXPONENT
+
+
+def _roller_azimuths(roller_count):
+    return 2.0 * np.pi * np.arange(roller_count) / roller_count
+
+
+def trb_load(radial_load, axial_load, roller_count, effective_length, roller_mean_diameter,
+             outer_contact_angle, contact_constant=None):
+    """Displacements and roller loads of a tapered roller bearing under combined load.
+
+    Parameters
+    ----------
+    radial_load, axial_load : array_like
+        ``F_r``, ``F_a`` [N] on the inner ring.
+    roller_count : int
+        ``Z``.
+    effective_length, roller_mean_diameter : array_like
+        ``l``, ``D_w`` [m] (enter only the default contact constant).
+    outer_contact_angle : array_like
+        ``alpha`` [rad], the cup's contact angle.
+    contact_constant : array_like or None
+        ``K_ne`` [N/m^1.11] of a roller between both raceways; None: eq. 14.
+
+    Returns
+    -------
+    dict of numpy.ndarray
+        ``radial_displacement`` ``delta_r``, ``axial_displacement`` ``delta_a`` [m],
+        ``roller_load`` ``(N, Z)`` [N] (eq. 18 with its exponent 1.11), ``loaded_rollers``,
+        ``status``: infeasible where ``F_r tan(alpha) > F_a`` (the rollers cannot carry the
+        radial load without pulling) or ``F_a = 0``.
+
+    Notes
+    -----
+    Roller ``i`` is compressed by ``delta_r cos(psi_i) cos(alpha) + delta_a sin(alpha)``
+    and carries ``Q_i = K_ne delta_i^1.11`` along the cup's normal; eq. 16 balances the sums
+    of ``Q_i cos(alpha) cos(psi_i)`` and ``Q_i sin(alpha)`` with ``F_r`` and ``F_a``.
+
+    References
+    ----------
+    .. [1] Paper 003, eq. 13-18 and Table 2.
+    """
+    arrays = np.broadcast_arrays(*(np.atleast_1d(np.asarray(a, dtype=float)) for a in (
+        radial_load, axial_load, effective_length, roller_mean_diameter, outer_contact_angle,
+        np.nan if contact_constant is None else contact_constant)))
+    radial, axial, length, diameter, angle, given = arrays
+    constant = np.where(np.isnan(given), paper_contact_constant(length, diameter), given)
+    azimuth = _roller_azimuths(roller_count)
+    # The rows that turn (delta_r, delta_a) into each roller's compression, (N, Z, 2).
+    rows = np.stack([np.cos(angle)[:, None] * np.cos(azimuth), np.broadcast_to(
+        np.sin(angle)[:, None], (angle.size, roller_count))], axis=-1)
+    carried = (axial > 0) & (radial * np.tan(angle) <= axial)
+
+    def evaluate(displacement, index):
+        compression = np.maximum(np.einsum("nzk,nk->nz", rows[index], displacement), 0.0)
+        load = constant[index, None] * compression**LOAD_EXPONENT
+        slope = LOAD_EXPONENT * constant[index, None] * compression ** (LOAD_EXPONENT - 1.0)
+        return (np.einsum("nz,nzk->nk", load, rows[index]),
+                np.einsum("nz,nzi,nzk->nik", slope, rows[index], rows[index]))
+
+    # Start from the axial displacement of eq. 15 (all rollers equally loaded by F_a) with
+    # a radial shift that keeps every roller compressed.
+    sin_angle = np.sin(angle)
+    axial_start = (np.maximum(axial, 0.0) / (roller_count * constant * sin_angle
+                                             ** (LOAD_EXPONENT + 1.0))) ** (1 / LOAD_EXPONENT)
+    start = np.stack([0.5 * axial_start * np.tan(angle), axial_start], -1)
+    typical = LOAD_EXPONENT * roller_count * constant * axial_start ** (LOAD_EXPONENT - 1.0)
+    load = np.stack([radial, axial], -1)
+    displacement, converged = solve_equilibrium(
+        evaluate, start, load, 0.01 * typical, _RESIDUAL_TOLERANCE * np.linalg.norm(load, axis=-1))
+    compression = np.einsum("nzk,nk->nz", rows, displacement)
+    roller_load = constant[:, None] * np.maximum(compression, 0.0) ** LOAD_EXPONENT
+    status = np.select([~carried, ~converged], [INFEASIBLE, NOT_CONVERGED], CONVERGED)
+    return {"radial_displacement": displacement[:, 0], "axial_displacement": displacement[:, 1],
+            "roller_load": roller_load,
+            "loaded_rollers": np.count_nonzero(compression > 0, axis=-1).astype(float),
+            "status": status.astype(np.int8)}
+
+
+class RollerEnd:
+    """The most loaded roller's large end against the rib, in the raceway frame.
+
+    All angles [rad] and lengths [m], arrays of the points.
+    """
+
+    def __init__(self, roller_large_diameter, roller_half_angle, roller_end_radius,
+                 oil_groove_size, rib_diameter, inner_contact_angle):
+        radius = 0.5 * roller_large_diameter
+        self.large_diameter = roller_large_diameter
+        self.end_radius, self.groove = roller_end_radius, oil_groove_size
+        self.rib_diameter, self.inner_angle = rib_diameter, inner_contact_angle
+        # The end sphere passes through the large-end edge: its centre lies on the roller
+        # axis sqrt(SR^2 - (D_w1/2)^2) behind the edge's plane.
+        behind = np.sqrt(roller_end_radius**2 - radius**2)
+        self.centre = np.stack([-radius * np.sin(roller_half_angle) - behind * np.cos(
+            roller_half_angle), radius * np.cos(roller_half_angle) - behind * np.sin(
+            roller_half_angle)], -1)
+
+    def rib_distance(self, rib_angle, index=slice(None)):
+        """``AE``: from the rib's foot on the raceway line to the contact point [m].
+
+        The contact point is where the rib's normal passes through the sphere's centre,
+        ``E = S + SR (sin Psi, cos Psi)``; ``AE = y_E / sin Psi``. ``index`` picks points.
+        """
+        height = self.centre[index, 1] + self.end_radius[index] * np.cos(rib_angle)
+        return height / np.sin(rib_angle)
+
+    def groove_distance(self, rib_angle, index=slice(None)):
+        """``CE`` [m], the contact point's distance from the oil groove's edge (eq. 19)."""
+        return self.rib_distance(rib_angle, index) - self.groove[index]
+
+    def rib_curvature_radius(self, rib_angle, index=slice(None)):
+        """The rib cone's radius of curvature at ``E`` across the generatrix, ``R_12`` [m].
+
+        For a surface of revolution it is the length of the normal from ``E`` to the axis:
+        ``r_E / cos(Psi - beta)``, ``r_E = d_i/2 + AE sin(Psi - beta)`` (exact form of eq. 6).
+        """
+        tilt = rib_angle - self.inner_angle[index]
+        radius = 0.5 * self.rib_diameter[index] + self.rib_distance(rib_angle, index) * np.sin(
+            tilt)
+        return radius / np.cos(tilt)
+
+
+def rib_force(roller_load, rib_angle, roller_half_angle, inner_contact_angle, form="balance"):
+    """Rib load ``Q_r`` of a roller whose cup contact carries ``Q_e`` [N].
+
+    'balance': the roller's force balance (eq. 10) with the rib normal at ``Psi`` to the
+    raceway line, ``Q_r = Q_e sin(alpha - beta) / sin(Psi)``; 'paper': eq. 12 as printed,
+    ``Q_e sin(2 phi) / sin(Psi - 2 beta)``. With ``alpha - beta = 2 phi`` the two differ only in
+    the denominator: eq. 11 carries ``theta - beta`` where eq. 10 gives ``theta + beta``.
+    """
+    numerator = roller_load * np.sin(2.0 * roller_half_angle)
+    if form == "paper":
+        return numerator / np.sin(rib_angle - 2.0 * inner_contact_angle)
+    return numerator / np.sin(rib_angle)
+
+
+def trb_rib(radial_load, axial_load, roller_count, effective_length, roller_mean_diameter,
+            outer_contact_angle, roller_large_diameter, roller_half_angle, roller_end_radius,
+            rib_angle, oil_groove_size, rib_diameter, youngs_modulus=206e9, poisson_ratio=0.3,
+            contact_constant=None, rib_force_form="balance"):
+    """Hertz contact of the most loaded roller's spherical end with the conical rib.
+
+    Parameters
+    ----------
+    radial_load, axial_load, roller_count, effective_length, roller_mean_diameter,
+    outer_contact_angle, contact_constant
+        As :func:`trb_load`, which gives the most loaded roller's cup load ``Q_e`` [N].
+    roller_large_diameter, roller_half_angle, roller_end_radius : array_like
+        ``D_w1`` [m], ``phi`` [rad], ``SR`` [m]. The inner raceway's contact angle is
+        ``beta = alpha - 2 phi``.
+    rib_angle : array_like
+        ``Psi`` [rad], between the rib generatrix and the inner raceway line.
+    oil_groove_size : array_like
+        ``m`` [m], the part of the rib taken by the oil groove.
+    rib_diameter : array_like
+        ``d_i`` [m], the inner ring's diameter where the rib meets the raceway line.
+    youngs_modulus, poisson_ratio : array_like
+        Of rollers and ring [Pa], [-].
+    rib_force_form : {'balance', 'paper'}
+        See :func:`rib_force`.
+
+    Returns
+    -------
+    dict of numpy.ndarray
+        ``rib_load`` [N]; ``semi_major``, ``semi_minor`` ``b``, ``approach`` [m];
+        ``max_pressure`` [Pa]; ``groove_distance`` ``CE`` and ``edge_margin`` ``CE - b`` [m];
+        ``limit_rib_angle`` [rad], where ``CE = b`` for the point's other inputs (NaN when no
+        angle in 80-90 deg is); ``roller_load`` ``Q_e`` and ``inner_load`` ``Q_i`` [N];
+        ``inner_load_offset`` [m], where along the inner contact (from its middle, towards
+        the rib) ``Q_i`` must act for the roller's moment balance; ``rib_curvature_radius``
+        [m]; ``status``.
+
+    References
+    ----------
+    .. [1] Paper 003, eq. 1-12, 19-20 and section 3.
+    """
+    load = trb_load(radial_load, axial_load, roller_count, effective_length,
+                    roller_mean_diameter, outer_contact_angle, contact_constant)
+    cup_load = load["roller_load"].max(axis=-1)
+    arrays = np.broadcast_arrays(cup_load, *(np.atleast_1d(np.asarray(a, dtype=float)) for a in (
+        outer_contact_angle, roller_large_diameter, roller_half_angle, roller_end_radius,
+        rib_angle, oil_groove_size, rib_diameter, youngs_modulus, poisson_ratio,
+        effective_length)))
+    (cup_load, alpha, large_diameter, half_angle, end_radius, angle, groove, diameter,
+     modulus, poisson, length) = arrays
+    inner_angle = alpha - 2.0 * half_angle
+    end = RollerEnd(large_diameter, half_angle, end_radius, groove, diameter, inner_angle)
+
+    def contact(psi, index=slice(None)):
+        """Rib load and Hertz contact at the rib angles ``psi`` of the points ``index``."""
+        force = rib_force(cup_load[index], psi, half_angle[index], inner_angle[index],
+                          rib_force_form)
+        sphere = 1.0 / end_radius[index]
+        return force, hertz_point(force, sphere, sphere,
+                                  -1.0 / end.rib_curvature_radius(psi, index), 0.0,
+                                  modulus[index], poisson[index])
+
+    force, hertz = contact(angle)
+    groove_distance = end.groove_distance(angle)
+    inner_load, offset = _roller_balance(end, cup_load, force, angle, half_angle, length)
+    outputs = {
+        "rib_load": force, "semi_major": hertz["semi_major"], "semi_minor": hertz["semi_minor"],
+        "approach": hertz["approach"], "max_pressure": hertz["max_pressure"],
+        "groove_distance": groove_distance, "edge_margin": groove_distance - hertz["semi_minor"],
+        "limit_rib_angle": _limit_angle(end, contact),
+        "roller_load": cup_load, "inner_load": inner_load, "inner_load_offset": offset,
+        "rib_curvature_radius": end.rib_curvature_radius(angle),
+    }
+    status = np.maximum(load["status"], hertz["status"])
+    outputs["status"] = status.astype(np.int8)
+    return outputs
+
+
+def _limit_angle(end: RollerEnd, contact):
+    """The rib angle at which the ellipse's edge reaches the groove, ``CE = b`` (eq. 20).
+
+    ``b - CE`` grows with the rib angle (the contact point moves towards the groove); the
+    Newton slope takes ``dCE/dPsi`` alone, which dominates, and the bracket keeps it safe.
+    """
+    count = end.end_radius.size
+    lower, upper = (np.full(count, bound) for bound in _LIMIT_BRACKET)
+
+    def margin(psi, index):
+        return contact(psi, index)[1]["semi_minor"] - end.groove_distance(psi, index)
+
+    def residual(psi, index):
+        slope = (end.end_radius[index] + end.centre[index, 1] * np.cos(psi)) / np.sin(psi)**2
+        return margin(psi, index), slope
+
+    everything = np.arange(count)
+    bracketed = (margin(lower, everything) < 0) & (margin(upper, everything) > 0)
+    angle, converged = solve_increasing(residual, lower, upper, 0.5 * (lower + upper),
+                                        _ANGLE_TOLERANCE)
+    return np.where(bracketed & converged, angle, np.nan)
+
+
+def _roller_balance(end: RollerEnd, cup_load, rib_load, rib_angle, half_angle, length):
+    """Inner raceway load of the roller and where it acts, from the roller's balance.
+
+    Forces on the roller in the raceway frame: the cup's ``Q_e (sin 2phi, -cos 2phi)`` at the
+    middle of the cup contact, the rib's ``Q_r (-sin Psi, -cos Psi)`` through the end sphere's
+    centre, the cone's ``Q_i (0, 1)`` at ``x_i``. The ``y`` balance gives ``Q_i``; moments
+    about the sphere's centre give ``x_i``, returned from the middle of the cone contact
+    (``x = -l/2``; both contacts end at the large end).
+    """
+    inner_load = cup_load * np.cos(2.0 * half_angle) + rib_load * np.cos(rib_angle)
+    large = end.large_diameter
+    corner = np.stack([-large * np.sin(half_angle), large * np.cos(half_angle)], -1)
+    direction = np.stack([np.cos(2.0 * half_angle), np.sin(2.0 * half_angle)], -1)
+    cup_point = corner - 0.5 * length[:, None] * direction
+    arm = cup_point - end.centre
+    cup_moment = arm[:, 0] * (-cup_load * np.cos(2.0 * half_angle)) - arm[:, 1] * (
+        cup_load * np.sin(2.0 * half_angle))
+    position = end.centre[:, 0] - cup_moment / inner_load
+    return inner_load, position + 0.5 * length
+
+
+def _carried(radial_load, axial_load, outer_contact_angle):
+    return (axial_load > 0) & (radial_load * np.tan(outer_contact_angle) <= axial_load)
+
+
+def _end_sphere_fits(roller_end_radius, roller_large_diameter):
+    return roller_end_radius > roller_large_diameter / 2
+
+
+_CARRIED = Constraint(("radial_load", "axial_load", "outer_contact_angle"), _carried,
+                      "a single tapered roller bearing needs axial_load > 0 and radial_load * "
+                      "tan(outer_contact_angle) <= axial_load, or its rollers would pull")
+_LOAD_INPUTS = (
+    Input("radial_load", "N", "radial load Fr on the inner ring", minimum=0.0),
+    Input("axial_load", "N", "axial load Fa on the inner ring", minimum=0.0,
+          exclusive_minimum=True),
+    Input("roller_count", "1", "number of rollers Z", kind="count", minimum=3, maximum=1000),
+    Input("effective_length", "mm", "effective roller length l", minimum=0.0,
+          exclusive_minimum=True),
+    Input("roller_mean_diameter", "mm", "mean roller diameter Dw", minimum=0.0,
+          exclusive_minimum=True),
+    Input("outer_contact_angle", "deg", "cup contact angle alpha", minimum=0.0,
+          exclusive_minimum=True, maximum=60.0),
+)
+_CONSTANT = Input("contact_constant", "N/mm^1.11", "load-deflection constant Kne of a roller, "
+                  "Q = Kne delta^1.11; default eq. 14, 2.89e4 l^0.82 Dw^0.11 (N, mm)",
+                  default=None, minimum=0.0, exclusive_minimum=True)
+_REFERENCE = "Paper 003, Optimization of the rib angle of tapered roller bearings"
+
+MODELS = [
+    Model(
+        name="trb_load",
+        function=trb_load,
+        summary="Tapered roller bearing under radial and axial load: radial and axial "
+                "displacement and the load of every roller.",
+        reference=_REFERENCE + ", eq. 13-18",
+        version="1",
+        inputs=_LOAD_INPUTS + (_CONSTANT,),
+        outputs=(
+            Output("radial_displacement", "mm", "radial displacement delta_r of the inner ring"),
+            Output("axial_displacement", "mm", "axial displacement delta_a of the inner ring"),
+            Output("roller_load", "N", "cup contact load Qe of each roller (eq. 18); roller 1 "
+                   "on the radial load", dims=("roller",)),
+            Output("loaded_rollers", "1", "number of rollers carrying load"),
+        ),
+        dim_sizes={"roller": "roller_count"},
+        constraints=(_CARRIED,),
+        seconds_per_point=2e-5,
+        points_per_call=2000,
+    ),
+    Model(
+        name="trb_rib",
+        function=trb_rib,
+        summary="Tapered roller bearing: Hertz contact of the most loaded roller's spherical end "
+                "with the conical rib, its distance from the oil groove, and the rib angle at "
+                "which the contact ellipse reaches the groove.",
+        reference=_REFERENCE + ", eq. 1-12, 19-20",
+        version="1",
+        inputs=_LOAD_INPUTS + (
+            Input("roller_large_diameter", "mm", "large-end roller diameter Dw1", minimum=0.0,
+                  exclusive_minimum=True),
+            Input("roller_half_angle", "deg", "roller half cone angle phi", minimum=0.0,
+                  exclusive_minimum=True, maximum=20.0),
+            Input("roller_end_radius", "mm", "radius SR of the roller's spherical end",
+                  minimum=0.0, exclusive_minimum=True),
+            Input("rib_angle", "deg", "rib angle Psi between rib generatrix and inner raceway",
+                  minimum=80.0, maximum=90.0, exclusive_minimum=True),
+            Input("oil_groove_size", "mm", "oil groove size m along the rib", minimum=0.0),
+            Input("rib_diameter", "mm", "inner ring diameter di where the rib meets the raceway "
+                  "line", minimum=0.0, exclusive_minimum=True),
+            Input("youngs_modulus", "GPa", "Young's modulus of rollers and ring", default=206.0,
+                  minimum=0.0, exclusive_minimum=True),
+            Input("poisson_ratio", "1", "Poisson's ratio of rollers and ring", default=0.3,
+                  minimum=0.0, maximum=0.5),
+            _CONSTANT,
+            Input("rib_force_form", "", "balance: the roller's force balance (eq. 10); paper: "
+                  "eq. 12 as printed", default="balance", kind="choice", choices=RIB_FORCES),
+        ),
+        outputs=(
+            Output("rib_load", "N", "rib contact load Qr"),
+            Output("semi_major", "mm", "semi-major axis a of the rib contact ellipse"),
+            Output("semi_minor", "mm", "semi-minor axis b of the rib contact ellipse"),
+            Output("approach", "mm", "approach delta of roller end and rib"),
+            Output("max_pressure", "MPa", "maximum rib contact pressure p0"),
+            Output("groove_distance", "mm", "distance CE of the contact point from the oil "
+                   "groove's edge (eq. 19)"),
+            Output("edge_margin", "mm", "CE - b: negative where the ellipse is cut by the "
+                   "groove (eq. 20)"),
+            Output("limit_rib_angle", "deg", "rib angle at which CE = b for the other inputs"),
+            Output("roller_load", "N", "cup load Qe of the most loaded roller"),
+            Output("inner_load", "N", "inner raceway load Qi of that roller"),
+            Output("inner_load_offset", "mm", "where Qi acts for the roller's moment balance, "
+                   "from the middle of the contact towards the rib"),
+            Output("rib_curvature_radius", "mm", "rib radius of curvature R12 at the contact"),
+        ),
+        constraints=(_CARRIED, Constraint(
+            ("roller_end_radius", "roller_large_diameter"), _end_sphere_fits,
+            "roller_end_radius must exceed half the roller_large_diameter")),
+        seconds_per_point=2e-4,
+        points_per_call=2000,
+    ),
+]
