@@ -25,6 +25,7 @@ from models.solvers import solve_equilibrium, solve_increasing
 #: Load-deflection exponent of a roller between its raceways, Q = K delta^1.11 (eq. 13-18).
 LOAD_EXPONENT = 1.11
 RIB_FORCES = ("balance", "paper")
+RIB_CURVATURES = ("exact", "paper")
 _RESIDUAL_TOLERANCE = 1e-12  # relative to the load [-]
 _LIMIT_BRACKET = (np.radians(80.0), np.radians(90.0))  # rib angles searched for the limit
 _ANGLE_TOLERANCE = 1e-9  # [rad], 0.0002 arcsec
@@ -126,11 +127,12 @@ class RollerEnd:
     """
 
     def __init__(self, roller_large_diameter, roller_half_angle, roller_end_radius,
-                 oil_groove_size, rib_diameter, inner_contact_angle):
+                 oil_groove_size, rib_diameter, inner_contact_angle, curvature_form="exact"):
         radius = 0.5 * roller_large_diameter
         self.large_diameter = roller_large_diameter
         self.end_radius, self.groove = roller_end_radius, oil_groove_size
         self.rib_diameter, self.inner_angle = rib_diameter, inner_contact_angle
+        self.curvature_form = curvature_form
         # The end sphere passes through the large-end edge: its centre lies on the roller
         # axis sqrt(SR^2 - (D_w1/2)^2) behind the edge's plane.
         behind = np.sqrt(roller_end_radius**2 - radius**2)
@@ -155,8 +157,14 @@ class RollerEnd:
         """The rib cone's radius of curvature at ``E`` across the generatrix, ``R_12`` [m].
 
         For a surface of revolution it is the length of the normal from ``E`` to the axis:
-        ``r_E / cos(Psi - beta)``, ``r_E = d_i/2 + AE sin(Psi - beta)`` (exact form of eq. 6).
+        ``r_E / cos(Psi - beta)``, ``r_E = d_i/2 + AE sin(Psi - beta)`` ('exact'). Eq. 6
+        ('paper'), ``sqrt((d_i / (2 sin beta))^2 - AE^2)``, takes the normal from the foot of
+        the rib along the raceway, as if the rib were square to it, and misses how the normal
+        turns with the rib angle.
         """
+        if self.curvature_form == "paper":
+            return np.sqrt((0.5 * self.rib_diameter[index] / np.sin(self.inner_angle[index]))**2
+                           - self.rib_distance(rib_angle, index)**2)
         tilt = rib_angle - self.inner_angle[index]
         radius = 0.5 * self.rib_diameter[index] + self.rib_distance(rib_angle, index) * np.sin(
             tilt)
@@ -180,7 +188,7 @@ def rib_force(roller_load, rib_angle, roller_half_angle, inner_contact_angle, fo
 def trb_rib(radial_load, axial_load, roller_count, effective_length, roller_mean_diameter,
             outer_contact_angle, roller_large_diameter, roller_half_angle, roller_end_radius,
             rib_angle, oil_groove_size, rib_diameter, youngs_modulus=206e9, poisson_ratio=0.3,
-            contact_constant=None, rib_force_form="balance"):
+            contact_constant=None, rib_force_form="balance", rib_curvature_form="exact"):
     """Hertz contact of the most loaded roller's spherical end with the conical rib.
 
     Parameters
@@ -201,6 +209,8 @@ def trb_rib(radial_load, axial_load, roller_count, effective_length, roller_mean
         Of rollers and ring [Pa], [-].
     rib_force_form : {'balance', 'paper'}
         See :func:`rib_force`.
+    rib_curvature_form : {'exact', 'paper'}
+        See :meth:`RollerEnd.rib_curvature_radius`.
 
     Returns
     -------
@@ -227,7 +237,8 @@ def trb_rib(radial_load, axial_load, roller_count, effective_length, roller_mean
     (cup_load, alpha, large_diameter, half_angle, end_radius, angle, groove, diameter,
      modulus, poisson, length) = arrays
     inner_angle = alpha - 2.0 * half_angle
-    end = RollerEnd(large_diameter, half_angle, end_radius, groove, diameter, inner_angle)
+    end = RollerEnd(large_diameter, half_angle, end_radius, groove, diameter, inner_angle,
+                    rib_curvature_form)
 
     def contact(psi, index=slice(None)):
         """Rib load and Hertz contact at the rib angles ``psi`` of the points ``index``."""
@@ -374,6 +385,9 @@ MODELS = [
             _CONSTANT,
             Input("rib_force_form", "", "balance: the roller's force balance (eq. 10); paper: "
                   "eq. 12 as printed", default="balance", kind="choice", choices=RIB_FORCES),
+            Input("rib_curvature_form", "", "exact: the rib's radius of curvature across its "
+                  "generatrix from the geometry; paper: eq. 6", default="exact",
+                  kind="choice", choices=RIB_CURVATURES),
         ),
         outputs=(
             Output("rib_load", "N", "rib contact load Qr"),

@@ -137,8 +137,9 @@ def _claim_rows(claims: list[dict], ours: dict) -> tuple[list[str], int, int]:
         value = ours.get(claim["id"])
         unit = claim.get("unit", "")
         paper = claim.get("paper")
+        digits = claim.get("digits", 3)  # significant digits shown
         if value is None or paper is None:
-            shown, verdict = "not computed" if value is None else f"{value:.3g} {unit}", \
+            shown, verdict = "not computed" if value is None else f"{value:.{digits}g} {unit}", \
                 "not comparable"
         else:
             tolerance = claim.get("tolerance", 0.0)
@@ -148,7 +149,7 @@ def _claim_rows(claims: list[dict], ours: dict) -> tuple[list[str], int, int]:
                       "at_least": value >= paper - tolerance}[comparison]
             agreeing += agrees
             comparable += 1
-            shown = f"{value:.3g} {unit}"
+            shown = f"{value:.{digits}g} {unit}"
             band = {"within": f"within {tolerance:g} {unit}", "at_most": "at most the paper's",
                     "at_least": "at least the paper's"}[comparison]
             verdict = (f"agrees ({band})" if agrees

@@ -1,17 +1,10 @@
 """ball_5dof through definitions and the engine: held displacements, labelled matrix, units."""
-import subprocess
-import sys
-from pathlib import Path
-
 import numpy as np
 import pytest
 
 from models.registry import CONVERGED, INFEASIBLE
 from sweeps import run, spec
 from sweeps.spec import SpecError
-from sweeps.study import find_studies
-
-STUDIES = Path(__file__).resolve().parents[1] / "studies"
 
 GOOD = """
 [sweep]
@@ -91,20 +84,3 @@ def test_chunking_does_not_change_the_numbers(tmp_path):
         np.testing.assert_array_equal(first[name].values, second[name].values)
 
 
-
-def test_the_ball_stiffness_study_regenerates_its_figures_and_report(tmp_path):
-    # The real study folder, run into a scratch place: every figure drawn, every stated
-    # number computed from the netCDF files.
-    study = find_studies(STUDIES)["ball_stiffness"]
-    folders = ["--studies", STUDIES, "--results", tmp_path / "results", "--figures",
-               tmp_path / "figures"]
-    for command in (["study", "ball_stiffness", "--workers", "0"], ["report"]):
-        done = subprocess.run([sys.executable, "-m", "sweeps", *command, *map(str, folders)],
-                              capture_output=True, text=True, timeout=300, cwd=tmp_path)
-        assert done.returncode == 0, done.stderr
-    for name in study.figures_module().FIGURES:
-        assert (tmp_path / "figures" / "ball_stiffness" / name).stat().st_size > 10_000
-    page = (tmp_path / "figures" / "ball_stiffness" / "README.md").read_text()
-    assert page.count("| Section") + page.count("| Table") + page.count("| Conclusion") == len(
-        study.claims())
-    assert "not computed" not in page

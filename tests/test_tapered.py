@@ -114,3 +114,23 @@ def test_the_balanced_rib_force_is_smaller_and_moves_the_limit_out():
     assert paper["rib_load"][0] / balance["rib_load"][0] == pytest.approx(
         np.sin(LIMIT) / np.sin(LIMIT - DEG(40)), rel=1e-12)
     assert balance["limit_rib_angle"][0] > paper["limit_rib_angle"][0]
+
+
+def test_the_rib_curvature_is_the_normals_length_to_the_axis():
+    # A surface of revolution curves across its generatrix with the radius measured along its
+    # normal to the axis (Meusnier). Built here in the bearing's plane: axis along x, radius r.
+    psi, beta = angle(89, 10), DEG(28) - 2 * END["roller_half_angle"]  # inner raceway angle
+    result = trb_rib(40e3, 27e3, **BEARING, **END, rib_angle=psi)
+    along, across = np.array([np.cos(beta), np.sin(beta)]), np.array([-np.sin(beta),
+                                                                      np.cos(beta)])
+    foot = np.array([0.0, END["rib_diameter"] / 2])  # where the rib meets the raceway line
+    rib = -np.cos(psi) * along + np.sin(psi) * across  # rib generatrix, away from the raceway
+    contact = foot + (result["groove_distance"][0] + END["oil_groove_size"]) * rib
+    normal = np.array([-rib[1], rib[0]])  # towards the roller's side
+    to_axis = -contact[1] / normal[1]
+    assert to_axis > 0
+    assert result["rib_curvature_radius"][0] == pytest.approx(to_axis, rel=1e-12)
+    paper = trb_rib(40e3, 27e3, **BEARING, **END, rib_angle=psi, rib_curvature_form="paper")
+    apex = END["rib_diameter"] / (2 * np.sin(beta))  # eq. 6: from the raceway cone's apex
+    assert paper["rib_curvature_radius"][0] == pytest.approx(
+        np.sqrt(apex**2 - np.sum((contact - foot) ** 2)), rel=1e-12)
