@@ -171,7 +171,8 @@ class RollerEnd:
         return radius / np.cos(tilt)
 
 
-def rib_force(roller_load, rib_angle, roller_half_angle, inner_contact_angle, form="balance"):
+def rib_contact_force(roller_load, rib_angle, roller_half_angle, inner_contact_angle,
+                      form="balance"):
     """Rib load ``Q_r`` of a roller whose cup contact carries ``Q_e`` [N].
 
     'balance': the roller's force balance (eq. 10) with the rib normal at ``Psi`` to the
@@ -188,7 +189,7 @@ def rib_force(roller_load, rib_angle, roller_half_angle, inner_contact_angle, fo
 def trb_rib(radial_load, axial_load, roller_count, effective_length, roller_mean_diameter,
             outer_contact_angle, roller_large_diameter, roller_half_angle, roller_end_radius,
             rib_angle, oil_groove_size, rib_diameter, youngs_modulus=206e9, poisson_ratio=0.3,
-            contact_constant=None, rib_force_form="balance", rib_curvature_form="exact"):
+            contact_constant=None, rib_force="balance", rib_curvature="exact"):
     """Hertz contact of the most loaded roller's spherical end with the conical rib.
 
     Parameters
@@ -207,9 +208,9 @@ def trb_rib(radial_load, axial_load, roller_count, effective_length, roller_mean
         ``d_i`` [m], the inner ring's diameter where the rib meets the raceway line.
     youngs_modulus, poisson_ratio : array_like
         Of rollers and ring [Pa], [-].
-    rib_force_form : {'balance', 'paper'}
-        See :func:`rib_force`.
-    rib_curvature_form : {'exact', 'paper'}
+    rib_force : {'balance', 'paper'}
+        See :func:`rib_contact_force`.
+    rib_curvature : {'exact', 'paper'}
         See :meth:`RollerEnd.rib_curvature_radius`.
 
     Returns
@@ -238,12 +239,12 @@ def trb_rib(radial_load, axial_load, roller_count, effective_length, roller_mean
      modulus, poisson, length) = arrays
     inner_angle = alpha - 2.0 * half_angle
     end = RollerEnd(large_diameter, half_angle, end_radius, groove, diameter, inner_angle,
-                    rib_curvature_form)
+                    rib_curvature)
 
     def contact(psi, index=slice(None)):
         """Rib load and Hertz contact at the rib angles ``psi`` of the points ``index``."""
-        force = rib_force(cup_load[index], psi, half_angle[index], inner_angle[index],
-                          rib_force_form)
+        force = rib_contact_force(cup_load[index], psi, half_angle[index],
+                                  inner_angle[index], rib_force)
         sphere = 1.0 / end_radius[index]
         return force, hertz_point(force, sphere, sphere,
                                   -1.0 / end.rib_curvature_radius(psi, index), 0.0,
@@ -383,9 +384,9 @@ MODELS = [
             Input("poisson_ratio", "1", "Poisson's ratio of rollers and ring", default=0.3,
                   minimum=0.0, maximum=0.5),
             _CONSTANT,
-            Input("rib_force_form", "", "balance: the roller's force balance (eq. 10); paper: "
+            Input("rib_force", "", "balance: the roller's force balance (eq. 10); paper: "
                   "eq. 12 as printed", default="balance", kind="choice", choices=RIB_FORCES),
-            Input("rib_curvature_form", "", "exact: the rib's radius of curvature across its "
+            Input("rib_curvature", "", "exact: the rib's radius of curvature across its "
                   "generatrix from the geometry; paper: eq. 6", default="exact",
                   kind="choice", choices=RIB_CURVATURES),
         ),

@@ -55,7 +55,7 @@ def test_the_papers_limit_rib_angle_and_ellipse():
     # Section 3.1: with the paper's rib force (eq. 12) the ellipse's edge reaches the groove at
     # 89 deg 18' 58", where b = CE = 0.6506 mm. The rib diameter is not stated: the preset's
     # comes from Table 1's rib radius rho = 109 mm at 88 deg 53', so this is a prediction.
-    result = trb_rib(40e3, 27e3, **BEARING, **END, rib_angle=LIMIT, rib_force_form="paper")
+    result = trb_rib(40e3, 27e3, **BEARING, **END, rib_angle=LIMIT, rib_force="paper")
     assert result["status"][0] == CONVERGED
     assert np.degrees(result["limit_rib_angle"][0]) * 3600 == pytest.approx(
         np.degrees(LIMIT) * 3600, abs=5.0)  # arcseconds
@@ -67,10 +67,10 @@ def test_the_papers_limit_rib_angle_and_ellipse():
 
 @pytest.mark.parametrize("form", ["balance", "paper"])
 def test_the_limit_angle_is_where_the_margin_changes_sign(form):
-    base = trb_rib(40e3, 27e3, **BEARING, **END, rib_angle=DEG(89.0), rib_force_form=form)
+    base = trb_rib(40e3, 27e3, **BEARING, **END, rib_angle=DEG(89.0), rib_force=form)
     limit = base["limit_rib_angle"][0]
     second = DEG(1 / 3600)
-    around = trb_rib(40e3, 27e3, **BEARING, **END, rib_force_form=form,
+    around = trb_rib(40e3, 27e3, **BEARING, **END, rib_force=form,
                      rib_angle=np.array([limit - second, limit, limit + second]))
     margin = around["edge_margin"]
     assert margin[0] > 0 > margin[2]
@@ -108,7 +108,7 @@ def test_the_roller_is_in_force_and_moment_balance():
 
 
 def test_the_balanced_rib_force_is_smaller_and_moves_the_limit_out():
-    paper = trb_rib(40e3, 27e3, **BEARING, **END, rib_angle=LIMIT, rib_force_form="paper")
+    paper = trb_rib(40e3, 27e3, **BEARING, **END, rib_angle=LIMIT, rib_force="paper")
     balance = trb_rib(40e3, 27e3, **BEARING, **END, rib_angle=LIMIT)
     # Eq. 12 divides by sin(Psi - 2 beta) = sin(49 deg), the balance by sin(Psi).
     assert paper["rib_load"][0] / balance["rib_load"][0] == pytest.approx(
@@ -130,7 +130,7 @@ def test_the_rib_curvature_is_the_normals_length_to_the_axis():
     to_axis = -contact[1] / normal[1]
     assert to_axis > 0
     assert result["rib_curvature_radius"][0] == pytest.approx(to_axis, rel=1e-12)
-    paper = trb_rib(40e3, 27e3, **BEARING, **END, rib_angle=psi, rib_curvature_form="paper")
+    paper = trb_rib(40e3, 27e3, **BEARING, **END, rib_angle=psi, rib_curvature="paper")
     apex = END["rib_diameter"] / (2 * np.sin(beta))  # eq. 6: from the raceway cone's apex
     assert paper["rib_curvature_radius"][0] == pytest.approx(
         np.sqrt(apex**2 - np.sum((contact - foot) ** 2)), rel=1e-12)

@@ -80,8 +80,8 @@ def _limits(results, figures):
     figure, axes = plt.subplots(1, 2, figsize=(9, 3.6), sharey=True)
     for axis, data, x in ((axes[0], load, load.axial_load),
                           (axes[1], radius, radius.roller_end_radius)):
-        for form in data.rib_force_form.values:
-            axis.plot(x, data.limit_rib_angle.sel(rib_force_form=form), "o-", ms=2,
+        for form in data.rib_force.values:
+            axis.plot(x, data.limit_rib_angle.sel(rib_force=form), "o-", ms=2,
                       label=_FORMS[form])
         axis.axhline(PAPER_LIMIT, ls=":", color="k", lw=1)
         axis.set(xlabel=label(x))
@@ -106,15 +106,15 @@ def ours(results: Path) -> dict:
     for roller in range(1, 6):
         values[f"roller_{roller}"] = float(load.roller_load.sel(roller=roller))
     named = result(results, "chosen_angles")
-    for form in named.rib_force_form.values:
-        point = named.sel(rib_force_form=form)
+    for form in named.rib_force.values:
+        point = named.sel(rib_force=form)
         limit = float(_degrees(point.limit_rib_angle.sel(named="stated_limit")))
         values[f"limit_{form}"] = 3600 * (limit - 89)
         values[f"ellipse_at_limit_{form}"] = float(point.semi_minor.sel(named="stated_limit"))
         tolerance_end = float(_degrees(point.rib_angle.sel(named="chosen_plus_tolerance")))
         values[f"chosen_margin_{form}"] = 60 * (limit - tolerance_end)
     values["groove_distance_at_limit"] = float(named.groove_distance.sel(
-        named="stated_limit", rib_force_form="paper"))
+        named="stated_limit", rib_force="paper"))
     fig04 = result(results, "fig04_rib_angle")
     for name in _FIG04:
         values[f"{name}_falls_paper"] = _ratio(fig04[name], "paper_eq6")
