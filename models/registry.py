@@ -49,6 +49,9 @@ class Input:
     exclusive_minimum: bool = False
     choices: tuple[str, ...] = ()
     dims: tuple[str, ...] = ()
+    #: For a pattern (``dims``): a single value stands for every entry, and may vary on a
+    #: plain axis; the model then receives a pattern of length one.
+    broadcast: bool = False
 
     @property
     def structural(self) -> bool:

@@ -66,7 +66,11 @@ def _stack(values: list[Value]):
         return np.array([v.si for v in values], dtype=object)
     if isinstance(first, (int, np.integer)):
         return np.array([v.si for v in values], dtype=np.int64)
-    return np.stack([np.asarray(v.si, dtype=float) for v in values])
+    arrays = [np.asarray(v.si, dtype=float) for v in values]
+    if len({a.shape for a in arrays}) > 1:  # single values stand for a whole pattern
+        size = max(a.size for a in arrays)
+        arrays = [np.broadcast_to(a, (size,)) for a in arrays]
+    return np.stack(arrays)
 
 
 def coordinates(sweep: Sweep) -> dict:
@@ -85,7 +89,7 @@ def coordinates(sweep: Sweep) -> dict:
         coords[axis.name] = ((axis.name,), np.array(axis.labels),
                              {"long_name": f"{axis.name} (labels of a zipped axis)", "units": "1"})
         for name, values in axis.values.items():
-            extra = sweep.model.input(name).dims
+            extra = sweep.model.input(name).dims if any(np.ndim(v.shown) for v in values) else ()
             coords[name] = ((axis.name,) + extra, _shown(values),
                             _attrs(sweep, name, values[0].unit))
     for name, value in sweep.fixed.items():
@@ -93,7 +97,7 @@ def coordinates(sweep: Sweep) -> dict:
             continue
         attrs = _attrs(sweep, name, value.unit)
         attrs["origin"] = sweep.origin.get(name, "")
-        dims = sweep.model.input(name).dims
+        dims = sweep.model.input(name).dims if np.ndim(value.shown) else ()
         coords[name] = (dims, np.asarray(value.shown), attrs)
     return coords
 
@@ -102,7 +106,11 @@ def _shown(values: list[Value]) -> np.ndarray:
     first = values[0].shown
     if isinstance(first, str):
         return np.array([v.shown for v in values])
-    return np.stack([np.asarray(v.shown) for v in values])
+    shown = [np.asarray(v.shown) for v in values]
+    size = max(np.size(a) for a in shown)
+    if any(a.ndim for a in shown):  # a single value on a zipped axis of patterns: repeat it
+        shown = [np.broadcast_to(a, (size,)) for a in shown]
+    return np.stack(shown)
 
 
 def _attrs(sweep: Sweep, name: str, unit: str) -> dict:

@@ -8,7 +8,7 @@ from __future__ import annotations
 import difflib
 import hashlib
 import tomllib
-from dataclasses import dataclass, field
+from dataclasses import dataclass, field, replace
 from pathlib import Path
 
 import numpy as np
@@ -196,10 +196,11 @@ class _Parser:
                           f"{model.name}")
             self.claim(name, key, inputs, model)
             spec = inputs[name]
-            if spec.dims:
+            values = self.axis_values(spec, raw, key) if spec.broadcast or not spec.dims else []
+            if spec.dims and (not spec.broadcast or any(np.ndim(v.shown) for v in values)):
                 self.fail(key, f"{name!r} is a pattern (one value per {spec.dims[0]}): vary it "
                           f"on a labelled axis, [axes.<name>] labels = [...], {name} = [...]")
-            return Axis(name, {name: self.axis_values(spec, raw, key)})
+            return Axis(name, {name: values})
         if not isinstance(raw, dict):
             self.fail(key, f"unknown parameter {name!r} of model {model.name}"
                       + _suggestion(name, inputs)
@@ -215,6 +216,11 @@ class _Parser:
             values[parameter] = self.axis_values(inputs[parameter], column, f"{key}.{parameter}")
         if not values:
             self.fail(key, "a zipped axis needs at least one parameter besides 'labels'")
+        for parameter, column in values.items():
+            sizes = {np.size(v.si) for v in column if np.ndim(v.shown)} | {1}
+            if len(sizes) > 2:
+                self.fail(f"{key}.{parameter}", "the patterns differ in length ("
+                          + ", ".join(str(n) for n in sorted(sizes - {1})) + " values)")
         lengths = {p: len(v) for p, v in values.items()}
         labels = raw.get("labels")
         if labels is not None:
@@ -249,7 +255,7 @@ class _Parser:
         return self.same_unit(values)
 
     def value_range(self, spec: Input, raw: dict, key: str) -> list[Value]:
-        if spec.kind in ("choice", "subset") or spec.dims:
+        if spec.kind in ("choice", "subset") or (spec.dims and not spec.broadcast):
             self.fail(key, f"{spec.name!r} cannot take a range; list its values")
         if ("num" in raw) == ("step" in raw):
             self.fail(key, "a range needs exactly one of 'num' (number of values) or 'step'")
@@ -297,6 +303,9 @@ class _Parser:
             return Value(raw, raw, "")
         if spec.kind == "subset":
             return self.subset(spec, raw, key)
+        if spec.dims and spec.broadcast and not isinstance(raw, (list, dict)):
+            one = self.value(replace(spec, dims=()), raw, key, unit_text, check_range)
+            return Value(np.atleast_1d(one.si), one.shown, one.unit)  # stands for every entry
         if unit_text is not None and spec.kind == "count":
             self.fail(key, f"{spec.name!r} is a count and takes no units")
         if spec.kind == "count":
