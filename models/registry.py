@@ -22,7 +22,7 @@ REQUIRED = object()
 # Modules that declare models (each defines a list ``MODELS``), imported on first use so that
 # model modules can import the declaration classes below without a cycle.
 _DECLARING_MODULES = ("models.cylindrical", "models.contact", "models.ball",
-                      "models.tapered")
+                      "models.tapered", "models.runout")
 
 
 @dataclass(frozen=True)
@@ -121,7 +121,8 @@ class Model:
     inputs: tuple[Input, ...]
     outputs: tuple[Output, ...]
     #: Size of each output dimension: the name of a count input (its largest value on the
-    #: grid is used; entries are numbered from 1) or a tuple of the entries' labels.
+    #: grid is used; entries are numbered from 1), names of counts joined by "*" (their
+    #: product), or a tuple of the entries' labels.
     dim_sizes: dict[str, str | tuple[str, ...]] = field(default_factory=dict)
     constraints: tuple[Constraint, ...] = ()
     #: Rough cost of one grid point on one core [s], to choose chunk sizes and whether a

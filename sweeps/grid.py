@@ -10,7 +10,7 @@ from dataclasses import dataclass
 
 import numpy as np
 
-from sweeps.spec import Sweep, Value
+from sweeps.spec import Sweep, Value, stack
 
 
 @dataclass
@@ -30,11 +30,12 @@ class Grid:
         axis_values = {}
         for position, axis in enumerate(sweep.axes):
             for name, values in axis.values.items():
-                axis_values[name] = (position, _stack(values))
+                axis_values[name] = (position, stack(values))
         dim_sizes = {}
         for dim, size in sweep.model.dim_sizes.items():
             if isinstance(size, str):
-                size = int(np.max(axis_values[size][1]) if size in axis_values else fixed[size])
+                size = int(np.prod([np.max(axis_values[name][1]) if name in axis_values
+                                    else fixed[name] for name in size.split("*")]))
             dim_sizes[dim] = size if isinstance(size, int) else len(size)
         return cls(sweep.model.name, tuple(a.name for a in sweep.axes),
                    tuple(len(a) for a in sweep.axes), fixed, axis_values, dim_sizes)
@@ -58,19 +59,6 @@ class Grid:
         varying = {name: values[index[position]]
                    for name, (position, values) in self.axis_values.items()}
         return varying, dict(zip(self.dims, index))
-
-
-def _stack(values: list[Value]):
-    first = values[0].si
-    if isinstance(first, str):
-        return np.array([v.si for v in values], dtype=object)
-    if isinstance(first, (int, np.integer)):
-        return np.array([v.si for v in values], dtype=np.int64)
-    arrays = [np.asarray(v.si, dtype=float) for v in values]
-    if len({a.shape for a in arrays}) > 1:  # single values stand for a whole pattern
-        size = max(a.size for a in arrays)
-        arrays = [np.broadcast_to(a, (size,)) for a in arrays]
-    return np.stack(arrays)
 
 
 def coordinates(sweep: Sweep) -> dict:

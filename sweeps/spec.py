@@ -430,9 +430,10 @@ class _Parser:
             shape = [1] * len(axis_names)
             if name in axis_of:
                 shape[axis_names.index(axis_of[name])] = len(column)
-            arrays[name] = np.array([v.si for v in column]).reshape(shape)
+            values = stack(column)
+            arrays[name] = values.reshape(shape + list(values.shape[1:]))  # patterns: trailing
         valid = np.broadcast_to(constraint.check(**arrays), np.broadcast_shapes(
-            *(a.shape for a in arrays.values())))
+            *(a.shape[:len(axis_names)] for a in arrays.values())))
         if not valid.all():
             where = np.unravel_index(np.argmin(valid), valid.shape) if valid.ndim else ()
             shown = []
@@ -444,6 +445,21 @@ class _Parser:
             section = "axes" if axis_of else "fixed"
             raise SpecError(f"{self.where}: {section}: {constraint.message} "
                             f"({', '.join(shown)})")
+
+
+def stack(values: list[Value]) -> np.ndarray:
+    """The SI values of an axis (or a fixed value) as one array, points first; a single
+    value given for a pattern input is repeated to the length of the others."""
+    first = values[0].si
+    if isinstance(first, str):
+        return np.array([v.si for v in values], dtype=object)
+    if isinstance(first, (int, np.integer)):
+        return np.array([v.si for v in values], dtype=np.int64)
+    arrays = [np.asarray(v.si, dtype=float) for v in values]
+    if len({a.shape for a in arrays}) > 1:  # single values stand for a whole pattern
+        size = max(a.size for a in arrays)
+        arrays = [np.broadcast_to(a, (size,)) for a in arrays]
+    return np.stack(arrays)
 
 
 def _plain(number) -> str:
