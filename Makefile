@@ -20,6 +20,7 @@ reproduce: $(STAMP)
 bench: $(STAMP)
 	$(PYTHON) benchmarks/crb_radial_throughput.py
 	$(PYTHON) benchmarks/ball_5dof_throughput.py
+	$(PYTHON) benchmarks/crb_runout_throughput.py
 	$(PYTHON) benchmarks/worker_scaling.py
 
 clean:

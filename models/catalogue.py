@@ -98,6 +98,20 @@ _PRESETS = (
               "rib) equal to Table 1's arc-rib radius rho = 109 mm. The rib angle is the "
               "study's axis.",
     ),
+    *(Preset(
+        name=f"paper004-NU208-{number}",
+        model="crb_runout",
+        values={"inner_raceway_diameter": f"{inner} mm", "outer_raceway_diameter": f"{outer} mm",
+                "roller_diameter": f"{roller} mm", "roller_count": 14},
+        source=f"Paper 004, Table 1 (NU208 number {number}; computed runout {computed} um, "
+               f"measured {measured} um in Table 2)",
+        notes=f"The roller diameter is the middle of the stated range {spread}; the rollers' "
+              "own deviations are roller_diameter_error. The measured roundness harmonics "
+              "behind Table 2 are not printed: the preset has round parts.",
+    ) for number, inner, outer, roller, spread, computed, measured in (
+        (1, 49.481, 71.555, 10.9985, "10.998-10.999 mm", 5.2, 5),
+        (2, 49.492, 71.540, 10.998, "10.997-10.999 mm", 3.5, 4),
+        (3, 49.499, 71.545, 10.9985, "10.997-11 mm", 5.5, 6))),
 )
 
 PRESETS = {preset.name: preset for preset in _PRESETS}

@@ -25,6 +25,7 @@ from models.geometry import elements_fit
 from models.registry import CONVERGED, MODEL_ERROR, Constraint, Input, Model, Output
 
 SPINS = ("absolute", "paper")
+_TIE = 1e-13  # [m]: lines this close count as meeting
 
 
 def roller_angles(rotation, roller_count, roller_diameter, pitch_diameter, spin="absolute"):
@@ -83,8 +84,9 @@ def lowest_centre(slope, intercept, active):
     Notes
     -----
     The envelope is convex; its minimum is where a line of falling slope meets one of rising
-    slope, both on the envelope there. Any such crossing lies on or above the minimum, so
-    the lowest envelope value over all crossings is the minimum.
+    slope, both on the envelope there: the lowest such vertex. Where the minimum is a flat
+    piece (a roller right at the bottom), its ends are the vertices taken: on the exact,
+    slightly domed contact the ring rolls off the middle to one of them.
     """
     falling = active & (slope <= 0.0)
     rising = active & (slope >= 0.0)
@@ -102,7 +104,11 @@ def lowest_centre(slope, intercept, active):
                 x = (intercept[..., left] - intercept[..., right]) / (
                     slope[..., right] - slope[..., left])
             envelope = np.max(slope * x[..., None] + intercept + lines, axis=-1)
-            better = pair & (envelope < best_y)
+            # Only a crossing on the envelope is a vertex: where a third line lies exactly as
+            # high (a roller right at the bottom), the crossing beneath it is not a resting
+            # place, the envelope's vertices beside it are.
+            on_envelope = envelope <= slope[..., left] * x + intercept[..., left] + _TIE
+            better = pair & on_envelope & (envelope < best_y)
             best_x = np.where(better, x, best_x)
             best_y = np.where(better, envelope, best_y)
     return best_x, np.where(np.isfinite(best_y), best_y, np.nan)

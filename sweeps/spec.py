@@ -311,7 +311,8 @@ class _Parser:
         if spec.kind == "count":
             if isinstance(raw, bool) or not isinstance(raw, (int, float)) or raw != int(raw):
                 self.fail(key, f"{raw!r}: {spec.name} must be {spec.range_text()}")
-            self.in_range(spec, int(raw), "1", key, raw)
+            if check_range:
+                self.in_range(spec, int(raw), "1", key, raw)
             return Value(int(raw), int(raw), "1")
         magnitude, unit_text = self.magnitude(spec, raw, key, unit_text)
         try:

@@ -66,3 +66,48 @@ def test_a_pattern_on_a_plain_axis_is_refused(toy_model):
     with pytest.raises(SpecError, match="vary it on a labelled axis"):
         spec.parse('[sweep]\nmodel = "pattern_total"\n[fixed]\nscale = 1\n'
                    '[axes]\npattern = [["1 um"], ["2 um"]]\n')
+
+
+RUNOUT = """
+[sweep]
+model = "crb_runout"
+bearing = "paper004-NU208-1"
+[fixed]
+steps_per_revolution = 36
+revolutions = 1
+"""
+
+
+def test_one_value_stands_for_every_roller_where_the_input_allows(tmp_path):
+    # crb_runout's roller roundness: one value for all rollers, fixed or on a plain axis,
+    # mixed with whole patterns on a zipped axis.
+    text = RUNOUT + ('roller_roundness_amplitude = "0.5 um"\n[axes]\n'
+                     'roller_roundness_order = [2, 4]\n[axes.rows]\nlabels = ["same", "own"]\n'
+                     'roller_roundness_phase = ["0 deg", { values = [' + ", ".join(
+                         ["0"] * 13 + ["90"]) + '], units = "deg" }]\n')
+    sweep = spec.parse(text, "def.toml")
+    assert sweep.fixed["roller_roundness_amplitude"].si.tolist() == [0.5e-6]
+    run_sweep(sweep, tmp_path / "out.nc", Executor(workers=0), progress=False)
+    data = store.open_result(tmp_path / "out.nc")
+    assert data.roller_roundness_amplitude.dims == ()
+    assert data.roller_roundness_order.dims == ("roller_roundness_order",)
+    assert data.roller_roundness_phase.dims == ("rows", "roller")
+    np.testing.assert_array_equal(data.roller_roundness_phase.sel(rows="same"), np.zeros(14))
+    assert (data.status == 0).all()
+
+
+@pytest.mark.parametrize("axes, words", [
+    ('[axes]\nroller_diameter_error = [["1 um", "2 um"], ["1 um", "2 um"]]\n',
+     "vary it on a labelled axis"),
+    ('[axes.rows]\nlabels = ["a", "b"]\nroller_diameter_error = [{ values = [1, 2], units = '
+     '"um" }, { values = [1, 2, 3], units = "um" }]\n', "the patterns differ in length (2, 3"),
+])
+def test_patterns_that_cannot_be_laid_out(axes, words):
+    with pytest.raises(SpecError) as caught:
+        spec.parse(RUNOUT + axes, "def.toml")
+    assert words in str(caught.value)
+
+
+def test_a_count_range_may_step_by_less_than_its_minimum():
+    sweep = spec.parse(RUNOUT + "[axes]\nroller_count = { start = 12, stop = 15, step = 1 }\n")
+    assert [v.si for v in sweep.axes[0].values["roller_count"]] == [12, 13, 14, 15]

@@ -29,6 +29,14 @@ def test_a_perfect_bearing_has_no_runout_and_the_classical_roller_passage():
     assert np.abs(tight["center_y"]).max() < 1e-9 * UM
 
 
+@pytest.mark.parametrize("roller_count", [12, 13, 16])
+def test_no_runout_either_when_a_roller_passes_right_under_the_ring(roller_count):
+    # With Z a multiple of 4 a roller sits exactly at the bottom at the start: the ring rests
+    # at an end of that roller's flat, not in the middle of it.
+    result = crb_runout(**{**NU208, "roller_count": roller_count}, steps_per_revolution=720)
+    assert result["runout"][0] < 1e-9 * UM
+
+
 def test_odd_roller_orders_leave_the_runout_unchanged():
     # An odd harmonic adds to the roller's radius on one side what it takes on the other.
     errors = np.linspace(0.0, 1.3, 14) * UM

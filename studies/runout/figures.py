@@ -1,0 +1,188 @@
+"""Paper 004's figures on runout (Figs. 7-12) and two studies beyond it, from the netCDF
+results only."""
+from pathlib import Path
+
+import matplotlib.pyplot as plt
+import numpy as np
+
+from sweeps.plotting import family, label, result, save
+
+FIGURES = {
+    "fig07_table3.png": "Fig. 7: runout of NU208 number 1 for the roller size arrangements of "
+                        "Table 3 (rows 1-21).",
+    "fig08_amplitude.png": "Fig. 8: runout against roller roundness amplitude; even orders "
+                           "solid, odd dashed (all on zero).",
+    "fig09_10_order.png": "Figs. 9-10: runout against roller roundness order for 12-15 rollers "
+                          "(amplitude 0.5 um, equal phases); right: even orders only.",
+    "fig11_table4.png": "Fig. 11: runout for the roller order arrangements of Table 4; light "
+                        "bars: rows 10-15 with the odd-order rollers made round.",
+    "fig12_roller_count.png": "Fig. 12: runout against the number of rollers for even orders "
+                              "(amplitude 0.5 um, equal phases).",
+    "monte_carlo_phases.png": "Beyond the paper: runout with random roller phases (200 draws "
+                              "each) against the paper's equal phases (dotted).",
+    "selective_assembly.png": "Beyond the paper: runout over 500 random assembly orders of the "
+                              "roller set of Table 3 row 19, with the paper's increasing and "
+                              "alternating orders.",
+}
+
+
+def draw(results: Path, figures: Path):
+    results, figures = Path(results), Path(figures)
+    _table3(results, figures)
+    _amplitude(results, figures)
+    _order(results, figures)
+    _table4(results, figures)
+    _roller_count(results, figures)
+    _phases(results, figures)
+    _assembly(results, figures)
+
+
+def _table3(results, figures):
+    data = result(results, "fig07_table3")
+    figure, axis = plt.subplots(figsize=(8, 3.6))
+    axis.bar(np.arange(1, data.arrangement.size + 1), data.runout)
+    axis.set(xlabel="arrangement (row of Table 3)", ylabel=label(data.runout),
+             xticks=np.arange(1, data.arrangement.size + 1))
+    axis.grid(alpha=0.3, axis="y")
+    save(figure, figures, "fig07_table3.png")
+
+
+def _amplitude(results, figures):
+    data = result(results, "fig08_amplitude")
+    figure, axis = plt.subplots(figsize=(5.5, 3.8))
+    for order in data.roller_roundness_order.values:
+        axis.plot(data.roller_roundness_amplitude, data.runout.sel(roller_roundness_order=order),
+                  "o-" if order % 2 == 0 else "x--", ms=3, label=f"order {order:g}")
+    axis.set(xlabel=label(data.roller_roundness_amplitude), ylabel=label(data.runout))
+    axis.legend(fontsize=7)
+    axis.grid(alpha=0.3)
+    save(figure, figures, "fig08_amplitude.png")
+
+
+def _order(results, figures):
+    data = result(results, "fig09_10_order")
+    figure, axes = plt.subplots(1, 2, figsize=(11, 3.8))
+    family(axes[0], data.roller_roundness_order, data.runout, "roller_count", "Z = {}",
+           xlabel="roller roundness order", ylabel=label(data.runout))
+    even = data.sel(roller_roundness_order=data.roller_roundness_order % 2 == 0)
+    family(axes[1], even.roller_roundness_order, even.runout, "roller_count", "Z = {}",
+           xlabel="even roller roundness order", ylabel=label(data.runout))
+    save(figure, figures, "fig09_10_order.png")
+
+
+def _table4(results, figures):
+    data = result(results, "fig11_table4")
+    rows = [label for label in data.arrangement.values if not label.endswith("e")]
+    figure, axis = plt.subplots(figsize=(8, 3.6))
+    axis.bar(np.arange(len(rows)), data.runout.sel(arrangement=rows), label="Table 4")
+    round_odd = [f"{label}e" for label in rows if f"{label}e" in data.arrangement.values]
+    positions = [rows.index(label[:-1]) for label in round_odd]
+    axis.bar(positions, data.runout.sel(arrangement=round_odd), width=0.4, alpha=0.5,
+             label="odd-order rollers round")
+    axis.set(xlabel="arrangement (row of Table 4)", ylabel=label(data.runout),
+             xticks=np.arange(len(rows)), xticklabels=rows)
+    axis.legend(fontsize=7)
+    axis.grid(alpha=0.3, axis="y")
+    save(figure, figures, "fig11_table4.png")
+
+
+def _roller_count(results, figures):
+    data = result(results, "fig12_roller_count")
+    figure, axis = plt.subplots(figsize=(5.5, 3.8))
+    family(axis, data.roller_count, data.runout, "roller_roundness_order", "order {:g}",
+           xlabel="number of rollers Z", ylabel=label(data.runout))
+    save(figure, figures, "fig12_roller_count.png")
+
+
+def _phases(results, figures):
+    data = result(results, "monte_carlo_phases")
+    equal = result(results, "fig09_10_order").sel(roller_count=14)
+    figure, axis = plt.subplots(figsize=(5.5, 3.8))
+    for index, order in enumerate(data.roller_roundness_order.values):
+        axis.hist(data.runout.sel(roller_roundness_order=order), bins=20, alpha=0.6,
+                  color=f"C{index}", label=f"order {order:g}, random phases")
+        axis.axvline(float(equal.runout.sel(roller_roundness_order=order)), color=f"C{index}",
+                     ls=":", label=f"order {order:g}, equal phases")
+    axis.set(xlabel=label(data.runout), ylabel="draws")
+    axis.legend(fontsize=7)
+    save(figure, figures, "monte_carlo_phases.png")
+
+
+def _assembly(results, figures):
+    data = result(results, "selective_assembly")
+    table3 = result(results, "fig07_table3")
+    figure, axis = plt.subplots(figsize=(5.5, 3.8))
+    axis.hist(data.runout, bins=30, color="C0", alpha=0.7, label="random orders")
+    for row, text, color in ((19, "increasing (row 19)", "C3"), (20, "alternating (row 20)",
+                                                                  "C2")):
+        axis.axvline(float(table3.runout.sel(arrangement=row)), color=color, label=text)
+    axis.set(xlabel=label(data.runout), ylabel="orders")
+    axis.legend(fontsize=7)
+    save(figure, figures, "selective_assembly.png")
+
+
+def _runout(data, **where) -> float:
+    return float(data.runout.sel(**where))
+
+
+def ours(results: Path) -> dict:
+    results = Path(results)
+    table3 = result(results, "fig07_table3")
+    row = {int(a): _runout(table3, arrangement=a) for a in table3.arrangement.values}
+    values = {
+        "alternating_over_increasing": 100 * row[20] / row[19],
+        "single_error_linear": (row[2] / 1.0) / (row[5] / 0.2),
+        "adjacent_raise": row[9] / row[2],
+        "three_adjacent_raise": row[12] / row[9],
+        "mixed_below_grouped": row[18] / row[17],
+    }
+    amplitude = result(results, "fig08_amplitude")
+    odd = amplitude.runout.sel(roller_roundness_order=[3, 5, 7])
+    values["odd_orders_effect"] = float(odd.max())
+    for order in (2, 4, 6):
+        series = amplitude.runout.sel(roller_roundness_order=order)
+        values[f"amplitude_linear_{order}"] = float(series[-1] / (2 * series[5]))
+    order = result(results, "fig09_10_order")
+    values["period_even_z"] = _period_gap(order, 14, 14)
+    values["period_odd_z"] = _period_gap(order, 13, 26)
+    values["odd_orders_in_fig9"] = float(order.runout.sel(
+        roller_roundness_order=order.roller_roundness_order % 2 == 1).max())
+    values["extremes_even_z"] = float(_matches(order, 14, [14, 28, 42], [6, 8, 20, 22, 34, 36]))
+    values["extremes_z12"] = float(_matches(order, 12, [12, 24, 36], [6, 18, 30, 42]))
+    values["extremes_odd_z"] = float(_matches(order, 13, [12, 14, 26, 38, 40], [6, 20, 32])
+                                     and _matches(order, 15, [14, 16, 30], [8, 22, 38]))
+    table4 = result(results, "fig11_table4")
+    t4 = {str(a): _runout(table4, arrangement=a) for a in table4.arrangement.values}
+    values["two_even_orders_raise"] = min(t4[r] for r in "345") / max(t4["1"], t4["2"])
+    values["odd_orders_mixed"] = max(t4[r] for r in "6789")
+    values["only_even_rollers_matter"] = max(abs(t4[str(r)] - t4[f"{r}e"]) for r in
+                                             range(10, 16))
+    count = result(results, "fig12_roller_count").runout
+    values["more_rollers_not_always_better"] = float((count.diff("roller_count") > 0).sum())
+    return values
+
+
+def _period_gap(data, roller_count, period) -> float:
+    """Largest change of the runout between orders ``period`` apart [um]."""
+    series = data.runout.sel(roller_count=roller_count)
+    orders = series.roller_roundness_order.values
+    shifted = series.sel(roller_roundness_order=orders[orders + period <= orders.max()] + period)
+    base = series.sel(roller_roundness_order=orders[orders + period <= orders.max()])
+    return float(np.abs(shifted.values - base.values).max())
+
+
+def _matches(data, roller_count, maxima, minima) -> bool:
+    """Whether the even orders' local maxima and minima fall on the stated orders."""
+    series = data.runout.sel(roller_count=roller_count)
+    even = series.sel(roller_roundness_order=series.roller_roundness_order % 2 == 0)
+    orders, value = even.roller_roundness_order.values, even.values
+    inner = np.arange(1, value.size - 1)
+    tie = 1e-4  # um: equal extremes at two neighbouring orders (Z = 13: 12 and 14) both count
+    peak = inner[(value[inner] >= value[inner - 1] - tie) & (value[inner] >= value[inner + 1]
+                                                              - tie)]
+    dip = inner[(value[inner] <= value[inner - 1] + tie) & (value[inner] <= value[inner + 1]
+                                                            + tie)]
+    stated_max = [m for m in maxima if orders[0] < m < orders[-1]]
+    stated_min = [m for m in minima if orders[0] < m < orders[-1]]
+    return (sorted(stated_max) == sorted(orders[peak].tolist())
+            and sorted(stated_min) == sorted(orders[dip].tolist()))
