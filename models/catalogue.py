@@ -98,6 +98,39 @@ _PRESETS = (
               "rib) equal to Table 1's arc-rib radius rho = 109 mm. The rib angle is the "
               "study's axis.",
     ),
+    Preset(
+        name="paper002-test",
+        model="cage_slip",
+        values={"roller_count": 13, "inner_raceway_diameter": "44 mm", "roller_diameter": "10 mm",
+                "roller_length": "11 mm", "effective_length": "7.2 mm", "clearance": "0.02 mm",
+                "cage_inner_diameter": "48.5 mm", "cage_outer_diameter": "59 mm",
+                "cage_width": "9 mm", "pocket_clearance": "0.1 mm", "roller_density":
+                "7820 kg/m^3", "youngs_modulus": "207 GPa", "poisson_ratio": 0.28,
+                "end_film_thickness": "0.015 mm"},
+        source="Paper 002, Tables 2-3 (the test bearing of Fig. 17)",
+        notes="Table 2 is inconsistent: 44 + 2 x 10 + 0.02 = 64.02 mm, not its 63.82 mm outer "
+              "raceway (which would be 0.18 mm of interference). The inner raceway, roller and "
+              "clearance are kept; the outer raceway follows from them. The cage width is not "
+              "stated (9 mm assumed; it only sets the cage's windage). The end film is the "
+              "rib axial play, 0.015 mm. Oil, traction and drag are the model's documented "
+              "defaults: the paper gives none of them.",
+    ),
+    Preset(
+        name="paper002-NU2330EM1",
+        model="cage_slip",
+        values={"roller_count": 14, "inner_raceway_diameter": "165 mm",
+                "roller_diameter": "45 mm", "roller_length": "74.6 mm",
+                "effective_length": "70 mm", "clearance": "0.08 mm",
+                "cage_inner_diameter": "196 mm", "cage_outer_diameter": "224 mm",
+                "cage_width": "90 mm", "pocket_clearance": "0.36 mm",
+                "end_film_thickness": "0.015 mm", "radial_load": "50 kN", "speed": "1000 rpm"},
+        source="Paper 002, Table 1 (NU2330EM1, compared with ref. [20] in Fig. 13)",
+        notes="Table 1's 165 mm 'bore' is taken as the inner raceway diameter (an NU2330 has a "
+              "150 mm bore; 14 rollers of 45 mm fit on a 165 mm raceway). Not stated and "
+              "assumed: effective length 70 mm (74.6 mm roller less its end chamfers), cage "
+              "196/224 mm and 90 mm wide (it only sets windage), the clearance 0.08 mm taken "
+              "as diametral. Oil, traction and drag: the model's defaults.",
+    ),
     *(Preset(
         name=f"paper004-NU208-{number}",
         model="crb_runout",

@@ -22,7 +22,7 @@ REQUIRED = object()
 # Modules that declare models (each defines a list ``MODELS``), imported on first use so that
 # model modules can import the declaration classes below without a cycle.
 _DECLARING_MODULES = ("models.cylindrical", "models.contact", "models.ball",
-                      "models.tapered", "models.runout")
+                      "models.tapered", "models.runout", "models.cage_slip")
 
 
 @dataclass(frozen=True)

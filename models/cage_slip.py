@@ -1,0 +1,344 @@
+"""Cage and roller slip (skidding) of a cylindrical roller bearing in steady running
+(paper 002).
+
+Outer ring fixed, inner ring at ``omega_i``, roller-guided cage at ``omega_c``. A roller's spin
+``omega_R`` is driven by traction at its two raceway contacts and braked by oil films in its
+pocket and at its ends; around the orbit it enters the load zone slowed by those films and is
+spun up there. The steady state is found by integrating one roller's spin around the orbit,
+with the loads of the load zone, for a trial cage speed, and closing the cage's torque balance
+(rollers' traction less their windage against the cage's own drag) with a root finder.
+
+Sign conventions, tangential, positive in the direction of the orbit: sliding speeds
+``u_i = (omega_i - omega_c) r_i - omega_R R`` (ring minus roller) and
+``u_o = omega_R R - omega_c r_o``; traction on the roller ``mu(u) Q`` forward at both contacts;
+spin torque ``R (F_i - F_o)``.
+"""
+from __future__ import annotations
+
+import numpy as np
+
+from models.cylindrical import crb_radial
+from models.lubrication import TractionCurve, central_film_thickness, walther_viscosity
+from models.registry import CONVERGED, NOT_CONVERGED, Constraint, Input, Model, Output
+from models.solvers import solve_increasing
+
+AIR_DENSITY = 1.2  # [kg/m^3]
+_POSITIONS_PER_PITCH = 20  # cage positions computed per roller pitch: the orbit's resolution
+_ORBITS = 2  # orbits integrated per trial cage speed; the load zone resets the spin each time
+_SPEED_TOLERANCE = 1e-7  # of the kinematic cage speed
+_LOWEST_CAGE_SPEED = 0.02  # of the kinematic cage speed, the bracket's lower end
+
+
+def kinematic_cage_speed(speed, inner_raceway_diameter, outer_raceway_diameter):
+    """``omega_c = omega_i r_i / (r_i + r_o)`` [rad/s], outer ring fixed (no slip)."""
+    return speed * inner_raceway_diameter / (inner_raceway_diameter + outer_raceway_diameter)
+
+
+def cage_slip(radial_load, speed, roller_count, inner_raceway_diameter, roller_diameter,
+              roller_length, effective_length, clearance, cage_inner_diameter,
+              cage_outer_diameter, cage_width, roller_density=7820.0, oil_temperature=298.15,
+              viscosity_40=26e-6, viscosity_100=5.4e-6, oil_density=1000.0,
+              pressure_viscosity=1.1e-8, youngs_modulus=207e9, poisson_ratio=0.28,
+              traction_peak=0.05, traction_peak_speed=2.0, traction_limit=0.036,
+              oil_fraction=0.05, drag_coefficient=1.0, pocket_clearance=1e-4,
+              pocket_wrap_angle=1.0, pocket_film_fill=1.0, end_film_thickness=1.5e-5,
+              end_film_fill=0.25, pocket_friction=0.1, orbit_points=72):
+    """Steady cage speed, cage slip and roller slip around the orbit.
+
+    Parameters
+    ----------
+    radial_load : array_like
+        ``F_r`` [N]. speed : inner-ring speed ``omega_i`` [rad/s].
+    roller_count : int
+    inner_raceway_diameter, roller_diameter, clearance : array_like
+        ``d_i``, ``D``, diametral clearance ``P_d`` [m]; the outer raceway is
+        ``d_i + 2 D + P_d``.
+    roller_length, effective_length : array_like
+        Whole length (mass, pocket film) and raceway contact length [m].
+    cage_inner_diameter, cage_outer_diameter, cage_width : array_like
+        Cage [m]; the rollers' windage acts on the part of the roller outside the cage
+        (paper 002), the cage's on its two faces.
+    roller_density : array_like
+        [kg/m^3].
+    oil_temperature : array_like
+        [K]. viscosity_40, viscosity_100 : kinematic viscosity at 40 and 100 deg C [m^2/s]
+        (Walther's law between them). oil_density [kg/m^3]. pressure_viscosity ``alpha``
+        [1/Pa] (film thickness only).
+    youngs_modulus, poisson_ratio : array_like
+        Rollers and rings.
+    traction_peak, traction_peak_speed, traction_limit : array_like
+        The traction curve (:class:`models.lubrication.TractionCurve`): ``mu_m``, ``u_m``
+        [m/s], ``mu_inf``.
+    oil_fraction : array_like
+        Oil's share ``X`` of the cavity, effective density ``X rho_oil + (1 - X) rho_air``.
+    drag_coefficient : array_like
+        ``C_D`` of a roller's windage ``F_D = rho_e C_D l h (omega_c r_m)^2 / 2`` (paper 002).
+    pocket_clearance, pocket_wrap_angle, pocket_film_fill : array_like
+        Pocket film ``M_p = phi_p eta omega_R R^3 L theta_w / c_p`` ([m], [rad], [-]).
+    end_film_thickness, end_film_fill : array_like
+        Films at the two roller ends, ``M_e = 2 phi_e eta omega_R (pi R^4 / 2) / h_e``.
+    pocket_friction : array_like
+        Coulomb coefficient of the pocket force on the roller's spin.
+    orbit_points : int
+        Orbit positions at which the roller slip is returned.
+
+    Returns
+    -------
+    dict of numpy.ndarray
+        ``cage_slip`` [-] (eq. 27 with the kinematic cage speed), ``cage_speed`` [rad/s],
+        ``roller_slip`` ``(N, orbit_points)`` [-] against the kinematic spin, ``orbit_angle``
+        [rad] from the load line, ``roller_spin_ratio`` [-] (mean spin / kinematic spin),
+        ``torque_residual`` [N m] of the cage's balance, ``film_thickness`` [m] at the most
+        loaded inner contact, ``max_roller_load`` [N], ``status``.
+
+    References
+    ----------
+    .. [1] Paper 002, eq. 27 and the roller windage of section 1.
+    .. [2] T. A. Harris, The effect of misalignment on the fatigue life of cylindrical roller
+       bearings having crowned rolling members (skidding analysis), ASLE Trans. 9 (1966) 229.
+    .. [3] P. K. Gupta, Advanced Dynamics of Rolling Elements, Springer (1984).
+    """
+    arrays = np.broadcast_arrays(*(np.atleast_1d(np.asarray(a, dtype=float)) for a in (
+        radial_load, speed, inner_raceway_diameter, roller_diameter, roller_length,
+        effective_length, clearance, cage_inner_diameter, cage_outer_diameter, cage_width,
+        roller_density, oil_temperature, viscosity_40, viscosity_100, oil_density,
+        pressure_viscosity, youngs_modulus, poisson_ratio, traction_peak,
+        traction_peak_speed, traction_limit, oil_fraction, drag_coefficient,
+        pocket_clearance, pocket_wrap_angle, pocket_film_fill, end_film_thickness,
+        end_film_fill, pocket_friction)))
+    (load, omega_i, d_i, diameter, length, contact_length, play, cage_in, cage_out, width,
+     density, temperature, nu_40, nu_100, rho_oil, alpha, modulus, poisson, mu_peak, u_peak,
+     mu_limit, fraction, c_drag, c_pocket, wrap, fill_pocket, h_end, fill_end,
+     mu_pocket) = arrays
+    points = load.size
+    radius, r_i = 0.5 * diameter, 0.5 * d_i
+    r_o = r_i + diameter + 0.5 * play
+    pitch_radius = 0.5 * (r_i + r_o)
+    omega_kin = kinematic_cage_speed(omega_i, r_i, r_o)
+    spin_kin = (omega_i - omega_kin) * r_i / radius
+    viscosity = rho_oil * walther_viscosity(temperature, nu_40, nu_100)
+    mass = density * np.pi * radius**2 * length
+    inertia = 0.5 * mass * radius**2
+    film = viscosity * (fill_pocket * radius**3 * length * wrap / c_pocket
+                        + fill_end * np.pi * radius**4 / h_end)  # torque / spin [N m s]
+    effective_density = fraction * rho_oil + (1.0 - fraction) * AIR_DENSITY
+    exposed = diameter - 0.5 * (cage_out - cage_in)  # roller height outside the cage
+    windage = 0.5 * effective_density * c_drag * contact_length * exposed * pitch_radius**2
+    traction = TractionCurve(mu_peak, u_peak, mu_limit)
+
+    inner_load, centrifugal = _orbit_loads(load, omega_i, roller_count, 2 * pitch_radius,
+                                           diameter, contact_length, play, density)
+    outer_load = inner_load + centrifugal[:, None]
+    steps = inner_load.shape[1]
+    step_angle = 2.0 * np.pi / steps
+
+    def orbit(omega_c, index):
+        """Spin around the orbit and the rollers' mean forward force, at cage speed
+        ``omega_c`` for the points ``index``."""
+        q_i, q_o = inner_load[index], outer_load[index]
+        j, c_film, mu_p = inertia[index], film[index], mu_pocket[index]
+        rr, ri, ro = radius[index], r_i[index], r_o[index]
+        drag = windage[index] * omega_c**2
+        h = step_angle / omega_c / j
+        spin = omega_c * ro / rr  # pure rolling at the outer raceway to start
+        history = np.empty((index.size, steps))
+        pushing = np.empty((index.size, steps))
+        for step in range(_ORBITS * steps):
+            k = step % steps
+            mu_i, slope_i = traction((omega_i[index] - omega_c) * ri - spin * rr, index)
+            mu_o, slope_o = traction(spin * rr - omega_c * ro, index)
+            forward = mu_i * q_i[:, k] + mu_o * q_o[:, k] - drag
+            torque = rr * (mu_i * q_i[:, k] - mu_o * q_o[:, k]) - c_film * spin \
+                - mu_p * np.abs(forward) * rr * np.sign(spin)
+            stiffness = rr**2 * (slope_i * q_i[:, k] + slope_o * q_o[:, k]) + c_film
+            spin = spin + h * torque / (1.0 + h * stiffness)  # linearly implicit Euler
+            history[:, k], pushing[:, k] = spin, forward
+        return history, pushing.mean(axis=1)
+
+    def cage_drag(omega_c, index):
+        """Windage moment of the cage's two faces (disc churning, laminar or turbulent)."""
+        outer = 0.5 * cage_out[index]
+        reynolds = effective_density[index] * omega_c * outer**2 / viscosity[index]
+        coefficient = np.where(reynolds < 3e5, 3.87 / np.sqrt(reynolds),
+                               0.146 * reynolds**-0.2)
+        faces = np.where(width[index] > 0, 2.0, 0.0)
+        return faces * coefficient * 0.5 * effective_density[index] * omega_c**2 * outer**5
+
+    def residual(omega_c, index):
+        """Cage drag less the rollers' push: rises with the cage speed."""
+        _, push = orbit(omega_c, index)
+        value = cage_drag(omega_c, index) - roller_count * push * pitch_radius[index]
+        return value, np.full(index.size, np.nan)  # bisection-safeguarded secant below
+
+    omega_c, converged = _secant_root(residual, _LOWEST_CAGE_SPEED * omega_kin,
+                                      omega_kin * (1 + 1e-3), _SPEED_TOLERANCE * omega_kin)
+    everything = np.arange(points)
+    spin, push = orbit(omega_c, everything)
+    torque_residual = roller_count * push * pitch_radius - cage_drag(omega_c, everything)
+    where = np.linspace(0.0, 2.0 * np.pi, orbit_points, endpoint=False)
+    grid = np.arange(steps) * step_angle
+    spin_at = np.stack([np.interp(where, grid, s, period=2 * np.pi) for s in spin])
+    heaviest = np.argmax(inner_load, axis=1)
+    entraining = 0.5 * ((omega_i - omega_c) * r_i + spin[everything, heaviest] * radius)
+    reduced = modulus / (1.0 - poisson**2)
+    film_thickness = central_film_thickness(
+        inner_load[everything, heaviest], contact_length, radius * r_i / (radius + r_i),
+        entraining, viscosity, alpha, reduced)
+    return {
+        "cage_slip": 1.0 - omega_c / omega_kin,
+        "cage_speed": omega_c,
+        "roller_slip": 1.0 - spin_at / spin_kin[:, None],
+        "orbit_angle": np.broadcast_to(where, spin_at.shape),
+        "roller_spin_ratio": spin.mean(axis=1) / spin_kin,
+        "torque_residual": torque_residual,
+        "film_thickness": film_thickness,
+        "max_roller_load": inner_load.max(axis=1),
+        "status": np.where(converged, CONVERGED, NOT_CONVERGED).astype(np.int8),
+    }
+
+
+def _orbit_loads(load, omega_i, roller_count, pitch_diameter, diameter, contact_length,
+                 clearance, density):
+    """Inner-raceway load at ``Z x 20`` orbit positions from the load line, and the
+    centrifugal force, from the load distribution at 20 cage positions per roller pitch
+    (``crb_radial``, straight rollers)."""
+    points = load.size
+    positions = 2.0 * np.pi / roller_count * np.arange(_POSITIONS_PER_PITCH) / \
+        _POSITIONS_PER_PITCH
+
+    def repeat(a):
+        return np.repeat(a, _POSITIONS_PER_PITCH)
+
+    result = crb_radial(repeat(load), roller_count, repeat(pitch_diameter), repeat(diameter),
+                        repeat(contact_length), clearance=repeat(clearance), slices=1,
+                        speed=repeat(omega_i), roller_density=repeat(density),
+                        cage_position=np.tile(positions, points))
+    # Roller j at cage position m sits at m + 2 pi j / Z: interleave to orbit order.
+    per_roller = result["roller_load"].reshape(points, _POSITIONS_PER_PITCH, roller_count)
+    inner = np.swapaxes(per_roller, 1, 2).reshape(points, -1)
+    centrifugal = result["centrifugal_force"].reshape(points, _POSITIONS_PER_PITCH)[:, 0]
+    return inner, centrifugal
+
+
+def _secant_root(residual, lower, upper, tolerance):
+    """Roots of increasing functions by secant steps kept inside a shrinking bracket."""
+    previous = {}
+
+    def with_secant(x, index):
+        value, _ = residual(x, index)
+        slope = np.full(index.size, np.nan)
+        known = np.array([i in previous for i in index])
+        if known.any():
+            last_x = np.array([previous[i][0] if i in previous else np.nan for i in index])
+            last_v = np.array([previous[i][1] if i in previous else np.nan for i in index])
+            with np.errstate(divide="ignore", invalid="ignore"):
+                slope = np.where(known, (value - last_v) / (x - last_x), np.nan)
+        for i, xi, vi in zip(index, x, value):
+            previous[i] = (xi, vi)
+        return value, slope
+
+    return solve_increasing(with_secant, lower, upper, 0.5 * (lower + upper), tolerance)
+
+
+def _rollers_fit(roller_count, inner_raceway_diameter, roller_diameter):
+    return (inner_raceway_diameter + roller_diameter) * np.sin(np.pi / roller_count) \
+        > roller_diameter
+
+
+def _cage_between(cage_inner_diameter, cage_outer_diameter):
+    return cage_outer_diameter > cage_inner_diameter
+
+
+def _traction_peaks(traction_peak, traction_limit):
+    return traction_peak > traction_limit
+
+
+MODELS = [Model(
+    name="cage_slip",
+    function=cage_slip,
+    summary="Cylindrical roller bearing in steady running: cage slip, roller slip around the "
+            "orbit and roller spin from traction, oil films and windage.",
+    reference="Paper 002 (eq. 27, roller windage); Harris (1966); Gupta (1984); "
+              "CAGE_SLIP_PHYSICS.md for the published forms and typical values",
+    version="1",
+    inputs=(
+        Input("radial_load", "N", "radial load Fr", minimum=0.0, exclusive_minimum=True),
+        Input("speed", "rpm", "inner-ring speed", minimum=0.0, exclusive_minimum=True),
+        Input("roller_count", "1", "number of rollers Z", kind="count", minimum=3, maximum=200),
+        Input("inner_raceway_diameter", "mm", "inner raceway diameter di", minimum=0.0,
+              exclusive_minimum=True),
+        Input("roller_diameter", "mm", "roller diameter D", minimum=0.0, exclusive_minimum=True),
+        Input("roller_length", "mm", "whole roller length (mass, pocket film)", minimum=0.0,
+              exclusive_minimum=True),
+        Input("effective_length", "mm", "raceway contact length", minimum=0.0,
+              exclusive_minimum=True),
+        Input("clearance", "mm", "diametral clearance Pd; outer raceway = di + 2D + Pd",
+              minimum=0.0),
+        Input("cage_inner_diameter", "mm", "cage bore", minimum=0.0, exclusive_minimum=True),
+        Input("cage_outer_diameter", "mm", "cage outside diameter", minimum=0.0,
+              exclusive_minimum=True),
+        Input("cage_width", "mm", "cage width (0: no cage windage)", minimum=0.0),
+        Input("roller_density", "kg/m^3", "roller density", default=7820.0, minimum=0.0,
+              exclusive_minimum=True),
+        Input("oil_temperature", "degC", "oil temperature (largest single influence)",
+              default=25.0, minimum=-40.0, maximum=200.0),
+        Input("viscosity_40", "mm^2/s", "kinematic viscosity at 40 degC (4050-class turbine "
+              "oil: 26)", default=26.0, minimum=0.0, exclusive_minimum=True),
+        Input("viscosity_100", "mm^2/s", "kinematic viscosity at 100 degC (4050 class: 5.4)",
+              default=5.4, minimum=0.0, exclusive_minimum=True),
+        Input("oil_density", "kg/m^3", "oil density", default=1000.0, minimum=0.0,
+              exclusive_minimum=True),
+        Input("pressure_viscosity", "1/GPa", "pressure-viscosity coefficient alpha (film "
+              "thickness only; 10-13)", default=11.0, minimum=0.0),
+        Input("youngs_modulus", "GPa", "Young's modulus of rollers and rings", default=207.0,
+              minimum=0.0, exclusive_minimum=True),
+        Input("poisson_ratio", "1", "Poisson's ratio of rollers and rings", default=0.28,
+              minimum=0.0, maximum=0.5),
+        Input("traction_peak", "1", "peak traction coefficient mu_m (typical 0.05)",
+              default=0.05, minimum=0.0, exclusive_minimum=True, maximum=0.2),
+        Input("traction_peak_speed", "m/s", "sliding speed of the traction peak u_m "
+              "(0.3-3)", default=2.0, minimum=0.0, exclusive_minimum=True),
+        Input("traction_limit", "1", "high-slip traction coefficient mu_inf (typical 0.036)",
+              default=0.036, minimum=0.0, maximum=0.2),
+        Input("oil_fraction", "1", "oil's share of the cavity volume (0.01-0.5)", default=0.05,
+              minimum=0.0, maximum=1.0),
+        Input("drag_coefficient", "1", "roller windage drag coefficient C_D (0.5-2)",
+              default=1.0, minimum=0.0),
+        Input("pocket_clearance", "mm", "pocket clearance c_p", default=0.1, minimum=0.0,
+              exclusive_minimum=True),
+        Input("pocket_wrap_angle", "rad", "pocket arc wrapped around the roller theta_w",
+              default=1.0, minimum=0.0, maximum=np.pi),
+        Input("pocket_film_fill", "1", "share of the pocket arc under oil phi_p (flooded: 1)",
+              default=1.0, minimum=0.0, maximum=1.0),
+        Input("end_film_thickness", "mm", "film at the roller ends h_e (rib axial play)",
+              default=0.015, minimum=0.0, exclusive_minimum=True),
+        Input("end_film_fill", "1", "share of the end faces running on the film phi_e "
+              "(relieved ends: 0.25)", default=0.25, minimum=0.0, maximum=1.0),
+        Input("pocket_friction", "1", "Coulomb coefficient of pocket contact mu_p (0-0.2)",
+              default=0.1, minimum=0.0, maximum=1.0),
+        Input("orbit_points", "1", "orbit positions for roller_slip", default=72,
+              kind="count", minimum=4, maximum=3600),
+    ),
+    outputs=(
+        Output("cage_slip", "percent", "cage slip 1 - omega_c / omega_c,kin (eq. 27)"),
+        Output("cage_speed", "rpm", "cage speed"),
+        Output("roller_slip", "percent", "roller spin slip against kinematic spin, around the "
+               "orbit", dims=("orbit",)),
+        Output("orbit_angle", "deg", "orbit position from the load line", dims=("orbit",)),
+        Output("roller_spin_ratio", "percent", "mean roller spin over kinematic spin"),
+        Output("torque_residual", "N*m", "residual of the cage's torque balance"),
+        Output("film_thickness", "um", "central EHL film at the most loaded inner contact"),
+        Output("max_roller_load", "N", "largest roller load at the inner raceway"),
+    ),
+    dim_sizes={"orbit": "orbit_points"},
+    constraints=(
+        Constraint(("roller_count", "inner_raceway_diameter", "roller_diameter"), _rollers_fit,
+                   "the rollers do not fit on the pitch circle"),
+        Constraint(("cage_inner_diameter", "cage_outer_diameter"), _cage_between,
+                   "cage_outer_diameter must exceed cage_inner_diameter"),
+        Constraint(("traction_peak", "traction_limit"), _traction_peaks,
+                   "traction_peak must exceed traction_limit"),
+    ),
+    seconds_per_point=0.01,
+    points_per_call=64,
+)]

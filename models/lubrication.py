@@ -1,0 +1,119 @@
+"""Oil and traction: viscosity against temperature and pressure, EHL film thickness of a line
+contact, and the traction curve of a lubricated rolling contact against sliding speed."""
+from __future__ import annotations
+
+import numpy as np
+
+from models.solvers import solve_increasing
+
+CELSIUS = 273.15
+
+
+def walther_viscosity(temperature, viscosity_40, viscosity_100):
+    """Kinematic viscosity by Walther's law (ASTM D341) through two measured points.
+
+    ``log10 log10(nu + 0.7) = A - B log10(T)`` with ``nu`` in mm^2/s and ``T`` in K.
+
+    Parameters
+    ----------
+    temperature : array_like
+        Oil temperature [K].
+    viscosity_40, viscosity_100 : array_like
+        Kinematic viscosity at 40 and 100 deg C [m^2/s].
+
+    Returns
+    -------
+    numpy.ndarray
+        Kinematic viscosity [m^2/s].
+
+    References
+    ----------
+    .. [1] ASTM D341, Standard practice for viscosity-temperature equations for liquid
+       petroleum products.
+    """
+    def walther(nu):
+        return np.log10(np.log10(np.asarray(nu) * 1e6 + 0.7))
+
+    low, high = np.log10(40.0 + CELSIUS), np.log10(100.0 + CELSIUS)
+    slope = (walther(viscosity_40) - walther(viscosity_100)) / (high - low)
+    value = walther(viscosity_40) - slope * (np.log10(temperature) - low)
+    return (10.0 ** (10.0**value) - 0.7) * 1e-6
+
+
+def central_film_thickness(load, length, radius, speed, viscosity, pressure_viscosity,
+                           reduced_modulus):
+    """Central EHL film thickness of an isothermal line contact (Pan and Hamrock, 1989).
+
+    ``h_c / R = 2.922 W'^-0.166 U^0.692 G^0.470`` with ``U = eta_0 u / (E' R)``,
+    ``G = alpha E'``, ``W' = Q / (l E' R)``.
+
+    Parameters
+    ----------
+    load : array_like
+        Contact load ``Q`` [N]. length : contact length ``l`` [m]. radius : reduced radius of
+        curvature in the rolling direction ``R`` [m]. speed : mean entraining speed ``u``
+        [m/s]. viscosity : ``eta_0`` [Pa s]. pressure_viscosity : ``alpha`` [1/Pa].
+        reduced_modulus : ``E' = 2 / [(1 - nu_1^2)/E_1 + (1 - nu_2^2)/E_2]`` [Pa].
+
+    Returns
+    -------
+    numpy.ndarray
+        ``h_c`` [m]; NaN where the contact carries no load.
+
+    References
+    ----------
+    .. [1] P. Pan, B. J. Hamrock, Simple formulas for performance parameters used in
+       elastohydrodynamically lubricated line contacts, J. Tribology 111 (1989) 246-251.
+    """
+    with np.errstate(divide="ignore", invalid="ignore"):
+        load_parameter = np.asarray(load) / (length * reduced_modulus * radius)
+        speed_parameter = viscosity * np.abs(speed) / (reduced_modulus * radius)
+        thickness = radius * 2.922 * load_parameter**-0.166 * speed_parameter**0.692 * (
+            pressure_viscosity * reduced_modulus) ** 0.470
+    return np.where(np.asarray(load) > 0, thickness, np.nan)
+
+
+class TractionCurve:
+    """Traction coefficient against sliding speed, ``mu(u) = (A + B u) exp(-C u) + D``.
+
+    Gupta's form (ADORE family): zero at no slip, a peak ``mu_m`` at ``u_m``, tending to
+    ``mu_inf`` at high slip; odd in ``u``. ``D = mu_inf``, ``A = -mu_inf``,
+    ``C = B / (A + B u_m)``, and ``B`` from the peak, through ``s = A + B u_m``:
+    ``s exp(A/s - 1) = mu_m - mu_inf``.
+
+    Parameters
+    ----------
+    peak, peak_speed, limit : array_like
+        ``mu_m`` [-], ``u_m`` [m/s], ``mu_inf`` [-] with ``mu_m > mu_inf >= 0``.
+
+    References
+    ----------
+    .. [1] P. K. Gupta, Advanced Dynamics of Rolling Elements, Springer (1984), ch. 3.
+    """
+
+    def __init__(self, peak, peak_speed, limit):
+        peak, peak_speed, limit = np.broadcast_arrays(*(np.atleast_1d(np.asarray(
+            a, dtype=float)) for a in (peak, peak_speed, limit)))
+        self.a, self.d = -limit, limit
+        rise = peak - limit
+
+        def condition(s, index):  # s exp(A/s - 1) - (mu_m - mu_inf), increasing in s > 0
+            growth = np.exp(self.a[index] / s - 1.0)
+            return s * growth - rise[index], growth * (1.0 - self.a[index] / s)
+
+        top = np.maximum(10.0 * rise * np.e + limit, 1.0)
+        s, _ = solve_increasing(condition, np.full(peak.shape, 1e-12), top, 0.5 * top,
+                                1e-15 * top)
+        self.b = (s - self.a) / peak_speed
+        self.c = self.b / s
+
+    def __call__(self, sliding, index=slice(None)):
+        """``mu`` and ``dmu/du`` at the sliding speeds ``sliding`` [m/s] of points ``index``
+        (the points along the first axis, broadcast against the rest)."""
+        shape = (-1,) + (1,) * (np.ndim(sliding) - 1)
+        a, b, c, d = (v[index].reshape(shape) for v in (self.a, self.b, self.c, self.d))
+        speed = np.abs(sliding)
+        decay = np.exp(-c * speed)
+        value = (a + b * speed) * decay + d
+        slope = decay * (b - c * (a + b * speed))
+        return np.sign(sliding) * value, slope
