@@ -170,8 +170,11 @@ def cage_slip(radial_load, speed, roller_count, inner_raceway_diameter, roller_d
         value = cage_drag(omega_c, index) - roller_count * push * pitch_radius[index]
         return value, np.full(index.size, np.nan)  # bisection-safeguarded secant below
 
-    omega_c, converged = _secant_root(residual, _LOWEST_CAGE_SPEED * omega_kin,
-                                      omega_kin * (1 + 1e-3), _SPEED_TOLERANCE * omega_kin)
+    lowest = _LOWEST_CAGE_SPEED * omega_kin
+    omega_c, converged = _secant_root(residual, lowest, omega_kin * (1 + 1e-3),
+                                      _SPEED_TOLERANCE * omega_kin)
+    # A root on the bracket's lower end means the rollers cannot drive the cage at all.
+    converged &= omega_c > lowest * (1 + 1e-6)
     everything = np.arange(points)
     spin, push = orbit(omega_c, everything)
     torque_residual = roller_count * push * pitch_radius - cage_drag(omega_c, everything)

@@ -11,7 +11,7 @@ STUDIES = Path(__file__).resolve().parents[1] / "studies"
 
 
 # radial_stiffness is left to `make reproduce`: its sweeps take half a minute.
-@pytest.mark.parametrize("name", ["ball_stiffness", "tapered_rib", "runout"])
+@pytest.mark.parametrize("name", ["ball_stiffness", "tapered_rib", "runout", "cage_slip"])
 def test_a_study_regenerates_its_figures_and_report(name, tmp_path):
     study = find_studies(STUDIES)[name]
     folders = ["--studies", STUDIES, "--results", tmp_path / "results", "--figures",
