@@ -98,36 +98,18 @@ def cage_slip(radial_load, speed, roller_count, inner_raceway_diameter, roller_d
        bearings having crowned rolling members (skidding analysis), ASLE Trans. 9 (1966) 229.
     .. [3] P. K. Gupta, Advanced Dynamics of Rolling Elements, Springer (1984).
     """
-    arrays = np.broadcast_arrays(*(np.atleast_1d(np.asarray(a, dtype=float)) for a in (
-        radial_load, speed, inner_raceway_diameter, roller_diameter, roller_length,
-        effective_length, clearance, cage_inner_diameter, cage_outer_diameter, cage_width,
-        roller_density, oil_temperature, viscosity_40, viscosity_100, oil_density,
-        pressure_viscosity, youngs_modulus, poisson_ratio, traction_peak,
-        traction_peak_speed, traction_limit, oil_fraction, drag_coefficient,
-        pocket_clearance, pocket_wrap_angle, pocket_film_fill, end_film_thickness,
-        end_film_fill, pocket_friction)))
-    (load, omega_i, d_i, diameter, length, contact_length, play, cage_in, cage_out, width,
-     density, temperature, nu_40, nu_100, rho_oil, alpha, modulus, poisson, mu_peak, u_peak,
-     mu_limit, fraction, c_drag, c_pocket, wrap, fill_pocket, h_end, fill_end,
-     mu_pocket) = arrays
+    terms = bearing_terms(**{k: v for k, v in locals().items() if k != "orbit_points"})
+    (load, omega_i, diameter, contact_length, play, alpha, modulus, poisson, radius,
+     r_i, r_o, pitch_radius, omega_kin, spin_kin, viscosity, inertia, film, windage,
+     mu_pocket, traction) = (terms[k] for k in (
+        "load", "omega_i", "diameter", "contact_length", "play", "alpha", "modulus",
+        "poisson", "radius", "r_i", "r_o", "pitch_radius", "omega_kin", "spin_kin",
+        "viscosity", "inertia", "film", "windage", "mu_pocket", "traction"))
     points = load.size
-    radius, r_i = 0.5 * diameter, 0.5 * d_i
-    r_o = r_i + diameter + 0.5 * play
-    pitch_radius = 0.5 * (r_i + r_o)
-    omega_kin = kinematic_cage_speed(omega_i, r_i, r_o)
-    spin_kin = (omega_i - omega_kin) * r_i / radius
-    viscosity = rho_oil * walther_viscosity(temperature, nu_40, nu_100)
-    mass = density * np.pi * radius**2 * length
-    inertia = 0.5 * mass * radius**2
-    film = viscosity * (fill_pocket * radius**3 * length * wrap / c_pocket
-                        + fill_end * np.pi * radius**4 / h_end)  # torque / spin [N m s]
-    effective_density = fraction * rho_oil + (1.0 - fraction) * AIR_DENSITY
-    exposed = diameter - 0.5 * (cage_out - cage_in)  # roller height outside the cage
-    windage = 0.5 * effective_density * c_drag * contact_length * exposed * pitch_radius**2
-    traction = TractionCurve(mu_peak, u_peak, mu_limit)
-
+    # crb_radial weighs a roller over its contact length: give it the whole roller's mass.
+    whole_roller_density = terms["mass"] / (np.pi * radius**2 * contact_length)
     inner_load, centrifugal = _orbit_loads(load, omega_i, roller_count, 2 * pitch_radius,
-                                           diameter, contact_length, play, density)
+                                           diameter, contact_length, play, whole_roller_density)
     outer_load = inner_load + centrifugal[:, None]
     steps = inner_load.shape[1]
     step_angle = 2.0 * np.pi / steps
@@ -156,13 +138,8 @@ def cage_slip(radial_load, speed, roller_count, inner_raceway_diameter, roller_d
         return history, pushing.mean(axis=1)
 
     def cage_drag(omega_c, index):
-        """Windage moment of the cage's two faces (disc churning, laminar or turbulent)."""
-        outer = 0.5 * cage_out[index]
-        reynolds = effective_density[index] * omega_c * outer**2 / viscosity[index]
-        coefficient = np.where(reynolds < 3e5, 3.87 / np.sqrt(reynolds),
-                               0.146 * reynolds**-0.2)
-        faces = np.where(width[index] > 0, 2.0, 0.0)
-        return faces * coefficient * 0.5 * effective_density[index] * omega_c**2 * outer**5
+        return cage_windage(omega_c, terms["cage_out"][index], terms["width"][index],
+                            terms["effective_density"][index], viscosity[index])
 
     def residual(omega_c, index):
         """Cage drag less the rollers' push: rises with the cage speed."""
@@ -198,6 +175,65 @@ def cage_slip(radial_load, speed, roller_count, inner_raceway_diameter, roller_d
         "max_roller_load": inner_load.max(axis=1),
         "status": np.where(converged, CONVERGED, NOT_CONVERGED).astype(np.int8),
     }
+
+
+def bearing_terms(radial_load, speed, roller_count, inner_raceway_diameter, roller_diameter,
+                  roller_length, effective_length, clearance, cage_inner_diameter,
+                  cage_outer_diameter, cage_width, roller_density, oil_temperature,
+                  viscosity_40, viscosity_100, oil_density, pressure_viscosity, youngs_modulus,
+                  poisson_ratio, traction_peak, traction_peak_speed, traction_limit,
+                  oil_fraction, drag_coefficient, pocket_clearance, pocket_wrap_angle,
+                  pocket_film_fill, end_film_thickness, end_film_fill, pocket_friction):
+    """The bearing's derived quantities, shared by the steady and the transient model (the
+    parameters are :func:`cage_slip`'s, as arrays of the points)."""
+    arrays = np.broadcast_arrays(*(np.atleast_1d(np.asarray(a, dtype=float)) for a in (
+        radial_load, speed, inner_raceway_diameter, roller_diameter, roller_length,
+        effective_length, clearance, cage_inner_diameter, cage_outer_diameter, cage_width,
+        roller_density, oil_temperature, viscosity_40, viscosity_100, oil_density,
+        pressure_viscosity, youngs_modulus, poisson_ratio, traction_peak,
+        traction_peak_speed, traction_limit, oil_fraction, drag_coefficient,
+        pocket_clearance, pocket_wrap_angle, pocket_film_fill, end_film_thickness,
+        end_film_fill, pocket_friction)))
+    (load, omega_i, d_i, diameter, length, contact_length, play, cage_in, cage_out, width,
+     density, temperature, nu_40, nu_100, rho_oil, alpha, modulus, poisson, mu_peak, u_peak,
+     mu_limit, fraction, c_drag, c_pocket, wrap, fill_pocket, h_end, fill_end,
+     mu_pocket) = arrays
+    radius, r_i = 0.5 * diameter, 0.5 * d_i
+    r_o = r_i + diameter + 0.5 * play
+    pitch_radius = 0.5 * (r_i + r_o)
+    omega_kin = kinematic_cage_speed(omega_i, r_i, r_o)
+    viscosity = rho_oil * walther_viscosity(temperature, nu_40, nu_100)
+    mass = density * np.pi * radius**2 * length
+    effective_density = fraction * rho_oil + (1.0 - fraction) * AIR_DENSITY
+    exposed = diameter - 0.5 * (cage_out - cage_in)  # roller height outside the cage
+    return {
+        "load": load, "omega_i": omega_i, "diameter": diameter,
+        "contact_length": contact_length, "play": play, "density": density, "alpha": alpha,
+        "modulus": modulus, "poisson": poisson, "radius": radius, "r_i": r_i, "r_o": r_o,
+        "pitch_radius": pitch_radius, "omega_kin": omega_kin,
+        "spin_kin": (omega_i - omega_kin) * r_i / radius, "viscosity": viscosity,
+        "mass": mass, "inertia": 0.5 * mass * radius**2,
+        # film torque per spin speed [N m s]: pocket arc and both ends
+        "film": viscosity * (fill_pocket * radius**3 * length * wrap / c_pocket
+                             + fill_end * np.pi * radius**4 / h_end),
+        # roller windage per (orbit speed)^2 [N s^2], paper 002's form
+        "windage": 0.5 * effective_density * c_drag * contact_length * exposed
+        * pitch_radius**2,
+        "effective_density": effective_density, "cage_in": cage_in, "cage_out": cage_out,
+        "width": width, "pocket_clearance": c_pocket, "mu_pocket": mu_pocket,
+        "traction": TractionCurve(mu_peak, u_peak, mu_limit),
+    }
+
+
+def cage_windage(omega_c, cage_outer_diameter, cage_width, effective_density, viscosity):
+    """Windage moment of the cage's two faces, disc churning ``C_M rho omega^2 r^5 / 2`` with
+    ``C_M = 3.87 Re^-1/2`` (laminar) or ``0.146 Re^-1/5`` (turbulent) [N m]; none when the
+    cage has no width."""
+    outer = 0.5 * cage_outer_diameter
+    reynolds = effective_density * omega_c * outer**2 / viscosity
+    coefficient = np.where(reynolds < 3e5, 3.87 / np.sqrt(reynolds), 0.146 * reynolds**-0.2)
+    faces = np.where(cage_width > 0, 2.0, 0.0)
+    return faces * coefficient * 0.5 * effective_density * omega_c**2 * outer**5
 
 
 def _orbit_loads(load, omega_i, roller_count, pitch_diameter, diameter, contact_length,
