@@ -21,6 +21,7 @@ bench: $(STAMP)
 	$(PYTHON) benchmarks/crb_radial_throughput.py
 	$(PYTHON) benchmarks/ball_5dof_throughput.py
 	$(PYTHON) benchmarks/crb_runout_throughput.py
+	$(PYTHON) benchmarks/cage_slip_cost.py
 	$(PYTHON) benchmarks/worker_scaling.py
 
 clean:

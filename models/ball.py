@@ -296,11 +296,13 @@ def _equilibrium(rings: _Rings, load, free, ball_count):
     would compress them (``Z K delta^1.5 = |F|``), with a damping of a hundredth of that
     bearing's stiffness.
     """
-    magnitude = np.linalg.norm(load, axis=-1)
+    # Force scale: the load, or the balls' preload from a negative clearance if larger.
+    preload = ball_count * rings.constant * np.maximum(-rings.offset0, 0.0) ** 1.5
+    magnitude = np.linalg.norm(load, axis=-1) + preload
     typical = (magnitude / (ball_count * rings.constant)) ** (1.0 / POINT_CONTACT_EXPONENT)
     damping = _START_DAMPING * POINT_CONTACT_EXPONENT * ball_count * rings.constant * np.sqrt(
         typical)
-    active = np.flatnonzero(magnitude > 0)  # unloaded points stay centred
+    active = np.flatnonzero(magnitude > 0)  # unloaded points without preload stay centred
     start = np.zeros_like(load)
     preloaded = rings.uniform_stiffness(typical[active], active)[:, free][:, :, free]
     start[active[:, None], free] = np.linalg.solve(

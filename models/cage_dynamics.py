@@ -17,7 +17,7 @@ from models.cage_slip import MODELS as STEADY_MODELS
 from models.cage_slip import bearing_terms, cage_slip, cage_windage
 from models.contact import palmgren_constant
 from models.cylindrical import crb_radial
-from models.registry import CONVERGED, NOT_CONVERGED, Input, Model, Output
+from models.registry import CONVERGED, NOT_CONVERGED, Constraint, Input, Model, Output
 
 GRAVITY = 9.81
 _SETTLED = 0.5  # the settled part: the last half of the run
@@ -61,29 +61,34 @@ def cage_dynamics(radial_load, speed, roller_count, inner_raceway_diameter, roll
         ``cage_slip`` ``(N, samples)`` [-], ``mean_cage_slip`` over the settled half [-],
         ``cage_x``, ``cage_y`` ``(N, samples)`` [m] (mass centre), ``whirl_deviation_ratio``
         (eq. 28 over the settled half) [-], ``roller_slip`` ``(N, samples, Z)`` [-],
-        ``status``.
+        ``sample_time`` ``(N, samples)`` [s], ``status``.
 
     References
     ----------
     .. [1] Paper 002, eq. 27-28 and section 3.
     """
-    steady_inputs = {k: v for k, v in locals().items() if k in _STEADY_NAMES}
+    given = dict(locals())
+    numeric = [k for k in given if k != "roller_count"]
+    for k, v in zip(numeric, np.broadcast_arrays(*(np.atleast_1d(np.asarray(
+            given[k], dtype=float)) for k in numeric))):
+        given[k] = v  # every input as an array over the points
+    steady_inputs = {k: given[k] for k in _STEADY_NAMES}
     terms = bearing_terms(**steady_inputs)
     points = terms["load"].size
-    samples = int(np.floor(np.max(duration / output_interval) + 1e-9)) + 1
+    samples = int(np.floor(np.max(given["duration"] / given["output_interval"]) + 1e-9)) + 1
     outputs = {"cage_slip": np.full((points, samples), np.nan),
                "mean_cage_slip": np.full(points, np.nan),
                "cage_x": np.full((points, samples), np.nan),
                "cage_y": np.full((points, samples), np.nan),
                "whirl_deviation_ratio": np.full(points, np.nan),
                "roller_slip": np.full((points, samples, roller_count), np.nan),
+               "sample_time": np.full((points, samples), np.nan),
                "status": np.full(points, NOT_CONVERGED, dtype=np.int8)}
-    extra = np.broadcast_arrays(*(np.atleast_1d(np.asarray(a, dtype=float)) for a in (
-        cage_density, cage_eccentricity, inner_ring_mass, pocket_stiffness, damping_ratio,
-        duration, output_interval)), terms["load"])[:-1]
+    extra = [given[k] for k in ("cage_density", "cage_eccentricity", "inner_ring_mass",
+                                "pocket_stiffness", "damping_ratio", "duration",
+                                "output_interval")]
     for point in range(points):
-        one = {k: (np.asarray(v).reshape(-1)[point % np.size(v)] if np.ndim(v) else v)
-               for k, v in steady_inputs.items() if k != "roller_count"}
+        one = {k: v[point] for k, v in steady_inputs.items() if k != "roller_count"}
         result = _run(one, roller_count, {k: v[point] for k, v in terms.items()
                                           if k != "traction"}, terms["traction"], point,
                       *(e[point] for e in extra))
@@ -149,7 +154,7 @@ def _run(one, count, t, traction, point, cage_density, eccentricity, ring_mass, 
     settled = times >= _SETTLED * times[-1]
     slip = 1 - y[cage + 5] / t["omega_kin"]
     speed_of_centre = np.hypot(y[cage + 2], y[cage + 3])[settled]
-    return {"cage_slip": slip, "mean_cage_slip": slip[settled].mean(),
+    return {"cage_slip": slip, "mean_cage_slip": slip[settled].mean(), "sample_time": times,
             "cage_x": y[cage], "cage_y": y[cage + 1],
             "whirl_deviation_ratio": speed_of_centre.std(ddof=1) / speed_of_centre.mean(),
             "roller_slip": (1 - y[6:cage:3] / t["spin_kin"]).T}
@@ -189,3 +194,64 @@ def _tolerances(count):
 
 
 _STEADY_NAMES = tuple(i.name for i in STEADY_MODELS[0].inputs if i.name != "orbit_points")
+
+
+def _samples(values) -> int:
+    """Samples of the longest run on the grid at its finest output interval."""
+    return int(np.floor(np.max(values["duration"]) / np.min(values["output_interval"])
+                        + 1e-9)) + 1
+
+
+def _has_mass(cage_width):
+    return cage_width > 0
+
+
+def _samples_fit(duration, output_interval):
+    return (output_interval <= duration) & (duration / output_interval <= 1e5)
+
+
+MODELS = [Model(
+    name="cage_dynamics",
+    function=cage_dynamics,
+    summary="Cylindrical roller bearing, planar transient: cage whirl, pocket contact, cage and "
+            "roller slip in time, from the steady state.",
+    reference="Paper 002, eq. 27-28 and section 3",
+    version="1",
+    inputs=tuple(i for i in STEADY_MODELS[0].inputs if i.name != "orbit_points") + (
+        Input("cage_density", "kg/m^3", "cage density (brass: 8600)", default=8600.0,
+              minimum=0.0, exclusive_minimum=True),
+        Input("cage_eccentricity", "mm", "distance of the cage's mass centre from its "
+              "geometric centre", default=0.0, minimum=0.0),
+        Input("inner_ring_mass", "kg", "inner ring mass", default=0.1, minimum=0.0,
+              exclusive_minimum=True),
+        Input("pocket_stiffness", "N/m", "pocket contact stiffness", default=5e7, minimum=0.0,
+              exclusive_minimum=True),
+        Input("damping_ratio", "1", "damping ratio of pocket and ring contacts", default=0.1,
+              minimum=0.0, maximum=2.0),
+        Input("duration", "s", "bearing time simulated", default=0.05, minimum=0.0,
+              exclusive_minimum=True, maximum=10.0),
+        Input("output_interval", "s", "interval of the returned samples", default=1e-4,
+              minimum=0.0, exclusive_minimum=True),
+    ),
+    outputs=(
+        Output("cage_slip", "percent", "cage slip 1 - omega_c / omega_c,kin (eq. 27)",
+               dims=("time",)),
+        Output("mean_cage_slip", "percent", "cage slip averaged over the settled second half"),
+        Output("cage_x", "um", "cage mass centre, horizontal", dims=("time",)),
+        Output("cage_y", "um", "cage mass centre, vertical (load and gravity along -y)",
+               dims=("time",)),
+        Output("whirl_deviation_ratio", "1", "standard deviation over mean of the cage centre's "
+               "speed, settled half (eq. 28)"),
+        Output("roller_slip", "percent", "roller spin slip against kinematic spin",
+               dims=("time", "roller")),
+        Output("sample_time", "ms", "bearing time of each sample", dims=("time",)),
+    ),
+    dim_sizes={"time": _samples, "roller": "roller_count"},
+    constraints=STEADY_MODELS[0].constraints + (
+        Constraint(("cage_width",), _has_mass, "the transient needs a cage of some width"),
+        Constraint(("duration", "output_interval"), _samples_fit,
+                   "output_interval must not exceed duration, and at most 1e5 samples"),
+    ),
+    seconds_per_point=2.0,
+    points_per_call=1,
+)]

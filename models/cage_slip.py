@@ -299,7 +299,7 @@ MODELS = [Model(
             "orbit and roller spin from traction, oil films and windage.",
     reference="Paper 002 (eq. 27, roller windage); Harris (1966); Gupta (1984); "
               "CAGE_SLIP_PHYSICS.md for the published forms and typical values",
-    version="1",
+    version="2",
     inputs=(
         Input("radial_load", "N", "radial load Fr", minimum=0.0, exclusive_minimum=True),
         Input("speed", "rpm", "inner-ring speed", minimum=0.0, exclusive_minimum=True),

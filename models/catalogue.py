@@ -12,10 +12,15 @@ from dataclasses import dataclass
 @dataclass(frozen=True)
 class Preset:
     name: str
-    model: str
+    model: str  # the first model it is for; ``also`` names others with the same inputs
     values: dict
     source: str
     notes: str = ""
+    also: tuple = ()
+
+    @property
+    def models(self) -> tuple:
+        return (self.model,) + self.also
 
 
 _PAPER003_LOADING = {"roller_count": 16, "effective_length": "21.5 mm",
@@ -108,6 +113,7 @@ _PRESETS = (
                 "7820 kg/m^3", "youngs_modulus": "207 GPa", "poisson_ratio": 0.28,
                 "end_film_thickness": "0.015 mm"},
         source="Paper 002, Tables 2-3 (the test bearing of Fig. 17)",
+        also=("cage_dynamics",),
         notes="Table 2 is inconsistent: 44 + 2 x 10 + 0.02 = 64.02 mm, not its 63.82 mm outer "
               "raceway (which would be 0.18 mm of interference). The inner raceway, roller and "
               "clearance are kept; the outer raceway follows from them. The cage width is not "
@@ -125,6 +131,7 @@ _PRESETS = (
                 "cage_width": "90 mm", "pocket_clearance": "0.36 mm",
                 "end_film_thickness": "0.015 mm", "radial_load": "50 kN", "speed": "1000 rpm"},
         source="Paper 002, Table 1 (NU2330EM1, compared with ref. [20] in Fig. 13)",
+        also=("cage_dynamics",),
         notes="Table 1's 165 mm 'bore' is taken as the inner raceway diameter (an NU2330 has a "
               "150 mm bore; 14 rollers of 45 mm fit on a 165 mm raceway). Not stated and "
               "assumed: effective length 70 mm (74.6 mm roller less its end chamfers), cage "

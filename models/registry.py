@@ -22,7 +22,8 @@ REQUIRED = object()
 # Modules that declare models (each defines a list ``MODELS``), imported on first use so that
 # model modules can import the declaration classes below without a cycle.
 _DECLARING_MODULES = ("models.cylindrical", "models.contact", "models.ball",
-                      "models.tapered", "models.runout", "models.cage_slip")
+                      "models.tapered", "models.runout", "models.cage_slip",
+                      "models.cage_dynamics")
 
 
 @dataclass(frozen=True)
@@ -122,8 +123,9 @@ class Model:
     outputs: tuple[Output, ...]
     #: Size of each output dimension: the name of a count input (its largest value on the
     #: grid is used; entries are numbered from 1), names of counts joined by "*" (their
-    #: product), or a tuple of the entries' labels.
-    dim_sizes: dict[str, str | tuple[str, ...]] = field(default_factory=dict)
+    #: product), a tuple of the entries' labels, or a function of ``{input: all its values
+    #: on the grid}`` giving the size.
+    dim_sizes: dict = field(default_factory=dict)
     constraints: tuple[Constraint, ...] = ()
     #: Rough cost of one grid point on one core [s], to choose chunk sizes and whether a
     #: cluster is worth starting.

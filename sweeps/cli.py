@@ -96,7 +96,7 @@ def main(argv=None) -> int:
             print(_describe(args.model))
         elif args.command == "presets":
             for preset in PRESETS.values():
-                print(f"{preset.name} ({preset.model}): {preset.source}")
+                print(f"{preset.name} ({', '.join(preset.models)}): {preset.source}")
         elif args.command == "run":
             _check_cluster_options(args)
             if args.chunk_size is not None and args.chunk_size < 1:

@@ -33,7 +33,12 @@ class Grid:
                 axis_values[name] = (position, stack(values))
         dim_sizes = {}
         for dim, size in sweep.model.dim_sizes.items():
-            if isinstance(size, str):
+            if callable(size):  # of the inputs' values anywhere on the grid
+                size = size({name: axis_values[name][1] if name in axis_values
+                             else np.atleast_1d(value) for name, value in fixed.items()
+                             if value is not None} | {name: values for name, (_, values)
+                                                      in axis_values.items()})
+            elif isinstance(size, str):
                 size = int(np.prod([np.max(axis_values[name][1]) if name in axis_values
                                     else fixed[name] for name in size.split("*")]))
             dim_sizes[dim] = size if isinstance(size, int) else len(size)

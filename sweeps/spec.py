@@ -163,8 +163,8 @@ class _Parser:
             self.fail("sweep.bearing", f"unknown preset {name!r}" + _suggestion(str(name), PRESETS)
                       + " (`bearing-sweep presets` lists them)")
         preset = PRESETS[name]
-        if preset.model != model.name:
-            self.fail("sweep.bearing", f"preset {name!r} is for model {preset.model!r}, "
+        if model.name not in preset.models:
+            self.fail("sweep.bearing", f"preset {name!r} is for {' and '.join(preset.models)}, "
                       f"not {model.name!r}")
         return {key: self.value(model.input(key), raw, f"preset {name}.{key}")
                 for key, raw in preset.values.items()}

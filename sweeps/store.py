@@ -61,7 +61,7 @@ def build_dataset(sweep: Sweep, grid: Grid, outputs: dict, status: np.ndarray,
     coords = coordinates(sweep)
     for dim in {d for o in model.outputs for d in o.dims}:
         labels = model.dim_sizes[dim]
-        if isinstance(labels, str):
+        if isinstance(labels, str) or callable(labels):
             coords[dim] = ((dim,), np.arange(1, grid.dim_sizes[dim] + 1),
                            {"long_name": f"{dim} number", "units": "1"})
         else:
