@@ -33,6 +33,8 @@ def _parser() -> argparse.ArgumentParser:
     run.add_argument("--chunk-size", type=int, metavar="POINTS",
                      help="grid points per task (default: chosen from the model's cost)")
     run.add_argument("--quiet", action="store_true", help="no progress bar")
+    run.add_argument("--fresh", action="store_true",
+                     help="ignore the finished chunks of an interrupted run and start over")
     cluster_options(run)
 
     run_study = commands.add_parser("study", help="run a paper's sweeps (missing or stale) and "
@@ -60,6 +62,10 @@ def _check_cluster_options(args):
         raise SpecError(f"--workers {args.workers}: expected 0 (in-process) or more workers")
     if args.workers == 0 and args.scheduler:
         raise SpecError("--workers 0 and --scheduler exclude each other")
+
+
+def _note(message: str):
+    print(message, file=sys.stderr)
 
 
 def _describe(name: str) -> str:
@@ -104,7 +110,8 @@ def main(argv=None) -> int:
             sweep = spec.load(args.definition)
             output = args.output or Path("results") / f"{args.definition.stem}.nc"
             with Executor(args.workers, args.scheduler) as executor:
-                summary = run_sweep(sweep, output, executor, args.chunk_size, not args.quiet)
+                summary = run_sweep(sweep, output, executor, args.chunk_size, not args.quiet,
+                                    args.fresh, _note)
             print(summary.text())
         elif args.command == "study":
             _check_cluster_options(args)
@@ -120,11 +127,14 @@ def main(argv=None) -> int:
     except SpecError as error:
         print(f"error: {error}", file=sys.stderr)
         return USAGE_ERROR
-    except OSError as error:  # a folder that cannot be written, a full disk, ...
-        print(f"error: {error.filename or ''}: {error.strerror or error}", file=sys.stderr)
+    except OSError as error:  # a folder that cannot be written, a full disk, a busy output
+        where = f"{error.filename}: " if error.filename else ""
+        print(f"error: {where}{error.strerror or error}; any earlier result is left as it was",
+              file=sys.stderr)
         return 1
     except KeyboardInterrupt:
-        print("interrupted: no result file was written for the unfinished sweep", file=sys.stderr)
+        print("interrupted: the finished chunks are kept; run the same command again to resume",
+              file=sys.stderr)
         return 130
     return 0
 

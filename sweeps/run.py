@@ -9,9 +9,10 @@ from dataclasses import dataclass, field
 
 import numpy as np
 
-from models.registry import MODEL_ERROR, STATUS_MEANINGS, get_model
+from models.registry import MODEL_ERROR, get_model
 from sweeps import store, units
 from sweeps.grid import Grid
+from sweeps.parts import OutputLock, Parts
 from sweeps.spec import Sweep
 
 #: Below this estimated single-core time [s] a sweep runs in-process: starting a cluster
@@ -194,9 +195,9 @@ class Executor:
         from distributed import as_completed
 
         client = self.connect()
-        # A key of its own: the same grid scattered again must not share a released key.
-        shared = client.scatter(grid, broadcast=True, hash=False)
-        futures = {client.submit(evaluate_chunk, shared, start, stop, pure=False): (start, stop)
+        # The grid travels with every task (it is small): scattered data would be lost with a
+        # worker that dies, and with it every chunk still to compute.
+        futures = {client.submit(evaluate_chunk, grid, start, stop, pure=False): (start, stop)
                    for start, stop in chunks}
         try:
             with client.as_current():  # as_completed looks for the current client
@@ -247,38 +248,47 @@ def choose_chunk_size(grid: Grid, workers: int) -> int:
 
 
 def run_sweep(sweep: Sweep, output, executor: Executor | None = None,
-              chunk_size: int | None = None, progress: bool = True) -> Summary:
-    """Compute ``sweep`` and write its netCDF file atomically at ``output``."""
+              chunk_size: int | None = None, progress: bool = True, fresh: bool = False,
+              log=None) -> Summary:
+    """Compute ``sweep`` and write its netCDF file atomically at ``output``.
+
+    Finished chunks are kept as part files beside ``output`` until the file is written, so a
+    run after an interruption computes only what is missing (``fresh`` discards them). The
+    file is assembled one chunk at a time: memory is bounded by the chunk size. ``log``
+    receives messages for the user (resuming, discarding).
+    """
     own = executor is None
     executor = executor or Executor()
+    log = log or (lambda message: None)
     began = time.monotonic()
     try:
-        grid = Grid.from_sweep(sweep)
-        model = get_model(grid.model_name)
-        parallel = executor.parallel(grid)
-        if parallel:
-            executor.connect()
-        size = chunk_size or choose_chunk_size(grid, executor.worker_count() if parallel else 1)
-        outputs = {o.name: np.empty((grid.size,) + tuple(grid.dim_sizes[d] for d in o.dims))
-                   for o in model.outputs}
-        status = np.empty(grid.size, dtype=np.int8)
-        errors = []
-        bar = Progress(grid.size, model.name, progress)
-        try:
-            for start, stop, result in executor.map(grid, grid.chunks(size), parallel):
-                for name, values in result["outputs"].items():
-                    outputs[name][start:stop] = values
-                status[start:stop] = result["status"]
-                errors.extend(result["errors"])
-                bar.advance(stop - start)
-        finally:
-            bar.close()
-        scheduler = executor.describe(parallel)
-        dataset = store.build_dataset(sweep, grid, outputs, status, scheduler, errors)
-        store.write_netcdf(dataset, output)
-        counts = {name: int(np.sum(status == code)) for code, name in enumerate(STATUS_MEANINGS)}
+        with OutputLock(output):
+            grid = Grid.from_sweep(sweep)
+            model = get_model(grid.model_name)
+            parallel = executor.parallel(grid)
+            if parallel:
+                executor.connect()
+            size = chunk_size or choose_chunk_size(
+                grid, executor.worker_count() if parallel else 1)
+            parts = Parts(output, {"definition_sha256": sweep.sha256,
+                                   "model_version": model.version, "points": grid.size})
+            size = parts.open(size, fresh, log)
+            chunks = grid.chunks(size)
+            done = parts.finished()
+            todo = [chunk for chunk in chunks if chunk not in done]
+            bar = Progress(grid.size, model.name, progress)
+            bar.advance(grid.size - sum(stop - start for start, stop in todo))
+            try:
+                for start, stop, result in executor.map(grid, todo, parallel):
+                    parts.save(start, stop, result)
+                    bar.advance(stop - start)
+            finally:
+                bar.close()
+            scheduler = executor.describe(parallel)
+            counts, errors = store.assemble(sweep, grid, parts, chunks, output, scheduler)
+            parts.remove()
         return Summary(model.name, grid.size, counts, time.monotonic() - began, str(output),
-                       scheduler, sorted(set(errors)))
+                       scheduler, errors)
     finally:
         if own:
             executor.close()

@@ -20,6 +20,8 @@ from sweeps import units
 _RANGE_KEYS = {"start", "stop", "num", "step", "units"}
 _VALUES_KEYS = {"values", "units"}
 _RESERVED = {"status"}
+#: Most points in one sweep: beyond, the result files alone would fill a disk.
+MAX_POINTS = 10**9
 
 
 class SpecError(Exception):
@@ -138,6 +140,10 @@ class _Parser:
             self.claim(key, where, inputs, model)
             fixed[key], origin[key] = self.value(inputs[key], raw, where), "fixed"
         axes = [self.axis(key, raw, inputs, model) for key, raw in axes_raw.items()]
+        points = int(np.prod([len(axis) for axis in axes], dtype=np.float64))
+        if points > MAX_POINTS:
+            self.fail("axes", f"the grid has {points:.3g} points, too large for one sweep "
+                      f"(at most {MAX_POINTS:.0e}); split it into several definitions")
         on_axes = {p for axis in axes for p in axis.values}
         for key in on_axes:
             fixed.pop(key, None)

@@ -92,6 +92,84 @@ def build_dataset(sweep: Sweep, grid: Grid, outputs: dict, status: np.ndarray,
     return xr.Dataset(data_vars, coords, attrs)
 
 
+def assemble(sweep: Sweep, grid: Grid, parts, chunks, path, scheduler: str) -> tuple:
+    """Write the sweep's dataset from its part files, one chunk in memory at a time.
+
+    The file's structure (coordinates, attributes, empty variables) is written by xarray,
+    the chunks' values then into it, region by region, and the finished file renamed into
+    place: an existing file at ``path`` stays intact until then. Returns the status of every
+    point's count by code and the models' error messages.
+    """
+    import dask.array
+    import netCDF4
+    from xarray.backends.file_manager import FILE_CACHE
+
+    model = get_model(grid.model_name)
+    counts = np.zeros(len(STATUS_MEANINGS), dtype=np.int64)
+    errors = set()
+    for start, stop in chunks:  # first pass: what the attributes must say
+        part = parts.load(start, stop)
+        counts += np.bincount(part["status"], minlength=len(STATUS_MEANINGS))
+        errors.update(part["errors"])
+    lazy = {o.name: dask.array.full((grid.size,) + tuple(grid.dim_sizes[d] for d in o.dims),
+                                    np.nan, chunks=max(1, min(grid.size, 100_000)))
+            for o in model.outputs}
+    status = dask.array.zeros(grid.size, dtype=np.int8, chunks=max(1, min(grid.size, 100_000)))
+    skeleton = build_dataset(sweep, grid, lazy, status, scheduler, sorted(errors))
+    path = Path(path)
+    path.parent.mkdir(parents=True, exist_ok=True)
+    temporary = path.with_name(f".{path.name}.{os.getpid()}.tmp")
+    try:
+        skeleton.to_netcdf(temporary, engine="netcdf4", compute=False)
+        del skeleton
+        FILE_CACHE.clear()  # closes the file xarray left open for the values never computed
+        with netCDF4.Dataset(temporary, "r+") as target:
+            for start, stop in chunks:
+                part = parts.load(start, stop)
+                values = dict(part["outputs"], status=part["status"])
+                for name, data in values.items():
+                    variable = target.variables[name]
+                    for index, low, high in _regions(grid.shape, start, stop):
+                        block = data[low - start:high - start]
+                        variable[index or ...] = block.reshape(
+                            tuple(s.stop - s.start for s in index) + block.shape[1:])
+        os.replace(temporary, path)
+    finally:
+        if temporary.exists():
+            temporary.unlink()
+    return dict(zip(STATUS_MEANINGS, counts.tolist())), sorted(errors)
+
+
+def _regions(shape: tuple, start: int, stop: int, offset: int = 0):
+    """Split points ``start..stop-1`` of a C-ordered grid into rectangular regions.
+
+    Yields ``(index, low, high)``: a tuple of slices (one per axis) and the range of point
+    numbers it holds, in order; at most two regions per axis.
+    """
+    if start >= stop:
+        return
+    if not shape:
+        yield (), offset + start, offset + stop
+        return
+    inner = int(np.prod(shape[1:], dtype=np.int64))
+    first, head = divmod(start, inner)
+    last, tail = divmod(stop, inner)
+    if first == last:
+        for index, low, high in _regions(shape[1:], head, tail, offset + first * inner):
+            yield (slice(first, first + 1),) + index, low, high
+        return
+    if head:
+        for index, low, high in _regions(shape[1:], head, inner, offset + first * inner):
+            yield (slice(first, first + 1),) + index, low, high
+        first += 1
+    if last > first:
+        yield ((slice(first, last),) + tuple(slice(0, n) for n in shape[1:]),
+               offset + first * inner, offset + last * inner)
+    if tail:
+        for index, low, high in _regions(shape[1:], 0, tail, offset + last * inner):
+            yield (slice(last, last + 1),) + index, low, high
+
+
 def write_netcdf(dataset: xr.Dataset, path) -> Path:
     """Write ``dataset`` to ``path`` atomically: a temporary file in the same folder, renamed.
 

@@ -94,7 +94,7 @@ def run_study(study: Study, results: Path, figures: Path, executor: Executor,
         if not force and not is_stale(definition, result, sweep):
             log(f"{study.name}/{definition.name}: up to date ({result})")
             continue
-        log(run_sweep(sweep, result, executor).text())
+        log(run_sweep(sweep, result, executor, log=log).text())
     target = figures / study.name
     target.mkdir(parents=True, exist_ok=True)
     study.figures_module().draw(results / study.name, target)
