@@ -18,11 +18,7 @@ reproduce: $(STAMP)
 	$(VENV)/bin/bearing-sweep report
 
 bench: $(STAMP)
-	$(PYTHON) benchmarks/crb_radial_throughput.py
-	$(PYTHON) benchmarks/ball_5dof_throughput.py
-	$(PYTHON) benchmarks/crb_runout_throughput.py
-	$(PYTHON) benchmarks/cage_slip_cost.py
-	$(PYTHON) benchmarks/worker_scaling.py
+	$(PYTHON) benchmarks/run_all.py
 
 clean:
 	rm -rf results figures .pytest_cache

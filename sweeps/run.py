@@ -201,9 +201,12 @@ class Executor:
                    for start, stop in chunks}
         try:
             with client.as_current():  # as_completed looks for the current client
-                for future in as_completed(futures):
-                    start, stop = futures[future]
-                    yield start, stop, future.result()
+                for future in as_completed(list(futures)):
+                    start, stop = futures.pop(future)
+                    result = future.result()
+                    # Let the worker drop it: held futures keep every result in the cluster.
+                    future.release()
+                    yield start, stop, result
         finally:
             client.cancel(list(futures))
 

@@ -1,0 +1,53 @@
+"""Run every benchmark and print one table of their ratios against their baselines.
+
+Each benchmark script prints a title line, an indented line naming its baseline, and an
+indented ``ratio: Nx`` (or ``speed-up: ... Nx``) line with its goal in parentheses; a script
+may print several such sections. A benchmark that fails is a row that says so.
+"""
+import re
+import subprocess
+import sys
+from pathlib import Path
+
+SCRIPTS = ("crb_radial_throughput.py", "ball_5dof_throughput.py", "crb_runout_throughput.py",
+           "cage_slip_cost.py", "worker_scaling.py")
+RATIO = re.compile(r"^\s+(?:ratio|speed-up):\D*?([\d.]+)x(.*)$")
+GOAL = re.compile(r"goal:?\s*([^)]*)")
+
+
+def sections(text: str):
+    """``(title, baseline, ratio, goal)`` for every section of a benchmark's output."""
+    title = baseline = None
+    for line in text.splitlines():
+        if line and not line.startswith(" "):
+            title, baseline = line.strip(), None
+        elif "baseline" in line or "1 worker" in line:
+            baseline = line.strip().split(":")[0]
+        match = RATIO.match(line)
+        if match:
+            goal = GOAL.search(line)
+            yield title, baseline or "", match.group(1), goal.group(1).strip() if goal else ""
+
+
+def main():
+    folder = Path(__file__).parent
+    rows = []
+    for script in SCRIPTS:
+        done = subprocess.run([sys.executable, str(folder / script)], capture_output=True,
+                              text=True, cwd=folder.parent)
+        print(done.stdout, end="", flush=True)
+        found = list(sections(done.stdout)) if done.returncode == 0 else []
+        if not found:
+            rows.append((script, "failed: " + (done.stderr.strip().splitlines() or ["?"])[-1],
+                         "-", ""))
+        rows.extend(found)
+    width = max(len(row[0]) for row in rows)
+    print()
+    print(f"{'benchmark':<{width}} | {'baseline':<44} | {'ratio':>7} | goal")
+    print(f"{'-' * width}-|-{'-' * 44}-|-{'-' * 7}-|-----")
+    for title, baseline, ratio, goal in rows:
+        print(f"{title:<{width}} | {baseline[:44]:<44} | {ratio + 'x':>7} | {goal}")
+
+
+if __name__ == "__main__":
+    main()
