@@ -112,9 +112,9 @@ def assemble(sweep: Sweep, grid: Grid, parts, chunks, path, scheduler: str) -> t
         counts += np.bincount(part["status"], minlength=len(STATUS_MEANINGS))
         errors.update(part["errors"])
     lazy = {o.name: dask.array.full((grid.size,) + tuple(grid.dim_sizes[d] for d in o.dims),
-                                    np.nan, chunks=max(1, min(grid.size, 100_000)))
+                                    np.nan, chunks=-1)  # never computed: one chunk
             for o in model.outputs}
-    status = dask.array.zeros(grid.size, dtype=np.int8, chunks=max(1, min(grid.size, 100_000)))
+    status = dask.array.zeros(grid.size, dtype=np.int8, chunks=-1)
     skeleton = build_dataset(sweep, grid, lazy, status, scheduler, sorted(errors))
     path = Path(path)
     path.parent.mkdir(parents=True, exist_ok=True)

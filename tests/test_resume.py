@@ -138,3 +138,14 @@ def test_a_killed_worker_costs_only_a_retry(tmp_path):
     assert summary.status_counts == reference.status_counts
     same_data(store.open_result(tmp_path / "reference.nc"),
               store.open_result(tmp_path / "killed.nc"))
+
+
+def test_an_output_that_cannot_be_a_file_is_one_line(tmp_path, capsys):
+    definition = tmp_path / "d.toml"
+    definition.write_text(SLOW.replace("num = 200", "num = 2"))
+    occupied = tmp_path / "out.nc"
+    occupied.mkdir()  # a folder where the file should go
+    code = cli.main(["run", str(definition), "-o", str(occupied), "--workers", "0"])
+    err = capsys.readouterr().err
+    assert code == 1 and len(err.strip().splitlines()) == 1 and "Traceback" not in err
+    assert occupied.is_dir() and not any(occupied.iterdir())
