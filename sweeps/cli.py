@@ -128,7 +128,9 @@ def main(argv=None) -> int:
         print(f"error: {error}", file=sys.stderr)
         return USAGE_ERROR
     except OSError as error:  # a folder that cannot be written, a full disk, a busy output
-        where = f"{error.filename}: " if error.filename else ""
+        # A failed rename names its destination second: that is the file the user asked for.
+        target = getattr(error, "filename2", None) or error.filename
+        where = f"{target}: " if target else ""
         print(f"error: {where}{error.strerror or error}; any earlier result is left as it was",
               file=sys.stderr)
         return 1
