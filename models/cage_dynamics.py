@@ -135,10 +135,8 @@ def _run(one, count, t, traction, point, cage_density, eccentricity, ring_mass, 
     drag = cage_windage(omega_c, t["cage_out"], t["width"], t["effective_density"],
                         t["viscosity"])
     p[rhs.CAGE_DRAG] = drag / omega_c**1.5  # laminar disc: moment ~ omega^1.5
-    p[rhs.TRACTION_A:rhs.TRACTION_D + 1] = (traction.a[point % traction.a.size],
-                                            traction.b[point % traction.b.size],
-                                            traction.c[point % traction.c.size],
-                                            traction.d[point % traction.d.size])
+    p[rhs.TRACTION_A:rhs.TRACTION_D + 1] = (traction.a[point], traction.b[point],
+                                            traction.c[point], traction.d[point])
     state = _start(count, steady, np.ravel(ring["radial_displacement"])[0], omega_c, eccentricity,
                    t["spin_kin"])
     times = np.arange(int(np.floor(duration / interval + 1e-9)) + 1) * interval
