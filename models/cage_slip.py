@@ -260,20 +260,17 @@ def _orbit_loads(load, omega_i, roller_count, pitch_diameter, diameter, contact_
 
 
 def _secant_root(residual, lower, upper, tolerance):
-    """Roots of increasing functions by secant steps kept inside a shrinking bracket."""
-    previous = {}
+    """Roots of increasing functions by secant steps kept inside a shrinking bracket: the
+    slope is that through each entry's last two evaluations (bisection until there are two).
+    """
+    last_x = np.full(np.size(lower), np.nan)
+    last_value = np.full(np.size(lower), np.nan)
 
     def with_secant(x, index):
         value, _ = residual(x, index)
-        slope = np.full(index.size, np.nan)
-        known = np.array([i in previous for i in index])
-        if known.any():
-            last_x = np.array([previous[i][0] if i in previous else np.nan for i in index])
-            last_v = np.array([previous[i][1] if i in previous else np.nan for i in index])
-            with np.errstate(divide="ignore", invalid="ignore"):
-                slope = np.where(known, (value - last_v) / (x - last_x), np.nan)
-        for i, xi, vi in zip(index, x, value):
-            previous[i] = (xi, vi)
+        with np.errstate(divide="ignore", invalid="ignore"):
+            slope = (value - last_value[index]) / (x - last_x[index])
+        last_x[index], last_value[index] = x, value
         return value, slope
 
     return solve_increasing(with_secant, lower, upper, 0.5 * (lower + upper), tolerance)
