@@ -1,4 +1,5 @@
 """A sweep on an external dask.distributed cluster gives the local result."""
+import contextlib
 import socket
 import subprocess
 import sys
@@ -40,66 +41,66 @@ def wait_for_port(port: int, seconds: float = 60):
     raise TimeoutError(f"nothing listens on port {port}")
 
 
-@pytest.mark.slow
-def test_sweep_on_a_real_scheduler_and_two_workers(tmp_path):
-    (tmp_path / "def.toml").write_text(DEFINITION)
+@contextlib.contextmanager
+def external_cluster(folder, nanny=True):
+    """A ``dask scheduler`` and two ``dask worker`` processes; yields the address and the
+    worker processes (without a nanny a worker process is the worker itself)."""
     port = free_port()
     address = f"tcp://127.0.0.1:{port}"
     dask = str(BIN / "dask")
-    processes = [subprocess.Popen([dask, "scheduler", "--host", "127.0.0.1", "--port", str(port),
-                                   "--no-dashboard"], cwd=tmp_path, stdout=subprocess.DEVNULL,
-                                  stderr=subprocess.DEVNULL)]
+    quiet = dict(cwd=folder, stdout=subprocess.DEVNULL, stderr=subprocess.DEVNULL)
+    processes = [subprocess.Popen([dask, "scheduler", "--host", "127.0.0.1", "--port",
+                                   str(port), "--no-dashboard"], **quiet)]
     try:
         wait_for_port(port)
-        processes += [subprocess.Popen([dask, "worker", address, "--nthreads", "1",
-                                        "--no-dashboard"], cwd=tmp_path,
-                                       stdout=subprocess.DEVNULL, stderr=subprocess.DEVNULL)
-                      for _ in range(2)]
+        workers = [subprocess.Popen([dask, "worker", address, "--nthreads", "1",
+                                     "--no-dashboard"] + ([] if nanny else ["--no-nanny"]),
+                                    **quiet) for _ in range(2)]
+        processes += workers
         from distributed import Client
 
         with Client(address, timeout="60s") as client:
             client.wait_for_workers(2, timeout=60)
-        remote = subprocess.run([sys.executable, "-m", "sweeps", "run", "def.toml", "-o",
-                                 "remote.nc", "--scheduler", address, "--chunk-size", "7"],
-                                cwd=tmp_path, capture_output=True, text=True, timeout=300)
-        assert remote.returncode == 0, remote.stderr
-        assert f"dask scheduler {address} (2 workers)" in remote.stdout
+        yield address, workers
     finally:
         for process in processes:
             process.terminate()
         for process in processes:
             process.wait(timeout=30)
+
+
+def equals_local_run(folder, remote_name):
+    """The remote result has the data of an in-process run of the same definition."""
     local = subprocess.run([sys.executable, "-m", "sweeps", "run", "def.toml", "-o", "local.nc",
-                            "--workers", "0"], cwd=tmp_path, capture_output=True, text=True)
+                            "--workers", "0", "--quiet"], cwd=folder, capture_output=True,
+                           text=True)
     assert local.returncode == 0, local.stderr
-    a = xr.open_dataset(tmp_path / "remote.nc")
-    b = xr.open_dataset(tmp_path / "local.nc")
-    assert a.attrs["scheduler"].startswith("dask scheduler")
+    a = xr.open_dataset(folder / remote_name)
+    b = xr.open_dataset(folder / "local.nc")
     for name in b.data_vars:
         np.testing.assert_array_equal(a[name].values, b[name].values, err_msg=name)
+    return a
+
+
+@pytest.mark.slow
+def test_sweep_on_a_real_scheduler_and_two_workers(tmp_path):
+    (tmp_path / "def.toml").write_text(DEFINITION)
+    with external_cluster(tmp_path) as (address, _):
+        remote = subprocess.run([sys.executable, "-m", "sweeps", "run", "def.toml", "-o",
+                                 "remote.nc", "--scheduler", address, "--chunk-size", "7"],
+                                cwd=tmp_path, capture_output=True, text=True, timeout=300)
+        assert remote.returncode == 0, remote.stderr
+        assert f"dask scheduler {address} (2 workers)" in remote.stdout
+    result = equals_local_run(tmp_path, "remote.nc")
+    assert result.attrs["scheduler"].startswith("dask scheduler")
 
 
 @pytest.mark.slow
 def test_a_worker_killed_on_an_external_cluster_costs_only_a_retry(tmp_path):
     definition = DEFINITION.replace("num = 10", "num = 400").replace("num = 5", "num = 100")
     (tmp_path / "def.toml").write_text(definition)
-    port = free_port()
-    address = f"tcp://127.0.0.1:{port}"
-    dask = str(BIN / "dask")
-    processes = [subprocess.Popen([dask, "scheduler", "--host", "127.0.0.1", "--port", str(port),
-                                   "--no-dashboard"], cwd=tmp_path, stdout=subprocess.DEVNULL,
-                                  stderr=subprocess.DEVNULL)]
-    try:
-        wait_for_port(port)
-        # Without a nanny the process is the worker: killing it loses the worker for good.
-        workers = [subprocess.Popen([dask, "worker", address, "--nthreads", "1", "--no-nanny",
-                                     "--no-dashboard"], cwd=tmp_path, stdout=subprocess.DEVNULL,
-                                    stderr=subprocess.DEVNULL) for _ in range(2)]
-        processes += workers
-        from distributed import Client
-
-        with Client(address, timeout="60s") as client:
-            client.wait_for_workers(2, timeout=60)
+    # Without a nanny the process is the worker: killing it loses the worker for good.
+    with external_cluster(tmp_path, nanny=False) as (address, workers):
         remote = subprocess.Popen([sys.executable, "-m", "sweeps", "run", "def.toml", "-o",
                                    "remote.nc", "--scheduler", address, "--chunk-size", "1000",
                                    "--quiet"], cwd=tmp_path, stdout=subprocess.PIPE,
@@ -109,19 +110,7 @@ def test_a_worker_killed_on_an_external_cluster_costs_only_a_retry(tmp_path):
         while len(list(parts.glob("chunk-*.npz"))) < 3 and time.monotonic() < end:
             time.sleep(0.05)
         workers[0].kill()
-        out, err = remote.communicate(timeout=300)
+        _, err = remote.communicate(timeout=300)
         assert remote.returncode == 0, err
         assert len(list(parts.glob("*"))) == 0 and workers[0].poll() is not None
-    finally:
-        for process in processes:
-            process.terminate()
-        for process in processes:
-            process.wait(timeout=30)
-    local = subprocess.run([sys.executable, "-m", "sweeps", "run", "def.toml", "-o", "local.nc",
-                            "--workers", "0", "--quiet"], cwd=tmp_path, capture_output=True,
-                           text=True)
-    assert local.returncode == 0, local.stderr
-    a = xr.open_dataset(tmp_path / "remote.nc")
-    b = xr.open_dataset(tmp_path / "local.nc")
-    for name in b.data_vars:
-        np.testing.assert_array_equal(a[name].values, b[name].values, err_msg=name)
+    equals_local_run(tmp_path, "remote.nc")
