@@ -12,9 +12,40 @@ import importlib
 from dataclasses import dataclass, field
 from typing import Callable
 
+import numpy as np
+
 #: Status codes shared by all models (netCDF ``flag_values`` / ``flag_meanings``).
-CONVERGED, NOT_CONVERGED, INFEASIBLE, MODEL_ERROR = 0, 1, 2, 3
-STATUS_MEANINGS = ("converged", "not_converged", "infeasible", "model_error")
+CONVERGED, NOT_CONVERGED, INFEASIBLE, MODEL_ERROR, OUT_OF_VALIDITY, NO_ROOT_IN_RANGE = range(6)
+STATUS_MEANINGS = ("converged", "not_converged", "infeasible", "model_error",
+                   "out_of_validity", "no_root_in_range")
+#: What each status says of a point, for ``describe``, the README and the netCDF ``comment``.
+STATUS_DESCRIPTIONS = {
+    "converged": "solved; the values hold",
+    "not_converged": "the solver stopped without meeting its tolerance; outputs are NaN",
+    "infeasible": "no solution exists for these inputs (e.g. a load the bearing cannot "
+                  "carry); outputs are NaN",
+    "model_error": "the model raised an exception for this group of points; outputs are NaN",
+    "out_of_validity": "solved, but outside the model's stated validity (its limits are in "
+                       "`bearing-sweep describe MODEL`); values kept, do not trust them",
+    "no_root_in_range": "solved, but the root the model searches for (a limit angle, a cage "
+                        "equilibrium) is not in its search range; the outputs that need it "
+                        "are NaN, the others hold",
+}
+#: Statuses whose values the engine keeps; the others are NaN whatever the model returned.
+VALUES_KEPT = (CONVERGED, OUT_OF_VALIDITY, NO_ROOT_IN_RANGE)
+#: Order in which statuses of one point combine (the last named wins).
+_SEVERITY = (CONVERGED, OUT_OF_VALIDITY, NO_ROOT_IN_RANGE, INFEASIBLE, NOT_CONVERGED,
+             MODEL_ERROR)
+
+
+def combine_status(*codes):
+    """The status of points that went through several steps: the most severe of ``codes``
+    (arrays that broadcast), in the order converged < out_of_validity < no_root_in_range <
+    infeasible < not_converged < model_error."""
+    rank = np.argsort(_SEVERITY)  # status code -> its place in the order
+    worst = np.max([rank[np.asarray(c, dtype=np.int64)] for c in np.broadcast_arrays(*codes)],
+                   axis=0)
+    return np.asarray(_SEVERITY, dtype=np.int8)[worst]
 
 #: Marks an input that has no default and must be given.
 REQUIRED = object()
@@ -134,6 +165,8 @@ class Model:
     #: model's temporaries stay small enough for the caches that workers share (crb_radial:
     #: two workers slowed each other's tasks by 40 % with 2500-point calls, 15 % with 500).
     points_per_call: int = 100_000
+    #: The limits beyond which a solved point is marked ``out_of_validity``, in words.
+    validity: str = ""
 
     def input(self, name: str) -> Input:
         return next(i for i in self.inputs if i.name == name)

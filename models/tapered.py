@@ -261,7 +261,7 @@ def trb_rib(radial_load, axial_load, roller_count, effective_length, roller_mean
         "roller_load": cup_load, "inner_load": inner_load, "inner_load_offset": offset,
         "rib_curvature_radius": end.rib_curvature_radius(angle),
     }
-    status = np.maximum(load["status"], hertz["status"])
+    status = combine_status(load["status"], hertz["status"])
     outputs["status"] = status.astype(np.int8)
     return outputs
 

@@ -6,7 +6,7 @@ import sys
 from pathlib import Path
 
 from models.catalogue import PRESETS
-from models.registry import all_models
+from models.registry import STATUS_DESCRIPTIONS, all_models
 from sweeps import spec, study
 from sweeps.run import Executor, run_sweep
 from sweeps.spec import SpecError
@@ -86,7 +86,10 @@ def _describe(name: str) -> str:
     for o in model.outputs:
         dims = f" (dims: {', '.join(o.dims)})" if o.dims else ""
         lines.append(f"  {o.name} [{o.unit}]{dims}: {o.meaning}")
-    lines.append("  status: " + "converged / not_converged / infeasible / model_error")
+    lines.append("  status: per point, one of:")
+    lines += [f"    {name}: {text}" for name, text in STATUS_DESCRIPTIONS.items()]
+    if model.validity:
+        lines.append(f"Validity (out_of_validity beyond): {model.validity}")
     for c in model.constraints:
         lines.append(f"Condition: {c.message}")
     return "\n".join(lines)

@@ -9,7 +9,7 @@ from dataclasses import dataclass, field
 
 import numpy as np
 
-from models.registry import MODEL_ERROR, get_model
+from models.registry import MODEL_ERROR, VALUES_KEPT, get_model
 from sweeps import store, units
 from sweeps.grid import Grid
 from sweeps.parts import OutputLock, Parts
@@ -67,7 +67,7 @@ def evaluate_chunk(grid: Grid, start: int, stop: int) -> dict:
             region = (members,) + tuple(slice(0, n) for n in value.shape[1:])
             outputs[spec.name][region] = _from_si(value, spec)
         status[members] = _per_point(result["status"], members.size, 0)
-    failed = status != 0
+    failed = ~np.isin(status, VALUES_KEPT)
     for values in outputs.values():
         values[failed] = np.nan  # whatever a model left there, a failed point is NaN
     return {"outputs": outputs, "status": status, "errors": errors}

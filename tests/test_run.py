@@ -147,3 +147,36 @@ def test_progress_appears_only_after_a_moment(monkeypatch):
     lines = stream.getvalue().splitlines()
     assert lines[0].startswith("crb_radial [###############               ] 50/100 points 2 s")
     assert lines[-1].startswith("crb_radial [##############################] 100/100 points 30 s")
+
+
+def test_points_out_of_validity_keep_their_values_and_failures_are_nan(tmp_path, monkeypatch):
+    model = registry.get_model("crb_radial")
+    original = model.function
+
+    def judged(**kwargs):
+        result = original(**kwargs)
+        heavy = np.asarray(kwargs["radial_load"]) > 6e3
+        code = registry.OUT_OF_VALIDITY if kwargs["slice_law"] == "paper" \
+            else registry.NOT_CONVERGED
+        result["status"] = np.where(heavy, code, result["status"]).astype(np.int8)
+        return result
+
+    monkeypatch.setitem(registry._MODELS, "crb_radial",
+                        registry.Model(**{**model.__dict__, "function": judged}))
+    summary, data = compute(tmp_path, "judged")
+    heavy = data.radial_load > 6
+    kept = data.radial_stiffness.sel(arrangement="paper").where(heavy)
+    assert (data.status.sel(arrangement="paper").where(heavy, -1) != registry.CONVERGED).all()
+    assert np.isfinite(kept.values[np.broadcast_to(heavy.values[:, None, None],
+                                                   kept.shape)]).all()
+    assert data.radial_stiffness.sel(arrangement="uniform").where(heavy).isnull().all()
+    assert summary.status_counts["out_of_validity"] == summary.status_counts["not_converged"] > 0
+    assert "out_of_validity" in data.status.attrs["flag_meanings"]
+
+
+def test_statuses_combine_by_severity():
+    from models.registry import combine_status as combine
+
+    c, nc, inf, err, oov, nr = range(6)
+    assert combine([c, oov, nr, c, inf], [oov, c, oov, nc, nc]).tolist() == [oov, oov, nr, nc, nc]
+    assert combine(err, [c, nc, inf, oov, nr]).tolist() == [err] * 5
