@@ -83,10 +83,14 @@ def _direct_lowest_centre(step_rotation, errors, order, amplitude, phase):
         direction = np.arctan2(towards[1], towards[0])
         return np.hypot(*towards) - radius(j, direction + np.pi) - 0.5 * di
 
-    constraints = [{"type": "ineq", "fun": gap, "args": (j,)} for j in lower]
+    # Searched in micrometres: SLSQP's tolerances are absolute, and in metres the whole
+    # problem sits below them (scipy 1.16's SLSQP then wanders off).
+    constraints = [{"type": "ineq", "fun": lambda c, j: gap(c * UM, j) / UM, "args": (j,)}
+                   for j in lower]
     found = minimize(lambda c: c[1], x0=np.array([0.0, 0.0]), constraints=constraints,
-                     method="SLSQP", options={"ftol": 1e-16, "maxiter": 500})
-    return found.x
+                     method="SLSQP", options={"ftol": 1e-10, "maxiter": 500})
+    assert found.success, found.message
+    return found.x * UM
 
 
 def test_the_vectorised_solution_equals_a_direct_search():
