@@ -47,7 +47,8 @@ def _parser() -> argparse.ArgumentParser:
     commands.add_parser("models", help="list the models")
     describe = commands.add_parser("describe", help="show one model's inputs and outputs")
     describe.add_argument("model")
-    commands.add_parser("presets", help="list the catalogue's bearings")
+    presets = commands.add_parser("presets", help="list the catalogue's bearings, or show one")
+    presets.add_argument("name", nargs="?", help="a preset to show with its values")
     for command in commands.choices.values():
         if command.prog.split()[-1] in ("study", "report"):
             command.add_argument("--studies", type=Path, default=None,
@@ -71,7 +72,8 @@ def _note(message: str):
 def _describe(name: str) -> str:
     models = all_models()
     if name not in models:
-        raise SpecError(f"unknown model {name!r} (models: {', '.join(sorted(models))})")
+        raise SpecError(f"unknown model {name!r}" + spec.suggestion(name, models)
+                        + f" (models: {', '.join(sorted(models))})")
     model = models[name]
     lines = [f"{model.name} (version {model.version}): {model.summary}",
              f"Reference: {model.reference}", "", "Inputs:"]
@@ -95,6 +97,20 @@ def _describe(name: str) -> str:
     return "\n".join(lines)
 
 
+def _preset(name: str) -> str:
+    if name not in PRESETS:
+        raise SpecError(f"unknown preset {name!r}" + spec.suggestion(name, PRESETS)
+                        + " (`bearing-sweep presets` lists them)")
+    preset = PRESETS[name]
+    lines = [f"{preset.name}: for {', '.join(preset.models)}", f"Source: {preset.source}"]
+    if preset.notes:
+        lines.append(f"Notes: {preset.notes}")
+    lines.append("Values:")
+    lines += [f"  {key} = {value!r}" if not isinstance(value, str) else f"  {key} = {value}"
+              for key, value in preset.values.items()]
+    return "\n".join(lines)
+
+
 def main(argv=None) -> int:
     args = _parser().parse_args(argv)
     try:
@@ -104,8 +120,11 @@ def main(argv=None) -> int:
         elif args.command == "describe":
             print(_describe(args.model))
         elif args.command == "presets":
-            for preset in PRESETS.values():
-                print(f"{preset.name} ({', '.join(preset.models)}): {preset.source}")
+            if args.name is None:
+                for preset in PRESETS.values():
+                    print(f"{preset.name} ({', '.join(preset.models)}): {preset.source}")
+            else:
+                print(_preset(args.name))
         elif args.command == "run":
             _check_cluster_options(args)
             if args.chunk_size is not None and args.chunk_size < 1:

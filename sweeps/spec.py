@@ -22,6 +22,8 @@ _VALUES_KEYS = {"values", "units"}
 _RESERVED = {"status"}
 #: Most points in one sweep: beyond, the result files alone would fill a disk.
 MAX_POINTS = 10**9
+#: Most values on one axis (each is validated on its own before any computing).
+MAX_AXIS_VALUES = 10**6
 
 
 class SpecError(Exception):
@@ -84,10 +86,14 @@ def parse(text: str, where: str = "<definition>") -> Sweep:
         document = tomllib.loads(text)
     except tomllib.TOMLDecodeError as error:
         raise SpecError(f"{where}: not valid TOML: {error}") from None
+    except RecursionError:
+        raise SpecError(f"{where}: not valid TOML for a definition: arrays or tables nested "
+                        "too deeply (a definition needs at most a list of lists)") from None
     return _Parser(where).sweep(document, text)
 
 
-def _suggestion(name: str, options) -> str:
+def suggestion(name: str, options) -> str:
+    """'; did you mean ...?' for the option closest to ``name``, or nothing."""
     close = difflib.get_close_matches(name, list(options), n=1, cutoff=0.6)
     return f"; did you mean {close[0]!r}?" if close else ""
 
@@ -106,7 +112,7 @@ class _Parser:
             self.fail(key, f"expected a table [{key}]")
         for name in table:
             if allowed is not None and name not in allowed:
-                self.fail(f"{key}.{name}", "unknown key" + _suggestion(name, allowed)
+                self.fail(f"{key}.{name}", "unknown key" + suggestion(name, allowed)
                           + f" (accepted: {', '.join(sorted(allowed))})")
         return table
 
@@ -114,7 +120,7 @@ class _Parser:
     def sweep(self, document: dict, text: str) -> Sweep:
         for key in document:
             if key not in ("sweep", "fixed", "axes"):
-                self.fail(key, "unknown section" + _suggestion(key, ("sweep", "fixed", "axes"))
+                self.fail(key, "unknown section" + suggestion(key, ("sweep", "fixed", "axes"))
                           + " (accepted: [sweep], [fixed], [axes])")
         head = self.table(document, "sweep", ("model", "bearing", "title"))
         models = all_models()
@@ -122,7 +128,7 @@ class _Parser:
         if not isinstance(name, str):
             self.fail("sweep.model", "missing: name a model, one of " + ", ".join(sorted(models)))
         if name not in models:
-            self.fail("sweep.model", f"unknown model {name!r}" + _suggestion(name, models)
+            self.fail("sweep.model", f"unknown model {name!r}" + suggestion(name, models)
                       + " (models: " + ", ".join(sorted(models)) + ")")
         model = models[name]
         inputs = {i.name: i for i in model.inputs}
@@ -161,12 +167,13 @@ class _Parser:
                 origin[spec.name] = "default"
         sweep = Sweep(self.where, text, model, str(head.get("title") or f"{model.name}: "
                       f"{Path(self.where).stem}"), bearing, fixed, axes, origin)
+        self.check_pattern_lengths(sweep)
         self.check_constraints(sweep)
         return sweep
 
     def preset(self, name, model: Model) -> dict[str, Value]:
         if not isinstance(name, str) or name not in PRESETS:
-            self.fail("sweep.bearing", f"unknown preset {name!r}" + _suggestion(str(name), PRESETS)
+            self.fail("sweep.bearing", f"unknown preset {name!r}" + suggestion(str(name), PRESETS)
                       + " (`bearing-sweep presets` lists them)")
         preset = PRESETS[name]
         if model.name not in preset.models:
@@ -179,7 +186,7 @@ class _Parser:
         """Check that ``name`` is an input of the model, given only once."""
         if name not in inputs:
             self.fail(key, f"unknown parameter {name!r} of model {model.name}"
-                      + _suggestion(name, inputs)
+                      + suggestion(name, inputs)
                       + f" (`bearing-sweep describe {model.name}` lists them)")
         if name in self.seen:
             self.fail(key, f"parameter {name!r} is given twice (also at {self.seen[name]})")
@@ -209,7 +216,7 @@ class _Parser:
             return Axis(name, {name: values})
         if not isinstance(raw, dict):
             self.fail(key, f"unknown parameter {name!r} of model {model.name}"
-                      + _suggestion(name, inputs)
+                      + suggestion(name, inputs)
                       + f" (`bearing-sweep describe {model.name}` lists them)")
         taken = {o.name for o in model.outputs} | {d for o in model.outputs for d in o.dims}
         if name in taken | _RESERVED:
@@ -258,6 +265,8 @@ class _Parser:
                       "{start = ..., stop = ..., num = ... (or step = ...)}")
         if not values:
             self.fail(key, "empty axis: give at least one value")
+        if key.count(".") == 1:  # a plain axis; a zipped one's columns may repeat values
+            self.unique(values, key)
         return self.same_unit(values)
 
     def value_range(self, spec: Input, raw: dict, key: str) -> list[Value]:
@@ -274,20 +283,45 @@ class _Parser:
             num = raw["num"]
             if isinstance(num, bool) or not isinstance(num, int) or num < 1:
                 self.fail(f"{key}.num", f"{num!r}: expected an integer >= 1")
+            self.axis_size(num, f"{key}.num")
             shown = np.linspace(start.shown, stop_shown, num)
         else:
             step = self.value(spec, raw["step"], f"{key}.step", unit, check_range=False)
-            step_shown = units.convert(step.shown, units.parse_unit(step.unit), units.parse_unit(
-                start.unit)) if start.unit not in ("", "1") else step.shown
+            step_shown = step.shown
+            if start.unit not in ("", "1"):  # a step is a difference: 10 K on a degC axis
+                step_shown = units.convert(step.shown, units.as_difference(units.parse_unit(
+                    step.unit)), units.as_difference(units.parse_unit(start.unit)))
             if not step_shown > 0:
                 self.fail(f"{key}.step", "the step must be positive")
-            count = int(np.floor((stop_shown - start.shown) / step_shown + 1e-9)) + 1
+            with np.errstate(over="ignore", divide="ignore", invalid="ignore"):
+                count = np.floor((stop_shown - start.shown) / step_shown + 1e-9) + 1
             if count < 1:
                 self.fail(key, "empty axis: 'stop' is below 'start'")
-            shown = start.shown + step_shown * np.arange(count)
+            self.axis_size(count, f"{key}.step")
+            shown = start.shown + step_shown * np.arange(int(count))
         if spec.kind == "count":
             return [self.value(spec, float(x), f"{key}") for x in shown]
         return [self.value(spec, float(x), f"{key}", start.unit) for x in shown]
+
+    def axis_size(self, count, key: str):
+        """Refuse an axis too long to validate, from its arithmetic alone."""
+        if not count <= MAX_AXIS_VALUES:
+            self.fail(key, f"the axis would have {float(count):.3g} values, more than "
+                      f"{MAX_AXIS_VALUES:.0e} on one axis; take fewer values or a larger step")
+
+    def unique(self, values: list[Value], key: str):
+        """Refuse an axis that names one value twice ("1 kN" and "1000 N"): its index would
+        not be unique."""
+        seen = {}
+        for index, value in enumerate(values):
+            si = value.si
+            token = (si,) if isinstance(si, (str, int, float)) else (
+                np.shape(si), np.asarray(si, dtype=float).tobytes())
+            if token in seen:
+                self.fail(f"{key}[{index}]", f"{_plain(value.shown)!s}"
+                          f"{'' if value.unit in ('', '1') else ' ' + value.unit} is the same "
+                          f"value as {key}[{seen[token]}]: each value of an axis must differ")
+            seen[token] = index
 
     def same_unit(self, values: list[Value]) -> list[Value]:
         """Express every value of an axis in the unit of its first value."""
@@ -305,7 +339,7 @@ class _Parser:
         if spec.kind == "choice":
             if not isinstance(raw, str) or raw not in spec.choices:
                 self.fail(key, f"{raw!r} is not accepted; {spec.name} is {spec.range_text()}"
-                          + _suggestion(str(raw), spec.choices))
+                          + suggestion(str(raw), spec.choices))
             return Value(raw, raw, "")
         if spec.kind == "subset":
             return self.subset(spec, raw, key)
@@ -315,7 +349,8 @@ class _Parser:
         if unit_text is not None and spec.kind == "count":
             self.fail(key, f"{spec.name!r} is a count and takes no units")
         if spec.kind == "count":
-            if isinstance(raw, bool) or not isinstance(raw, (int, float)) or raw != int(raw):
+            if (isinstance(raw, bool) or not isinstance(raw, (int, float))
+                    or not np.isfinite(raw) or raw != int(raw)):
                 self.fail(key, f"{raw!r}: {spec.name} must be {spec.range_text()}")
             if check_range:
                 self.in_range(spec, int(raw), "1", key, raw)
@@ -326,12 +361,27 @@ class _Parser:
         except units.UnitError as error:
             self.fail(key, f"{error}; {spec.name} is in units like {spec.unit!r}")
         declared = units.parse_unit(spec.unit)
+        unit = units.revolutions(unit, declared)
         if not units.compatible(unit, declared):
+            hint = ""
+            if unit_text.strip() in ("mil", "mils") and unit.dimensionless:
+                hint = " (pint reads 'mil' as an angle; a thousandth of an inch is 'thou')"
+            elif "hertz" in str(unit):
+                hint = " (Hz is ambiguous for a rotational speed: write rpm, r/min or 1/min)"
             self.fail(key, f"units {unit_text!r} do not fit {spec.name}, which is in units like "
-                      f"{spec.unit!r}")
+                      f"{spec.unit!r}{hint}")
+        with np.errstate(over="ignore", invalid="ignore"):
+            si = units.to_si(magnitude, unit)
+        if not np.all(np.isfinite(si)):
+            self.fail(key, f"{raw!r} is too large to compute with (not finite in SI units); "
+                      f"{spec.name} must be {spec.range_text()}")
         if check_range:
-            self.in_range(spec, units.convert(magnitude, unit, declared), spec.unit, key, raw)
-        si = units.to_si(magnitude, unit)
+            try:
+                in_declared = units.convert(magnitude, unit, declared)
+            except units.pint.errors.DimensionalityError:  # delta_degC for a temperature
+                self.fail(key, f"{raw!r} is a difference of temperatures; {spec.name} is a "
+                          f"temperature, in units like {spec.unit!r}")
+            self.in_range(spec, in_declared, spec.unit, key, raw)
         return Value(si if spec.dims else float(si), magnitude, unit_text)
 
     def subset(self, spec: Input, raw, key: str) -> Value:
@@ -343,7 +393,7 @@ class _Parser:
         for item in raw:
             if item not in spec.choices:
                 self.fail(key, f"{item!r} is not accepted; {spec.name} is {spec.range_text()}"
-                          + _suggestion(item, spec.choices))
+                          + suggestion(item, spec.choices))
         if len(set(raw)) != len(raw):
             self.fail(key, f"{raw!r}: a value is listed twice")
         names = " ".join(c for c in spec.choices if c in raw)
@@ -416,6 +466,36 @@ class _Parser:
             self.fail(key, f"{shown!r} is out of range: {spec.name} must be {spec.range_text()}")
 
     # -- conditions between parameters ----------------------------------------------------
+    def check_pattern_lengths(self, sweep: Sweep):
+        """A pattern with one value per roller has as many values as there are rollers."""
+        model = sweep.model
+        for spec in model.inputs:
+            count_name = model.dim_sizes.get(spec.dims[0]) if spec.dims else None
+            if not isinstance(count_name, str) or count_name not in {i.name for i in
+                                                                       model.inputs}:
+                continue
+            patterns, where = self.values_of(sweep, spec.name)
+            counts, _ = self.values_of(sweep, count_name)
+            lengths = {np.size(v.si) for v in patterns} - ({1} if spec.broadcast else set())
+            wanted = {int(v.si) for v in counts}
+            for length in lengths:
+                if wanted != {length}:
+                    other = ", ".join(str(n) for n in sorted(wanted - {length}))
+                    self.fail(where, f"{spec.name} has {length} values but {count_name} is "
+                              f"{other}: give one value per {spec.dims[0]}"
+                              + (" (or a single value for all)" if spec.broadcast else ""))
+
+    @staticmethod
+    def values_of(sweep: Sweep, name: str) -> tuple[list, str]:
+        """Every value ``name`` takes on the grid, and where it was given."""
+        for axis in sweep.axes:
+            if name in axis.values:
+                where = f"axes.{axis.name}" + (f".{name}" if axis.name != name else "")
+                return axis.values[name], where
+        origin = sweep.origin.get(name, "fixed")
+        return [sweep.fixed[name]], (f"fixed.{name}" if origin == "fixed"
+                                     else f"{origin}.{name}")
+
     def check_constraints(self, sweep: Sweep):
         for constraint in sweep.model.constraints:
             columns, axis_of = {}, {}

@@ -67,7 +67,8 @@ def select(folder: Path, name: str) -> list[Study]:
     if name == "all":
         return list(studies.values())
     if name not in studies:
-        raise SpecError(f"study {name!r}: no such study in {folder} (studies: "
+        raise SpecError(f"study {name!r}: no such study in {folder}"
+                        + spec_module.suggestion(name, studies) + " (studies: "
                         + ", ".join(sorted(studies) + ["all"]) + ")")
     return [studies[name]]
 

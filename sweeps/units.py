@@ -7,6 +7,8 @@ import numpy as np
 import pint
 
 UREG = pint.UnitRegistry()
+# Engineers write rotational speeds in r/min (DIN 1301) as often as in rpm.
+UREG.define("@alias turn = r = rev")
 
 _QUANTITY = re.compile(r"^\s*([-+]?(?:\d+\.?\d*|\.\d+)(?:[eE][-+]?\d+)?)\s*(.*?)\s*$")
 
@@ -42,6 +44,28 @@ def compatible(unit: pint.Unit, declared: pint.Unit) -> bool:
     """Whether a value in ``unit`` can be given for a parameter declared in ``declared``."""
     return (unit.dimensionality == declared.dimensionality
             and np.isclose(_angle_power(unit), _angle_power(declared)))
+
+
+def is_offset(unit: pint.Unit) -> bool:
+    """Whether ``unit`` has a shifted zero (degC, degF): its differences are other units."""
+    return not UREG.Quantity(1.0, unit)._is_multiplicative
+
+
+def as_difference(unit: pint.Unit) -> pint.Unit:
+    """The unit of a difference of values in ``unit``: delta_degC for degC, the unit itself
+    for K or mm (a step of "15 degC" on a temperature axis is 15 kelvin wide)."""
+    return UREG.parse_units("delta_" + str(unit)) if is_offset(unit) else unit
+
+
+def revolutions(unit: pint.Unit, declared: pint.Unit) -> pint.Unit:
+    """A plain reciprocal time ("1/min", "min^-1") given for a rotational speed, read as
+    revolutions per that time (DIN 1301's speed in 1/min); every other unit unchanged.
+    ``Hz`` is left alone, to be refused: pint reads it as radians per second."""
+    if (_angle_power(declared) == 1 and _angle_power(unit) == 0
+            and unit.dimensionality == UREG.parse_units("1/s").dimensionality
+            and "hertz" not in str(unit)):
+        return unit * UREG.turn
+    return unit
 
 
 def to_si(magnitude, unit: pint.Unit):

@@ -176,3 +176,44 @@ def test_an_unwritable_output_is_one_line(tmp_path, capsys):
     assert main(["run", str(path), "-o", str(blocked / "out.nc"), "--workers", "0"]) == 1
     error = capsys.readouterr().err.strip()
     assert error.startswith("error: ") and len(error.splitlines()) == 1
+
+
+CAGE = """
+[sweep]
+model = "cage_slip"
+bearing = "paper002-test"
+[fixed]
+radial_load = "500 N"
+speed = "6000 rpm"
+[axes]
+oil_temperature = { start = "20 degC", stop = "80 degC", step = "STEP" }
+"""
+
+
+@pytest.mark.parametrize("step, shown", [("15 delta_degC", [20, 35, 50, 65, 80]),
+                                         ("15 degC", [20, 35, 50, 65, 80]),
+                                         ("20 K", [20, 40, 60, 80]),
+                                         ("27 delta_degF", [20, 35, 50, 65, 80])])
+def test_a_temperature_step_is_a_difference(step, shown):
+    values = parse(CAGE.replace("STEP", step)).axes[0].values["oil_temperature"]
+    assert [v.shown for v in values] == pytest.approx(shown)
+    assert [v.si for v in values] == pytest.approx([t + 273.15 for t in shown])
+
+
+@pytest.mark.parametrize("written", ["3000 r/min", "3000 rev/min", "3000 1/min", "3000 min^-1",
+                                     "50 r/s", "3000 rpm", "314.159265 rad/s"])
+def test_rotational_speeds_as_engineers_write_them(written):
+    sweep = parse(GOOD.replace('crown = "0.004 mm"', f'crown = "0.004 mm"\nspeed = "{written}"'))
+    assert sweep.fixed["speed"].si == pytest.approx(100 * np.pi, rel=1e-8)
+
+
+def test_presets_and_models_suggest_the_close_name_and_a_preset_shows_its_values(capsys):
+    assert main(["presets", "paper000-D"]) == 0
+    shown = capsys.readouterr().out
+    assert "pitch_diameter = 65 mm" in shown and "Table 4" in shown
+    assert main(["presets", "paper000-Q"]) == 2
+    assert "did you mean 'paper000-D'?" in capsys.readouterr().err
+    assert main(["describe", "crb_radail"]) == 2
+    assert "did you mean 'crb_radial'?" in capsys.readouterr().err
+    assert main(["study", "cage_slp", "--workers", "0"]) == 2
+    assert "did you mean 'cage_slip'?" in capsys.readouterr().err
