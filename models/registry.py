@@ -9,6 +9,7 @@ and label the netCDF output; the models never see a unit string.
 from __future__ import annotations
 
 import importlib
+import re
 from dataclasses import dataclass, field
 from typing import Callable
 
@@ -84,6 +85,17 @@ class Input:
     #: For a pattern (``dims``): a single value stands for every entry, and may vary on a
     #: plain axis; the model then receives a pattern of length one.
     broadcast: bool = False
+    #: A short name for an axis label (netCDF ``long_name``); ``meaning`` goes to ``comment``.
+    #: Derived from ``meaning`` when not given.
+    label: str = ""
+
+    @property
+    def short(self) -> str:
+        if self.label:
+            return self.label
+        if self.kind in ("choice", "subset"):
+            return self.name.replace("_", " ")
+        return short_label(self.meaning)
 
     @property
     def structural(self) -> bool:
@@ -123,6 +135,35 @@ class Output:
     meaning: str
     dims: tuple[str, ...] = ()
     entry_units: tuple = ()
+    #: A short name for an axis label (netCDF ``long_name``); derived from ``meaning`` when
+    #: not given.
+    label: str = ""
+
+    @property
+    def short(self) -> str:
+        return self.label or short_label(self.meaning)
+
+
+def short_label(meaning: str) -> str:
+    """The part of a meaning that reads as an axis label: up to its first parenthesis,
+    semicolon or comma ("radial stiffness dFr/d(delta_r), implicit ..." -> "radial stiffness
+    dFr/d(delta_r)")."""
+    return re.split(r" \(|; |, ", meaning, maxsplit=1)[0]
+
+
+@dataclass(frozen=True)
+class DimCoordinate:
+    """The values along an output dimension (a time, an angle), from the inputs that set them.
+
+    ``values(size, **inputs)`` gets the dimension's size and the single SI value of each of
+    ``inputs``; it returns SI values, stored in ``unit``. Where one of ``inputs`` varies on the
+    grid, the dimension is numbered instead and its ``meaning`` names the output to use.
+    """
+
+    inputs: tuple[str, ...]
+    values: Callable[..., object]
+    unit: str
+    meaning: str
 
 
 @dataclass(frozen=True)
@@ -167,6 +208,8 @@ class Model:
     points_per_call: int = 100_000
     #: The limits beyond which a solved point is marked ``out_of_validity``, in words.
     validity: str = ""
+    #: Values along output dimensions that a few inputs fix (``DimCoordinate``), by dimension.
+    dim_coordinates: dict = field(default_factory=dict)
 
     def input(self, name: str) -> Input:
         return next(i for i in self.inputs if i.name == name)

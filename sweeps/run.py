@@ -11,7 +11,7 @@ import numpy as np
 
 from models.registry import MODEL_ERROR, VALUES_KEPT, get_model
 from sweeps import store, units
-from sweeps.grid import Grid
+from sweeps.grid import Grid, stored_unit
 from sweeps.parts import OutputLock, Parts
 from sweeps.spec import Sweep
 
@@ -76,7 +76,7 @@ def evaluate_chunk(grid: Grid, start: int, stop: int) -> dict:
 def _from_si(value: np.ndarray, spec) -> np.ndarray:
     """An output's SI values in its declared unit, or in each entry's own unit."""
     if not spec.entry_units:
-        return units.from_si(value, spec.unit)
+        return units.from_si(value, stored_unit(spec.unit))
     factors = np.vectorize(lambda unit: float(units.from_si(1.0, unit)))(
         np.array(spec.entry_units))
     return value * factors

@@ -265,8 +265,8 @@ class _Parser:
                       "{start = ..., stop = ..., num = ... (or step = ...)}")
         if not values:
             self.fail(key, "empty axis: give at least one value")
-        if key.count(".") == 1:  # a plain axis; a zipped one's columns may repeat values
-            self.unique(values, key)
+        if key.count(".") == 1 and not any(np.ndim(v.si) for v in values):
+            self.unique(values, key)  # a plain axis; a zipped one's columns may repeat
         return self.same_unit(values)
 
     def value_range(self, spec: Input, raw: dict, key: str) -> list[Value]:

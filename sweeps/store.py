@@ -10,8 +10,9 @@ from pathlib import Path
 import numpy as np
 import xarray as xr
 
-from models.registry import STATUS_MEANINGS, get_model
-from sweeps.grid import Grid, coordinates
+from models.registry import STATUS_DESCRIPTIONS, STATUS_MEANINGS, get_model
+from sweeps import units
+from sweeps.grid import Grid, coordinates, described, fixed_inputs
 from sweeps.spec import Sweep
 
 CONVENTIONS = "CF-1.10"
@@ -45,28 +46,28 @@ def build_dataset(sweep: Sweep, grid: Grid, outputs: dict, status: np.ndarray,
     data_vars = {}
     for spec in model.outputs:
         values = outputs[spec.name].reshape(grid.shape + outputs[spec.name].shape[1:])
-        attrs = {"long_name": spec.meaning, "units": spec.unit}
+        attrs = described(spec.short, spec.meaning, None if spec.entry_units else spec.unit)
+        attrs["coverage_content_type"] = "modelResult"
         if spec.entry_units:
-            # CF has one unit per variable: entries of different kinds carry theirs beside it.
-            attrs["units"] = f"{spec.unit} (each entry's in {spec.name}_units)"
+            # CF has one unit per variable: entries of different kinds carry theirs in a
+            # companion (strings need no units), and the variable no units attribute.
+            attrs["ancillary_variables"] = f"{spec.name}_units"
+            attrs["comment"] = attrs.get("comment", spec.short) + (
+                f"; each entry in its own unit, given by {spec.name}_units")
             data_vars[f"{spec.name}_units"] = (spec.dims, np.array(spec.entry_units), {
-                "long_name": f"units of each entry of {spec.name}", "units": "1"})
+                "long_name": f"unit of each entry of {spec.name}"})
         data_vars[spec.name] = (grid.dims + spec.dims, values, attrs)
     data_vars["status"] = (grid.dims, status.reshape(grid.shape), {
         "long_name": "solver status of the grid point",
-        "units": "1",
         "flag_values": np.arange(len(STATUS_MEANINGS), dtype=np.int8),
         "flag_meanings": " ".join(STATUS_MEANINGS),
+        "comment": "; ".join(f"{name}: {text}" for name, text in STATUS_DESCRIPTIONS.items()),
+        "coverage_content_type": "qualityInformation",
     })
+    data_vars.update(fixed_inputs(sweep))
     coords = coordinates(sweep)
     for dim in {d for o in model.outputs for d in o.dims}:
-        labels = model.dim_sizes[dim]
-        if isinstance(labels, str) or callable(labels):
-            coords[dim] = ((dim,), np.arange(1, grid.dim_sizes[dim] + 1),
-                           {"long_name": f"{dim} number", "units": "1"})
-        else:
-            coords[dim] = ((dim,), np.array(labels), {"long_name": dim.replace("_", " "),
-                                                      "units": "1"})
+        coords[dim] = _dimension(model, grid, sweep, dim)
     attrs = {
         "Conventions": CONVENTIONS,
         "title": sweep.title,
@@ -89,7 +90,31 @@ def build_dataset(sweep: Sweep, grid: Grid, outputs: dict, status: np.ndarray,
         attrs["git_commit"] = commit
     if errors:
         attrs["model_errors"] = "\n".join(sorted(set(errors)))
-    return xr.Dataset(data_vars, coords, attrs)
+    attrs["fixed_inputs"] = " ".join(n for n, v in sweep.fixed.items() if v is not None)
+    dataset = xr.Dataset(data_vars, coords, attrs)
+    for name in list(dataset.coords) + attrs["fixed_inputs"].split():
+        dataset[name].encoding["_FillValue"] = None  # CF: no fill values on coordinates
+    return dataset
+
+
+def _dimension(model, grid: Grid, sweep: Sweep, dim: str) -> tuple:
+    """The coordinate of an output dimension: labels, values the inputs fix (a time, an
+    angle), or numbers from 1."""
+    size = grid.dim_sizes[dim]
+    labels = model.dim_sizes[dim]
+    if not (isinstance(labels, str) or callable(labels)):
+        return (dim,), np.array(labels), {"long_name": dim.replace("_", " ")}
+    numbered = {"long_name": f"{dim} number", "units": "1"}
+    coordinate = model.dim_coordinates.get(dim)
+    if coordinate is None:
+        return (dim,), np.arange(1, size + 1), numbered
+    single = {name: sweep.fixed[name].si for name in coordinate.inputs
+              if sweep.fixed.get(name) is not None}
+    if len(single) < len(coordinate.inputs):
+        return (dim,), np.arange(1, size + 1), numbered | {
+            "comment": f"{coordinate.meaning} varies along the grid here: see the outputs"}
+    values = units.from_si(coordinate.values(size, **single), coordinate.unit)
+    return (dim,), values, described(coordinate.meaning, coordinate.meaning, coordinate.unit)
 
 
 def assemble(sweep: Sweep, grid: Grid, parts, chunks, path, scheduler: str) -> tuple:

@@ -83,3 +83,21 @@ def from_si(values, unit_text: str):
     unit = parse_unit(unit_text)
     base = UREG.get_base_units(unit)[1]
     return UREG.Quantity(np.asarray(values, dtype=float), base).to(unit).magnitude
+
+
+_FRACTIONAL_POWER = re.compile(r"\^\s*\(?\s*-?\d*\.\d|\^\s*\(\s*-?\d+\s*/")
+
+
+def cf_units(text: str) -> str | None:
+    """``text`` as a UDUNITS-2 unit string for a netCDF ``units`` attribute ("deg" ->
+    "degree"), or None where UDUNITS has no form for it: a fractional power ("N/mm^1.5"
+    would read as 5000 N/m)."""
+    if _FRACTIONAL_POWER.search(text):
+        return None
+    return re.sub(r"\bdeg\b", "degree", text)
+
+
+def si_text(text: str) -> str:
+    """A unit with a fractional power written in metres ("N/mm^1.5" -> "N/m^1.5"): the unit
+    of its values in SI."""
+    return re.sub(r"\bmm\b", "m", text)

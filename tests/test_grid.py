@@ -2,7 +2,7 @@
 import numpy as np
 
 from sweeps import spec
-from sweeps.grid import Grid, coordinates
+from sweeps.grid import Grid, coordinates, fixed_inputs
 
 TEXT = """
 [sweep]
@@ -48,14 +48,29 @@ def test_chunks_cover_the_grid_once():
         np.testing.assert_array_equal(covered, np.arange(12))
 
 
-def test_coordinates_keep_the_users_values_and_units():
-    coords = coordinates(spec.parse(TEXT))
+def test_coordinates_hold_each_input_in_its_declared_unit_and_keep_the_written_one():
+    sweep = spec.parse(TEXT)
+    coords = coordinates(sweep)
     dims, values, attrs = coords["radial_load"]
-    assert dims == ("radial_load",) and values.tolist() == [2, 4, 8] and attrs["units"] == "kN"
+    assert dims == ("radial_load",) and values.tolist() == [2000, 4000, 8000]
+    assert attrs["units"] == "N" and attrs["written_units"] == "kN"
     dims, values, attrs = coords["effective_length"]
     assert dims == ("case",) and values.tolist() == [25, 28] and attrs["units"] == "mm"
+    assert "written_units" not in attrs
     assert coords["case"][1].tolist() == ["l25", "l28"]
-    dims, values, attrs = coords["crown"]
-    assert dims == () and values == 4 and attrs["units"] == "um" and attrs["origin"] == "fixed"
-    assert coords["pitch_diameter"][2]["origin"] == "preset paper000-D"
-    assert all("long_name" in c[2] and "units" in c[2] for c in coords.values())
+    assert "crown" not in coords  # fixed inputs are variables, not scalar coordinates
+    dims, value, attrs = fixed_inputs(sweep)["crown"]
+    assert dims == () and value == 0.004 and attrs["units"] == "mm" and attrs["origin"] == "fixed"
+    assert attrs["written_units"] == "um"
+    assert fixed_inputs(sweep)["pitch_diameter"][2]["origin"] == "preset paper000-D"
+    assert all("long_name" in c[2] for c in coords.values())
+
+
+def test_converted_values_are_tidy_and_the_same_whatever_unit_was_written():
+    def stored(load):
+        text = TEXT.replace('["2 kN", "4 kN", "8 kN"]', load)
+        return coordinates(spec.parse(text))["radial_load"][1].tolist()
+
+    assert stored('["0.3 kN", "0.7 kN", "1.1 kN"]') == [300, 700, 1100]
+    assert stored('["300 N", "0.7 kN", "1100 N"]') == [300, 700, 1100]
+    assert stored('{ start = "0.1 kN", stop = "0.3 kN", step = "0.1 kN" }') == [100, 200, 300]

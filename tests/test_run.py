@@ -60,18 +60,24 @@ def test_netcdf_round_trip_keeps_values_and_attributes(tmp_path):
     summary, data = compute(tmp_path, "trip")
     assert summary.points == 9 * 3 * 2 * 2 and summary.status_counts["converged"] == 108
     for name, variable in {**data.data_vars, **data.coords}.items():
-        assert "units" in variable.attrs and "long_name" in variable.attrs, name
+        assert "long_name" in variable.attrs, name
+        # strings and flags need no units; everything else has them
+        assert ("units" in variable.attrs) == (variable.dtype.kind not in "OUS"
+                                               and name != "status"), name
     assert data.radial_stiffness.attrs["units"] == "N/mm"
     assert data.roller_load.dims == ("radial_load", "clearance", "slices", "arrangement", "roller")
-    assert data.status.attrs["flag_meanings"] == "converged not_converged infeasible model_error"
-    np.testing.assert_array_equal(data.status.attrs["flag_values"], [0, 1, 2, 3])
+    assert data.status.attrs["flag_meanings"] == ("converged not_converged infeasible model_error "
+                                                  "out_of_validity no_root_in_range")
+    np.testing.assert_array_equal(data.status.attrs["flag_values"], [0, 1, 2, 3, 4, 5])
     assert data.attrs["Conventions"].startswith("CF-")
     assert data.attrs["definition"] == TEXT
     assert data.attrs["definition_sha256"] == spec.parse(TEXT).sha256
     assert data.attrs["model"] == "crb_radial" and data.attrs["title"] == "invariance"
     assert data.attrs["scheduler"] == "in-process"
-    assert data.radial_load.attrs["units"] == "kN" and data.clearance.values.tolist() == [0, 0.02, 0.05]
+    assert data.radial_load.attrs["units"] == "N" and data.radial_load.attrs["written_units"] == "kN"
+    assert data.clearance.values.tolist() == [0, 0.02, 0.05]
     assert data.speed.attrs["units"] == "rpm" and float(data.speed) == 6000
+    assert "speed" not in data.coords  # a fixed input: kept, but not in every plot's title
     again = tmp_path / "again.nc"
     store.write_netcdf(data, again)
     xr.testing.assert_identical(store.open_result(again), data)
@@ -164,7 +170,7 @@ def test_points_out_of_validity_keep_their_values_and_failures_are_nan(tmp_path,
     monkeypatch.setitem(registry._MODELS, "crb_radial",
                         registry.Model(**{**model.__dict__, "function": judged}))
     summary, data = compute(tmp_path, "judged")
-    heavy = data.radial_load > 6
+    heavy = data.radial_load > 6000
     kept = data.radial_stiffness.sel(arrangement="paper").where(heavy)
     assert (data.status.sel(arrangement="paper").where(heavy, -1) != registry.CONVERGED).all()
     assert np.isfinite(kept.values[np.broadcast_to(heavy.values[:, None, None],
