@@ -19,6 +19,7 @@ import numpy as np
 
 from models.contact import hertz_point
 from models.registry import (CONVERGED, INFEASIBLE, NOT_CONVERGED, Constraint, Input, Model,
+                             combine_status,
                              Output)
 from models.solvers import solve_equilibrium, solve_increasing
 
