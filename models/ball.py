@@ -16,11 +16,10 @@ import functools
 
 import numpy as np
 
-from models.contact import (POINT_CONTACT_EXPONENT, curvature_sum_difference,
-                            effective_modulus, point_contact_constant)
+from models.contact import POINT_CONTACT_EXPONENT, hertz_point
 from models.geometry import elements_fit
-from models.registry import (CONVERGED, INFEASIBLE, NOT_CONVERGED, Constraint, Input, Model,
-                             Output)
+from models.registry import (CONVERGED, INFEASIBLE, NOT_CONVERGED, OUT_OF_VALIDITY, Constraint,
+                             Input, Model, Output, combine_status)
 from models.solvers import solve_equilibrium
 
 DOFS = ("axial", "radial_y", "radial_z", "tilt_y", "tilt_z")
@@ -32,11 +31,22 @@ _MAX_ITERATIONS = 200
 _START_DAMPING = 0.01  # of the preloaded stiffness: a start close to Newton
 _SINGULAR = 1e-9  # reciprocal condition number below which the stiffness is singular [-]
 
+#: Validity limits (``out_of_validity`` beyond them; see ``MODELS[0].validity``).
+#: ISO 76:2006, 3.1: the basic static load rating of ball bearings other than self-aligning
+#: ones is the load that gives this contact stress at the centre of the most loaded contact;
+#: the permanent deformation of ball and raceway is then about 1e-4 of the ball diameter, so
+#: beyond it the contact is no longer the elastic one of Hertz theory.
+MAX_CONTACT_PRESSURE = 4200e6  # [Pa]
+#: Hertz theory takes the contact to be small against the bodies (K. L. Johnson, Contact
+#: Mechanics, 1985, sec. 4.1); a ball on a plane reaches an approach of 1 % of its diameter
+#: with a contact radius of 0.14 times its radius. Steel balls reach it just beyond
+#: MAX_CONTACT_PRESSURE; softer materials or a given contact_constant may reach it first.
+MAX_APPROACH_PER_DIAMETER = 0.01  # [-]
 
-def raceway_contact_constants(ball_diameter, pitch_diameter, contact_angle,
-                              inner_curvature_ratio, outer_curvature_ratio,
-                              youngs_modulus=207e9, poisson_ratio=0.3):
-    """Hertz load-deflection constants of a ball on its inner and outer raceways.
+
+def raceway_contacts(ball_diameter, pitch_diameter, contact_angle, inner_curvature_ratio,
+                     outer_curvature_ratio, youngs_modulus=207e9, poisson_ratio=0.3):
+    """Hertz contacts of a ball with its inner and outer raceways under a load of 1 N.
 
     Parameters
     ----------
@@ -51,9 +61,10 @@ def raceway_contact_constants(ball_diameter, pitch_diameter, contact_angle,
 
     Returns
     -------
-    inner, outer, converged : numpy.ndarray
-        ``K_i``, ``K_o`` [N/m^1.5] in ``Q = K delta^1.5``, and whether the ellipticity solves
-        converged.
+    inner, outer : dict of numpy.ndarray
+        :func:`models.contact.hertz_point` at ``Q = 1 N``: ``contact_constant`` ``K``
+        [N/m^1.5] in ``Q = K delta^1.5``, ``max_pressure`` [Pa] (``p0`` grows as ``Q^(1/3)``,
+        since both semi-axes do), ``semi_major`` [m], ``status``, ...
 
     Notes
     -----
@@ -64,16 +75,11 @@ def raceway_contact_constants(ball_diameter, pitch_diameter, contact_angle,
     """
     ball = 2.0 / np.asarray(ball_diameter)
     gamma = ball_diameter * np.cos(contact_angle) / np.asarray(pitch_diameter)
-    modulus = effective_modulus(youngs_modulus, poisson_ratio)
-    constants, converged = [], True
-    for rolling, groove in ((ball * gamma / (1.0 - gamma), inner_curvature_ratio),
-                            (-ball * gamma / (1.0 + gamma), outer_curvature_ratio)):
-        total, difference, _ = curvature_sum_difference(
-            ball, ball, rolling, -1.0 / (np.asarray(groove) * ball_diameter))
-        constant, ok = point_contact_constant(total, difference, modulus)
-        constants.append(constant)
-        converged = converged & ok
-    return constants[0], constants[1], converged
+    return tuple(
+        hertz_point(1.0, ball, ball, rolling, -1.0 / (np.asarray(groove) * ball_diameter),
+                    youngs_modulus, poisson_ratio)
+        for rolling, groove in ((ball * gamma / (1.0 - gamma), inner_curvature_ratio),
+                                (-ball * gamma / (1.0 + gamma), outer_curvature_ratio)))
 
 
 def series_constant(inner, outer, exponent=POINT_CONTACT_EXPONENT):
@@ -86,6 +92,51 @@ def series_constant(inner, outer, exponent=POINT_CONTACT_EXPONENT):
             + np.asarray(outer) ** (-1.0 / exponent)) ** (-exponent)
 
 
+# A ball of azimuth psi with an axial force f_a and a radial force f_r puts f_a A + f_r R on
+# the five scaled loads, A = (1, 0, 0, sin psi, -cos psi), R = (0, cos psi, sin psi, 0, 0);
+# its stiffness is k_aa A A^T + k_rr R R^T + k_ar (A R^T + R A^T). So each load is one sum over
+# the balls of a force times a function of psi, and so is each entry of the stiffness:
+_PSI_FUNCTIONS = ("1", "cos", "sin", "cos cos", "sin sin", "cos sin")
+_REACTION_TERMS = (("axial", "1", 1.0), ("radial", "cos", 1.0), ("radial", "sin", 1.0),
+                   ("axial", "sin", 1.0), ("axial", "cos", -1.0))
+_STIFFNESS_TERMS = {  # (i, j), i <= j: (weight, function of psi, sign); the rest is zero
+    (0, 0): ("aa", "1", 1.0), (0, 3): ("aa", "sin", 1.0), (0, 4): ("aa", "cos", -1.0),
+    (3, 3): ("aa", "sin sin", 1.0), (3, 4): ("aa", "cos sin", -1.0),
+    (4, 4): ("aa", "cos cos", 1.0),
+    (1, 1): ("rr", "cos cos", 1.0), (1, 2): ("rr", "cos sin", 1.0),
+    (2, 2): ("rr", "sin sin", 1.0),
+    (0, 1): ("ar", "cos", 1.0), (0, 2): ("ar", "sin", 1.0), (1, 3): ("ar", "cos sin", 1.0),
+    (2, 3): ("ar", "sin sin", 1.0), (1, 4): ("ar", "cos cos", -1.0),
+    (2, 4): ("ar", "cos sin", -1.0),
+}
+
+
+def _gather(terms, weights):
+    """Where each term's sum lies in the flattened ``(weights, _PSI_FUNCTIONS)`` sums, and its
+    sign."""
+    index = [weights.index(weight) * len(_PSI_FUNCTIONS) + _PSI_FUNCTIONS.index(function)
+             for weight, function, _ in terms]
+    return np.array(index), np.array([sign for _, _, sign in terms])
+
+
+_REACTION_INDEX, _REACTION_SIGN = _gather(_REACTION_TERMS, ("axial", "radial"))
+_STIFFNESS_INDEX, _STIFFNESS_SIGN = _gather(
+    [_STIFFNESS_TERMS.get((min(i, j), max(i, j)), ("aa", "1", 0.0))
+     for i in range(5) for j in range(5)], ("aa", "rr", "ar"))
+
+
+def _sums_over_balls(weights, functions):
+    """``sum_j w[n, j] functions[f, j]`` for each ``w`` of ``weights`` (each ``(N, Z)``),
+    side by side: ``(N, len(weights) * F)``.
+
+    Each point's balls are summed in one fixed order whatever the number of points, so a
+    point's numbers do not depend on the chunk it is computed in; a matrix product may not
+    give that (BLAS picks its kernels, and so its rounding, by the size of the batch).
+    """
+    return np.concatenate([np.einsum("nz,fz->nf", np.ascontiguousarray(weight), functions,
+                                     optimize=False) for weight in weights], axis=1)
+
+
 class _Rings:
     """Ball loads and ring stiffness of one group of points with the same ball count.
 
@@ -95,18 +146,10 @@ class _Rings:
 
     def __init__(self, ball_count, distance, contact_angle, half_clearance, constant, geometry):
         azimuth = 2.0 * np.pi * np.arange(ball_count) / ball_count
-        zero, one = np.zeros(ball_count), np.ones(ball_count)
-        # Rows that map the scaled ring displacement to each ball's axial and radial
-        # displacement, (Z, 5), and their outer products flattened, (Z, 25): with them the
-        # sums over balls are matrix products.
-        self.axial = np.stack([one, zero, zero, np.sin(azimuth), -np.cos(azimuth)], axis=-1)
-        self.radial = np.stack([zero, np.cos(azimuth), np.sin(azimuth), zero, zero], axis=-1)
-        def pair(a, b):
-            return (a[:, :, None] * b[:, None, :]).reshape(ball_count, 25)
-
-        self.axial_axial = pair(self.axial, self.axial)
-        self.radial_radial = pair(self.radial, self.radial)
-        self.mixed = pair(self.axial, self.radial) + pair(self.radial, self.axial)
+        self.cos_azimuth, self.sin_azimuth = np.cos(azimuth), np.sin(azimuth)
+        cos, sin = self.cos_azimuth, self.sin_azimuth
+        self.psi_functions = np.stack([np.ones(ball_count), cos, sin, cos * cos, sin * sin,
+                                       cos * sin])  # _PSI_FUNCTIONS, (6, Z)
         self.distance, self.constant = distance, constant
         self.jones = geometry == "jones"
         self.sin0, self.cos0 = np.sin(contact_angle), np.cos(contact_angle)
@@ -117,7 +160,10 @@ class _Rings:
     def contacts(self, scaled, index):
         """Each ball's approach, load, load slope, unit normal (axial and radial parts) and
         centre distance at the displacement ``scaled`` (``(N, Z)`` each)."""
-        axial_shift, radial_shift = scaled @ self.axial.T, scaled @ self.radial.T
+        # A q and R q (see _PSI_FUNCTIONS), each term in a fixed order.
+        axial_shift = scaled[:, 0:1] + scaled[:, 3:4] * self.sin_azimuth \
+            - scaled[:, 4:5] * self.cos_azimuth
+        radial_shift = scaled[:, 1:2] * self.cos_azimuth + scaled[:, 2:3] * self.sin_azimuth
         if self.jones:
             separation_axial = self.axial0[index, None] + axial_shift
             separation_radial = self.radial0[index, None] + radial_shift
@@ -139,7 +185,7 @@ class _Rings:
     def uniform_stiffness(self, approach, index):
         """Stiffness with every ball at the approach ``approach`` ``(N,)`` and its unloaded
         contact angle: a preloaded bearing's, to start the equilibrium iteration from."""
-        shape = (approach.size, self.axial.shape[0])
+        shape = (approach.size, self.sin_azimuth.size)
         approach = np.broadcast_to(approach[:, None], shape)
         root = np.sqrt(approach)
         constant = self.constant[index, None]
@@ -155,7 +201,9 @@ class _Rings:
 
     def reaction_of(self, contacts):
         _, load, _, normal_axial, normal_radial, _ = contacts
-        return (load * normal_axial) @ self.axial + (load * normal_radial) @ self.radial
+        sums = _sums_over_balls((load * normal_axial, load * normal_radial),
+                                self.psi_functions)
+        return sums[:, _REACTION_INDEX] * _REACTION_SIGN
 
     def stiffness(self, scaled, index):
         """Scaled tangent stiffness d(reaction)/d(displacement), ``(N, 5, 5)`` (eq. 9)."""
@@ -177,9 +225,8 @@ class _Rings:
             axial_axial = axial_axial + turning * normal_radial**2
             radial_radial = radial_radial + turning * normal_axial**2
             mixed = mixed - turning * normal_axial * normal_radial
-        matrix = axial_axial @ self.axial_axial + radial_radial @ self.radial_radial \
-            + mixed @ self.mixed
-        return matrix.reshape(-1, 5, 5)
+        sums = _sums_over_balls((axial_axial, radial_radial, mixed), self.psi_functions)
+        return (sums[:, _STIFFNESS_INDEX] * _STIFFNESS_SIGN).reshape(-1, 5, 5)
 
 
 def ball_5dof(ball_count, ball_diameter, pitch_diameter, contact_angle,
@@ -207,7 +254,7 @@ def ball_5dof(ball_count, ball_diameter, pitch_diameter, contact_angle,
         [Pa], [-], for the Hertz constant.
     contact_constant : array_like or None
         ``K`` [N/m^1.5] of ball and both raceways in series, ``Q = K delta^1.5``; None: from
-        Hertz theory and the curvature ratios (:func:`raceway_contact_constants`).
+        Hertz theory and the curvature ratios (:func:`raceway_contacts`).
     axial_load, radial_load, radial_load_z : array_like
         Loads on the inner ring along x, y, z [N].
     moment_y, moment_z : array_like
@@ -224,19 +271,42 @@ def ball_5dof(ball_count, ball_diameter, pitch_diameter, contact_angle,
     dict of numpy.ndarray
         ``displacement`` ``(N, 5)`` [m, m, m, rad, rad]; ``axial_displacement``,
         ``radial_displacement`` (magnitude in the y-z plane) [m]; ``stiffness_matrix``
-        ``(N, 5, 5)`` ``K_ij = dF_i/dq_j`` [N/m, N, N m/m, N m/rad]; ``axial_stiffness``
-        ``K_11``, ``radial_stiffness`` ``K_22`` [N/m], ``tilt_stiffness`` ``K_44`` [N m/rad]
-        (eq. 10, the diagonal); ``ball_load`` ``(N, Z)`` [N]; ``ball_contact_angle``
-        ``(N, Z)`` [rad]; ``loaded_balls``; ``hertz_contact_constant`` [N/m^1.5] (whether or
-        not ``contact_constant`` replaces it); ``status``: not converged
-        (1), or infeasible (2) where the free displacements' stiffness is singular under load
-        (the load cannot be carried, or not by a unique displacement).
+        ``(N, 5, 5)`` ``K_ij = dF_i/dq_j`` [N/m, N/rad; N (N m/m), N m/rad], symmetric;
+        ``axial_stiffness`` ``K_11``, ``radial_stiffness`` ``K_22`` [N/m], ``tilt_stiffness``
+        ``K_44`` [N m/rad] (eq. 10, the diagonal); ``ball_load`` ``(N, Z)`` [N];
+        ``ball_contact_angle`` ``(N, Z)`` [rad]; ``loaded_balls``; ``max_contact_pressure``
+        ``(N, Z)`` [Pa], the larger Hertz ``p0 = 3Q/(2 pi a b)`` of each ball's two contacts
+        (exact ellipse, raceway curvatures at ``alpha_0`` as for the Hertz constant [3]);
+        ``hertz_contact_constant`` [N/m^1.5] (whether or not ``contact_constant`` replaces
+        it); ``status``: not converged (1); infeasible (2) where the free displacements'
+        stiffness is singular under load (the load cannot be carried, or not by a unique
+        displacement) or where the iteration ran the ring out of the bearing (farther than
+        ``A``) without an equilibrium; out of validity (4, values kept) beyond the limits of
+        ``MODELS[0].validity``: ``p0`` above ``MAX_CONTACT_PRESSURE`` [4], an approach above
+        ``MAX_APPROACH_PER_DIAMETER`` ``D`` [5], a displacement beyond ``A``, or a loaded
+        ball's contact angle of the opposite sign to ``alpha_0 > 0``.
+
+    Notes
+    -----
+    In the fixed-angle geometry a ball's approach is ``(dx + R(phi_y sin psi - phi_z cos
+    psi)) sin(alpha_0) + (dy cos psi + dz sin psi) cos(alpha_0)``: ``dz = -R tan(alpha_0)
+    phi_y`` (and ``dy = R tan(alpha_0) phi_z``), a tilt about the apex of the contact cone,
+    changes no approach, so with ``tilt_y`` and ``radial_z`` (or ``tilt_z`` and ``radial_y``)
+    free the stiffness is singular at every load; the declaration refuses such definitions.
+    Every ball's force then also has the axial part ``Q sin(alpha_0)``, so with the axial
+    displacement free a load needs at least ``F_x >= |F_r| tan(alpha_0)``: without it the
+    iteration runs away axially and the point is infeasible.
 
     References
     ----------
     .. [1] Paper 001, eq. 1-10.
     .. [2] A. B. Jones, A general theory for elastically constrained ball and radial roller
        bearings under arbitrary load and speed conditions, J. Basic Eng. 82 (1960) 309-320.
+    .. [3] T. A. Harris, M. N. Kotzalas, Rolling Bearing Analysis, 5th ed., ch. 6 (Hertz
+       point contact).
+    .. [4] ISO 76:2006, Rolling bearings - Static load ratings, 3.1 (4200 MPa for ball
+       bearings other than self-aligning ones).
+    .. [5] K. L. Johnson, Contact Mechanics, Cambridge University Press, 1985, sec. 4.1.
     """
     names = fixed_dofs.split() if isinstance(fixed_dofs, str) else list(fixed_dofs)
     unknown = [name for name in names if name not in DOFS]
@@ -250,9 +320,12 @@ def ball_5dof(ball_count, ball_diameter, pitch_diameter, contact_angle,
         np.nan if contact_constant is None else contact_constant)))
     (diameter, pitch, angle, inner_ratio, outer_ratio, clearance, modulus, poisson,
      *loads, given) = arrays
-    inner, outer, hertz_ok = raceway_contact_constants(diameter, pitch, angle, inner_ratio,
-                                                       outer_ratio, modulus, poisson)
-    constant = np.where(np.isnan(given), series_constant(inner, outer), given)
+    inner, outer = raceway_contacts(diameter, pitch, angle, inner_ratio, outer_ratio, modulus,
+                                    poisson)
+    hertz_ok = (inner["status"] == CONVERGED) & (outer["status"] == CONVERGED)
+    hertz_constant = series_constant(inner["contact_constant"], outer["contact_constant"])
+    constant = np.where(np.isnan(given), hertz_constant, given)
+    constant = np.where(np.isfinite(constant), constant, 1.0)  # failed Hertz: flagged below
     distance = (inner_ratio + outer_ratio - 1.0) * diameter
     radius = 0.5 * pitch + (inner_ratio - 0.5) * diameter * np.cos(angle)
     scale = np.stack([np.ones_like(radius)] * 3 + [radius] * 2, -1)  # length per unit dof
@@ -266,9 +339,24 @@ def ball_5dof(ball_count, ball_diameter, pitch_diameter, contact_angle,
     reduced = stiffness[:, free][:, :, free]
     singular = _reciprocal_condition(reduced) < _SINGULAR
     loaded = np.linalg.norm(load, axis=-1) > 0
-    status = np.select([~hertz_ok, ~converged & singular, ~converged, singular & loaded],
+    # A ring moved farther than the groove-centre distance A has left its bearing: the
+    # iteration of a load the balls cannot balance runs away so (in the fixed-angle geometry,
+    # any load off the cone of the balls' contact directions, e.g. a radial load without
+    # axial load), and a solution out there is outside either geometry.
+    left_bearing = np.abs(scaled).max(axis=-1) > distance
+    status = np.select([~hertz_ok, ~converged & (singular | left_bearing), ~converged,
+                        singular & loaded],
                        [NOT_CONVERGED, INFEASIBLE, NOT_CONVERGED, INFEASIBLE], CONVERGED)
     approach, ball_load, _, normal_axial, normal_radial, _ = rings.contacts(scaled, everything)
+    contact_angle = np.arctan2(normal_axial, normal_radial)
+    # Both semi-axes grow as Q^(1/3), so p0 = 3Q/(2 pi a b) does too.
+    unit_pressure = np.maximum(inner["max_pressure"], outer["max_pressure"])
+    pressure = unit_pressure[:, None] * np.cbrt(ball_load)
+    crossed = (angle[:, None] > 0) & (ball_load > 0) & (contact_angle < 0)
+    outside = ((pressure.max(axis=-1) > MAX_CONTACT_PRESSURE)
+               | (approach.max(axis=-1) > MAX_APPROACH_PER_DIAMETER * diameter)
+               | left_bearing | crossed.any(axis=-1))
+    status = combine_status(status, np.where(outside, OUT_OF_VALIDITY, CONVERGED))
     displacement = scaled / scale
     matrix = stiffness * scale[:, :, None] * scale[:, None, :]
     outputs = {
@@ -280,9 +368,10 @@ def ball_5dof(ball_count, ball_diameter, pitch_diameter, contact_angle,
         "radial_stiffness": matrix[:, 1, 1],
         "tilt_stiffness": matrix[:, 3, 3],
         "ball_load": ball_load,
-        "ball_contact_angle": np.arctan2(normal_axial, normal_radial),
+        "ball_contact_angle": contact_angle,
         "loaded_balls": np.count_nonzero(approach > 0, axis=-1).astype(float),
-        "hertz_contact_constant": series_constant(inner, outer),
+        "max_contact_pressure": pressure,
+        "hertz_contact_constant": hertz_constant,
     }
     outputs["status"] = status.astype(np.int8)
     return outputs
@@ -342,8 +431,23 @@ def _no_load_on_held(fixed_dofs, axial_load, radial_load, radial_load_z, moment_
                                              for h, f in zip(held, loads)])
 
 
-_DOF_UNITS = ("mm", "mm", "mm", "rad", "rad")
-_LOAD_UNITS = ("N", "N", "N", "N*m", "N*m")
+def _fixed_angle_not_singular(geometry, fixed_dofs):
+    """False where the fixed-angle geometry leaves a tilt free with the radial displacement
+    that a tilt about the contact-cone apex goes with: such a stiffness is singular at every
+    load (:func:`ball_5dof`, Notes)."""
+    def regular(geometry, held):
+        free = {dof for dof in DOFS if dof not in held.split()}
+        return geometry != "fixed_angle" or not ({"tilt_y", "radial_z"} <= free
+                                                 or {"tilt_z", "radial_y"} <= free)
+    return np.vectorize(regular, otypes=[bool])(np.asarray(geometry, dtype=object),
+                                                np.asarray(fixed_dofs, dtype=object))
+
+
+_DOF_UNITS = ("m", "m", "m", "rad", "rad")
+# Entry (i, j) is dF_i/dq_j in SI; N*m/m is N. Stored so, the matrix is symmetric.
+_STIFFNESS_UNITS = tuple(
+    tuple("N" if (load, dof) == ("N*m", "m") else f"{load}/{dof}" for dof in _DOF_UNITS)
+    for load in ("N", "N", "N", "N*m", "N*m"))
 
 MODELS = [Model(
     name="ball_5dof",
@@ -351,7 +455,7 @@ MODELS = [Model(
     summary="Ball bearing under axial, radial and moment loads: 5-DOF equilibrium of the inner "
             "ring, ball loads and contact angles, and the full 5 x 5 stiffness matrix.",
     reference="Paper 001, eq. 1-10; Jones (1960); Harris & Kotzalas, Rolling Bearing Analysis",
-    version="1",
+    version="2",
     inputs=(
         Input("ball_count", "1", "number of balls Z", kind="count", minimum=3, maximum=1000),
         Input("ball_diameter", "mm", "ball diameter D", minimum=0.0, exclusive_minimum=True),
@@ -382,13 +486,13 @@ MODELS = [Model(
               choices=DOFS),
     ),
     outputs=(
-        Output("displacement", "mm, rad", "displacement of the inner ring", dims=("dof",),
+        Output("displacement", "m, rad", "displacement of the inner ring", dims=("dof",),
                entry_units=_DOF_UNITS),
         Output("axial_displacement", "mm", "axial displacement of the inner ring"),
         Output("radial_displacement", "mm", "radial displacement of the inner ring (y-z)"),
-        Output("stiffness_matrix", "N/mm, N/rad, N*m/mm, N*m/rad", "stiffness matrix "
-               "dF_i/dq_j (eq. 9)", dims=("load_dof", "dof"),
-               entry_units=tuple(tuple(f"{f}/{q}" for q in _DOF_UNITS) for f in _LOAD_UNITS)),
+        Output("stiffness_matrix", "N/m, N/rad, N, N*m/rad", "stiffness matrix "
+               "dF_i/dq_j (eq. 9), in SI so that it is symmetric as stored",
+               dims=("load_dof", "dof"), entry_units=_STIFFNESS_UNITS),
         Output("axial_stiffness", "N/mm", "axial stiffness dFx/d(delta_x) (eq. 10)"),
         Output("radial_stiffness", "N/mm", "radial stiffness dFy/d(delta_y) (eq. 10)"),
         Output("tilt_stiffness", "N*m/rad", "tilt stiffness dMy/d(phi_y) (eq. 10)"),
@@ -396,8 +500,12 @@ MODELS = [Model(
         Output("ball_contact_angle", "deg", "contact angle of each ball (of its line of "
                "groove centres when unloaded)", dims=("ball",)),
         Output("loaded_balls", "1", "number of balls carrying load"),
-        Output("hertz_contact_constant", "N/mm^1.5", "load-deflection constant K that Hertz "
-               "theory gives for the curvature ratios (eq. 4-5, series law corrected)"),
+        Output("max_contact_pressure", "MPa", "maximum Hertz contact pressure p0 = 3Q/(2 pi a "
+               "b) of each ball, the larger of its inner and outer contact", dims=("ball",)),
+        # In SI: UDUNITS reads no fractional power of a prefixed unit such as mm^1.5.
+        Output("hertz_contact_constant", "N/m^1.5", "load-deflection constant K that Hertz "
+               "theory gives for the curvature ratios (eq. 4-5, series law corrected); "
+               "Q = K delta^1.5, K in N/m^1.5"),
     ),
     dim_sizes={"ball": "ball_count", "dof": DOFS, "load_dof": DOFS},
     constraints=(
@@ -412,7 +520,22 @@ MODELS = [Model(
                    "a load is given along a displacement held in fixed_dofs (axial_load, "
                    "radial_load, radial_load_z, moment_y, moment_z go with axial, radial_y, "
                    "radial_z, tilt_y, tilt_z)"),
+        Constraint(("geometry", "fixed_dofs"), _fixed_angle_not_singular,
+                   "geometry 'fixed_angle' with tilt_y and radial_z free (or tilt_z and "
+                   "radial_y) is singular at every load: a tilt about the contact-cone apex "
+                   "with a radial shift changes no ball's approach; hold the tilts (fixed_dofs "
+                   "= [\"tilt_y\", \"tilt_z\"]) or use geometry 'jones'"),
     ),
     seconds_per_point=3e-5,
     points_per_call=500,
+    validity="max_contact_pressure above 4200 MPa (ISO 76:2006: the contact stress of the "
+             "static load rating of ball bearings, where raceways deform permanently by about "
+             "1e-4 D; elastic Hertz theory no longer holds); a ball's approach (both contacts) "
+             "above 1 % of the ball diameter D (Hertz theory needs contacts small against the "
+             "ball); a ring displacement (translation, or tilt times R) beyond the groove-centre "
+             "distance A = (fi + fo - 1) D, where the balls leave their grooves; a loaded ball "
+             "whose contact angle has the opposite sign to a non-zero alpha0 (it runs on the "
+             "side of the groove an angular-contact ring's low shoulder cuts away). Not "
+             "checked: the contact ellipse running over a groove shoulder (shoulder heights "
+             "are not inputs); centrifugal and gyroscopic ball loads (a static model).",
 )]

@@ -6,7 +6,8 @@ from hypothesis import strategies as st
 from scipy.optimize import brentq
 
 from models.ball import DOFS, _Rings, ball_5dof, series_constant
-from models.registry import CONVERGED, INFEASIBLE
+from models.contact import hertz_point
+from models.registry import CONVERGED, INFEASIBLE, OUT_OF_VALIDITY
 
 MM = 1e-3
 #: The 71807AC of paper 001, Table 1, with the paper's contact constant.
@@ -207,3 +208,117 @@ def test_any_load_is_balanced_or_flagged(loads, moments, clearance, geometry, he
     # Relative to the load, or to 1 N where an unloaded bearing is held only by its preload.
     assert np.abs((sums[free] - applied[free]) / scale).max() <= 1e-7 * (
         np.linalg.norm(applied[free] / scale) + 1.0)
+
+
+HERTZ_ACBB = {k: v for k, v in ACBB.items() if k != "contact_constant"}
+
+
+@pytest.mark.parametrize("geometry, held, given", [
+    ("jones", "", None), ("jones", "tilt_y tilt_z", 1.0649e10),
+    ("jones", "axial radial_z", None), ("fixed_angle", "tilt_y tilt_z", None)])
+def test_results_do_not_depend_on_the_points_per_call(geometry, held, given):
+    # The same points computed in one call and in calls of other sizes give the same bits:
+    # a point's sums over balls must not depend on its neighbours in the batch.
+    rng = np.random.default_rng(11)
+    count = 40
+    names = {"axial": "axial_load", "radial_y": "radial_load", "radial_z": "radial_load_z",
+             "tilt_y": "moment_y", "tilt_z": "moment_z"}
+    points = dict(axial_load=rng.uniform(0.0, 3000.0, count),
+                  radial_load=rng.uniform(-2000.0, 2000.0, count),
+                  radial_load_z=rng.uniform(-800.0, 800.0, count),
+                  moment_y=rng.uniform(-6.0, 6.0, count), moment_z=rng.uniform(-6.0, 6.0, count),
+                  clearance=rng.uniform(-0.004, 0.02, count) * MM,
+                  contact_angle=np.radians(rng.uniform(0.0, 40.0, count)))
+    for dof in held.split():
+        points[names[dof]] = np.zeros(count)
+    bearing = {**HERTZ_ACBB, "contact_constant": given, "geometry": geometry,
+               "fixed_dofs": held}
+    bearing.pop("contact_angle")
+    whole = ball_5dof(**bearing, **points)
+    for size in (1, 2, 3, 7, 16, 39):
+        for start in range(0, count, size):
+            part = ball_5dof(**bearing, **{k: v[start:start + size] for k, v in points.items()})
+            for name, values in part.items():
+                expected = whole[name][start:start + size]
+                assert values.tobytes() == expected.tobytes(), (name, size, start)
+
+
+def raceway_curvatures(bearing):
+    """Principal curvatures of ball and inner / outer raceway [1/m] (Harris & Kotzalas,
+    Rolling Bearing Analysis, ch. 2: ball 2/D, raceways (+/-)(2/D) gamma / (1 -/+ gamma) in
+    the rolling direction and -1/(f D) across the groove, gamma = D cos(alpha0) / dm)."""
+    diameter = bearing["ball_diameter"]
+    gamma = diameter * np.cos(bearing["contact_angle"]) / bearing["pitch_diameter"]
+    ball = 2 / diameter
+    return ((ball, ball, ball * gamma / (1 - gamma),
+             -1 / (bearing["inner_curvature_ratio"] * diameter)),
+            (ball, ball, -ball * gamma / (1 + gamma),
+             -1 / (bearing["outer_curvature_ratio"] * diameter)))
+
+
+def test_max_contact_pressure_is_the_larger_hertz_pressure_of_each_ball():
+    result = ball_5dof(**HERTZ_ACBB, axial_load=500.0, radial_load=1500.0, moment_y=3.0)
+    assert result["status"][0] == CONVERGED
+    load = result["ball_load"][0]
+    inner, outer = (hertz_point(load, *curvatures)["max_pressure"]
+                    for curvatures in raceway_curvatures(HERTZ_ACBB))
+    assert (load == 0).any() and (load > 0).any()
+    assert result["max_contact_pressure"][0] == pytest.approx(np.maximum(inner, outer),
+                                                              rel=1e-12, abs=1e-6)
+    assert 1e9 < result["max_contact_pressure"].max() < 4.2e9  # GPa, as in bearings
+
+
+def axial_approach(result):
+    """Each point's ball approach under pure axial load, from its contact angle: Harris &
+    Kotzalas eq. 7.31's geometry, delta = A (cos(alpha0) / cos(alpha) - 1)."""
+    alpha = result["ball_contact_angle"][:, 0]
+    return 0.05 * ACBB["ball_diameter"] * (np.cos(ACBB["contact_angle"]) / np.cos(alpha) - 1)
+
+
+def test_a_pressure_above_iso_76s_static_limit_is_out_of_validity_with_values_kept():
+    # ISO 76:2006, 3.1: 4200 MPa is the contact stress of a ball bearing's static load rating.
+    result = ball_5dof(**HERTZ_ACBB, axial_load=np.linspace(8000.0, 15000.0, 8))
+    pressure = result["max_contact_pressure"].max(axis=-1)
+    assert (pressure < 4200e6).any() and (pressure > 4200e6).any()
+    # The approach stays below 1 % of D here: the pressure alone decides.
+    assert (axial_approach(result) < 0.01 * ACBB["ball_diameter"]).all()
+    assert list(result["status"]) == list(np.where(pressure > 4200e6, OUT_OF_VALIDITY,
+                                                   CONVERGED))
+    assert np.isfinite(result["stiffness_matrix"]).all()
+
+
+def test_a_large_approach_is_out_of_validity_whatever_the_pressure():
+    # A soft material (E = 2 GPa): low pressure, but an approach beyond 1 % of D.
+    result = ball_5dof(**HERTZ_ACBB, youngs_modulus=np.array([2e9, 207e9]), axial_load=300.0)
+    assert result["max_contact_pressure"][0].max() < 100e6
+    approach = axial_approach(result)
+    assert approach[0] > 0.01 * ACBB["ball_diameter"] > approach[1]
+    assert list(result["status"]) == [OUT_OF_VALIDITY, CONVERGED]
+
+
+def test_a_pulling_axial_load_puts_the_balls_over_the_groove_bottom_out_of_validity():
+    # Jones' geometry balances it with every contact angle reversed, which a single-row
+    # angular contact bearing's low shoulder does not allow.
+    result = ball_5dof(**ACBB, axial_load=np.array([-1000.0, 1000.0]))
+    assert (result["ball_contact_angle"][0] < 0).all()
+    assert list(result["status"]) == [OUT_OF_VALIDITY, CONVERGED]
+    assert result["ball_load"][0].sum() * np.sin(-result["ball_contact_angle"][0, 0]) == \
+        pytest.approx(1000.0, rel=1e-8)
+
+
+def test_fixed_angle_without_axial_load_is_infeasible():
+    # Every ball's force has the axial part Q sin(alpha0) > 0, which nothing balances: there
+    # is no equilibrium however small alpha0 (0.25 deg used to run 200 iterations into
+    # 'not converged'; 1 deg was infeasible).
+    result = ball_5dof(**{**ACBB, "contact_angle": np.radians(np.array([0.25, 1.0, 25.0]))},
+                       radial_load=1000.0, geometry="fixed_angle", fixed_dofs="tilt_y tilt_z")
+    assert list(result["status"]) == [INFEASIBLE] * 3
+
+
+def test_a_fixed_angle_equilibrium_far_outside_the_bearing_is_out_of_validity():
+    # At alpha0 = 0.01 deg, 100 N axial balance the balls' axial parts only with the ring
+    # displaced by about a metre: solved, but no bearing.
+    result = ball_5dof(**{**ACBB, "contact_angle": np.radians(0.01)}, axial_load=100.0,
+                       radial_load=1000.0, geometry="fixed_angle", fixed_dofs="tilt_y tilt_z")
+    assert result["displacement"][0, 0] > 0.05 * ACBB["ball_diameter"]
+    assert result["status"][0] == OUT_OF_VALIDITY
