@@ -37,8 +37,8 @@ _LOWEST_CAGE_SPEED, _HIGHEST_CAGE_SPEED = 0.02, 1.001
 # Cage speeds at which the balance is scanned for its roots, evenly over the range (steps of
 # 0.02 of the kinematic speed). Two roots closer than a step are missed: that happens only
 # within a load of the edge of a hysteresis band where the roots merge (their distance grows
-# with the square root of the load's distance from the edge), and there the band found is
-# narrower than the true one by a fraction of a newton (tests check a band's three roots).
+# with the square root of the load's distance from the edge): the bands of the test bearing
+# at 9000 and 12000 r/min come out at most 0.5 N narrower than with a ten times finer scan.
 _SCAN_SPEEDS = 50
 _SPEED_TOLERANCE = 1e-10  # of the kinematic cage speed, for the refined root
 # A root is converged when the balance's residual is below this share of the torques it
@@ -360,9 +360,10 @@ def cage_windage(omega_c, cage_outer_diameter, cage_width, effective_density,
     or ``0.146 Re^-1/5`` (turbulent), ``Re = omega r^2 / nu``; none when the cage has no
     width. The fluid is one and the same in both: the oil-air mixture, of effective density
     ``rho_e = X rho_oil + (1 - X) rho_air`` and a mixture viscosity ``eta_e = rho_e nu_oil``,
-    whose kinematic viscosity is the oil's (the mixture treatment of Harris and Kotzalas for
-    the drag of rolling elements in an oil-air mist). Mixing the oil's dynamic viscosity with
-    the mixture's density would put ``Re`` a factor ``rho_e / rho_oil`` too low.
+    whose kinematic viscosity is the oil's, as in the treatment of an oil-air mixture's drag
+    on rolling elements by Harris and Kotzalas [1] (its chapter and equation not checked
+    against the book). Mixing the oil's dynamic viscosity with the mixture's density would put
+    ``Re`` a factor ``rho_e / rho_oil`` too low (0.05 at the default oil fraction).
 
     Parameters
     ----------
