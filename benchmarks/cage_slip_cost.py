@@ -2,7 +2,10 @@
 
 Steady (`cage_slip`): a Fig. 17 grid (test bearing, 200-1000 N, 6000-12000 r/min) computed in
 one vectorised call against the same points called one at a time (the model without its
-vectorisation). Goal: at most 50 ms per point.
+vectorisation). Goal: at most 50 ms per point. Since cage_slip 3 scans the cage's torque
+balance at 50 cage speeds per point for every root (then refines the chosen one), a point
+costs about 9 ms in one call of these 51 points on one core; 3-5 ms before, when a bracketed
+secant search found one root.
 
 Transient (`cage_dynamics`): 0.1 s of bearing time at 800 N, 12000 r/min with the compiled
 Jacobian against LSODA's own difference Jacobian (one Python call of the right-hand side per

@@ -37,7 +37,7 @@ def cage_dynamics(radial_load, speed, roller_count, inner_raceway_diameter, roll
                   end_film_thickness=1.5e-5, end_film_fill=0.25, pocket_friction=0.1,
                   cage_density=8600.0, cage_eccentricity=0.0, inner_ring_mass=0.1,
                   pocket_stiffness=5e7, damping_ratio=0.1, duration=0.05,
-                  output_interval=1e-4):
+                  output_interval=1e-4, branch="high_slip"):
     """Cage and roller motion in time.
 
     Parameters
@@ -54,25 +54,30 @@ def cage_dynamics(radial_load, speed, roller_count, inner_raceway_diameter, roll
         Pocket contact stiffness [N/m] and the damping ratio of pocket and ring contacts.
     duration, output_interval : float
         Bearing time simulated and the interval of the returned samples [s].
+    branch : {"high_slip", "low_slip"}
+        The steady state the run starts from where the steady cage balance has several
+        (:func:`models.cage_slip.cage_slip`).
 
     Returns
     -------
     dict of numpy.ndarray
         ``cage_slip`` ``(N, samples)`` [-], ``mean_cage_slip`` over the settled half [-],
-        ``cage_x``, ``cage_y`` ``(N, samples)`` [m] (mass centre), ``whirl_deviation_ratio``
-        (eq. 28 over the settled half) [-], ``roller_slip`` ``(N, samples, Z)`` [-],
-        ``sample_time`` ``(N, samples)`` [s], ``status``.
+        ``cage_x``, ``cage_y`` ``(N, samples)`` [m] (mass centre), ``cage_centre_x``,
+        ``cage_centre_y`` ``(N, samples)`` [m] (geometric centre), ``whirl_speed``
+        ``(N, samples)`` [m/s] (speed of the mass centre), ``whirl_deviation_ratio`` (eq. 28
+        over the settled half) [-], ``roller_slip`` ``(N, samples, Z)`` [-], ``sample_time``
+        ``(N, samples)`` [s], ``status``: the steady state's where it has none to start from.
 
     References
     ----------
     .. [1] Paper 002, eq. 27-28 and section 3.
     """
     given = dict(locals())
-    numeric = [k for k in given if k != "roller_count"]
+    numeric = [k for k in given if k not in ("roller_count", "branch")]
     for k, v in zip(numeric, np.broadcast_arrays(*(np.atleast_1d(np.asarray(
             given[k], dtype=float)) for k in numeric))):
         given[k] = v  # every input as an array over the points
-    steady_inputs = {k: given[k] for k in _STEADY_NAMES}
+    steady_inputs = {k: given[k] for k in _STEADY_NAMES if k != "branch"}
     terms = bearing_terms(**steady_inputs)
     points = terms["load"].size
     samples = int(np.floor(np.max(given["duration"] / given["output_interval"]) + 1e-9)) + 1
@@ -80,6 +85,9 @@ def cage_dynamics(radial_load, speed, roller_count, inner_raceway_diameter, roll
                "mean_cage_slip": np.full(points, np.nan),
                "cage_x": np.full((points, samples), np.nan),
                "cage_y": np.full((points, samples), np.nan),
+               "cage_centre_x": np.full((points, samples), np.nan),
+               "cage_centre_y": np.full((points, samples), np.nan),
+               "whirl_speed": np.full((points, samples), np.nan),
                "whirl_deviation_ratio": np.full(points, np.nan),
                "roller_slip": np.full((points, samples, roller_count), np.nan),
                "sample_time": np.full((points, samples), np.nan),
@@ -89,9 +97,10 @@ def cage_dynamics(radial_load, speed, roller_count, inner_raceway_diameter, roll
                                 "output_interval")]
     for point in range(points):
         one = {k: v[point] for k, v in steady_inputs.items() if k != "roller_count"}
-        result = _run(one, roller_count, {k: v[point] for k, v in terms.items()
-                                          if k != "traction"}, terms["traction"], point,
-                      *(e[point] for e in extra))
+        status, result = _run(dict(one, branch=branch), roller_count,
+                              {k: v[point] for k, v in terms.items() if k != "traction"},
+                              terms["traction"], point, *(e[point] for e in extra))
+        outputs["status"][point] = status
         if result is None:
             continue
         for name, value in result.items():
@@ -100,16 +109,16 @@ def cage_dynamics(radial_load, speed, roller_count, inner_raceway_diameter, roll
                 target[(point,) + tuple(slice(0, n) for n in np.shape(value))] = value
             else:
                 target[point] = value
-        outputs["status"][point] = CONVERGED
     return outputs
 
 
 def _run(one, count, t, traction, point, cage_density, eccentricity, ring_mass, pocket_k,
          damping, duration, interval):
-    """One point: set up, start from the steady state, integrate, sample."""
+    """One point: set up, start from the steady state, integrate, sample. Returns the
+    point's status and its outputs (None where there are none)."""
     steady = cage_slip(**one, roller_count=count, orbit_points=20 * count)
     if steady["status"][0] != CONVERGED:
-        return None
+        return steady["status"][0], None
     omega_c = steady["cage_speed"][0]
     ring = crb_radial(one["radial_load"], count, 2 * t["pitch_radius"], t["diameter"],
                       t["contact_length"], clearance=t["play"], slices=1, speed=t["omega_i"],
@@ -123,7 +132,8 @@ def _run(one, count, t, traction, point, cage_density, eccentricity, ring_mass, 
     p[rhs.R_INNER], p[rhs.R_OUTER], p[rhs.R_ROLLER] = t["r_i"], t["r_o"], t["radius"]
     p[rhs.R_PITCH], p[rhs.CONTACT] = t["pitch_radius"], palmgren_constant(t["contact_length"])
     p[rhs.HALF_PLAY], p[rhs.M_ROLLER], p[rhs.J_ROLLER] = 0.5 * t["play"], t["mass"], t["inertia"]
-    p[rhs.FILM], p[rhs.WINDAGE], p[rhs.MU_POCKET] = t["film"], t["windage"], t["mu_pocket"]
+    p[rhs.POCKET_FILM], p[rhs.END_FILM] = t["pocket_film"], t["end_film"]
+    p[rhs.WINDAGE], p[rhs.MU_POCKET] = t["windage"], t["mu_pocket"]
     p[rhs.M_RING] = ring_mass
     p[rhs.C_RING] = 2 * damping * np.sqrt(np.ravel(ring["radial_stiffness"])[0] * ring_mass)
     p[rhs.M_CAGE] = cage_mass
@@ -133,7 +143,7 @@ def _run(one, count, t, traction, point, cage_density, eccentricity, ring_mass, 
     p[rhs.C_POCKET] = 2 * damping * np.sqrt(pocket_k * t["mass"])
     p[rhs.GRAVITY] = GRAVITY
     drag = cage_windage(omega_c, t["cage_out"], t["width"], t["effective_density"],
-                        t["viscosity"])
+                        t["kinematic_viscosity"])
     p[rhs.CAGE_DRAG] = drag / omega_c**1.5  # laminar disc: moment ~ omega^1.5
     p[rhs.TRACTION_A:rhs.TRACTION_D + 1] = (traction.a[point], traction.b[point],
                                             traction.c[point], traction.d[point])
@@ -146,16 +156,21 @@ def _run(one, count, t, traction, point, cage_density, eccentricity, ring_mass, 
                          t_eval=times, args=(p, count), rtol=_RELATIVE_TOLERANCE, atol=atol,
                          jac=lambda time, y, p, count: rhs.jacobian(time, y, p, count, scale))
     if not solution.success:
-        return None
+        return NOT_CONVERGED, None
     y = solution.y
     cage = 4 + 3 * count
     settled = times >= _SETTLED * times[-1]
     slip = 1 - y[cage + 5] / t["omega_kin"]
-    speed_of_centre = np.hypot(y[cage + 2], y[cage + 3])[settled]
-    return {"cage_slip": slip, "mean_cage_slip": slip[settled].mean(), "sample_time": times,
-            "cage_x": y[cage], "cage_y": y[cage + 1],
-            "whirl_deviation_ratio": speed_of_centre.std(ddof=1) / speed_of_centre.mean(),
-            "roller_slip": (1 - y[6:cage:3] / t["spin_kin"]).T}
+    speed_of_centre = np.hypot(y[cage + 2], y[cage + 3])
+    settled_speed = speed_of_centre[settled]
+    return CONVERGED, {
+        "cage_slip": slip, "mean_cage_slip": slip[settled].mean(), "sample_time": times,
+        "cage_x": y[cage], "cage_y": y[cage + 1],
+        "cage_centre_x": y[cage] - eccentricity * np.cos(y[cage + 4]),
+        "cage_centre_y": y[cage + 1] - eccentricity * np.sin(y[cage + 4]),
+        "whirl_speed": speed_of_centre,
+        "whirl_deviation_ratio": settled_speed.std(ddof=1) / settled_speed.mean(),
+        "roller_slip": (1 - y[6:cage:3] / t["spin_kin"]).T}
 
 
 def _start(count, steady, drop, omega_c, eccentricity, kinematic_spin):
@@ -214,7 +229,7 @@ MODELS = [Model(
     summary="Cylindrical roller bearing, planar transient: cage whirl, pocket contact, cage and "
             "roller slip in time, from the steady state.",
     reference="Paper 002, eq. 27-28 and section 3",
-    version="1",
+    version="2",
     inputs=tuple(i for i in STEADY_MODELS[0].inputs if i.name != "orbit_points") + (
         Input("cage_density", "kg/m^3", "cage density (brass: 8600)", default=8600.0,
               minimum=0.0, exclusive_minimum=True),
@@ -238,6 +253,10 @@ MODELS = [Model(
         Output("cage_x", "um", "cage mass centre, horizontal", dims=("time",)),
         Output("cage_y", "um", "cage mass centre, vertical (load and gravity along -y)",
                dims=("time",)),
+        Output("cage_centre_x", "um", "cage geometric centre, horizontal", dims=("time",)),
+        Output("cage_centre_y", "um", "cage geometric centre, vertical", dims=("time",)),
+        Output("whirl_speed", "mm/s", "speed of the cage's mass centre (its spread over its "
+               "mean: eq. 28)", dims=("time",)),
         Output("whirl_deviation_ratio", "1", "standard deviation over mean of the cage centre's "
                "speed, settled half (eq. 28)"),
         Output("roller_slip", "percent", "roller spin slip against kinematic spin",

@@ -5,6 +5,11 @@ State: inner ring x, y, vx, vy; per roller orbit angle, orbit speed, spin; cage 
 x, y, vx, vy, angle, angular speed. Rollers' radial positions are quasi-static: at each call a
 roller's inner and outer contact loads follow from the ring's position and its centrifugal
 force (Palmgren line contacts in series). Parameters are packed in one array (indices below).
+
+Angles and the cage's torque count positive with the orbit (counter-clockwise); a roller's
+spin counts positive opposite to it (rolling on the fixed outer ring), as in
+:mod:`models.cage_slip`. The pocket's film and friction couple a roller's spin to the cage, and
+the cage receives their reaction; the end films act against the rings' ribs.
 """
 from __future__ import annotations
 
@@ -12,10 +17,10 @@ import numpy as np
 from numba import njit
 
 (OMEGA_I, RADIAL_LOAD, R_INNER, R_OUTER, R_ROLLER, R_PITCH, CONTACT, HALF_PLAY, M_ROLLER,
- J_ROLLER, FILM, WINDAGE, MU_POCKET, M_RING, C_RING, M_CAGE, J_CAGE, ECCENTRICITY,
- HALF_POCKET, K_POCKET, C_POCKET, GRAVITY, CAGE_DRAG, TRACTION_A, TRACTION_B, TRACTION_C,
- TRACTION_D) = range(27)
-PARAMETERS = 27
+ J_ROLLER, POCKET_FILM, END_FILM, WINDAGE, MU_POCKET, M_RING, C_RING, M_CAGE, J_CAGE,
+ ECCENTRICITY, HALF_POCKET, K_POCKET, C_POCKET, GRAVITY, CAGE_DRAG, TRACTION_A, TRACTION_B,
+ TRACTION_C, TRACTION_D) = range(28)
+PARAMETERS = 28
 EXPONENT = 10.0 / 9.0
 
 
@@ -95,8 +100,14 @@ def derivatives(t, state, p, count):
         drag = p[WINDAGE] * dtheta * abs(dtheta)
         out[k] = dtheta
         out[k + 1] = (f_inner + f_outer - drag + tangential) / (p[M_ROLLER] * p[R_PITCH])
-        brake = p[MU_POCKET] * pocket_force * p[R_ROLLER] * np.sign(spin)
-        out[k + 2] = (p[R_ROLLER] * (f_inner - f_outer) - p[FILM] * spin - brake) / p[J_ROLLER]
+        # The pocket's film and friction couple on the roller, in its spin's sense; the cage
+        # receives the same number counted with the orbit, the opposite sense: the reaction
+        # (see models.cage_slip._CageBalance.orbit for the friction force's lever).
+        pocket_couple = -p[POCKET_FILM] * spin \
+            - p[MU_POCKET] * pocket_force * p[R_ROLLER] * np.sign(spin)
+        cage_torque += pocket_couple
+        out[k + 2] = (p[R_ROLLER] * (f_inner - f_outer) + pocket_couple
+                      - p[END_FILM] * spin) / p[J_ROLLER]
     out[0], out[1] = vx, vy
     out[2] = (ring_fx - p[C_RING] * vx) / p[M_RING]
     out[3] = (ring_fy - p[C_RING] * vy) / p[M_RING]

@@ -3,30 +3,48 @@
 
 Outer ring fixed, inner ring at ``omega_i``, roller-guided cage at ``omega_c``. A roller's spin
 ``omega_R`` is driven by traction at its two raceway contacts and braked by oil films in its
-pocket and at its ends; around the orbit it enters the load zone slowed by those films and is
-spun up there. The steady state is found by integrating one roller's spin around the orbit,
-with the loads of the load zone, for a trial cage speed, and closing the cage's torque balance
-(rollers' traction less their windage against the cage's own drag) with a root finder.
+pocket and at its ends, and by friction in its pocket; around the orbit it enters the load zone
+slowed by those and is spun up there. The steady state is found by integrating one roller's
+spin around the orbit, with the loads of the load zone, for a trial cage speed, and closing the
+cage's torque balance: the rollers' push, less the reaction of their pocket films and pocket
+friction, against the cage's own drag. That balance can have several roots (a light-load
+hysteresis band): they are all found by a scan of the cage-speed range, and one is chosen.
 
 Sign conventions, tangential, positive in the direction of the orbit: sliding speeds
 ``u_i = (omega_i - omega_c) r_i - omega_R R`` (ring minus roller) and
 ``u_o = omega_R R - omega_c r_o``; traction on the roller ``mu(u) Q`` forward at both contacts;
-spin torque ``R (F_i - F_o)``.
+spin torque ``R (F_i - F_o)``. A positive spin ``omega_R`` turns opposite to the orbit (a
+roller rolling on the fixed outer ring), and a positive spin couple spins it up.
 """
 from __future__ import annotations
+
+import inspect
 
 import numpy as np
 
 from models.cylindrical import crb_radial
 from models.lubrication import TractionCurve, central_film_thickness, walther_viscosity
-from models.registry import CONVERGED, NOT_CONVERGED, Constraint, Input, Model, Output
+from models.registry import (CONVERGED, NO_ROOT_IN_RANGE, NOT_CONVERGED, Constraint, Input,
+                             Model, Output, combine_status)
 from models.solvers import solve_increasing
 
 AIR_DENSITY = 1.2  # [kg/m^3]
 _POSITIONS_PER_PITCH = 20  # cage positions computed per roller pitch: the orbit's resolution
 _ORBITS = 2  # orbits integrated per trial cage speed; the load zone resets the spin each time
-_SPEED_TOLERANCE = 1e-7  # of the kinematic cage speed
-_LOWEST_CAGE_SPEED = 0.02  # of the kinematic cage speed, the bracket's lower end
+# The cage-speed range searched, as shares of the kinematic cage speed: from 98 % slip to just
+# above the kinematic speed (where the traction turns and the balance is sure to be positive).
+_LOWEST_CAGE_SPEED, _HIGHEST_CAGE_SPEED = 0.02, 1.001
+# Cage speeds at which the balance is scanned for its roots, evenly over the range (steps of
+# 0.02 of the kinematic speed). Two roots closer than a step are missed: that happens only
+# within a load of the edge of a hysteresis band where the roots merge (their distance grows
+# with the square root of the load's distance from the edge): the bands of the test bearing
+# at 9000 and 12000 r/min come out at most 0.5 N narrower than with a ten times finer scan.
+_SCAN_SPEEDS = 50
+_SPEED_TOLERANCE = 1e-10  # of the kinematic cage speed, for the refined root
+# A root is converged when the balance's residual is below this share of the torques it
+# balances (the cage's drag plus the magnitudes of the rollers' push and pocket couples).
+_RELATIVE_RESIDUAL = 1e-6
+BRANCHES = ("high_slip", "low_slip")
 
 
 def kinematic_cage_speed(speed, inner_raceway_diameter, outer_raceway_diameter):
@@ -42,7 +60,7 @@ def cage_slip(radial_load, speed, roller_count, inner_raceway_diameter, roller_d
               traction_peak=0.05, traction_peak_speed=2.0, traction_limit=0.036,
               oil_fraction=0.05, drag_coefficient=1.0, pocket_clearance=1e-4,
               pocket_wrap_angle=1.0, pocket_film_fill=1.0, end_film_thickness=1.5e-5,
-              end_film_fill=0.25, pocket_friction=0.1, orbit_points=72):
+              end_film_fill=0.25, pocket_friction=0.1, orbit_points=72, branch="high_slip"):
     """Steady cage speed, cage slip and roller slip around the orbit.
 
     Parameters
@@ -57,7 +75,7 @@ def cage_slip(radial_load, speed, roller_count, inner_raceway_diameter, roller_d
         Whole length (mass, pocket film) and raceway contact length [m].
     cage_inner_diameter, cage_outer_diameter, cage_width : array_like
         Cage [m]; the rollers' windage acts on the part of the roller outside the cage
-        (paper 002), the cage's on its two faces.
+        (paper 002), the cage's on its two faces (:func:`cage_windage`).
     roller_density : array_like
         [kg/m^3].
     oil_temperature : array_like
@@ -74,13 +92,25 @@ def cage_slip(radial_load, speed, roller_count, inner_raceway_diameter, roller_d
     drag_coefficient : array_like
         ``C_D`` of a roller's windage ``F_D = rho_e C_D l h (omega_c r_m)^2 / 2`` (paper 002).
     pocket_clearance, pocket_wrap_angle, pocket_film_fill : array_like
-        Pocket film ``M_p = phi_p eta omega_R R^3 L theta_w / c_p`` ([m], [rad], [-]).
+        Pocket film ``M_p = phi_p eta omega_R R^3 L theta_w / c_p`` ([m], [rad], [-]), between
+        the roller and the cage: the cage receives its reaction.
     end_film_thickness, end_film_fill : array_like
-        Films at the two roller ends, ``M_e = 2 phi_e eta omega_R (pi R^4 / 2) / h_e``.
+        Films at the two roller ends, ``M_e = 2 phi_e eta omega_R (pi R^4 / 2) / h_e``,
+        between the roller's ends and the rings' ribs: the rings receive their reaction, not
+        the cage.
     pocket_friction : array_like
-        Coulomb coefficient of the pocket force on the roller's spin.
+        Coulomb coefficient ``mu_p`` of the pocket force on the roller's spin, a couple
+        ``mu_p |F_p| R`` between roller and cage: the cage receives its reaction.
     orbit_points : int
         Orbit positions at which the roller slip is returned.
+    branch : {"high_slip", "low_slip"}
+        Which stable equilibrium to return where the cage's torque balance has several (a
+        hysteresis band at light load). ``"high_slip"`` (default): the lowest stable cage
+        speed, the one a cage reaches accelerating from rest at this load and speed (from rest
+        the rollers' push exceeds the drag, and the cage speeds up until the first speed at
+        which the drag overtakes the push). ``"low_slip"``: the highest, the one a cage keeps
+        when the load falls into the band from above (or that it reaches slowing down from the
+        kinematic speed). Outside a band both are the same.
 
     Returns
     -------
@@ -89,7 +119,12 @@ def cage_slip(radial_load, speed, roller_count, inner_raceway_diameter, roller_d
         ``roller_slip`` ``(N, orbit_points)`` [-] against the kinematic spin, ``orbit_angle``
         [rad] from the load line, ``roller_spin_ratio`` [-] (mean spin / kinematic spin),
         ``torque_residual`` [N m] of the cage's balance, ``film_thickness`` [m] at the most
-        loaded inner contact, ``max_roller_load`` [N], ``status``.
+        loaded inner contact, ``max_roller_load`` [N], ``equilibrium_count`` [-] (stable
+        equilibria found between 2 % and 100.1 % of the kinematic cage speed), ``status``:
+        ``no_root_in_range`` where there is none (the rollers cannot drive the cage: the
+        outputs that need the cage speed are NaN), ``not_converged`` where the residual is not
+        small against the torques it balances; the status of the load distribution
+        (:func:`models.cylindrical.crb_radial`) is combined in.
 
     References
     ----------
@@ -98,83 +133,172 @@ def cage_slip(radial_load, speed, roller_count, inner_raceway_diameter, roller_d
        bearings having crowned rolling members (skidding analysis), ASLE Trans. 9 (1966) 229.
     .. [3] P. K. Gupta, Advanced Dynamics of Rolling Elements, Springer (1984).
     """
-    terms = bearing_terms(**{k: v for k, v in locals().items() if k != "orbit_points"})
-    (load, omega_i, diameter, contact_length, play, alpha, modulus, poisson, radius,
-     r_i, r_o, pitch_radius, omega_kin, spin_kin, viscosity, inertia, film, windage,
-     mu_pocket, traction) = (terms[k] for k in (
-        "load", "omega_i", "diameter", "contact_length", "play", "alpha", "modulus",
-        "poisson", "radius", "r_i", "r_o", "pitch_radius", "omega_kin", "spin_kin",
-        "viscosity", "inertia", "film", "windage", "mu_pocket", "traction"))
-    points = load.size
-    # crb_radial weighs a roller over its contact length: give it the whole roller's mass.
-    whole_roller_density = terms["mass"] / (np.pi * radius**2 * contact_length)
-    inner_load, centrifugal = _orbit_loads(load, omega_i, roller_count, 2 * pitch_radius,
-                                           diameter, contact_length, play, whole_roller_density)
-    outer_load = inner_load + centrifugal[:, None]
-    steps = inner_load.shape[1]
-    step_angle = 2.0 * np.pi / steps
-
-    def orbit(omega_c, index):
-        """Spin around the orbit and the rollers' mean forward force, at cage speed
-        ``omega_c`` for the points ``index``."""
-        q_i, q_o = inner_load[index], outer_load[index]
-        j, c_film, mu_p = inertia[index], film[index], mu_pocket[index]
-        rr, ri, ro = radius[index], r_i[index], r_o[index]
-        drag = windage[index] * omega_c**2
-        h = step_angle / omega_c / j
-        spin = omega_c * ro / rr  # pure rolling at the outer raceway to start
-        history = np.empty((index.size, steps))
-        pushing = np.empty((index.size, steps))
-        for step in range(_ORBITS * steps):
-            k = step % steps
-            mu_i, slope_i = traction((omega_i[index] - omega_c) * ri - spin * rr, index)
-            mu_o, slope_o = traction(spin * rr - omega_c * ro, index)
-            forward = mu_i * q_i[:, k] + mu_o * q_o[:, k] - drag
-            torque = rr * (mu_i * q_i[:, k] - mu_o * q_o[:, k]) - c_film * spin \
-                - mu_p * np.abs(forward) * rr * np.sign(spin)
-            stiffness = rr**2 * (slope_i * q_i[:, k] + slope_o * q_o[:, k]) + c_film
-            spin = spin + h * torque / (1.0 + h * stiffness)  # linearly implicit Euler
-            history[:, k], pushing[:, k] = spin, forward
-        return history, pushing.mean(axis=1)
-
-    def cage_drag(omega_c, index):
-        return cage_windage(omega_c, terms["cage_out"][index], terms["width"][index],
-                            terms["effective_density"][index], viscosity[index])
-
-    def residual(omega_c, index):
-        """Cage drag less the rollers' push: rises with the cage speed."""
-        _, push = orbit(omega_c, index)
-        value = cage_drag(omega_c, index) - roller_count * push * pitch_radius[index]
-        return value, np.full(index.size, np.nan)  # bisection-safeguarded secant below
-
-    lowest = _LOWEST_CAGE_SPEED * omega_kin
-    omega_c, converged = _secant_root(residual, lowest, omega_kin * (1 + 1e-3),
-                                      _SPEED_TOLERANCE * omega_kin)
-    # A root on the bracket's lower end means the rollers cannot drive the cage at all.
-    converged &= omega_c > lowest * (1 + 1e-6)
+    balance = _CageBalance(roller_count, {k: v for k, v in locals().items()
+                                          if k not in ("roller_count", "orbit_points", "branch")})
+    terms, points = balance.terms, balance.points
     everything = np.arange(points)
-    spin, push = orbit(omega_c, everything)
-    torque_residual = roller_count * push * pitch_radius - cage_drag(omega_c, everything)
+    omega_kin = terms["omega_kin"]
+    lower_end, upper_end, count = _bracket_of_branch(balance, branch)
+    has_root = np.isfinite(lower_end)
+    omega_c = np.where(has_root, omega_kin, np.nan)
+    converged = np.zeros(points, dtype=bool)
+    if has_root.any():
+        found = np.flatnonzero(has_root)
+        root, converged[found] = _secant_root(
+            lambda x, index: balance.residual(x, found[index]), lower_end[found],
+            upper_end[found], _SPEED_TOLERANCE * omega_kin[found])
+        omega_c[found] = root
+    trial = np.where(has_root, omega_c, omega_kin)  # the kinematic speed stands in for none
+    spin, residual, scale = balance.evaluate(trial, everything)
+    converged &= np.abs(residual) <= _RELATIVE_RESIDUAL * scale
+    status = np.where(has_root, np.where(converged, CONVERGED, NOT_CONVERGED),
+                      NO_ROOT_IN_RANGE)
+    radius, r_i = terms["radius"], terms["r_i"]
+    steps = balance.inner_load.shape[1]
     where = np.linspace(0.0, 2.0 * np.pi, orbit_points, endpoint=False)
-    grid = np.arange(steps) * step_angle
+    grid = np.arange(steps) * 2.0 * np.pi / steps
     spin_at = np.stack([np.interp(where, grid, s, period=2 * np.pi) for s in spin])
-    heaviest = np.argmax(inner_load, axis=1)
-    entraining = 0.5 * ((omega_i - omega_c) * r_i + spin[everything, heaviest] * radius)
-    reduced = modulus / (1.0 - poisson**2)
+    heaviest = np.argmax(balance.inner_load, axis=1)
+    entraining = 0.5 * ((terms["omega_i"] - omega_c) * r_i + spin[everything, heaviest] * radius)
+    reduced = terms["modulus"] / (1.0 - terms["poisson"]**2)
     film_thickness = central_film_thickness(
-        inner_load[everything, heaviest], contact_length, radius * r_i / (radius + r_i),
-        entraining, viscosity, alpha, reduced)
+        balance.inner_load[everything, heaviest], terms["contact_length"],
+        radius * r_i / (radius + r_i), entraining, terms["viscosity"], terms["alpha"], reduced)
+    missing = np.where(has_root, 1.0, np.nan)  # NaN where the outputs need the missing root
     return {
         "cage_slip": 1.0 - omega_c / omega_kin,
         "cage_speed": omega_c,
-        "roller_slip": 1.0 - spin_at / spin_kin[:, None],
+        "roller_slip": (1.0 - spin_at / terms["spin_kin"][:, None]) * missing[:, None],
         "orbit_angle": np.broadcast_to(where, spin_at.shape),
-        "roller_spin_ratio": spin.mean(axis=1) / spin_kin,
-        "torque_residual": torque_residual,
-        "film_thickness": film_thickness,
-        "max_roller_load": inner_load.max(axis=1),
-        "status": np.where(converged, CONVERGED, NOT_CONVERGED).astype(np.int8),
+        "roller_spin_ratio": spin.mean(axis=1) / terms["spin_kin"] * missing,
+        "torque_residual": -residual * missing,
+        "film_thickness": film_thickness * missing,
+        "max_roller_load": balance.inner_load.max(axis=1),
+        "equilibrium_count": count.astype(float),
+        "status": combine_status(status, balance.load_status).astype(np.int8),
     }
+
+
+def cage_torque_residual(cage_speed, radial_load, speed, roller_count, **bearing):
+    """The cage's torque balance at trial cage speeds: its drag less what the rollers give it
+    [N m] (positive: the cage slows down). Its roots are :func:`cage_slip`'s equilibria; a
+    root where it rises is stable.
+
+    Parameters
+    ----------
+    cage_speed : array_like
+        Trial cage speeds ``omega_c`` [rad/s], broadcast with the points.
+    radial_load, speed, roller_count, **bearing
+        As :func:`cage_slip` (``orbit_points`` and ``branch`` excepted).
+
+    Returns
+    -------
+    numpy.ndarray
+        ``M_cage(omega_c) - Z (r_m F_push + M_pocket)`` [N m].
+    """
+    defaults = {k: p.default for k, p in inspect.signature(cage_slip).parameters.items()
+                if p.default is not inspect.Parameter.empty
+                and k not in ("orbit_points", "branch")}
+    balance = _CageBalance(roller_count, {**defaults, **bearing, "radial_load": radial_load,
+                                          "speed": speed})
+    shape = np.broadcast_shapes(np.shape(cage_speed), (balance.points,))
+    points = np.broadcast_to(np.arange(balance.points), shape).ravel()
+    trial = np.broadcast_to(np.asarray(cage_speed, dtype=float), shape).ravel()
+    return balance.evaluate(trial, points)[1].reshape(shape)
+
+
+class _CageBalance:
+    """The cage's torque balance of a chunk of points: one roller's spin integrated around the
+    orbit at trial cage speeds, and what the rollers give the cage."""
+
+    def __init__(self, roller_count, inputs):
+        self.terms = terms = bearing_terms(roller_count=roller_count, **inputs)
+        self.roller_count = roller_count
+        self.points = terms["load"].size
+        # crb_radial weighs a roller over its contact length: give it the whole roller's mass.
+        whole_roller_density = terms["mass"] / (np.pi * terms["radius"]**2
+                                                * terms["contact_length"])
+        self.inner_load, centrifugal, self.load_status = _orbit_loads(
+            terms["load"], terms["omega_i"], roller_count, 2 * terms["pitch_radius"],
+            terms["diameter"], terms["contact_length"], terms["play"], whole_roller_density)
+        self.outer_load = self.inner_load + centrifugal[:, None]
+
+    def orbit(self, omega_c, index):
+        """Spin around the orbit ``(n, steps)``, the rollers' mean forward push on the cage
+        [N] and the mean couple the cage receives from a roller's pocket [N m], at cage speeds
+        ``omega_c`` for the points ``index`` (which may repeat)."""
+        t = self.terms
+        q_i, q_o = self.inner_load[index], self.outer_load[index]
+        inertia, mu_p = t["inertia"][index], t["mu_pocket"][index]
+        pocket_film, end_film = t["pocket_film"][index], t["end_film"][index]
+        rr, ri, ro = t["radius"][index], t["r_i"][index], t["r_o"][index]
+        drag = t["windage"][index] * omega_c**2
+        steps = q_i.shape[1]
+        h = 2.0 * np.pi / steps / omega_c / inertia
+        spin = omega_c * ro / rr  # pure rolling at the outer raceway to start
+        history = np.empty((index.size, steps))
+        pushing = np.empty((index.size, steps))
+        pocket = np.empty((index.size, steps))
+        for step in range(_ORBITS * steps):
+            k = step % steps
+            mu_i, slope_i = t["traction"](
+                (t["omega_i"][index] - omega_c) * ri - spin * rr, index)
+            mu_o, slope_o = t["traction"](spin * rr - omega_c * ro, index)
+            forward = mu_i * q_i[:, k] + mu_o * q_o[:, k] - drag
+            # The couple of the pocket's film and friction on the roller, in its spin's sense.
+            pocket_couple = -pocket_film * spin - mu_p * np.abs(forward) * rr * np.sign(spin)
+            torque = rr * (mu_i * q_i[:, k] - mu_o * q_o[:, k]) + pocket_couple \
+                - end_film * spin
+            stiffness = rr**2 * (slope_i * q_i[:, k] + slope_o * q_o[:, k]) \
+                + pocket_film + end_film
+            spin = spin + h * torque / (1.0 + h * stiffness)  # linearly implicit Euler
+            history[:, k], pushing[:, k], pocket[:, k] = spin, forward, pocket_couple
+        # Reaction: the cage receives minus the roller's pocket couple about the axis. The
+        # roller's couple is counted positive opposite to the orbit, the cage's with it: the
+        # same number, so a film braking a roller's (positive) spin brakes the cage too. The
+        # film's shear on the two facing arcs is a pure couple; the friction force is radial at
+        # the pocket wall, a lever R off the roller's centre, so it also gives the cage the
+        # couple mu_p |F_p| R about the bearing axis (its radial part goes to the raceways).
+        return history, pushing.mean(axis=1), pocket.mean(axis=1)
+
+    def evaluate(self, omega_c, index):
+        """Spin around the orbit, the balance's residual (drag less the rollers' drive: it
+        rises with the cage speed at a stable root) [N m] and the torques it balances."""
+        t = self.terms
+        spin, push, pocket = self.orbit(omega_c, index)
+        drag = cage_windage(omega_c, t["cage_out"][index], t["width"][index],
+                            t["effective_density"][index], t["kinematic_viscosity"][index])
+        drive = self.roller_count * (push * t["pitch_radius"][index] + pocket)
+        scale = drag + self.roller_count * (np.abs(push) * t["pitch_radius"][index]
+                                            + np.abs(pocket))
+        return spin, drag - drive, scale
+
+    def residual(self, omega_c, index):
+        return self.evaluate(omega_c, index)[1]
+
+
+def _bracket_of_branch(balance, branch):
+    """The bracket of each point's chosen stable root, from the balance scanned at
+    ``_SCAN_SPEEDS`` cage speeds, and the count of stable roots (NaN brackets: none).
+
+    A stable root is where the residual turns from not positive to positive with rising
+    cage speed (a faster cage meets more drag than drive); the first is ``"high_slip"``'s,
+    the last ``"low_slip"``'s."""
+    if branch not in BRANCHES:
+        raise ValueError(f"branch must be one of {BRANCHES}, not {branch!r}")
+    points = balance.points
+    shares = np.linspace(_LOWEST_CAGE_SPEED, _HIGHEST_CAGE_SPEED, _SCAN_SPEEDS)
+    speeds = shares[None, :] * balance.terms["omega_kin"][:, None]
+    index = np.repeat(np.arange(points), _SCAN_SPEEDS)
+    values = balance.residual(speeds.ravel(), index).reshape(points, _SCAN_SPEEDS)
+    rising = (values[:, :-1] <= 0.0) & (values[:, 1:] > 0.0)
+    count = rising.sum(axis=1)
+    chosen = np.argmax(rising, axis=1) if branch == "high_slip" else \
+        _SCAN_SPEEDS - 2 - np.argmax(rising[:, ::-1], axis=1)
+    rows = np.arange(points)
+    lower = np.where(count > 0, speeds[rows, chosen], np.nan)
+    upper = np.where(count > 0, speeds[rows, chosen + 1], np.nan)
+    return lower, upper, count
 
 
 def bearing_terms(radial_load, speed, roller_count, inner_raceway_diameter, roller_diameter,
@@ -202,7 +326,8 @@ def bearing_terms(radial_load, speed, roller_count, inner_raceway_diameter, roll
     r_o = r_i + diameter + 0.5 * play
     pitch_radius = 0.5 * (r_i + r_o)
     omega_kin = kinematic_cage_speed(omega_i, r_i, r_o)
-    viscosity = rho_oil * walther_viscosity(temperature, nu_40, nu_100)
+    kinematic_viscosity = walther_viscosity(temperature, nu_40, nu_100)
+    viscosity = rho_oil * kinematic_viscosity
     mass = density * np.pi * radius**2 * length
     effective_density = fraction * rho_oil + (1.0 - fraction) * AIR_DENSITY
     exposed = diameter - 0.5 * (cage_out - cage_in)  # roller height outside the cage
@@ -212,10 +337,12 @@ def bearing_terms(radial_load, speed, roller_count, inner_raceway_diameter, roll
         "modulus": modulus, "poisson": poisson, "radius": radius, "r_i": r_i, "r_o": r_o,
         "pitch_radius": pitch_radius, "omega_kin": omega_kin,
         "spin_kin": (omega_i - omega_kin) * r_i / radius, "viscosity": viscosity,
+        "kinematic_viscosity": kinematic_viscosity,
         "mass": mass, "inertia": 0.5 * mass * radius**2,
-        # film torque per spin speed [N m s]: pocket arc and both ends
-        "film": viscosity * (fill_pocket * radius**3 * length * wrap / c_pocket
-                             + fill_end * np.pi * radius**4 / h_end),
+        # Film torques per spin speed [N m s]: the pocket arc (roller against cage) and both
+        # ends (roller against the rings' ribs).
+        "pocket_film": viscosity * fill_pocket * radius**3 * length * wrap / c_pocket,
+        "end_film": viscosity * fill_end * np.pi * radius**4 / h_end,
         # roller windage per (orbit speed)^2 [N s^2], paper 002's form
         "windage": 0.5 * effective_density * c_drag * contact_length * exposed
         * pitch_radius**2,
@@ -225,12 +352,39 @@ def bearing_terms(radial_load, speed, roller_count, inner_raceway_diameter, roll
     }
 
 
-def cage_windage(omega_c, cage_outer_diameter, cage_width, effective_density, viscosity):
-    """Windage moment of the cage's two faces, disc churning ``C_M rho omega^2 r^5 / 2`` with
-    ``C_M = 3.87 Re^-1/2`` (laminar) or ``0.146 Re^-1/5`` (turbulent) [N m]; none when the
-    cage has no width."""
+def cage_windage(omega_c, cage_outer_diameter, cage_width, effective_density,
+                 kinematic_viscosity):
+    """Windage moment of the cage's two faces in the cavity's oil-air mixture [N m].
+
+    Disc churning ``M = 2 C_M rho_e omega^2 r^5 / 2`` with ``C_M = 3.87 Re^-1/2`` (laminar)
+    or ``0.146 Re^-1/5`` (turbulent), ``Re = omega r^2 / nu``; none when the cage has no
+    width. The fluid is one and the same in both: the oil-air mixture, of effective density
+    ``rho_e = X rho_oil + (1 - X) rho_air`` and a mixture viscosity ``eta_e = rho_e nu_oil``,
+    whose kinematic viscosity is the oil's, as in the treatment of an oil-air mixture's drag
+    on rolling elements by Harris and Kotzalas [1] (its chapter and equation not checked
+    against the book). Mixing the oil's dynamic viscosity with the mixture's density would put
+    ``Re`` a factor ``rho_e / rho_oil`` too low (0.05 at the default oil fraction).
+
+    Parameters
+    ----------
+    omega_c : array_like
+        Cage speed [rad/s].
+    cage_outer_diameter, cage_width : array_like
+        [m].
+    effective_density : array_like
+        ``rho_e`` [kg/m^3].
+    kinematic_viscosity : array_like
+        The oil's ``nu_oil`` [m^2/s].
+
+    References
+    ----------
+    .. [1] T. A. Harris, M. N. Kotzalas, Rolling Bearing Analysis: Advanced Concepts of
+       Bearing Technology, 5th ed., CRC Press (2007), drag of rolling elements in an oil-air
+       mixture.
+    .. [2] CAGE_SLIP_PHYSICS.md (project notes): the disc churning coefficients.
+    """
     outer = 0.5 * cage_outer_diameter
-    reynolds = effective_density * omega_c * outer**2 / viscosity
+    reynolds = omega_c * outer**2 / kinematic_viscosity
     coefficient = np.where(reynolds < 3e5, 3.87 / np.sqrt(reynolds), 0.146 * reynolds**-0.2)
     faces = np.where(cage_width > 0, 2.0, 0.0)
     return faces * coefficient * 0.5 * effective_density * omega_c**2 * outer**5
@@ -238,8 +392,9 @@ def cage_windage(omega_c, cage_outer_diameter, cage_width, effective_density, vi
 
 def _orbit_loads(load, omega_i, roller_count, pitch_diameter, diameter, contact_length,
                  clearance, density):
-    """Inner-raceway load at ``Z x 20`` orbit positions from the load line, and the
-    centrifugal force, from the load distribution at 20 cage positions per roller pitch
+    """Inner-raceway load at ``Z x 20`` orbit positions from the load line, the centrifugal
+    force and the load distribution's status per point (the most severe over its cage
+    positions), from the load distribution at 20 cage positions per roller pitch
     (``crb_radial``, straight rollers)."""
     points = load.size
     positions = 2.0 * np.pi / roller_count * np.arange(_POSITIONS_PER_PITCH) / \
@@ -256,18 +411,19 @@ def _orbit_loads(load, omega_i, roller_count, pitch_diameter, diameter, contact_
     per_roller = result["roller_load"].reshape(points, _POSITIONS_PER_PITCH, roller_count)
     inner = np.swapaxes(per_roller, 1, 2).reshape(points, -1)
     centrifugal = result["centrifugal_force"].reshape(points, _POSITIONS_PER_PITCH)[:, 0]
-    return inner, centrifugal
+    status = combine_status(*np.reshape(result["status"], (points, -1)).T)
+    return inner, centrifugal, status
 
 
 def _secant_root(residual, lower, upper, tolerance):
     """Roots of increasing functions by secant steps kept inside a shrinking bracket: the
     slope is that through each entry's last two evaluations (bisection until there are two).
-    """
+    ``residual(x, index)`` returns the values only."""
     last_x = np.full(np.size(lower), np.nan)
     last_value = np.full(np.size(lower), np.nan)
 
     def with_secant(x, index):
-        value, _ = residual(x, index)
+        value = residual(x, index)
         with np.errstate(divide="ignore", invalid="ignore"):
             slope = (value - last_value[index]) / (x - last_x[index])
         last_x[index], last_value[index] = x, value
@@ -296,7 +452,7 @@ MODELS = [Model(
             "orbit and roller spin from traction, oil films and windage.",
     reference="Paper 002 (eq. 27, roller windage); Harris (1966); Gupta (1984); "
               "CAGE_SLIP_PHYSICS.md for the published forms and typical values",
-    version="2",
+    version="3",
     inputs=(
         Input("radial_load", "N", "radial load Fr", minimum=0.0, exclusive_minimum=True),
         Input("speed", "rpm", "inner-ring speed", minimum=0.0, exclusive_minimum=True),
@@ -354,6 +510,9 @@ MODELS = [Model(
               default=0.1, minimum=0.0, maximum=1.0),
         Input("orbit_points", "1", "orbit positions for roller_slip", default=72,
               kind="count", minimum=4, maximum=3600),
+        Input("branch", "1", "equilibrium returned where there are several: high_slip (the "
+              "lowest stable cage speed, reached from rest) or low_slip (the highest)",
+              default="high_slip", kind="choice", choices=BRANCHES),
     ),
     outputs=(
         Output("cage_slip", "percent", "cage slip 1 - omega_c / omega_c,kin (eq. 27)"),
@@ -365,6 +524,8 @@ MODELS = [Model(
         Output("torque_residual", "N*m", "residual of the cage's torque balance"),
         Output("film_thickness", "um", "central EHL film at the most loaded inner contact"),
         Output("max_roller_load", "N", "largest roller load at the inner raceway"),
+        Output("equilibrium_count", "1", "stable equilibria of the cage's torque balance "
+               "found (2 or more: a hysteresis band; 0: the rollers cannot drive the cage)"),
     ),
     dim_sizes={"orbit": "orbit_points"},
     constraints=(

@@ -2,6 +2,7 @@
 import numpy as np
 import pytest
 
+from models import cage_dynamics_rhs as rhs
 from models.cage_dynamics import cage_dynamics
 from models.cage_slip import cage_slip
 
@@ -42,3 +43,35 @@ def test_radial_eccentricity_steadies_the_whirl():
                          duration=0.04, output_interval=2e-4)
     free, eccentric = runs["whirl_deviation_ratio"]
     assert eccentric < 0.2 * free
+
+
+@pytest.mark.parametrize("pushed", [False, True])
+def test_the_pocket_couples_conserve_angular_momentum(pushed):
+    # No loads, traction, drag, end films or gravity: only the pockets act between rollers
+    # and cage (their film and, where a roller presses on its pocket, friction and the normal
+    # force). The rate of the angular momentum about the axis, counted with the orbit, is
+    # then zero: cage J phi'' plus each roller's m r_m^2 theta'' less its J_R omega_R'' (its
+    # spin counts opposite to the orbit).
+    count = 13
+    p = np.zeros(rhs.PARAMETERS)
+    p[rhs.R_INNER], p[rhs.R_OUTER], p[rhs.R_ROLLER], p[rhs.R_PITCH] = 0.022, 0.032, 0.005, 0.027
+    p[rhs.CONTACT], p[rhs.HALF_PLAY] = 1e9, 1e-5
+    p[rhs.M_ROLLER], p[rhs.J_ROLLER] = 0.0067, 8.4e-8
+    p[rhs.POCKET_FILM], p[rhs.MU_POCKET] = 7e-7, 0.1
+    p[rhs.M_RING], p[rhs.M_CAGE], p[rhs.J_CAGE] = 0.1, 0.05, 1.8e-5
+    p[rhs.HALF_POCKET], p[rhs.K_POCKET], p[rhs.C_POCKET] = 5e-5, 5e7, 10.0
+    p[rhs.TRACTION_C] = 1.0  # with A = B = D = 0: no traction
+    state = np.zeros(4 + 3 * count + 6)
+    rollers = 4 + 3 * np.arange(count)
+    state[rollers] = 2 * np.pi * np.arange(count) / count
+    state[rollers + 2] = np.linspace(500.0, 2500.0, count)  # spins
+    if pushed:  # roller 1 ahead of its pocket by 0.27 mm, 0.22 mm into the pocket's wall
+        state[rollers[0]] += 0.01
+    out = rhs.derivatives(0.0, state, p, count)
+    cage = 4 + 3 * count
+    rate = p[rhs.J_CAGE] * out[cage + 5] + np.sum(
+        p[rhs.M_ROLLER] * p[rhs.R_PITCH]**2 * out[rollers + 1]
+        - p[rhs.J_ROLLER] * out[rollers + 2])
+    couples = p[rhs.POCKET_FILM] * state[rollers + 2].sum()  # the film's alone
+    assert abs(p[rhs.J_CAGE] * out[cage + 5]) > 0.5 * couples
+    assert abs(rate) < 1e-12 * couples

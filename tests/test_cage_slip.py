@@ -1,9 +1,12 @@
-"""cage_slip: trends, the cage's torque balance, the no-drag limit, traction and viscosity."""
+"""cage_slip: trends, the cage's torque balance and its several roots, the reaction of the
+pocket on the cage, the no-drag limit, traction and viscosity."""
 import numpy as np
 import pytest
 
-from models.cage_slip import cage_slip, kinematic_cage_speed
+import models.cage_slip as steady_module
+from models.cage_slip import cage_slip, cage_torque_residual, cage_windage, kinematic_cage_speed
 from models.lubrication import TractionCurve, walther_viscosity
+from models.registry import CONVERGED, NO_ROOT_IN_RANGE, NOT_CONVERGED, OUT_OF_VALIDITY
 from sweeps import run, spec, store
 
 MM, RPM = 1e-3, 2 * np.pi / 60
@@ -81,3 +84,118 @@ def test_chunking_does_not_change_the_numbers(tmp_path):
     one, many = store.open_result(tmp_path / "one.nc"), store.open_result(tmp_path / "many.nc")
     for name in ("cage_slip", "roller_slip", "cage_speed"):
         np.testing.assert_allclose(one[name].values, many[name].values, rtol=1e-12)
+
+
+def test_a_cage_the_rollers_cannot_drive_has_no_root():
+    # 1 N at 6000 r/min: even at 2 % of its kinematic speed the cage's drag exceeds what the
+    # rollers give it, everywhere in the range (an independent scan of the balance says so).
+    result = cage_slip(np.array([1.0, 800.0]), 6000 * RPM, **TEST)
+    assert result["status"].tolist() == [NO_ROOT_IN_RANGE, CONVERGED]
+    assert result["equilibrium_count"].tolist() == [0, 1]
+    for name in ("cage_slip", "cage_speed", "roller_spin_ratio", "torque_residual"):
+        assert np.isnan(result[name][0]) and np.isfinite(result[name][1])
+    assert np.isnan(result["roller_slip"][0]).all()
+    omega_kin = kinematic_cage_speed(6000 * RPM, 22 * MM, 32.01 * MM)
+    scan = cage_torque_residual(np.linspace(0.02, 1.001, 200) * omega_kin, 1.0, 6000 * RPM,
+                                **TEST)
+    assert np.all(scan > 0)
+
+
+def test_a_converged_point_balances_its_own_torques():
+    # Light loads, where the torques are small: each residual against the cage's own drag at
+    # its speed (the smallest of the torques balanced), from the published disc formula.
+    loads = np.array([5.0, 20.0, 100.0, 1000.0])
+    result = cage_slip(loads, 6000 * RPM, **TEST)
+    assert np.all(result["status"] == CONVERGED)
+    kinematic = walther_viscosity(298.15, 26e-6, 5.4e-6)
+    drag = cage_windage(result["cage_speed"], 59 * MM, 9 * MM, 0.05 * 1000 + 0.95 * 1.2,
+                        kinematic)
+    assert np.all(np.abs(result["torque_residual"]) < 1e-5 * drag)
+
+
+def test_the_cage_windage_uses_one_fluid():
+    # Laminar disc, both faces: M = 2 x 3.87 Re^-1/2 rho omega^2 r^5 / 2, Re = omega r^2 / nu
+    # (CAGE_SLIP_PHYSICS.md), worked by hand: omega 500 rad/s, r 29.5 mm, nu 50 mm^2/s:
+    # Re = 500 x 8.7025e-4 / 5e-5 = 8702.5, C_M = 3.87 / 93.287 = 0.041485; rho_e 51.14 kg/m^3,
+    # r^5 = 2.23415e-8 m^5: M = 0.041485 x 51.14 x 2.5e5 x 2.23415e-8 = 0.011850 N m.
+    moment = cage_windage(500.0, 59 * MM, 9 * MM, 51.14, 50e-6)
+    assert moment == pytest.approx(0.011850, rel=1e-4)
+    # The same oil in a wetter mixture: the moment grows as the density, Re staying the same.
+    wetter = cage_windage(500.0, 59 * MM, 9 * MM, 2 * 51.14, 50e-6)
+    assert wetter / moment == pytest.approx(2.0, rel=1e-12)
+
+
+def _films(radius=5 * MM, length=11 * MM, wrap=1.0, pocket_clearance=0.1 * MM,
+           end_film=0.015 * MM):
+    """Drag per spin speed over viscosity of a full pocket film and of full end films, from
+    the forms in the docstring: R^3 L theta_w / c_p and pi R^4 / h_e [m^3]."""
+    return radius**3 * length * wrap / pocket_clearance, np.pi * radius**4 / end_film
+
+
+def test_the_cage_receives_the_pocket_films_reaction():
+    # The same drag on the rollers' spin, once in the pocket (against the cage) and once at
+    # the roller ends (against the ribs): the rollers turn alike at a given cage speed, but
+    # only the pocket's film brakes the cage, by Z c_p times the mean spin.
+    pocket, ends = _films()
+    in_pocket = dict(TEST, pocket_film_fill=1.0, end_film_fill=0.0, pocket_friction=0.0)
+    at_ends = dict(TEST, pocket_film_fill=0.0, end_film_fill=pocket / ends,
+                   pocket_friction=0.0)
+    loads = np.array([400.0, 800.0])
+    braked = cage_slip(loads, 12000 * RPM, **in_pocket)
+    free = cage_slip(loads, 12000 * RPM, **at_ends)
+    assert np.all(braked["cage_slip"] > 1.05 * free["cage_slip"])
+    viscosity = 1000.0 * walther_viscosity(298.15, 26e-6, 5.4e-6)
+    omega_kin = kinematic_cage_speed(12000 * RPM, 22 * MM, 32.01 * MM)
+    mean_spin = braked["roller_spin_ratio"] * (12000 * RPM - omega_kin) * 22 * MM / (5 * MM)
+    # At the braked cage's speed the balance without the pocket's reaction lacks just that.
+    lacking = cage_torque_residual(braked["cage_speed"], loads, 12000 * RPM, **at_ends)
+    assert lacking == pytest.approx(-13 * viscosity * pocket * mean_spin, rel=1e-6)
+
+
+def test_pocket_friction_slows_the_cage():
+    result = cage_slip(800.0, 12000 * RPM, **{**TEST, "pocket_friction": np.array([0.0, 0.2])})
+    assert result["cage_slip"][1] > result["cage_slip"][0]
+
+
+BAND = dict(load=165.0, speed=9000 * RPM)  # inside the hysteresis band at 9000 r/min
+
+
+def test_a_load_inside_the_hysteresis_band_has_three_equilibria():
+    omega_kin = kinematic_cage_speed(BAND["speed"], 22 * MM, 32.01 * MM)
+    shares = np.linspace(0.02, 1.001, 982)  # ten times the model's scan resolution
+    balance = cage_torque_residual(shares * omega_kin, BAND["load"], BAND["speed"], **TEST)
+    rising = np.flatnonzero((balance[:-1] <= 0) & (balance[1:] > 0))
+    falling = np.flatnonzero((balance[:-1] > 0) & (balance[1:] <= 0))
+    assert len(rising) == 2 and len(falling) == 1  # stable, unstable, stable
+    assert rising[0] < falling[0] < rising[1]
+    high, low = (cage_slip(BAND["load"], BAND["speed"], **TEST, branch=b)
+                 for b in ("high_slip", "low_slip"))
+    for result, crossing in ((high, rising[0]), (low, rising[1])):
+        assert result["status"][0] == CONVERGED
+        assert result["equilibrium_count"][0] == 2
+        share = result["cage_speed"][0] / omega_kin
+        assert shares[crossing] <= share <= shares[crossing + 1]
+    assert high["cage_slip"][0] > 2 * low["cage_slip"][0]
+
+
+def test_outside_the_band_both_branches_agree():
+    loads = np.array([100.0, 200.0, 800.0])
+    high = cage_slip(loads, 9000 * RPM, **TEST)
+    low = cage_slip(loads, 9000 * RPM, **TEST, branch="low_slip")
+    assert np.all(high["equilibrium_count"] == 1)
+    np.testing.assert_allclose(high["cage_speed"], low["cage_speed"], rtol=1e-9)
+
+
+@pytest.mark.parametrize("upstream", [NOT_CONVERGED, OUT_OF_VALIDITY])
+def test_the_load_distributions_status_reaches_the_point(monkeypatch, upstream):
+    original = steady_module.crb_radial
+
+    def marked(*args, **kwargs):
+        result = original(*args, **kwargs)
+        result["status"] = np.array(result["status"])
+        result["status"][3] = upstream  # one cage position of the first point
+        return result
+
+    monkeypatch.setattr(steady_module, "crb_radial", marked)
+    result = cage_slip(np.array([800.0, 800.0]), 12000 * RPM, **TEST)
+    assert result["status"].tolist() == [upstream, CONVERGED]

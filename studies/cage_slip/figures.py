@@ -1,16 +1,21 @@
-"""Paper 002's cage slip trends (Figs. 13, 17, 20 in steady state) and the sensitivity to the
-inputs it does not state, from the netCDF results only."""
+"""Paper 002's cage slip trends (Figs. 13, 17, 20 in steady state, Figs. 17-20 transient) and
+the sensitivity to the inputs it does not state, from the netCDF results only. Every figure
+states its conditions; results are selected by quantity (``at``), whatever unit a coordinate
+is stored in."""
 from pathlib import Path
 
 import matplotlib.pyplot as plt
 import numpy as np
 
-from sweeps.plotting import family, label, result, save
+from sweeps.plotting import at, family, label, result, save
 
 FIGURES = {
     "fig17_load_speed.png": "Fig. 17: steady cage slip of the test bearing against radial load "
                             "at 6000, 9000 and 12000 r/min (room-temperature oil, documented "
-                            "defaults for the unstated oil, traction and drag).",
+                            "defaults for the unstated oil, traction and drag). Shaded: loads "
+                            "with two stable equilibria (hysteresis band, 5 N grid); solid: "
+                            "the high-slip branch a cage reaches from rest, dashed: the "
+                            "low-slip branch.",
     "roller_slip_orbit.png": "Steady counterpart of Fig. 20: roller spin slip around the orbit "
                              "at 12000 r/min (0 deg: the load line; the load zone is about "
                              "+-70 deg).",
@@ -21,22 +26,30 @@ FIGURES = {
                        "does not state: oil temperature, traction peak speed, cavity oil "
                        "fraction.",
     "fig17_transient.png": "Fig. 17 again: settled mean cage slip of the transient model (dots) "
-                           "beside the steady model (lines).",
-    "fig18_whirl.png": "Fig. 18: whirl orbit of the cage's mass centre over the settled half, "
-                       "800 N, 12000 r/min, without and with 2 mm radial cage eccentricity, "
-                       "and the speed deviation ratio of eq. 28.",
+                           "beside the steady model (lines, high-slip branch).",
+    "fig18_whirl.png": "Fig. 18: the cage's whirl over the settled half, 800 N, 12000 r/min, "
+                       "without and with 2 mm radial cage eccentricity: the path of its "
+                       "geometric centre, and the speed of its mass centre over its mean "
+                       "(the spread of which is eq. 28's deviation ratio).",
     "fig19_20_histories.png": "Figs. 19-20: cage slip and the slip of roller 1 against time, "
                               "same runs.",
 }
 
 
+def conditions(data, *more) -> str:
+    """One line of a result's conditions: its bearing, and speed, load, oil temperature and
+    cage eccentricity where the result holds them fixed (each in its stored unit)."""
+    parts = [data.attrs.get("bearing", "")]
+    for name, prefix in (("speed", ""), ("radial_load", ""), ("oil_temperature", "oil "),
+                         ("cage_eccentricity", "cage eccentricity ")):
+        if name in data.coords and data[name].ndim == 0:
+            parts.append(f"{prefix}{float(data[name]):g} {data[name].attrs.get('units', '')}")
+    return ", ".join(p for p in (*parts, *more) if p)
+
+
 def draw(results: Path, figures: Path):
     results, figures = Path(results), Path(figures)
-    data = result(results, "fig17_load_speed")
-    figure, axis = plt.subplots(figsize=(5.5, 3.8))
-    family(axis, data.radial_load, data.cage_slip, "speed", "{:g} r/min",
-           xlabel=label(data.radial_load), ylabel=label(data.cage_slip), yscale="log")
-    save(figure, figures, "fig17_load_speed.png")
+    _fig17(results, figures)
 
     orbit = result(results, "roller_slip_orbit")
     figure, axis = plt.subplots(figsize=(6, 3.8))
@@ -44,9 +57,12 @@ def draw(results: Path, figures: Path):
         point = orbit.sel(radial_load=load)
         angle = (point.orbit_angle + 180) % 360 - 180
         order = np.argsort(angle.values)
-        axis.plot(angle.values[order], point.roller_slip.values[order], label=f"{load:g} N")
-    axis.set(xlabel="orbit position from the load line [deg]", ylabel=label(orbit.roller_slip))
-    axis.legend(fontsize=7)
+        axis.plot(angle.values[order], point.roller_slip.values[order],
+                  label=f"{load:g} {orbit.radial_load.attrs['units']}")
+    axis.set(xlabel="orbit position from the load line [deg]", ylabel=label(orbit.roller_slip),
+             title=conditions(orbit, "steady"))
+    axis.title.set_fontsize(9)
+    axis.legend(fontsize=7, title="radial load", title_fontsize=7)
     axis.grid(alpha=0.3)
     save(figure, figures, "roller_slip_orbit.png")
 
@@ -55,81 +71,131 @@ def draw(results: Path, figures: Path):
     axis.plot(spin.oil_temperature, spin.roller_spin_ratio, "o-", ms=3)
     for value in (84.6, 82.7):
         axis.axhline(value, ls=":", color="k", lw=1)
-    axis.set(xlabel=label(spin.oil_temperature), ylabel=label(spin.roller_spin_ratio))
+    axis.set(xlabel=label(spin.oil_temperature), ylabel=label(spin.roller_spin_ratio),
+             title=conditions(spin, "steady"))
+    axis.title.set_fontsize(9)
     axis.grid(alpha=0.3)
     save(figure, figures, "nu2330_spin.png")
 
-    figure, axes = plt.subplots(1, 3, figsize=(13, 3.8), sharey=True)
+    figure, axes = plt.subplots(1, 3, figsize=(13, 4.1), sharey=True)
     for axis, (name, variable) in zip(axes, (("temperature", "oil_temperature"),
                                              ("traction", "traction_peak_speed"),
                                              ("oil_fraction", "oil_fraction"))):
         data = result(results, f"sensitivity_{name}")
-        family(axis, data[variable], data.cage_slip, "radial_load", "{:g} N",
-               xlabel=label(data[variable]), yscale="log")
+        family(axis, data[variable], data.cage_slip, "radial_load",
+               "{:g} " + data.radial_load.attrs["units"], xlabel=label(data[variable]),
+               yscale="log")
     axes[0].set_ylabel(label(data.cage_slip))
+    figure.suptitle(conditions(data, "each input at its default where not on the x axis, "
+                               "steady, high-slip branch"), fontsize=9)
     save(figure, figures, "sensitivity.png")
     _transient(results, figures)
 
 
+def _fig17(results: Path, figures: Path):
+    data = result(results, "fig17_load_speed")
+    load = data.radial_load
+    figure, axis = plt.subplots(figsize=(6.5, 4.4))
+    for index, speed in enumerate(("6000 rpm", "9000 rpm", "12000 rpm")):
+        colour = f"C{index}"
+        high, low = (at(data, speed=speed, branch=b) for b in ("high_slip", "low_slip"))
+        several = (high.equilibrium_count >= 2).values
+        axis.plot(load, high.cage_slip, "-", color=colour, lw=1.2, label=f"{speed}")
+        axis.plot(load.values[several], low.cage_slip.values[several], "--", color=colour,
+                  lw=1.2)
+        step = float(load[1] - load[0])
+        for value in load.values[several]:
+            axis.axvspan(value - step / 2, value + step / 2, color=colour, alpha=0.25, lw=0)
+    axis.plot([], [], "k-", lw=1.2, label="high-slip branch (from rest)")
+    axis.plot([], [], "k--", lw=1.2, label="low-slip branch")
+    axis.fill_between([], [], color="grey", alpha=0.3, label="two stable equilibria")
+    axis.set(xlabel=label(load), ylabel=label(data.cage_slip), yscale="log",
+             title=conditions(data, "steady; Fig. 17 of paper 002"))
+    axis.title.set_fontsize(9)
+    axis.legend(fontsize=7)
+    axis.grid(alpha=0.3)
+    save(figure, figures, "fig17_load_speed.png")
+
+
 def _transient(results: Path, figures: Path):
-    steady = result(results, "fig17_load_speed")
+    steady = at(result(results, "fig17_load_speed"), branch="high_slip")
     data = result(results, "fig17_transient")
     figure, axis = plt.subplots(figsize=(5.5, 3.8))
     for index, speed in enumerate(data.speed.values):
-        axis.plot(steady.radial_load, steady.cage_slip.sel(speed=speed), color=f"C{index}",
-                  label=f"{speed:g} r/min, steady")
-        axis.plot(data.radial_load, data.mean_cage_slip.sel(speed=speed), "o",
-                  color=f"C{index}", label=f"{speed:g} r/min, transient")
-    axis.set(xlabel=label(data.radial_load), ylabel=label(data.mean_cage_slip), yscale="log")
+        text = f"{speed:g} {data.speed.attrs['units']}"
+        axis.plot(steady.radial_load, at(steady, speed=text).cage_slip, color=f"C{index}",
+                  label=f"{text}, steady")
+        axis.plot(data.radial_load, at(data, speed=text).mean_cage_slip, "o",
+                  color=f"C{index}", label=f"{text}, transient")
+    axis.set(xlabel=label(data.radial_load), ylabel=label(data.mean_cage_slip), yscale="log",
+             title=conditions(data, f"{float(data.duration):g} s runs"))
+    axis.title.set_fontsize(9)
     axis.legend(fontsize=7)
     axis.grid(alpha=0.3)
     save(figure, figures, "fig17_transient.png")
 
     runs = result(results, "fig18_20_eccentricity")
     settled = runs.sample_time >= 0.5 * runs.sample_time.max()
-    figure, axes = plt.subplots(1, 2, figsize=(9, 4.2))
-    for axis, eccentricity in zip(axes, runs.cage_eccentricity.values):
-        run = runs.sel(cage_eccentricity=eccentricity)
-        keep = settled.sel(cage_eccentricity=eccentricity)
-        axis.plot(run.cage_x.where(keep), run.cage_y.where(keep), lw=0.6)
+    figure, axes = plt.subplots(1, 2, figsize=(10.5, 4.3),
+                                gridspec_kw={"width_ratios": [1, 1.4]})
+    for index, eccentricity in enumerate(("0 mm", "2 mm")):
+        run = at(runs, cage_eccentricity=eccentricity)
+        keep = at(settled, cage_eccentricity=eccentricity).values
         ratio = float(run.whirl_deviation_ratio)
-        axis.set(xlabel=label(run.cage_x), ylabel=label(run.cage_y), aspect="equal",
-                 title=f"eccentricity {eccentricity:g} mm, sigma_b = {ratio:.3f}")
+        name = f"eccentricity {eccentricity}, sigma_b = {ratio:.3f}"
+        axes[0].plot(run.cage_centre_x.values[keep], run.cage_centre_y.values[keep], lw=0.5,
+                     color=f"C{index}", alpha=0.8, label=name)
+        speed = run.whirl_speed.values[keep]
+        axes[1].plot(run.sample_time.values[keep], speed / speed.mean(), lw=0.7,
+                     color=f"C{index}", label=name)
+    axes[0].set(xlabel="cage geometric centre x [um]", ylabel="cage geometric centre y [um]",
+                title="path of the cage's geometric centre")
+    axes[0].set_aspect("equal", adjustable="datalim")
+    axes[1].set(xlabel=label(runs.sample_time), ylabel="mass centre speed / its mean",
+                title="speed of the cage's mass centre (eq. 28)")
+    axes[1].legend(fontsize=7, loc="upper right")
+    for axis in axes:
+        axis.title.set_fontsize(9)
         axis.grid(alpha=0.3)
+    figure.suptitle(conditions(runs, "planar transient, settled half of "
+                               f"{float(runs.duration):g} s"), fontsize=9)
     save(figure, figures, "fig18_whirl.png")
 
-    figure, axes = plt.subplots(1, 2, figsize=(10, 3.8))
+    figure, axes = plt.subplots(1, 2, figsize=(10, 4.1))
     for eccentricity in runs.cage_eccentricity.values:
         run = runs.sel(cage_eccentricity=eccentricity)
-        axes[0].plot(run.sample_time, run.cage_slip, lw=0.8, label=f"{eccentricity:g} mm")
-        axes[1].plot(run.sample_time, run.roller_slip.sel(roller=1), lw=0.8,
-                     label=f"{eccentricity:g} mm")
+        text = f"{eccentricity:g} {runs.cage_eccentricity.attrs['units']}"
+        axes[0].plot(run.sample_time, run.cage_slip, lw=0.8, label=text)
+        axes[1].plot(run.sample_time, run.roller_slip.sel(roller=1), lw=0.8, label=text)
     axes[0].set(xlabel=label(runs.sample_time), ylabel=label(runs.cage_slip))
     axes[1].set(xlabel=label(runs.sample_time), ylabel="roller 1: " + label(runs.roller_slip))
     for axis in axes:
         axis.legend(fontsize=7, title="cage eccentricity")
         axis.grid(alpha=0.3)
+    figure.suptitle(conditions(runs, "planar transient"), fontsize=9)
     save(figure, figures, "fig19_20_histories.png")
 
 
 def ours(results: Path) -> dict:
     results = Path(results)
-    data = result(results, "fig17_load_speed").cage_slip
+    data = at(result(results, "fig17_load_speed"), branch="high_slip").cage_slip
+    grid = at(data, radial_load=[f"{f} N" for f in range(200, 1001, 50)])
+    fast = at(grid, speed="12000 rpm")
     values = {
-        "slip_800_12000": float(data.sel(speed=12000, radial_load=800)),
-        "falls_with_load": float((data.diff("radial_load") < 0).mean()),
-        "rises_with_speed": float((data.diff("speed") > 0).mean()),
-        "knee_12000": float((data.sel(speed=12000)[:-1].values
-                             / data.sel(speed=12000)[1:].values).max()),
+        "slip_800_12000": float(at(data, speed="12000 rpm", radial_load="800 N")),
+        "falls_with_load": float((grid.diff("radial_load") < 0).mean()),
+        "rises_with_speed": float((grid.diff("speed") > 0).mean()),
+        "knee_12000": float((fast[:-1].values / fast[1:].values).max()),
     }
     runs = result(results, "fig18_20_eccentricity")
-    free, eccentric = (runs.sel(cage_eccentricity=e) for e in runs.cage_eccentricity.values)
+    free, eccentric = (at(runs, cage_eccentricity=e) for e in ("0 mm", "2 mm"))
     values["eccentricity_steadies_whirl"] = float(free.whirl_deviation_ratio
                                                   / eccentric.whirl_deviation_ratio)
     values["eccentricity_raises_slip"] = float(eccentric.mean_cage_slip / free.mean_cage_slip)
     transient = result(results, "fig17_transient").mean_cage_slip
-    values["transient_slip_800_12000"] = float(transient.sel(speed=12000, radial_load=800))
+    values["transient_slip_800_12000"] = float(at(transient, speed="12000 rpm",
+                                                  radial_load="800 N"))
     spin = result(results, "nu2330_spin").roller_spin_ratio
-    values["nu2330_spin_ratio"] = float(spin.sel(oil_temperature=25, method="nearest"))
+    values["nu2330_spin_ratio"] = float(at(spin, oil_temperature="25 degC", method="nearest"))
     values["nu2330_spin_ratio_lowest"] = float(spin.min())
     return values
