@@ -431,6 +431,12 @@ def _no_load_on_held(fixed_dofs, axial_load, radial_load, radial_load_z, moment_
                                              for h, f in zip(held, loads)])
 
 
+def _something_free(fixed_dofs):
+    """False where every displacement is held: there is nothing to solve."""
+    return np.vectorize(lambda held: len(held.split()) < len(DOFS), otypes=[bool])(
+        np.asarray(fixed_dofs, dtype=object))
+
+
 def _fixed_angle_not_singular(geometry, fixed_dofs):
     """False where the fixed-angle geometry leaves a tilt free with the radial displacement
     that a tilt about the contact-cone apex goes with: such a stiffness is singular at every
@@ -467,14 +473,16 @@ MODELS = [Model(
         Input("outer_curvature_ratio", "1", "outer groove radius / ball diameter fo",
               default=0.53, minimum=0.5, exclusive_minimum=True, maximum=1.0),
         Input("clearance", "mm", "diametral clearance Pd beyond contact at alpha0 (negative: "
-              "preload)", default=0.0),
+              "preload)", default=0.0,
+              label="diametral clearance"),
         Input("youngs_modulus", "GPa", "Young's modulus of balls and rings", default=207.0,
               minimum=0.0, exclusive_minimum=True),
         Input("poisson_ratio", "1", "Poisson's ratio of balls and rings", default=0.3,
               minimum=0.0, maximum=0.5),
         Input("contact_constant", "N/mm^1.5", "load-deflection constant K of a ball and both "
               "raceways, Q = K delta^1.5; default: Hertz, from the curvature ratios",
-              default=None, minimum=0.0, exclusive_minimum=True),
+              default=None, minimum=0.0, exclusive_minimum=True,
+              label="load-deflection constant K"),
         Input("axial_load", "N", "axial load Fx on the inner ring", default=0.0),
         Input("radial_load", "N", "radial load Fy on the inner ring", default=0.0),
         Input("radial_load_z", "N", "radial load Fz on the inner ring", default=0.0),
@@ -487,12 +495,14 @@ MODELS = [Model(
     ),
     outputs=(
         Output("displacement", "m, rad", "displacement of the inner ring", dims=("dof",),
-               entry_units=_DOF_UNITS),
+               entry_units=_DOF_UNITS,
+               label="displacement of the inner ring"),
         Output("axial_displacement", "mm", "axial displacement of the inner ring"),
         Output("radial_displacement", "mm", "radial displacement of the inner ring (y-z)"),
         Output("stiffness_matrix", "N/m, N/rad, N, N*m/rad", "stiffness matrix "
                "dF_i/dq_j (eq. 9), in SI so that it is symmetric as stored",
-               dims=("load_dof", "dof"), entry_units=_STIFFNESS_UNITS),
+               dims=("load_dof", "dof"), entry_units=_STIFFNESS_UNITS,
+               label="stiffness matrix"),
         Output("axial_stiffness", "N/mm", "axial stiffness dFx/d(delta_x) (eq. 10)"),
         Output("radial_stiffness", "N/mm", "radial stiffness dFy/d(delta_y) (eq. 10)"),
         Output("tilt_stiffness", "N*m/rad", "tilt stiffness dMy/d(phi_y) (eq. 10)"),
@@ -501,11 +511,13 @@ MODELS = [Model(
                "groove centres when unloaded)", dims=("ball",)),
         Output("loaded_balls", "1", "number of balls carrying load"),
         Output("max_contact_pressure", "MPa", "maximum Hertz contact pressure p0 = 3Q/(2 pi a "
-               "b) of each ball, the larger of its inner and outer contact", dims=("ball",)),
+               "b) of each ball, the larger of its inner and outer contact", dims=("ball",),
+               label="maximum contact pressure"),
         # In SI: UDUNITS reads no fractional power of a prefixed unit such as mm^1.5.
         Output("hertz_contact_constant", "N/m^1.5", "load-deflection constant K that Hertz "
                "theory gives for the curvature ratios (eq. 4-5, series law corrected); "
-               "Q = K delta^1.5, K in N/m^1.5"),
+               "Q = K delta^1.5, K in N/m^1.5",
+               label="Hertz load-deflection constant K"),
     ),
     dim_sizes={"ball": "ball_count", "dof": DOFS, "load_dof": DOFS},
     constraints=(
@@ -520,6 +532,9 @@ MODELS = [Model(
                    "a load is given along a displacement held in fixed_dofs (axial_load, "
                    "radial_load, radial_load_z, moment_y, moment_z go with axial, radial_y, "
                    "radial_z, tilt_y, tilt_z)"),
+        Constraint(("fixed_dofs",), _something_free,
+                   "fixed_dofs holds all five displacements: nothing is left to solve; free "
+                   "at least one"),
         Constraint(("geometry", "fixed_dofs"), _fixed_angle_not_singular,
                    "geometry 'fixed_angle' with tilt_y and radial_z free (or tilt_z and "
                    "radial_y) is singular at every load: a tilt about the contact-cone apex "

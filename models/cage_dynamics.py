@@ -17,7 +17,8 @@ from models.cage_slip import MODELS as STEADY_MODELS
 from models.cage_slip import bearing_terms, cage_slip, cage_windage
 from models.contact import palmgren_constant
 from models.cylindrical import crb_radial
-from models.registry import CONVERGED, NOT_CONVERGED, Constraint, Input, Model, Output
+from models.registry import (CONVERGED, NOT_CONVERGED, Constraint, DimCoordinate, Input, Model,
+                             Output)
 
 GRAVITY = 9.81
 _SETTLED = 0.5  # the settled part: the last half of the run
@@ -209,6 +210,11 @@ def _tolerances(count):
 _STEADY_NAMES = tuple(i.name for i in STEADY_MODELS[0].inputs if i.name != "orbit_points")
 
 
+def _sample_times(size, output_interval):
+    """The samples' bearing times [s] when one output interval serves the whole grid."""
+    return np.arange(size) * output_interval
+
+
 def _samples(values) -> int:
     """Samples of the longest run on the grid at its finest output interval."""
     return int(np.floor(np.max(values["duration"]) / np.min(values["output_interval"])
@@ -234,13 +240,15 @@ MODELS = [Model(
         Input("cage_density", "kg/m^3", "cage density (brass: 8600)", default=8600.0,
               minimum=0.0, exclusive_minimum=True),
         Input("cage_eccentricity", "mm", "distance of the cage's mass centre from its "
-              "geometric centre", default=0.0, minimum=0.0),
+              "geometric centre", default=0.0, minimum=0.0,
+              label="cage mass eccentricity"),
         Input("inner_ring_mass", "kg", "inner ring mass", default=0.1, minimum=0.0,
               exclusive_minimum=True),
         Input("pocket_stiffness", "N/m", "pocket contact stiffness", default=5e7, minimum=0.0,
               exclusive_minimum=True),
         Input("damping_ratio", "1", "damping ratio of pocket and ring contacts", default=0.1,
-              minimum=0.0, maximum=2.0),
+              minimum=0.0, maximum=2.0,
+              label="contact damping ratio"),
         Input("duration", "s", "bearing time simulated", default=0.05, minimum=0.0,
               exclusive_minimum=True, maximum=10.0),
         Input("output_interval", "s", "interval of the returned samples", default=1e-4,
@@ -248,22 +256,31 @@ MODELS = [Model(
     ),
     outputs=(
         Output("cage_slip", "percent", "cage slip 1 - omega_c / omega_c,kin (eq. 27)",
-               dims=("time",)),
-        Output("mean_cage_slip", "percent", "cage slip averaged over the settled second half"),
-        Output("cage_x", "um", "cage mass centre, horizontal", dims=("time",)),
+               dims=("elapsed_time",),
+               label="cage slip"),
+        Output("mean_cage_slip", "percent", "cage slip averaged over the settled second half",
+               label="mean cage slip"),
+        Output("cage_x", "um", "cage mass centre, horizontal", dims=("elapsed_time",),
+               label="cage mass centre x"),
         Output("cage_y", "um", "cage mass centre, vertical (load and gravity along -y)",
-               dims=("time",)),
-        Output("cage_centre_x", "um", "cage geometric centre, horizontal", dims=("time",)),
-        Output("cage_centre_y", "um", "cage geometric centre, vertical", dims=("time",)),
+               dims=("elapsed_time",), label="cage mass centre y"),
+        Output("cage_centre_x", "um", "cage geometric centre, horizontal",
+               dims=("elapsed_time",), label="cage geometric centre x"),
+        Output("cage_centre_y", "um", "cage geometric centre, vertical",
+               dims=("elapsed_time",), label="cage geometric centre y"),
         Output("whirl_speed", "mm/s", "speed of the cage's mass centre (its spread over its "
-               "mean: eq. 28)", dims=("time",)),
+               "mean: eq. 28)", dims=("elapsed_time",)),
         Output("whirl_deviation_ratio", "1", "standard deviation over mean of the cage centre's "
-               "speed, settled half (eq. 28)"),
+               "speed, settled half (eq. 28)",
+               label="whirl speed deviation ratio"),
         Output("roller_slip", "percent", "roller spin slip against kinematic spin",
-               dims=("time", "roller")),
-        Output("sample_time", "ms", "bearing time of each sample", dims=("time",)),
+               dims=("elapsed_time", "roller")),
+        Output("sample_time", "ms", "bearing time of each sample", dims=("elapsed_time",)),
     ),
-    dim_sizes={"time": _samples, "roller": "roller_count"},
+    dim_sizes={"elapsed_time": _samples, "roller": "roller_count"},
+    # Named elapsed_time, not time: CF reserves a coordinate called time for dates.
+    dim_coordinates={"elapsed_time": DimCoordinate(
+        ("output_interval",), _sample_times, "ms", "time since the steady start")},
     constraints=STEADY_MODELS[0].constraints + (
         Constraint(("cage_width",), _has_mass, "the transient needs a cage of some width"),
         Constraint(("duration", "output_interval"), _samples_fit,

@@ -508,9 +508,9 @@ class _Parser:
                     axis = next(a for a in sweep.axes if name in a.values)
                     columns[name], axis_of[name] = axis.values[name], axis.name
             else:
-                self.check_constraint(constraint, columns, axis_of)
+                self.check_constraint(constraint, columns, axis_of, sweep.model)
 
-    def check_constraint(self, constraint, columns: dict, axis_of: dict):
+    def check_constraint(self, constraint, columns: dict, axis_of: dict, model: Model):
         axis_names = list(dict.fromkeys(axis_of.values()))
         arrays = {}
         for name, column in columns.items():
@@ -528,6 +528,9 @@ class _Parser:
                 index = where[axis_names.index(axis_of[name])] if name in axis_of else 0
                 value = column[index]
                 unit = "" if value.unit in ("", "1") else f" {value.unit}"
+                if model.input(name).kind == "subset":  # as written: a list of names
+                    shown.append(f"{name} = {value.shown.split()}")
+                    continue
                 shown.append(f"{name} = {_plain(value.shown)}{unit}")
             section = "axes" if axis_of else "fixed"
             raise SpecError(f"{self.where}: {section}: {constraint.message} "
