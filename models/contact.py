@@ -90,6 +90,85 @@ def sliced_line_contact(approach, gaps, counts, contact_constant, slice_law="uni
     return scale * load_sum, scale * n * slope_sum
 
 
+def largest_slice_line_load(approach, gaps, counts, contact_constant, effective_length,
+                            slice_law="uniform"):
+    """Load per unit length of the most loaded slice of a sliced line contact [N/m].
+
+    Parameters
+    ----------
+    approach, gaps, counts, contact_constant, slice_law
+        As :func:`sliced_line_contact`.
+    effective_length : numpy.ndarray
+        Effective contact length of the roller ``l`` [m], shape ``S``.
+
+    Returns
+    -------
+    numpy.ndarray
+        ``w = q_max / (l / k)``: the slice with the smallest gap carries
+        ``q_max = K/k (delta - c_min)^n`` ('uniform'; ``K/k_j`` with ``k_j`` loaded slices for
+        'paper') on its length ``l/k``, so ``w = K/l (delta - c_min)^n`` ('uniform'). Shape
+        ``S``; zero where no slice touches.
+    """
+    n = LINE_CONTACT_EXPONENT
+    deepest = np.maximum(approach - gaps.min(axis=-1), 0.0)
+    if slice_law == "uniform":
+        share = 1.0
+    elif slice_law == "paper":
+        loaded = np.einsum("...m,m->...", (approach[..., None] > gaps).astype(float), counts)
+        share = counts.sum() / np.where(loaded > 0.0, loaded, 1.0)
+    else:
+        raise ValueError(f"unknown slice law {slice_law!r}; expected one of {SLICE_LAWS}")
+    return share * contact_constant / effective_length * deepest**n
+
+
+def line_contact_pressure(line_load, curvature_sum, modulus):
+    """Maximum pressure of a Hertz line contact (two parallel cylinders).
+
+    Parameters
+    ----------
+    line_load : array_like
+        Load per unit length ``w`` [N/m].
+    curvature_sum : array_like
+        ``sum(rho) = 1/R_1 + 1/R_2`` [1/m] across the contact line (negative for a concave
+        body), the inverse of Johnson's relative radius ``R``.
+    modulus : array_like
+        ``E* = 1 / [(1 - nu_1^2)/E_1 + (1 - nu_2^2)/E_2]`` [Pa] (:func:`effective_modulus`).
+
+    Returns
+    -------
+    numpy.ndarray
+        ``p0 = (w E* / (pi R))^(1/2) = (w E* sum(rho) / pi)^(1/2)`` [Pa] (Johnson eq. 4.45;
+        the same as Harris' ``sigma_max = 2Q / (pi l b)`` with
+        ``b = [8 Q (1 - nu^2) / (pi l E sum(rho))]^(1/2)`` for two steel bodies).
+
+    References
+    ----------
+    .. [1] K. L. Johnson, Contact Mechanics, Cambridge University Press (1985), eq. 4.45
+       (two-dimensional contact of cylinders: semi-width ``a = (4 w R / (pi E*))^(1/2)``,
+       ``p0 = 2 w / (pi a)``).
+    .. [2] T. A. Harris, M. N. Kotzalas, Rolling Bearing Analysis, 5th ed., ch. 6 (line
+       contact).
+    """
+    return np.sqrt(np.asarray(line_load) * modulus * curvature_sum / np.pi)
+
+
+# -- validity limits shared by the bearing models ---------------------------------------------
+
+#: Contact pressure at the centre of the most heavily loaded contact that defines the basic
+#: static load rating of ISO 76:2006 (clauses 3.1-3.3), 4000 MPa for roller bearings and
+#: 4200 MPa for ball bearings (4600 MPa self-aligning): there the total permanent deformation
+#: of rolling element and raceway is about 1e-4 of the rolling element's diameter. Beyond it
+#: the contact is no longer elastic and Hertz's theory, on which every contact law here
+#: rests, no longer holds [Pa].
+ROLLER_PRESSURE_LIMIT = 4000e6
+BALL_PRESSURE_LIMIT = 4200e6
+#: Approach of a roller's contacts beyond which a bearing model's fixed, small-displacement
+#: geometry (contact angles, azimuths, contact on the undeformed profiles) no longer holds, as
+#: a fraction of the roller diameter [-]: several times the elastic approach of a steel roller
+#: at the ISO 76 pressure (0.2-0.6 % of its diameter), so it flags a soft contact constant.
+APPROACH_LIMIT = 0.01
+
+
 # -- point contact (Hertz) ------------------------------------------------------------------
 
 POINT_CONTACT_EXPONENT = 1.5
