@@ -4,8 +4,8 @@ from __future__ import annotations
 import numpy as np
 from scipy.special import ellipe, ellipk
 
-from models.registry import (CONVERGED, INFEASIBLE, NOT_CONVERGED, Constraint, Input, Model,
-                             Output)
+from models.registry import (CONVERGED, INFEASIBLE, NOT_CONVERGED, OUT_OF_VALIDITY, Constraint,
+                             Input, Model, Output)
 from models.solvers import solve_increasing
 
 #: Load-deflection exponent of a line contact, Q = K delta^n [-] (Palmgren).
@@ -167,12 +167,19 @@ BALL_PRESSURE_LIMIT = 4200e6
 #: a fraction of the roller diameter [-]: several times the elastic approach of a steel roller
 #: at the ISO 76 pressure (0.2-0.6 % of its diameter), so it flags a soft contact constant.
 APPROACH_LIMIT = 0.01
+#: Largest semi-axis of a Hertz contact as a fraction of the smallest radius of curvature of
+#: the two bodies [-]. Hertz takes the surfaces near the contact as paraboloids on elastic
+#: half-spaces, which needs the contact small against the radii (Johnson, ch. 4.1, "a << R");
+#: at a = 0.5 R the contact spans 60 deg of the body's arc and a circle's gap departs from
+#: the paraboloid's by a^2 / (4 R^2) = 6 %. A ball in a conforming groove (radius 0.52 D)
+#: reaches a = 0.3-0.5 R at the ISO 76 pressure, where practice still applies Hertz.
+SEMI_AXIS_LIMIT = 0.5
 
 
 # -- point contact (Hertz) ------------------------------------------------------------------
 
 POINT_CONTACT_EXPONENT = 1.5
-POINT_METHODS = ("exact", "hamrock_brewe")
+POINT_FORMULAS = ("exact", "hamrock_brewe")
 # Below this elliptic parameter the closed form of F(rho) loses digits to cancellation; its
 # series (both are within 1e-8 of each other there) takes over.
 _SMALL_PARAMETER = 1e-4
@@ -201,14 +208,14 @@ def _curvature_difference(parameter):
     return value, slope
 
 
-def ellipse_parameters(curvature_difference, method="exact"):
+def ellipse_parameters(curvature_difference, formula="exact"):
     """Ellipticity and complete elliptic integrals of a Hertz point contact.
 
     Parameters
     ----------
     curvature_difference : array_like
         ``F(rho) = |(rho_1x - rho_1y) + (rho_2x - rho_2y)| / sum(rho)`` [-], in [0, 1).
-    method : {'exact', 'hamrock_brewe'}
+    formula : {'exact', 'hamrock_brewe'}
         ``'exact'``: ``k`` solves Harris' eq. 6.28 with scipy's complete elliptic integrals
         (safeguarded Newton, all points at once). ``'hamrock_brewe'``: the closed forms
         ``k = alpha^(2/pi)``, ``E = 1 + (pi/2 - 1)/alpha``, ``K = pi/2 + (pi/2 - 1) ln alpha``
@@ -228,11 +235,11 @@ def ellipse_parameters(curvature_difference, method="exact"):
     """
     difference = np.asarray(curvature_difference, dtype=float)
     alpha = (1.0 + difference) / (1.0 - difference)
-    if method == "hamrock_brewe":
+    if formula == "hamrock_brewe":
         return (alpha ** (2.0 / np.pi), 1.0 + (np.pi / 2 - 1.0) / alpha,
                 np.pi / 2 + (np.pi / 2 - 1.0) * np.log(alpha), np.ones(difference.shape, bool))
-    if method != "exact":
-        raise ValueError(f"unknown point-contact method {method!r}; expected {POINT_METHODS}")
+    if formula != "exact":
+        raise ValueError(f"unknown point-contact formula {formula!r}; expected {POINT_FORMULAS}")
     flat = difference.ravel()
     start = np.clip(1.0 - alpha.ravel() ** (-4.0 / np.pi), 0.0, 1.0 - 1e-15)  # Hamrock-Brewe k
 
@@ -279,14 +286,14 @@ def curvature_sum_difference(curvature_1x, curvature_1y, curvature_2x, curvature
     return total, np.abs(relative_x - relative_y) / total, touching
 
 
-def point_contact_constant(curvature_sum, curvature_difference, modulus, method="exact"):
+def point_contact_constant(curvature_sum, curvature_difference, modulus, formula="exact"):
     """Load-deflection constant ``K`` of a Hertz point contact, ``Q = K delta^1.5`` [N/m^1.5].
 
     Parameters
     ----------
     curvature_sum : array_like
         ``sum(rho)`` [1/m]. curvature_difference : ``F(rho)`` [-]. modulus : ``E*`` [Pa].
-    method : {'exact', 'hamrock_brewe'}
+    formula : {'exact', 'hamrock_brewe'}
         See :func:`ellipse_parameters`.
 
     Returns
@@ -295,7 +302,7 @@ def point_contact_constant(curvature_sum, curvature_difference, modulus, method=
         From ``delta = delta* [3Q/(2 sum(rho) E*)]^(2/3) sum(rho)/2`` (Harris, eq. 6.43 with
         ``delta* = (2K/pi) (pi/(2 k^2 E))^(1/3)``), which is ``Q^(2/3)`` times a constant.
     """
-    kappa, second, first, converged = ellipse_parameters(curvature_difference, method)
+    kappa, second, first, converged = ellipse_parameters(curvature_difference, formula)
     unit = _unit_approach(kappa, second, first, curvature_sum, modulus)
     return unit ** (-POINT_CONTACT_EXPONENT), converged
 
@@ -309,7 +316,7 @@ def _unit_approach(kappa, second, first, curvature_sum, modulus):
 
 def hertz_point(load, curvature_1x, curvature_1y, curvature_2x=0.0, curvature_2y=0.0,
                 youngs_modulus=207e9, poisson_ratio=0.3, youngs_modulus_2=None,
-                poisson_ratio_2=None, method="exact"):
+                poisson_ratio_2=None, formula="exact"):
     """Hertz contact of two bodies touching at a point.
 
     Parameters
@@ -323,7 +330,7 @@ def hertz_point(load, curvature_1x, curvature_1y, curvature_2x=0.0, curvature_2y
     youngs_modulus, poisson_ratio : array_like
         ``E_1`` [Pa] and ``nu_1`` [-]; ``youngs_modulus_2``, ``poisson_ratio_2`` for body 2
         (default: the same material).
-    method : {'exact', 'hamrock_brewe'}
+    formula : {'exact', 'hamrock_brewe'}
         Ellipticity and elliptic integrals exact or by Hamrock and Brewe's closed forms.
 
     Returns
@@ -332,6 +339,14 @@ def hertz_point(load, curvature_1x, curvature_1y, curvature_2x=0.0, curvature_2y
         ``semi_major`` ``a`` and ``semi_minor`` ``b`` [m], ``approach`` ``delta`` [m],
         ``max_pressure`` ``p0 = 3Q/(2 pi a b)`` [Pa], ``ellipticity`` ``k = a/b`` [-],
         ``contact_constant`` ``K = Q/delta^1.5`` [N/m^1.5], ``status``.
+
+    Notes
+    -----
+    Validity: a solved point is ``out_of_validity`` (values kept) where the semi-major axis
+    exceeds ``SEMI_AXIS_LIMIT`` (0.5) times the smallest radius of curvature of either body
+    (Hertz's small contact on half-spaces), or the maximum pressure exceeds
+    ``BALL_PRESSURE_LIMIT`` (4200 MPa, ISO 76's reference stress of a ball bearing's point
+    contacts, for hardened bearing steel: beyond it the contact deforms plastically).
 
     References
     ----------
@@ -344,7 +359,7 @@ def hertz_point(load, curvature_1x, curvature_1y, curvature_2x=0.0, curvature_2y
     load = arrays[0]
     total, difference, touching = curvature_sum_difference(*arrays[1:])
     modulus = effective_modulus(youngs_modulus, poisson_ratio, youngs_modulus_2, poisson_ratio_2)
-    kappa, second, first, converged = ellipse_parameters(difference, method)
+    kappa, second, first, converged = ellipse_parameters(difference, formula)
     scale = (1.5 * load / (total * modulus)) ** (1.0 / 3.0)
     semi_major = (2.0 * kappa**2 * second / np.pi) ** (1.0 / 3.0) * scale
     semi_minor = (2.0 * second / (np.pi * kappa)) ** (1.0 / 3.0) * scale
@@ -356,8 +371,14 @@ def hertz_point(load, curvature_1x, curvature_1y, curvature_2x=0.0, curvature_2y
     outputs = {"semi_major": semi_major, "semi_minor": semi_minor, "approach": approach,
                "max_pressure": pressure, "ellipticity": kappa, "contact_constant": constant}
     ok = converged & touching
+    for value in outputs.values():  # a NaN input fails the point
+        ok &= np.isfinite(value)
     outputs = {name: np.where(ok, value, np.nan) for name, value in outputs.items()}
-    outputs["status"] = np.select([ok, ~touching], [CONVERGED, INFEASIBLE],
+    smallest_radius = 1.0 / np.max(np.abs(arrays[1:]), axis=0)
+    beyond = ((outputs["semi_major"] > SEMI_AXIS_LIMIT * smallest_radius)
+              | (outputs["max_pressure"] > BALL_PRESSURE_LIMIT))
+    outputs["status"] = np.select([ok & beyond, ok, ~touching],
+                                  [OUT_OF_VALIDITY, CONVERGED, INFEASIBLE],
                                   NOT_CONVERGED).astype(np.int8)
     return outputs
 
@@ -372,7 +393,7 @@ MODELS = [Model(
     summary="Hertz point contact of two elastic bodies: contact ellipse, approach, maximum "
             "pressure and load-deflection constant, exact or by Hamrock and Brewe.",
     reference="Harris & Kotzalas, Rolling Bearing Analysis, ch. 6; Hamrock & Brewe (1983)",
-    version="1",
+    version="2",
     inputs=(
         Input("load", "N", "normal load Q", minimum=0.0),
         Input("curvature_1x", "1/mm", "principal curvature of body 1 in plane x (negative: "
@@ -389,8 +410,8 @@ MODELS = [Model(
               default=None, minimum=0.0, exclusive_minimum=True),
         Input("poisson_ratio_2", "1", "Poisson's ratio of body 2; default: body 1's",
               default=None, minimum=0.0, maximum=0.5),
-        Input("method", "", "exact: elliptic integrals; hamrock_brewe: closed-form "
-              "approximation", default="exact", kind="choice", choices=POINT_METHODS),
+        Input("formula", "", "exact: elliptic integrals; hamrock_brewe: closed-form "
+              "approximation", default="exact", kind="choice", choices=POINT_FORMULAS),
     ),
     outputs=(
         Output("semi_major", "mm", "semi-major axis a of the contact ellipse"),
@@ -407,4 +428,8 @@ MODELS = [Model(
                    "a line contact)"),
     ),
     seconds_per_point=2e-6,
+    validity="a semi-axis above 0.5 of the smallest radius of curvature of either body "
+             "(Hertz: a small contact on half-spaces) or a maximum pressure above 4200 MPa "
+             "(ISO 76's reference stress for the point contacts of ball bearings; bearing "
+             "steel)",
 )]
