@@ -164,9 +164,10 @@ ROLLER_PRESSURE_LIMIT = 4000e6
 BALL_PRESSURE_LIMIT = 4200e6
 #: Approach of a roller's contacts beyond which a bearing model's fixed, small-displacement
 #: geometry (contact angles, azimuths, contact on the undeformed profiles) no longer holds, as
-#: a fraction of the roller diameter [-]: several times the elastic approach of a steel roller
-#: at the ISO 76 pressure (0.2-0.6 % of its diameter), so it flags a soft contact constant.
-APPROACH_LIMIT = 0.01
+#: a fraction of the roller diameter [-]: two to four times a steel roller's approach (both
+#: contacts) at the ISO 76 pressure (0.45 % with Palmgren's constant in paper 000's bearing D,
+#: 1.05 % with paper 003's eq. 14), so it flags a soft contact constant.
+APPROACH_LIMIT = 0.02
 #: Largest semi-axis of a Hertz contact as a fraction of the smallest radius of curvature of
 #: the two bodies [-]. Hertz takes the surfaces near the contact as paraboloids on elastic
 #: half-spaces, which needs the contact small against the radii (Johnson, ch. 4.1, "a << R");

@@ -294,7 +294,7 @@ def crb_radial(radial_load, roller_count, pitch_diameter, roller_diameter, effec
     contact pressure exceeds ``ROLLER_PRESSURE_LIMIT`` (4000 MPa, the reference stress of
     ISO 76's static load rating for roller bearings: beyond it the permanent deformation
     exceeds 1e-4 of the roller diameter and the elastic contact laws fail), or a roller's
-    approach (both contacts) exceeds ``APPROACH_LIMIT`` (1 %) of the roller diameter, where
+    approach (both contacts) exceeds ``APPROACH_LIMIT`` (2 %) of the roller diameter, where
     the fixed geometry (azimuths, contacts along the radius line, undeformed rings) fails.
     Speed has no limit of its own: the centrifugal force of a roller orbiting at the
     kinematic cage speed holds while the roller stays elastic, and its outer contact's
@@ -482,6 +482,6 @@ MODELS = [Model(
     seconds_per_point=1e-4,
     points_per_call=500,
     validity="a roller's maximum contact pressure above 4000 MPa (ISO 76's reference stress "
-             "for roller bearings) or its approach (both contacts) above 1 % of the roller "
+             "for roller bearings) or its approach (both contacts) above 2 % of the roller "
              "diameter; speed only through the pressure its centrifugal force causes",
 )]

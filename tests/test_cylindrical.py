@@ -226,7 +226,7 @@ def test_absurd_loads_and_speeds_are_out_of_validity_with_their_values_kept():
 
 
 def test_a_soft_contact_constant_is_out_of_validity_by_its_approach():
-    # A hundred times softer than Palmgren's: 4 kN needs an approach beyond 1 % of D.
+    # A hundred times softer than Palmgren's: 4 kN needs an approach of 4.6 % of D (limit 2 %).
     from models.registry import OUT_OF_VALIDITY
 
     soft = palmgren_constant(BEARING_D["effective_length"]) / 100
