@@ -26,6 +26,7 @@ from models.registry import CONVERGED, MODEL_ERROR, Constraint, Input, Model, Ou
 
 SPINS = ("absolute", "paper")
 _TIE = 1e-13  # [m]: lines this close count as meeting
+_ROUNDING = 1e-12  # [-]: a clearance this far below zero, relative to d_e, is zero
 
 
 def roller_angles(rotation, roller_count, roller_diameter, pitch_diameter, spin="absolute"):
@@ -245,7 +246,9 @@ def _fits(inner_raceway_diameter, outer_raceway_diameter, roller_diameter, rolle
 
 
 def _clearance(inner_raceway_diameter, outer_raceway_diameter, roller_diameter):
-    return outer_raceway_diameter - inner_raceway_diameter - 2.0 * roller_diameter >= 0.0
+    # Zero clearance written in mm may come out a few 1e-18 m negative in metres.
+    clearance = outer_raceway_diameter - inner_raceway_diameter - 2.0 * roller_diameter
+    return clearance >= -_ROUNDING * outer_raceway_diameter
 
 
 def _whole_orders(roller_roundness_order, inner_roundness_order, outer_roundness_order):
