@@ -85,7 +85,7 @@ class _RollerSet:
         self.constant, self.centrifugal = constant, centrifugal  # (P,)
         self.gap_shape, self.gap_count = gap_shape, gap_count  # (m,)
         self.slice_law, self.outer_contact = slice_law, outer_contact
-        self.free_outer_approach = self._free_outer_approach()
+        self.free_outer_approach, self.free_outer_converged = self._free_outer_approach()
 
     def contacts(self, inner_approach, outer_approach, points):
         """Inner load, outer load and the load the outer contact is balanced against.
@@ -134,12 +134,14 @@ class _RollerSet:
         return inner, outer
 
     def _free_outer_approach(self):
-        """Outer-contact approach of a roller held by its centrifugal force alone [m]."""
+        """Outer-contact approach of a roller held by its centrifugal force alone [m], and
+        whether it was found."""
         n = LINE_CONTACT_EXPONENT
         plain = (self.centrifugal / self.constant) ** (1.0 / n)
         if self.outer_contact == "paper":
-            return plain
+            return plain, np.isfinite(plain)
         approach = np.zeros_like(plain)
+        converged = np.isfinite(plain)
         spinning = np.flatnonzero(self.centrifugal > 0.0)
         if spinning.size:
             # Every slice is in contact beyond the largest gap, so Qo >= K (delta - gap)^n.
@@ -150,9 +152,9 @@ class _RollerSet:
                 _, _, load, stiffness, _, _ = self.contacts(outer, outer, points)
                 return load - self.centrifugal[points], stiffness
 
-            approach[spinning], _ = solve_increasing(
+            approach[spinning], converged[spinning] = solve_increasing(
                 residual, np.zeros(spinning.size), upper, 0.5 * upper, _XTOL * upper)
-        return approach
+        return approach, converged
 
     def loads(self, displacement, points, share):
         """Roller loads and bearing load and stiffness at given radial displacements.
@@ -392,7 +394,7 @@ def _solve(rollers, load, perturbation):
     # Forward-difference stiffness with the paper's perturbation (section 2.3).
     perturbed = rollers.loads(displacement + perturbation, everyone, share.copy())[0]
     balanced = np.abs(cache["load"] - load) <= 1e-9 * load + 1e-6
-    ok = converged & cache["converged"] & balanced
+    ok = converged & cache["converged"] & balanced & rollers.free_outer_converged
     outputs = {
         "radial_displacement": displacement,
         "radial_stiffness": cache["stiffness"],

@@ -243,3 +243,20 @@ def test_a_nan_input_fails_the_point(nan_input):
     assert result["status"].tolist() == [CONVERGED, NOT_CONVERGED]
     assert np.isnan(result["radial_displacement"][1])
     assert np.isnan(result["max_contact_pressure"][1]).all()
+
+
+def test_an_unconverged_free_outer_approach_fails_the_point(monkeypatch):
+    # The first solve of a spinning crowned bearing finds the outer approach that the
+    # centrifugal force alone causes; its convergence used to be dropped.
+    original = cylindrical.solve_increasing
+    calls = []
+
+    def first_starved(residual, lower, upper, start, xtol, max_iter=200):
+        calls.append(max_iter)
+        return original(residual, lower, upper, start, xtol, max_iter=1 if len(calls) == 1
+                        else max_iter)
+
+    monkeypatch.setattr(cylindrical, "solve_increasing", first_starved)
+    result = crb_radial(4000.0, crown=0.004 * MM, speed=8000 * RPM, **BEARING_D)
+    assert result["status"] == NOT_CONVERGED
+    assert np.isnan(result["radial_displacement"])
