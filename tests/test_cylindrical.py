@@ -183,20 +183,6 @@ def test_a_straight_rollers_pressure_is_harris_line_contact_pressure():
     assert np.all(result["status"] == CONVERGED)
 
 
-def test_the_pressure_at_iso_76s_static_rating_is_4000_mpa():
-    # ISO 76:2006: C0r = 44 (1 - D cos a / dm) i Z l D cos a is the radial load that gives
-    # 4000 MPa at the centre of the most heavily loaded roller contact, with the load share
-    # Q_max = 5 Fr / (i Z cos a) behind ISO 76's factors (ISO/TR 10657). Tolerance 0.5 %:
-    # the factor 44 is rounded (E = 207 GPa, nu = 0.3 give 44.2).
-    from models.contact import line_contact_pressure
-
-    d, dm, length, z = 10e-3, 65e-3, 9.6e-3, 14
-    rating = 44 * (1 - d / dm) * z * (length / MM) * (d / MM)  # [N], the formula in N and mm
-    line_load = 5 * rating / z / length
-    pressure = line_contact_pressure(line_load, 2 / d + 2 / (dm - d), STEEL_MODULUS)
-    assert pressure == pytest.approx(4000e6, rel=5e-3)
-
-
 def test_a_crowned_rollers_middle_slice_carries_more_than_its_mean():
     # The logarithmic crown loads the middle slice most: its pressure exceeds that of the
     # roller's mean load per unit length, more so with a larger crown; a straight roller's
