@@ -388,11 +388,13 @@ def _limit_angle(end: RollerEnd, contact):
     step = np.argmax(rising, axis=-1)
     lower, upper = nodes[step], nodes[step + 1]
 
-    def residual(psi, index):
+    searched = np.flatnonzero(found)
+
+    def residual(psi, entries):
+        index = searched[entries]
         slope = (end.end_radius[index] + end.centre[index, 1] * np.cos(psi)) / np.sin(psi)**2
         return margin(psi, index)[0], slope
 
-    searched = np.flatnonzero(found)
     angle = np.full(count, np.nan)
     converged = np.zeros(count, dtype=bool)
     angle[searched], converged[searched] = solve_increasing(

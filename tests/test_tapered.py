@@ -232,3 +232,18 @@ def test_an_absurd_load_is_out_of_validity_by_its_compression():
     result = trb_load(np.array([40e3, 4e7]), np.array([27e3, 2.7e7]), **BEARING)
     assert result["status"].tolist() == [CONVERGED, OUT_OF_VALIDITY]
     assert np.isfinite(result["axial_displacement"][1])
+
+
+def test_the_limits_do_not_depend_on_the_other_points_in_the_batch():
+    # Points without a limit (small SR) among points with one: each keeps its own.
+    radii = np.array([80.0, 90.0, 103.0, 107.0, 120.0]) * MM
+    together = trb_rib(40e3, 27e3, **BEARING, **{**END, "roller_end_radius": radii},
+                       rib_angle=DEG(89.0))
+    for i, radius in enumerate(radii):
+        alone = trb_rib(40e3, 27e3, **BEARING, **{**END, "roller_end_radius": radius},
+                        rib_angle=DEG(89.0))
+        assert alone["status"][0] == together["status"][i]
+        np.testing.assert_array_equal(alone["limit_rib_angle"][0],
+                                      together["limit_rib_angle"][i])
+    assert together["status"].tolist() == [NO_ROOT_IN_RANGE, CONVERGED, CONVERGED, CONVERGED,
+                                           INFEASIBLE]
