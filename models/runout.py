@@ -22,7 +22,7 @@ from __future__ import annotations
 import numpy as np
 
 from models.geometry import elements_fit
-from models.registry import CONVERGED, MODEL_ERROR, Constraint, Input, Model, Output
+from models.registry import CONVERGED, NOT_CONVERGED, Constraint, Input, Model, Output
 
 SPINS = ("absolute", "paper")
 _TIE = 1e-13  # [m]: lines this close count as meeting
@@ -171,7 +171,8 @@ def crb_runout(inner_raceway_diameter, outer_raceway_diameter, roller_diameter, 
         the paper defines it); ``vertical_runout`` [m], the same for the vertical position (a
         dial gauge above); ``center_x``, ``center_y`` ``(N, steps)`` [m]; ``rotation_angle``
         ``(N, steps)`` [rad]; ``assembly_order`` ``(N, Z)``: which given error each roller
-        position has (1-based); ``status``.
+        position has (1-based); ``status``: not converged where no resting position was
+        found at some step (a NaN input).
 
     References
     ----------
@@ -236,7 +237,7 @@ def crb_runout(inner_raceway_diameter, outer_raceway_diameter, roller_diameter, 
         "center_x": x, "center_y": y,
         "rotation_angle": np.broadcast_to(rotation, x.shape),
         "assembly_order": order_index + 1.0,
-        "status": np.where(found, CONVERGED, MODEL_ERROR).astype(np.int8),
+        "status": np.where(found, CONVERGED, NOT_CONVERGED).astype(np.int8),
     }
 
 

@@ -3,7 +3,7 @@ import numpy as np
 import pytest
 from scipy.optimize import minimize
 
-from models.registry import CONVERGED, MODEL_ERROR
+from models.registry import CONVERGED, NOT_CONVERGED
 from models.runout import crb_runout, roller_angles
 
 MM, UM = 1e-3, 1e-6
@@ -139,7 +139,14 @@ def test_even_orders_peak_at_multiples_of_the_roller_count():
 def test_a_pattern_of_the_wrong_length_is_an_error():
     with pytest.raises(ValueError, match="4 values for 14 rollers"):
         crb_runout(**NU208, roller_diameter_error=np.zeros(4))
-    assert MODEL_ERROR != CONVERGED
+
+
+def test_a_nan_input_fails_the_point_as_not_converged():
+    # No resting position can be found from a NaN; model_error is kept for exceptions.
+    result = crb_runout(**{**NU208, "roller_diameter": np.array([10.998 * MM, np.nan])},
+                        revolutions=1, steps_per_revolution=36)
+    assert result["status"].tolist() == [CONVERGED, NOT_CONVERGED]
+    assert np.isnan(result["runout"][1])
 
 
 def test_a_zero_clearance_written_in_mm_is_accepted():
