@@ -275,7 +275,7 @@ MODELS = [Model(
             "roundness and size errors of rollers and raceways.",
     reference="Paper 004, Influence of geometric error of rollers on rotational accuracy of "
               "cylindrical roller bearings, eq. 1-6, section 1.4",
-    version="1",
+    version="2",
     inputs=(
         Input("inner_raceway_diameter", "mm", "inner raceway diameter di", minimum=0.0,
               exclusive_minimum=True),
