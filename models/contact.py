@@ -375,7 +375,8 @@ def hertz_point(load, curvature_1x, curvature_1y, curvature_2x=0.0, curvature_2y
     for value in outputs.values():  # a NaN input fails the point
         ok &= np.isfinite(value)
     outputs = {name: np.where(ok, value, np.nan) for name, value in outputs.items()}
-    smallest_radius = 1.0 / np.max(np.abs(arrays[1:]), axis=0)
+    with np.errstate(divide="ignore"):  # four flat surfaces are no point contact anyway
+        smallest_radius = 1.0 / np.max(np.abs(arrays[1:]), axis=0)
     beyond = ((outputs["semi_major"] > SEMI_AXIS_LIMIT * smallest_radius)
               | (outputs["max_pressure"] > BALL_PRESSURE_LIMIT))
     outputs["status"] = np.select([ok & beyond, ok, ~touching],
