@@ -4,8 +4,8 @@ from __future__ import annotations
 import numpy as np
 from scipy.special import ellipe, ellipk
 
-from models.registry import (CONVERGED, INFEASIBLE, NOT_CONVERGED, Constraint, Input, Model,
-                             Output)
+from models.registry import (CONVERGED, INFEASIBLE, NOT_CONVERGED, OUT_OF_VALIDITY, Constraint,
+                             Input, Model, Output)
 from models.solvers import solve_increasing
 
 #: Load-deflection exponent of a line contact, Q = K delta^n [-] (Palmgren).
@@ -90,10 +90,97 @@ def sliced_line_contact(approach, gaps, counts, contact_constant, slice_law="uni
     return scale * load_sum, scale * n * slope_sum
 
 
+def largest_slice_line_load(approach, gaps, counts, contact_constant, effective_length,
+                            slice_law="uniform"):
+    """Load per unit length of the most loaded slice of a sliced line contact [N/m].
+
+    Parameters
+    ----------
+    approach, gaps, counts, contact_constant, slice_law
+        As :func:`sliced_line_contact`.
+    effective_length : numpy.ndarray
+        Effective contact length of the roller ``l`` [m], shape ``S``.
+
+    Returns
+    -------
+    numpy.ndarray
+        ``w = q_max / (l / k)``: the slice with the smallest gap carries
+        ``q_max = K/k (delta - c_min)^n`` ('uniform'; ``K/k_j`` with ``k_j`` loaded slices for
+        'paper') on its length ``l/k``, so ``w = K/l (delta - c_min)^n`` ('uniform'). Shape
+        ``S``; zero where no slice touches.
+    """
+    n = LINE_CONTACT_EXPONENT
+    deepest = np.maximum(approach - gaps.min(axis=-1), 0.0)
+    if slice_law == "uniform":
+        share = 1.0
+    elif slice_law == "paper":
+        loaded = np.einsum("...m,m->...", (approach[..., None] > gaps).astype(float), counts)
+        share = counts.sum() / np.where(loaded > 0.0, loaded, 1.0)
+    else:
+        raise ValueError(f"unknown slice law {slice_law!r}; expected one of {SLICE_LAWS}")
+    return share * contact_constant / effective_length * deepest**n
+
+
+def line_contact_pressure(line_load, curvature_sum, modulus):
+    """Maximum pressure of a Hertz line contact (two parallel cylinders).
+
+    Parameters
+    ----------
+    line_load : array_like
+        Load per unit length ``w`` [N/m].
+    curvature_sum : array_like
+        ``sum(rho) = 1/R_1 + 1/R_2`` [1/m] across the contact line (negative for a concave
+        body), the inverse of Johnson's relative radius ``R``.
+    modulus : array_like
+        ``E* = 1 / [(1 - nu_1^2)/E_1 + (1 - nu_2^2)/E_2]`` [Pa] (:func:`effective_modulus`).
+
+    Returns
+    -------
+    numpy.ndarray
+        ``p0 = (w E* / (pi R))^(1/2) = (w E* sum(rho) / pi)^(1/2)`` [Pa] (Johnson eq. 4.45;
+        the same as Harris' ``sigma_max = 2Q / (pi l b)`` with
+        ``b = [8 Q (1 - nu^2) / (pi l E sum(rho))]^(1/2)`` for two steel bodies).
+
+    References
+    ----------
+    .. [1] K. L. Johnson, Contact Mechanics, Cambridge University Press (1985), eq. 4.45
+       (two-dimensional contact of cylinders: semi-width ``a = (4 w R / (pi E*))^(1/2)``,
+       ``p0 = 2 w / (pi a)``).
+    .. [2] T. A. Harris, M. N. Kotzalas, Rolling Bearing Analysis, 5th ed., ch. 6 (line
+       contact).
+    """
+    return np.sqrt(np.asarray(line_load) * modulus * curvature_sum / np.pi)
+
+
+# -- validity limits shared by the bearing models ---------------------------------------------
+
+#: Contact pressure at the centre of the most heavily loaded contact that defines the basic
+#: static load rating of ISO 76:2006 (clauses 3.1-3.3), 4000 MPa for roller bearings and
+#: 4200 MPa for ball bearings (4600 MPa self-aligning): there the total permanent deformation
+#: of rolling element and raceway is about 1e-4 of the rolling element's diameter. Beyond it
+#: the contact is no longer elastic and Hertz's theory, on which every contact law here
+#: rests, no longer holds [Pa].
+ROLLER_PRESSURE_LIMIT = 4000e6
+BALL_PRESSURE_LIMIT = 4200e6
+#: Approach of a roller's contacts beyond which a bearing model's fixed, small-displacement
+#: geometry (contact angles, azimuths, contact on the undeformed profiles) no longer holds, as
+#: a fraction of the roller diameter [-]: two to four times a steel roller's approach (both
+#: contacts) at the ISO 76 pressure (0.45 % with Palmgren's constant in paper 000's bearing D,
+#: 1.05 % with paper 003's eq. 14), so it flags a soft contact constant.
+APPROACH_LIMIT = 0.02
+#: Largest semi-axis of a Hertz contact as a fraction of the smallest radius of curvature of
+#: the two bodies [-]. Hertz takes the surfaces near the contact as paraboloids on elastic
+#: half-spaces, which needs the contact small against the radii (Johnson, ch. 4.1, "a << R");
+#: at a = 0.5 R the contact spans 60 deg of the body's arc and a circle's gap departs from
+#: the paraboloid's by a^2 / (4 R^2) = 6 %. A ball in a conforming groove (radius 0.52 D)
+#: reaches a = 0.3-0.5 R at the ISO 76 pressure, where practice still applies Hertz.
+SEMI_AXIS_LIMIT = 0.5
+
+
 # -- point contact (Hertz) ------------------------------------------------------------------
 
 POINT_CONTACT_EXPONENT = 1.5
-POINT_METHODS = ("exact", "hamrock_brewe")
+POINT_FORMULAS = ("exact", "hamrock_brewe")
 # Below this elliptic parameter the closed form of F(rho) loses digits to cancellation; its
 # series (both are within 1e-8 of each other there) takes over.
 _SMALL_PARAMETER = 1e-4
@@ -122,14 +209,14 @@ def _curvature_difference(parameter):
     return value, slope
 
 
-def ellipse_parameters(curvature_difference, method="exact"):
+def ellipse_parameters(curvature_difference, formula="exact"):
     """Ellipticity and complete elliptic integrals of a Hertz point contact.
 
     Parameters
     ----------
     curvature_difference : array_like
         ``F(rho) = |(rho_1x - rho_1y) + (rho_2x - rho_2y)| / sum(rho)`` [-], in [0, 1).
-    method : {'exact', 'hamrock_brewe'}
+    formula : {'exact', 'hamrock_brewe'}
         ``'exact'``: ``k`` solves Harris' eq. 6.28 with scipy's complete elliptic integrals
         (safeguarded Newton, all points at once). ``'hamrock_brewe'``: the closed forms
         ``k = alpha^(2/pi)``, ``E = 1 + (pi/2 - 1)/alpha``, ``K = pi/2 + (pi/2 - 1) ln alpha``
@@ -149,11 +236,11 @@ def ellipse_parameters(curvature_difference, method="exact"):
     """
     difference = np.asarray(curvature_difference, dtype=float)
     alpha = (1.0 + difference) / (1.0 - difference)
-    if method == "hamrock_brewe":
+    if formula == "hamrock_brewe":
         return (alpha ** (2.0 / np.pi), 1.0 + (np.pi / 2 - 1.0) / alpha,
                 np.pi / 2 + (np.pi / 2 - 1.0) * np.log(alpha), np.ones(difference.shape, bool))
-    if method != "exact":
-        raise ValueError(f"unknown point-contact method {method!r}; expected {POINT_METHODS}")
+    if formula != "exact":
+        raise ValueError(f"unknown point-contact formula {formula!r}; expected {POINT_FORMULAS}")
     flat = difference.ravel()
     start = np.clip(1.0 - alpha.ravel() ** (-4.0 / np.pi), 0.0, 1.0 - 1e-15)  # Hamrock-Brewe k
 
@@ -200,14 +287,14 @@ def curvature_sum_difference(curvature_1x, curvature_1y, curvature_2x, curvature
     return total, np.abs(relative_x - relative_y) / total, touching
 
 
-def point_contact_constant(curvature_sum, curvature_difference, modulus, method="exact"):
+def point_contact_constant(curvature_sum, curvature_difference, modulus, formula="exact"):
     """Load-deflection constant ``K`` of a Hertz point contact, ``Q = K delta^1.5`` [N/m^1.5].
 
     Parameters
     ----------
     curvature_sum : array_like
         ``sum(rho)`` [1/m]. curvature_difference : ``F(rho)`` [-]. modulus : ``E*`` [Pa].
-    method : {'exact', 'hamrock_brewe'}
+    formula : {'exact', 'hamrock_brewe'}
         See :func:`ellipse_parameters`.
 
     Returns
@@ -216,7 +303,7 @@ def point_contact_constant(curvature_sum, curvature_difference, modulus, method=
         From ``delta = delta* [3Q/(2 sum(rho) E*)]^(2/3) sum(rho)/2`` (Harris, eq. 6.43 with
         ``delta* = (2K/pi) (pi/(2 k^2 E))^(1/3)``), which is ``Q^(2/3)`` times a constant.
     """
-    kappa, second, first, converged = ellipse_parameters(curvature_difference, method)
+    kappa, second, first, converged = ellipse_parameters(curvature_difference, formula)
     unit = _unit_approach(kappa, second, first, curvature_sum, modulus)
     return unit ** (-POINT_CONTACT_EXPONENT), converged
 
@@ -230,7 +317,7 @@ def _unit_approach(kappa, second, first, curvature_sum, modulus):
 
 def hertz_point(load, curvature_1x, curvature_1y, curvature_2x=0.0, curvature_2y=0.0,
                 youngs_modulus=207e9, poisson_ratio=0.3, youngs_modulus_2=None,
-                poisson_ratio_2=None, method="exact"):
+                poisson_ratio_2=None, formula="exact"):
     """Hertz contact of two bodies touching at a point.
 
     Parameters
@@ -244,7 +331,7 @@ def hertz_point(load, curvature_1x, curvature_1y, curvature_2x=0.0, curvature_2y
     youngs_modulus, poisson_ratio : array_like
         ``E_1`` [Pa] and ``nu_1`` [-]; ``youngs_modulus_2``, ``poisson_ratio_2`` for body 2
         (default: the same material).
-    method : {'exact', 'hamrock_brewe'}
+    formula : {'exact', 'hamrock_brewe'}
         Ellipticity and elliptic integrals exact or by Hamrock and Brewe's closed forms.
 
     Returns
@@ -253,6 +340,14 @@ def hertz_point(load, curvature_1x, curvature_1y, curvature_2x=0.0, curvature_2y
         ``semi_major`` ``a`` and ``semi_minor`` ``b`` [m], ``approach`` ``delta`` [m],
         ``max_pressure`` ``p0 = 3Q/(2 pi a b)`` [Pa], ``ellipticity`` ``k = a/b`` [-],
         ``contact_constant`` ``K = Q/delta^1.5`` [N/m^1.5], ``status``.
+
+    Notes
+    -----
+    Validity: a solved point is ``out_of_validity`` (values kept) where the semi-major axis
+    exceeds ``SEMI_AXIS_LIMIT`` (0.5) times the smallest radius of curvature of either body
+    (Hertz's small contact on half-spaces), or the maximum pressure exceeds
+    ``BALL_PRESSURE_LIMIT`` (4200 MPa, ISO 76's reference stress of a ball bearing's point
+    contacts, for hardened bearing steel: beyond it the contact deforms plastically).
 
     References
     ----------
@@ -265,7 +360,7 @@ def hertz_point(load, curvature_1x, curvature_1y, curvature_2x=0.0, curvature_2y
     load = arrays[0]
     total, difference, touching = curvature_sum_difference(*arrays[1:])
     modulus = effective_modulus(youngs_modulus, poisson_ratio, youngs_modulus_2, poisson_ratio_2)
-    kappa, second, first, converged = ellipse_parameters(difference, method)
+    kappa, second, first, converged = ellipse_parameters(difference, formula)
     scale = (1.5 * load / (total * modulus)) ** (1.0 / 3.0)
     semi_major = (2.0 * kappa**2 * second / np.pi) ** (1.0 / 3.0) * scale
     semi_minor = (2.0 * second / (np.pi * kappa)) ** (1.0 / 3.0) * scale
@@ -277,8 +372,15 @@ def hertz_point(load, curvature_1x, curvature_1y, curvature_2x=0.0, curvature_2y
     outputs = {"semi_major": semi_major, "semi_minor": semi_minor, "approach": approach,
                "max_pressure": pressure, "ellipticity": kappa, "contact_constant": constant}
     ok = converged & touching
+    for value in outputs.values():  # a NaN input fails the point
+        ok &= np.isfinite(value)
     outputs = {name: np.where(ok, value, np.nan) for name, value in outputs.items()}
-    outputs["status"] = np.select([ok, ~touching], [CONVERGED, INFEASIBLE],
+    with np.errstate(divide="ignore"):  # four flat surfaces are no point contact anyway
+        smallest_radius = 1.0 / np.max(np.abs(arrays[1:]), axis=0)
+    beyond = ((outputs["semi_major"] > SEMI_AXIS_LIMIT * smallest_radius)
+              | (outputs["max_pressure"] > BALL_PRESSURE_LIMIT))
+    outputs["status"] = np.select([ok & beyond, ok, ~touching],
+                                  [OUT_OF_VALIDITY, CONVERGED, INFEASIBLE],
                                   NOT_CONVERGED).astype(np.int8)
     return outputs
 
@@ -293,7 +395,7 @@ MODELS = [Model(
     summary="Hertz point contact of two elastic bodies: contact ellipse, approach, maximum "
             "pressure and load-deflection constant, exact or by Hamrock and Brewe.",
     reference="Harris & Kotzalas, Rolling Bearing Analysis, ch. 6; Hamrock & Brewe (1983)",
-    version="1",
+    version="2",
     inputs=(
         Input("load", "N", "normal load Q", minimum=0.0),
         Input("curvature_1x", "1/mm", "principal curvature of body 1 in plane x (negative: "
@@ -310,8 +412,8 @@ MODELS = [Model(
               default=None, minimum=0.0, exclusive_minimum=True),
         Input("poisson_ratio_2", "1", "Poisson's ratio of body 2; default: body 1's",
               default=None, minimum=0.0, maximum=0.5),
-        Input("method", "", "exact: elliptic integrals; hamrock_brewe: closed-form "
-              "approximation", default="exact", kind="choice", choices=POINT_METHODS),
+        Input("formula", "", "exact: elliptic integrals; hamrock_brewe: closed-form "
+              "approximation", default="exact", kind="choice", choices=POINT_FORMULAS),
     ),
     outputs=(
         Output("semi_major", "mm", "semi-major axis a of the contact ellipse"),
@@ -328,4 +430,8 @@ MODELS = [Model(
                    "a line contact)"),
     ),
     seconds_per_point=2e-6,
+    validity="a semi-axis above 0.5 of the smallest radius of curvature of either body "
+             "(Hertz: a small contact on half-spaces) or a maximum pressure above 4200 MPa "
+             "(ISO 76's reference stress for the point contacts of ball bearings; bearing "
+             "steel)",
 )]

@@ -7,11 +7,13 @@ from __future__ import annotations
 
 import numpy as np
 
-from models.contact import (LINE_CONTACT_EXPONENT, SLICE_LAWS, palmgren_constant,
-                            sliced_line_contact)
+from models.contact import (APPROACH_LIMIT, LINE_CONTACT_EXPONENT, ROLLER_PRESSURE_LIMIT,
+                            SLICE_LAWS, effective_modulus, largest_slice_line_load,
+                            line_contact_pressure, palmgren_constant, sliced_line_contact)
 from models.geometry import elements_fit
 from models.profiles import PROFILES, distinct_slices
-from models.registry import CONVERGED, NOT_CONVERGED, Constraint, Input, Model, Output
+from models.registry import (CONVERGED, NOT_CONVERGED, OUT_OF_VALIDITY, Constraint, Input,
+                             Model, Output)
 from models.solvers import solve_increasing
 
 OUTER_CONTACTS = ("crowned", "paper")
@@ -83,7 +85,7 @@ class _RollerSet:
         self.constant, self.centrifugal = constant, centrifugal  # (P,)
         self.gap_shape, self.gap_count = gap_shape, gap_count  # (m,)
         self.slice_law, self.outer_contact = slice_law, outer_contact
-        self.free_outer_approach = self._free_outer_approach()
+        self.free_outer_approach, self.free_outer_converged = self._free_outer_approach()
 
     def contacts(self, inner_approach, outer_approach, points):
         """Inner load, outer load and the load the outer contact is balanced against.
@@ -105,13 +107,41 @@ class _RollerSet:
         balanced = sliced_line_contact(inner_approach, _NO_GAP, _ONE_SLICE, constant)
         return inner + outer + balanced
 
+    def approaches(self, displacement, inner_deflection):
+        """Inner and outer contact approach of every roller [m], ``(P, Z)``, at the solution.
+
+        ``inner_deflection`` is :meth:`loads`' (negative: a gap). A roller the ring does not
+        reach presses on the outer raceway with its centrifugal force alone.
+        """
+        total = displacement[:, None] * self.cos - self.half_clearance[:, None]
+        free = self.free_outer_approach[:, None]
+        loaded = total - free > 0.0
+        return np.maximum(inner_deflection, 0.0), np.where(loaded, total - inner_deflection,
+                                                           free)
+
+    def largest_line_loads(self, inner_approach, outer_approach, length):
+        """Load per unit length of the most loaded slice of each contact [N/m], ``(P, Z)``."""
+        constant, length = self.constant[:, None], length[:, None]
+        gaps = self.crown[:, None, None] * self.gap_shape
+        inner = largest_slice_line_load(inner_approach, gaps, self.gap_count, constant, length,
+                                        self.slice_law)
+        if self.outer_contact == "crowned":
+            outer = largest_slice_line_load(outer_approach, gaps, self.gap_count, constant,
+                                            length, self.slice_law)
+        else:
+            outer = largest_slice_line_load(outer_approach, _NO_GAP, _ONE_SLICE, constant,
+                                            length)
+        return inner, outer
+
     def _free_outer_approach(self):
-        """Outer-contact approach of a roller held by its centrifugal force alone [m]."""
+        """Outer-contact approach of a roller held by its centrifugal force alone [m], and
+        whether it was found."""
         n = LINE_CONTACT_EXPONENT
         plain = (self.centrifugal / self.constant) ** (1.0 / n)
         if self.outer_contact == "paper":
-            return plain
+            return plain, np.isfinite(plain)
         approach = np.zeros_like(plain)
+        converged = np.isfinite(plain)
         spinning = np.flatnonzero(self.centrifugal > 0.0)
         if spinning.size:
             # Every slice is in contact beyond the largest gap, so Qo >= K (delta - gap)^n.
@@ -122,9 +152,9 @@ class _RollerSet:
                 _, _, load, stiffness, _, _ = self.contacts(outer, outer, points)
                 return load - self.centrifugal[points], stiffness
 
-            approach[spinning], _ = solve_increasing(
+            approach[spinning], converged[spinning] = solve_increasing(
                 residual, np.zeros(spinning.size), upper, 0.5 * upper, _XTOL * upper)
-        return approach
+        return approach, converged
 
     def loads(self, displacement, points, share):
         """Roller loads and bearing load and stiffness at given radial displacements.
@@ -190,7 +220,8 @@ class _RollerSet:
 def crb_radial(radial_load, roller_count, pitch_diameter, roller_diameter, effective_length,
                clearance=0.0, crown=0.0, crown_profile="logarithmic", slices=60,
                slice_law="uniform", outer_contact="crowned", speed=0.0, roller_density=7850.0,
-               contact_constant=None, cage_position=0.0, perturbation=1e-6):
+               contact_constant=None, cage_position=0.0, perturbation=1e-6,
+               youngs_modulus=207e9, poisson_ratio=0.3):
     """Load distribution and radial stiffness of a cylindrical roller bearing.
 
     Solves the inner ring's radial displacement under a radial load, with crowned rollers
@@ -233,6 +264,9 @@ def crb_radial(radial_load, roller_count, pitch_diameter, roller_diameter, effec
         ``cage_position + 2 pi (j - 1) / Z``.
     perturbation : array_like
         Displacement step ``Delta`` of the forward-difference stiffness [m] (section 2.3).
+    youngs_modulus, poisson_ratio : array_like
+        ``E`` [Pa] and ``nu`` [-] of rollers and rings. They enter the contact pressure only;
+        the load-deflection constant is ``contact_constant`` (Palmgren's is for steel).
 
     Returns
     -------
@@ -240,37 +274,79 @@ def crb_radial(radial_load, roller_count, pitch_diameter, roller_diameter, effec
         ``radial_displacement`` [m], ``radial_stiffness`` [N/m], ``perturbation_stiffness``
         ``(F_r(delta_r + Delta) - F_r) / Delta`` [N/m], ``loaded_rollers`` [-],
         ``centrifugal_force`` [N], ``roller_load`` (inner contact, ``(..., Z)``) [N],
-        ``inner_contact_deflection`` (``(..., Z)``, negative: gap) [m], ``status``.
-        Points that did not converge are NaN with ``status`` = 1.
+        ``inner_contact_deflection`` (``(..., Z)``, negative: gap) [m],
+        ``max_contact_pressure`` (``(..., Z)``) [Pa], ``status``.
+        Points that did not converge (a NaN anywhere included) are NaN with ``status`` = 1;
+        points outside the validity below keep their values with ``status`` =
+        ``OUT_OF_VALIDITY``.
+
+    Notes
+    -----
+    The maximum contact pressure of a roller is the largest over its two raceway contacts of
+    the Hertz line-contact pressure of its most loaded slice,
+    ``p0 = (w E* sum(rho) / pi)^(1/2)`` (:func:`models.contact.line_contact_pressure`), with
+    ``w`` that slice's load per unit length and ``sum(rho) = 2/D + 2/(d_m - D)`` (inner) or
+    ``2/D - 2/(d_m + D)`` (outer). A slice's own load sets its pressure, as in the slicing of
+    ISO/TS 16281: a crowned roller's middle slice carries more than the mean. Without tilt the
+    slices of a straight roller carry equal loads, so the model shows no edge stress (the
+    real one has pressure peaks at its ends, which would need the roller's tilt and a
+    half-space solution of the slices' interaction).
+
+    Validity: a solved point is ``out_of_validity`` (values kept) where a roller's maximum
+    contact pressure exceeds ``ROLLER_PRESSURE_LIMIT`` (4000 MPa, the reference stress of
+    ISO 76's static load rating for roller bearings: beyond it the permanent deformation
+    exceeds 1e-4 of the roller diameter and the elastic contact laws fail), or a roller's
+    approach (both contacts) exceeds ``APPROACH_LIMIT`` (2 %) of the roller diameter, where
+    the fixed geometry (azimuths, contacts along the radius line, undeformed rings) fails.
+    Speed has no limit of its own: the centrifugal force of a roller orbiting at the
+    kinematic cage speed holds while the roller stays elastic, and its outer contact's
+    pressure carries that force (1e6 r/min gives bearing D some 16 GPa there).
 
     References
     ----------
     .. [1] Paper 000, "Radial stiffness analysis of cylindrical roller bearing", eq. 1-16.
+    .. [2] K. L. Johnson, Contact Mechanics, Cambridge University Press (1985), eq. 4.45.
+    .. [3] ISO 76:2006, Rolling bearings - Static load ratings, 3.1 (4000 MPa for roller
+       bearings).
     """
     roller_count, slices = int(roller_count), int(slices)
     if contact_constant is None:
         contact_constant = palmgren_constant(effective_length)
     arrays = np.broadcast_arrays(*(np.asarray(a, dtype=float) for a in (
         radial_load, pitch_diameter, roller_diameter, effective_length, clearance, crown,
-        speed, roller_density, contact_constant, cage_position, perturbation)))
+        speed, roller_density, contact_constant, cage_position, perturbation,
+        effective_modulus(youngs_modulus, poisson_ratio))))
     shape = arrays[0].shape
     (load, pitch, diameter, length, clearance, crown, speed, density, constant,
-     cage_position, perturbation) = (a.ravel() for a in arrays)
+     cage_position, perturbation, modulus) = (a.ravel() for a in arrays)
     azimuth = cage_position[:, None] + 2.0 * np.pi * np.arange(roller_count) / roller_count
     gap_shape, gap_count = distinct_slices(slices, crown_profile)
     if outer_contact not in OUTER_CONTACTS:
         raise ValueError(f"unknown outer_contact {outer_contact!r}; expected {OUTER_CONTACTS}")
-    outputs = _solve(load, np.cos(azimuth), 0.5 * clearance, crown, constant,
-                     centrifugal_force(diameter, length, pitch, speed, density),
-                     gap_shape, gap_count, slice_law, outer_contact, perturbation)
+    rollers = _RollerSet(np.cos(azimuth), 0.5 * clearance, crown, constant,
+                         centrifugal_force(diameter, length, pitch, speed, density), gap_shape,
+                         gap_count, slice_law, outer_contact)
+    outputs = _solve(rollers, load, perturbation)
+    inner, outer = rollers.approaches(outputs["radial_displacement"],
+                                      outputs["inner_contact_deflection"])
+    inner_load, outer_load = rollers.largest_line_loads(inner, outer, length)
+    inner_curvature = 2.0 / diameter + 2.0 / (pitch - diameter)
+    outer_curvature = 2.0 / diameter - 2.0 / (pitch + diameter)
+    pressure = np.maximum(
+        line_contact_pressure(inner_load, inner_curvature[:, None], modulus[:, None]),
+        line_contact_pressure(outer_load, outer_curvature[:, None], modulus[:, None]))
+    outputs["max_contact_pressure"] = pressure  # NaN where the point failed
+    beyond = ((pressure > ROLLER_PRESSURE_LIMIT) | (inner + outer > APPROACH_LIMIT
+                                                    * diameter[:, None])).any(axis=-1)
+    outputs["status"] = np.where((outputs["status"] == CONVERGED) & beyond, OUT_OF_VALIDITY,
+                                 outputs["status"]).astype(np.int8)
     return {name: value.reshape(shape + value.shape[1:]) for name, value in outputs.items()}
 
 
-def _solve(load, cos_azimuth, half_clearance, crown, constant, centrifugal, gap_shape,
-                 gap_count, slice_law, outer_contact, perturbation):
+def _solve(rollers, load, perturbation):
     """Solve a flat batch of bearings; see :func:`crb_radial`."""
-    rollers = _RollerSet(cos_azimuth, half_clearance, crown, constant, centrifugal,
-                         gap_shape, gap_count, slice_law, outer_contact)
+    cos_azimuth, half_clearance, crown = rollers.cos, rollers.half_clearance, rollers.crown
+    constant, centrifugal, gap_shape = rollers.constant, rollers.centrifugal, rollers.gap_shape
     count, n = load.size, LINE_CONTACT_EXPONENT
     everyone = np.arange(count)
     share = np.full(cos_azimuth.shape, 0.5)
@@ -318,8 +394,7 @@ def _solve(load, cos_azimuth, half_clearance, crown, constant, centrifugal, gap_
     # Forward-difference stiffness with the paper's perturbation (section 2.3).
     perturbed = rollers.loads(displacement + perturbation, everyone, share.copy())[0]
     balanced = np.abs(cache["load"] - load) <= 1e-9 * load + 1e-6
-    ok = converged & cache["converged"] & balanced
-    status = np.where(ok, CONVERGED, NOT_CONVERGED).astype(np.int8)
+    ok = converged & cache["converged"] & balanced & rollers.free_outer_converged
     outputs = {
         "radial_displacement": displacement,
         "radial_stiffness": cache["stiffness"],
@@ -329,9 +404,12 @@ def _solve(load, cos_azimuth, half_clearance, crown, constant, centrifugal, gap_
         "roller_load": cache["roller_load"],
         "inner_contact_deflection": cache["deflection"],
     }
+    # A NaN anywhere (an input, an overflow) fails the point rather than hiding in one output.
+    for value in outputs.values():
+        ok &= np.isfinite(value).reshape(count, -1).all(axis=-1)
     outputs = {name: np.where(ok.reshape((-1,) + (1,) * (value.ndim - 1)), value, np.nan)
                for name, value in outputs.items()}
-    outputs["status"] = status
+    outputs["status"] = np.where(ok, CONVERGED, NOT_CONVERGED).astype(np.int8)
     return outputs
 
 
@@ -341,7 +419,7 @@ MODELS = [Model(
     summary="Cylindrical roller bearing under radial load: load distribution and radial stiffness "
             "with crowned rollers (slices), centrifugal force and clearance.",
     reference="Paper 000, Radial stiffness analysis of cylindrical roller bearing, eq. 1-16",
-    version="1",
+    version="2",
     inputs=(
         Input("radial_load", "N", "radial load Fr on the inner ring", minimum=0.0),
         Input("roller_count", "1", "number of rollers Z", kind="count", minimum=3, maximum=1000),
@@ -370,6 +448,10 @@ MODELS = [Model(
               default=0.0, minimum=-360.0, maximum=360.0),
         Input("perturbation", "mm", "displacement step of the forward-difference stiffness "
               "(section 2.3)", default=0.001, minimum=0.0, exclusive_minimum=True),
+        Input("youngs_modulus", "GPa", "Young's modulus of rollers and rings (contact pressure "
+              "only)", default=207.0, minimum=0.0, exclusive_minimum=True),
+        Input("poisson_ratio", "1", "Poisson's ratio of rollers and rings (contact pressure "
+              "only)", default=0.3, minimum=0.0, maximum=0.5),
     ),
     outputs=(
         Output("radial_displacement", "mm", "radial displacement of the inner ring"),
@@ -383,6 +465,8 @@ MODELS = [Model(
                dims=("roller",)),
         Output("inner_contact_deflection", "mm", "inner-raceway contact approach of each roller; "
                "negative: its gap", dims=("roller",)),
+        Output("max_contact_pressure", "MPa", "largest Hertz line-contact pressure of each "
+               "roller's slices, inner or outer raceway", dims=("roller",)),
     ),
     dim_sizes={"roller": "roller_count"},
     constraints=(
@@ -399,4 +483,7 @@ MODELS = [Model(
     ),
     seconds_per_point=1e-4,
     points_per_call=500,
+    validity="a roller's maximum contact pressure above 4000 MPa (ISO 76's reference stress "
+             "for roller bearings) or its approach (both contacts) above 2 % of the roller "
+             "diameter; speed only through the pressure its centrifugal force causes",
 )]

@@ -22,10 +22,11 @@ from __future__ import annotations
 import numpy as np
 
 from models.geometry import elements_fit
-from models.registry import CONVERGED, MODEL_ERROR, Constraint, Input, Model, Output
+from models.registry import CONVERGED, NOT_CONVERGED, Constraint, Input, Model, Output
 
 SPINS = ("absolute", "paper")
 _TIE = 1e-13  # [m]: lines this close count as meeting
+_ROUNDING = 1e-12  # [-]: a clearance this far below zero, relative to d_e, is zero
 
 
 def roller_angles(rotation, roller_count, roller_diameter, pitch_diameter, spin="absolute"):
@@ -170,7 +171,8 @@ def crb_runout(inner_raceway_diameter, outer_raceway_diameter, roller_diameter, 
         the paper defines it); ``vertical_runout`` [m], the same for the vertical position (a
         dial gauge above); ``center_x``, ``center_y`` ``(N, steps)`` [m]; ``rotation_angle``
         ``(N, steps)`` [rad]; ``assembly_order`` ``(N, Z)``: which given error each roller
-        position has (1-based); ``status``.
+        position has (1-based); ``status``: not converged where no resting position was
+        found at some step (a NaN input).
 
     References
     ----------
@@ -235,7 +237,7 @@ def crb_runout(inner_raceway_diameter, outer_raceway_diameter, roller_diameter, 
         "center_x": x, "center_y": y,
         "rotation_angle": np.broadcast_to(rotation, x.shape),
         "assembly_order": order_index + 1.0,
-        "status": np.where(found, CONVERGED, MODEL_ERROR).astype(np.int8),
+        "status": np.where(found, CONVERGED, NOT_CONVERGED).astype(np.int8),
     }
 
 
@@ -245,7 +247,9 @@ def _fits(inner_raceway_diameter, outer_raceway_diameter, roller_diameter, rolle
 
 
 def _clearance(inner_raceway_diameter, outer_raceway_diameter, roller_diameter):
-    return outer_raceway_diameter - inner_raceway_diameter - 2.0 * roller_diameter >= 0.0
+    # Zero clearance written in mm may come out a few 1e-18 m negative in metres.
+    clearance = outer_raceway_diameter - inner_raceway_diameter - 2.0 * roller_diameter
+    return clearance >= -_ROUNDING * outer_raceway_diameter
 
 
 def _whole_orders(roller_roundness_order, inner_roundness_order, outer_roundness_order):
@@ -271,7 +275,7 @@ MODELS = [Model(
             "roundness and size errors of rollers and raceways.",
     reference="Paper 004, Influence of geometric error of rollers on rotational accuracy of "
               "cylindrical roller bearings, eq. 1-6, section 1.4",
-    version="1",
+    version="2",
     inputs=(
         Input("inner_raceway_diameter", "mm", "inner raceway diameter di", minimum=0.0,
               exclusive_minimum=True),

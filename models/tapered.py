@@ -17,10 +17,10 @@ from __future__ import annotations
 
 import numpy as np
 
-from models.contact import hertz_point
-from models.registry import (CONVERGED, INFEASIBLE, NOT_CONVERGED, Constraint, Input, Model,
-                             combine_status,
-                             Output)
+from models.contact import (APPROACH_LIMIT, ROLLER_PRESSURE_LIMIT, effective_modulus,
+                            hertz_point, line_contact_pressure)
+from models.registry import (CONVERGED, INFEASIBLE, NO_ROOT_IN_RANGE, NOT_CONVERGED,
+                             OUT_OF_VALIDITY, Constraint, Input, Model, Output, combine_status)
 from models.solvers import solve_equilibrium, solve_increasing
 
 #: Load-deflection exponent of a roller between its raceways, Q = K delta^1.11 (eq. 13-18).
@@ -29,6 +29,7 @@ RIB_FORCES = ("balance", "paper")
 RIB_CURVATURES = ("exact", "paper")
 _RESIDUAL_TOLERANCE = 1e-12  # relative to the load [-]
 _LIMIT_BRACKET = (np.radians(80.0), np.radians(90.0))  # rib angles searched for the limit
+_LIMIT_NODES = 41  # grid of the limit search: 0.25 deg steps
 _ANGLE_TOLERANCE = 1e-9  # [rad], 0.0002 arcsec
 
 
@@ -49,8 +50,32 @@ def _roller_azimuths(roller_count):
     return 2.0 * np.pi * np.arange(roller_count) / roller_count
 
 
+def cone_curvature_sum(roller_mean_diameter, pitch_diameter, contact_angle):
+    """Curvature sum of a tapered roller on the cone (inner raceway), across the contact line.
+
+    Parameters
+    ----------
+    roller_mean_diameter, pitch_diameter : array_like
+        ``D_w``, ``d_m`` [m].
+    contact_angle : array_like
+        Angle of the raceway line to the bearing axis [rad].
+
+    Returns
+    -------
+    numpy.ndarray
+        ``sum(rho) = 2/D_w + 2 cos(a) / (d_m - D_w cos(a))`` [1/m]: the roller as a cylinder
+        of its mean diameter, the cone by its radius of curvature across the generatrix,
+        ``r / cos(a)`` with ``r = (d_m - D_w cos a)/2`` the raceway's radius at the middle
+        of the contact (Meusnier: the normal's length to the axis).
+    """
+    cos_angle = np.cos(contact_angle)
+    return 2.0 / np.asarray(roller_mean_diameter) + 2.0 * cos_angle / (
+        np.asarray(pitch_diameter) - roller_mean_diameter * cos_angle)
+
+
 def trb_load(radial_load, axial_load, roller_count, effective_length, roller_mean_diameter,
-             outer_contact_angle, contact_constant=None):
+             outer_contact_angle, contact_constant=None, pitch_diameter=None,
+             youngs_modulus=206e9, poisson_ratio=0.3):
     """Displacements and roller loads of a tapered roller bearing under combined load.
 
     Parameters
@@ -65,14 +90,20 @@ def trb_load(radial_load, axial_load, roller_count, effective_length, roller_mea
         ``alpha`` [rad], the cup's contact angle.
     contact_constant : array_like or None
         ``K_ne`` [N/m^1.11] of a roller between both raceways; None: eq. 14.
+    pitch_diameter : array_like or None
+        ``d_m`` [m], for the contact pressure only; None: the pressure is not computed (NaN).
+    youngs_modulus, poisson_ratio : array_like
+        Of rollers and rings [Pa], [-], for the contact pressure only.
 
     Returns
     -------
     dict of numpy.ndarray
         ``radial_displacement`` ``delta_r``, ``axial_displacement`` ``delta_a`` [m],
         ``roller_load`` ``(N, Z)`` [N] (eq. 18 with its exponent 1.11), ``loaded_rollers``,
-        ``status``: infeasible where ``F_r tan(alpha) > F_a`` (the rollers cannot carry the
-        radial load without pulling) or ``F_a = 0``.
+        ``max_contact_pressure`` ``(N, Z)`` [Pa], ``status``: infeasible where
+        ``F_r tan(alpha) > F_a`` (the rollers cannot carry the radial load without pulling)
+        or ``F_a = 0``; not converged where the equilibrium was not found (or an input is
+        NaN); out of validity as below.
 
     Notes
     -----
@@ -80,14 +111,32 @@ def trb_load(radial_load, axial_load, roller_count, effective_length, roller_mea
     and carries ``Q_i = K_ne delta_i^1.11`` along the cup's normal; eq. 16 balances the sums
     of ``Q_i cos(alpha) cos(psi_i)`` and ``Q_i sin(alpha)`` with ``F_r`` and ``F_a``.
 
+    The maximum contact pressure is the cone's (inner raceway): with one contact angle for
+    both raceways, as eq. 13-18 take it, a roller carries its load ``Q`` on both, and the
+    convex cone is the more curved of the two (:func:`cone_curvature_sum`). ``Q`` is spread
+    evenly over ``l`` (the model has no crown or tilt) and ``p0 = (w E* sum(rho) / pi)^(1/2)``
+    with ``w = Q / l`` (Hertz line contact, :func:`models.contact.line_contact_pressure`).
+    The real cone carries ``Q (cos 2 phi + sin 2 phi cot Psi)`` (``trb_rib``'s
+    ``inner_load``), 0.7 % less with paper 003's roller (``phi`` = 4 deg, ``Psi`` = 89 deg).
+
+    Validity: a solved point is ``out_of_validity`` (values kept) where a roller's contact
+    pressure exceeds 4000 MPa (ISO 76's reference stress for roller bearings, beyond which
+    the permanent deformation exceeds 1e-4 of the roller diameter and the contact is no
+    longer elastic; checked only with ``pitch_diameter``), or its compression exceeds 2 % of
+    ``D_w``, where the fixed contact angle and azimuths of the model no longer hold.
+
     References
     ----------
     .. [1] Paper 003, eq. 13-18 and Table 2.
+    .. [2] K. L. Johnson, Contact Mechanics, Cambridge University Press (1985), eq. 4.45.
+    .. [3] ISO 76:2006, Rolling bearings - Static load ratings, 3.1.
     """
     arrays = np.broadcast_arrays(*(np.atleast_1d(np.asarray(a, dtype=float)) for a in (
         radial_load, axial_load, effective_length, roller_mean_diameter, outer_contact_angle,
-        np.nan if contact_constant is None else contact_constant)))
-    radial, axial, length, diameter, angle, given = arrays
+        np.nan if contact_constant is None else contact_constant,
+        np.nan if pitch_diameter is None else pitch_diameter,
+        effective_modulus(youngs_modulus, poisson_ratio))))
+    radial, axial, length, diameter, angle, given, pitch, modulus = arrays
     constant = np.where(np.isnan(given), paper_contact_constant(length, diameter), given)
     azimuth = _roller_azimuths(roller_count)
     # The rows that turn (delta_r, delta_a) into each roller's compression, (N, Z, 2).
@@ -114,11 +163,18 @@ def trb_load(radial_load, axial_load, roller_count, effective_length, roller_mea
         evaluate, start, load, 0.01 * typical, _RESIDUAL_TOLERANCE * np.linalg.norm(load, axis=-1))
     compression = np.einsum("nzk,nk->nz", rows, displacement)
     roller_load = constant[:, None] * np.maximum(compression, 0.0) ** LOAD_EXPONENT
-    status = np.select([~carried, ~converged], [INFEASIBLE, NOT_CONVERGED], CONVERGED)
+    pressure = line_contact_pressure(
+        roller_load / length[:, None],
+        cone_curvature_sum(diameter, pitch, angle)[:, None], modulus[:, None])
+    converged &= np.isfinite(displacement).all(axis=-1) & np.isfinite(roller_load).all(axis=-1)
+    beyond = ((pressure > ROLLER_PRESSURE_LIMIT)
+              | (compression > APPROACH_LIMIT * diameter[:, None])).any(axis=-1)
+    status = np.select([~carried, ~converged, beyond], [INFEASIBLE, NOT_CONVERGED,
+                                                        OUT_OF_VALIDITY], CONVERGED)
     return {"radial_displacement": displacement[:, 0], "axial_displacement": displacement[:, 1],
             "roller_load": roller_load,
             "loaded_rollers": np.count_nonzero(compression > 0, axis=-1).astype(float),
-            "status": status.astype(np.int8)}
+            "max_contact_pressure": pressure, "status": status.astype(np.int8)}
 
 
 class RollerEnd:
@@ -219,18 +275,36 @@ def trb_rib(radial_load, axial_load, roller_count, effective_length, roller_mean
     dict of numpy.ndarray
         ``rib_load`` [N]; ``semi_major``, ``semi_minor`` ``b``, ``approach`` [m];
         ``max_pressure`` [Pa]; ``groove_distance`` ``CE`` and ``edge_margin`` ``CE - b`` [m];
-        ``limit_rib_angle`` [rad], where ``CE = b`` for the point's other inputs (NaN when no
-        angle in 80-90 deg is); ``roller_load`` ``Q_e`` and ``inner_load`` ``Q_i`` [N];
+        ``limit_rib_angle`` [rad], where ``CE = b`` for the point's other inputs (NaN with
+        ``status`` ``NO_ROOT_IN_RANGE`` when no angle in 80-90 deg is; see
+        :func:`_limit_angle`); ``roller_load`` ``Q_e`` and ``inner_load`` ``Q_i`` [N];
         ``inner_load_offset`` [m], where along the inner contact (from its middle, towards
         the rib) ``Q_i`` must act for the roller's moment balance; ``rib_curvature_radius``
         [m]; ``status``.
+
+    Notes
+    -----
+    The raceway loads come from :func:`trb_load` with the pitch diameter at the middle of
+    the roller, ``d_m = d_i - l sin(beta) + D_w cos(beta)``, so its validity (the cone's
+    pressure and the rollers' compression) holds here too. The rib contact is
+    ``out_of_validity`` (values kept) where its maximum pressure exceeds 4000 MPa (ISO 76's
+    reference stress for roller bearings), where :func:`models.contact.hertz_point` finds
+    it beyond its own limits, or where the oil groove cuts the contact ellipse
+    (``edge_margin`` < 0): Hertz's pressure assumes the whole ellipse on the rib, and the
+    truncated one has an edge stress the model does not give.
 
     References
     ----------
     .. [1] Paper 003, eq. 1-12, 19-20 and section 3.
     """
+    # The pitch diameter at the middle of the roller: from the rib's foot on the raceway line
+    # (diameter d_i) half the contact length down the cone, then half the roller across it.
+    inner_angle = np.asarray(outer_contact_angle) - 2.0 * np.asarray(roller_half_angle)
+    pitch_diameter = (np.asarray(rib_diameter) - np.asarray(effective_length) * np.sin(
+        inner_angle) + np.asarray(roller_mean_diameter) * np.cos(inner_angle))
     load = trb_load(radial_load, axial_load, roller_count, effective_length,
-                    roller_mean_diameter, outer_contact_angle, contact_constant)
+                    roller_mean_diameter, outer_contact_angle, contact_constant, pitch_diameter,
+                    youngs_modulus, poisson_ratio)
     cup_load = load["roller_load"].max(axis=-1)
     arrays = np.broadcast_arrays(cup_load, *(np.atleast_1d(np.asarray(a, dtype=float)) for a in (
         outer_contact_angle, roller_large_diameter, roller_half_angle, roller_end_radius,
@@ -252,17 +326,22 @@ def trb_rib(radial_load, axial_load, roller_count, effective_length, roller_mean
                                   modulus[index], poisson[index])
 
     force, hertz = contact(angle)
+    limit, limit_status = _limit_angle(end, contact)
     groove_distance = end.groove_distance(angle)
     inner_load, offset = _roller_balance(end, cup_load, force, angle, half_angle, length)
     outputs = {
         "rib_load": force, "semi_major": hertz["semi_major"], "semi_minor": hertz["semi_minor"],
         "approach": hertz["approach"], "max_pressure": hertz["max_pressure"],
         "groove_distance": groove_distance, "edge_margin": groove_distance - hertz["semi_minor"],
-        "limit_rib_angle": _limit_angle(end, contact),
+        "limit_rib_angle": limit,
         "roller_load": cup_load, "inner_load": inner_load, "inner_load_offset": offset,
         "rib_curvature_radius": end.rib_curvature_radius(angle),
     }
-    status = combine_status(load["status"], hertz["status"])
+    # The rib contact's own validity: the roller bearings' ISO 76 pressure, and an ellipse
+    # cut by the oil groove (its pressure is then no longer Hertz's: the paper's very limit).
+    beyond = (hertz["max_pressure"] > ROLLER_PRESSURE_LIMIT) | (outputs["edge_margin"] < 0.0)
+    rib_status = np.where(beyond, OUT_OF_VALIDITY, CONVERGED)
+    status = combine_status(load["status"], hertz["status"], rib_status, limit_status)
     outputs["status"] = status.astype(np.int8)
     return outputs
 
@@ -270,24 +349,65 @@ def trb_rib(radial_load, axial_load, roller_count, effective_length, roller_mean
 def _limit_angle(end: RollerEnd, contact):
     """The rib angle at which the ellipse's edge reaches the groove, ``CE = b`` (eq. 20).
 
-    ``b - CE`` grows with the rib angle (the contact point moves towards the groove); the
-    Newton slope takes ``dCE/dPsi`` alone, which dominates, and the bracket keeps it safe.
+    The margin ``b - CE`` grows with the rib angle (the contact point moves towards the
+    groove), but the roller end and the rib touch at a point only where the rib curves less
+    than the end sphere (``R_12 > SR``), which may hold on part of the range alone: with
+    ``SR`` = 107 mm the paper's bearing has no point contact below 80.5 deg. The margin is
+    therefore first evaluated on a grid of ``_LIMIT_NODES`` rib angles; where the contact is
+    not a point contact it stands at ``-CE``, the limit of a vanishing ellipse (``b -> 0`` as
+    the rib's relative curvature vanishes). The first grid step where it turns from negative
+    to positive brackets the limit, which safeguarded Newton steps then refine (the slope
+    takes ``dCE/dPsi`` alone, which dominates; the bracket keeps the steps safe).
+
+    Returns
+    -------
+    limit : numpy.ndarray
+        [rad]; NaN where there is none in the range or the search failed.
+    status : numpy.ndarray
+        ``CONVERGED``, ``NO_ROOT_IN_RANGE`` (no rib angle of the range puts the ellipse's
+        edge on the groove's edge), or ``NOT_CONVERGED`` (the refinement failed, or a margin
+        on the grid could not be computed before any crossing was found).
     """
     count = end.end_radius.size
-    lower, upper = (np.full(count, bound) for bound in _LIMIT_BRACKET)
+    nodes = np.linspace(*_LIMIT_BRACKET, _LIMIT_NODES)
+    everything = np.arange(count)
 
     def margin(psi, index):
-        return contact(psi, index)[1]["semi_minor"] - end.groove_distance(psi, index)
+        _, hertz = contact(psi, index)
+        # A rib that curves as much as the sphere or more: no point contact, no ellipse.
+        width = np.where(hertz["status"] == INFEASIBLE, 0.0, hertz["semi_minor"])
+        return width - end.groove_distance(psi, index), hertz["status"] == INFEASIBLE
 
-    def residual(psi, index):
+    on_grid, _ = margin(np.tile(nodes, count), np.repeat(everything, nodes.size))
+    on_grid = on_grid.reshape(count, nodes.size)
+    # Only the nodes before a margin that could not be computed count: beyond it an earlier
+    # crossing could hide.
+    known = np.cumprod(np.isfinite(on_grid), axis=-1).astype(bool)
+    rising = (on_grid[:, :-1] < 0.0) & (on_grid[:, 1:] >= 0.0) & known[:, 1:]
+    found = rising.any(axis=-1)
+    step = np.argmax(rising, axis=-1)
+    lower, upper = nodes[step], nodes[step + 1]
+
+    searched = np.flatnonzero(found)
+
+    def residual(psi, entries):
+        index = searched[entries]
         slope = (end.end_radius[index] + end.centre[index, 1] * np.cos(psi)) / np.sin(psi)**2
-        return margin(psi, index), slope
+        return margin(psi, index)[0], slope
 
-    everything = np.arange(count)
-    bracketed = (margin(lower, everything) < 0) & (margin(upper, everything) > 0)
-    angle, converged = solve_increasing(residual, lower, upper, 0.5 * (lower + upper),
-                                        _ANGLE_TOLERANCE)
-    return np.where(bracketed & converged, angle, np.nan)
+    angle = np.full(count, np.nan)
+    converged = np.zeros(count, dtype=bool)
+    angle[searched], converged[searched] = solve_increasing(
+        residual, lower[searched], upper[searched], 0.5 * (lower[searched] + upper[searched]),
+        _ANGLE_TOLERANCE)
+    # A limit on the extension (no point contact there) is no limit: the ellipse vanished.
+    point_contact = np.zeros(count, dtype=bool)
+    if searched.size:
+        point_contact[searched] = ~margin(angle[searched], searched)[1]
+    limit = found & converged & point_contact
+    computed = np.where(found, converged, known[:, -1])
+    status = np.select([~computed, limit], [NOT_CONVERGED, CONVERGED], NO_ROOT_IN_RANGE)
+    return np.where(limit, angle, np.nan), status.astype(np.int8)
 
 
 def _roller_balance(end: RollerEnd, cup_load, rib_load, rib_angle, half_angle, length):
@@ -315,6 +435,10 @@ def _carried(radial_load, axial_load, outer_contact_angle):
     return (axial_load > 0) & (radial_load * np.tan(outer_contact_angle) <= axial_load)
 
 
+def _cone_beneath(pitch_diameter, roller_mean_diameter):
+    return pitch_diameter > roller_mean_diameter
+
+
 def _end_sphere_fits(roller_end_radius, roller_large_diameter):
     return roller_end_radius > roller_large_diameter / 2
 
@@ -337,6 +461,10 @@ _LOAD_INPUTS = (
 _CONSTANT = Input("contact_constant", "N/mm^1.11", "load-deflection constant Kne of a roller, "
                   "Q = Kne delta^1.11; default eq. 14, 2.89e4 l^0.82 Dw^0.11 (N, mm)",
                   default=None, minimum=0.0, exclusive_minimum=True)
+_MODULUS = Input("youngs_modulus", "GPa", "Young's modulus of rollers and rings", default=206.0,
+                 minimum=0.0, exclusive_minimum=True)
+_POISSON = Input("poisson_ratio", "1", "Poisson's ratio of rollers and rings", default=0.3,
+                 minimum=0.0, maximum=0.5)
 _REFERENCE = "Paper 003, Optimization of the rib angle of tapered roller bearings"
 
 MODELS = [
@@ -346,19 +474,32 @@ MODELS = [
         summary="Tapered roller bearing under radial and axial load: radial and axial "
                 "displacement and the load of every roller.",
         reference=_REFERENCE + ", eq. 13-18",
-        version="1",
-        inputs=_LOAD_INPUTS + (_CONSTANT,),
+        version="2",
+        inputs=_LOAD_INPUTS + (
+            _CONSTANT,
+            Input("pitch_diameter", "mm", "pitch diameter dm at the middle of the rollers, for "
+                  "the contact pressure only; default: no pressure (NaN)", default=None,
+                  minimum=0.0, exclusive_minimum=True),
+            _MODULUS, _POISSON),
         outputs=(
             Output("radial_displacement", "mm", "radial displacement delta_r of the inner ring"),
             Output("axial_displacement", "mm", "axial displacement delta_a of the inner ring"),
             Output("roller_load", "N", "cup contact load Qe of each roller (eq. 18); roller 1 "
                    "on the radial load", dims=("roller",)),
             Output("loaded_rollers", "1", "number of rollers carrying load"),
+            Output("max_contact_pressure", "MPa", "Hertz line-contact pressure of each roller "
+                   "on the cone (inner raceway, the more curved), its load Qe spread over l; "
+                   "NaN without pitch_diameter", dims=("roller",)),
         ),
         dim_sizes={"roller": "roller_count"},
-        constraints=(_CARRIED,),
+        constraints=(_CARRIED, Constraint(
+            ("pitch_diameter", "roller_mean_diameter"), _cone_beneath,
+            "pitch_diameter must exceed roller_mean_diameter")),
         seconds_per_point=2e-5,
         points_per_call=2000,
+        validity="a roller's cone contact pressure above 4000 MPa (ISO 76's reference stress "
+                 "for roller bearings; checked when pitch_diameter is given) or its "
+                 "compression above 2 % of the mean roller diameter",
     ),
     Model(
         name="trb_rib",
@@ -367,7 +508,7 @@ MODELS = [
                 "with the conical rib, its distance from the oil groove, and the rib angle at "
                 "which the contact ellipse reaches the groove.",
         reference=_REFERENCE + ", eq. 1-12, 19-20",
-        version="1",
+        version="2",
         inputs=_LOAD_INPUTS + (
             Input("roller_large_diameter", "mm", "large-end roller diameter Dw1", minimum=0.0,
                   exclusive_minimum=True),
@@ -380,10 +521,7 @@ MODELS = [
             Input("oil_groove_size", "mm", "oil groove size m along the rib", minimum=0.0),
             Input("rib_diameter", "mm", "inner ring diameter di where the rib meets the raceway "
                   "line", minimum=0.0, exclusive_minimum=True),
-            Input("youngs_modulus", "GPa", "Young's modulus of rollers and ring", default=206.0,
-                  minimum=0.0, exclusive_minimum=True),
-            Input("poisson_ratio", "1", "Poisson's ratio of rollers and ring", default=0.3,
-                  minimum=0.0, maximum=0.5),
+            _MODULUS, _POISSON,
             _CONSTANT,
             Input("rib_force", "", "balance: the roller's force balance (eq. 10); paper: "
                   "eq. 12 as printed", default="balance", kind="choice", choices=RIB_FORCES),
@@ -413,5 +551,8 @@ MODELS = [
             "roller_end_radius must exceed half the roller_large_diameter")),
         seconds_per_point=2e-4,
         points_per_call=2000,
+        validity="trb_load's limits for the raceways (pitch diameter from rib_diameter); the "
+                 "rib contact's pressure above 4000 MPa (ISO 76, roller bearings), an ellipse "
+                 "cut by the oil groove (edge_margin < 0), or hertz_point's limits",
     ),
 ]

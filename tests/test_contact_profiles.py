@@ -1,8 +1,9 @@
-"""Crown profile (paper 000 eq. 8), Palmgren's constant and the sliced line contact."""
+"""Crown profile (paper 000 eq. 8), Palmgren's constant, the sliced line contact, its pressure."""
 import numpy as np
 import pytest
 
-from models.contact import LINE_CONTACT_EXPONENT, palmgren_constant, sliced_line_contact
+from models.contact import (LINE_CONTACT_EXPONENT, largest_slice_line_load, line_contact_pressure,
+                            palmgren_constant, sliced_line_contact)
 from models.profiles import crown_shape, distinct_slices, slice_centres
 
 
@@ -73,3 +74,30 @@ def test_paper_law_drops_when_a_slice_pair_comes_into_contact():
     before = sliced_line_contact(np.array([second - 1e-12]), gaps, count, constant, "paper")[0]
     after = sliced_line_contact(np.array([second + 1e-12]), gaps, count, constant, "paper")[0]
     assert after[0] < before[0]
+
+
+def test_the_pressure_at_iso_76s_static_rating_is_4000_mpa():
+    # ISO 76:2006: C0r = 44 (1 - D cos a / dm) i Z l D cos a is the radial load that gives
+    # 4000 MPa at the centre of the most heavily loaded roller contact, with the load share
+    # Q_max = 5 Fr / (i Z cos a) behind ISO 76's factors (ISO/TR 10657). Tolerance 0.5 %:
+    # the factor 44 is rounded (E = 207 GPa, nu = 0.3 give 44.2).
+    d, dm, length, z = 10e-3, 65e-3, 9.6e-3, 14
+    rating = 44 * (1 - d / dm) * z * (length / 1e-3) * (d / 1e-3)  # [N]; lengths in mm
+    line_load = 5 * rating / z / length
+    pressure = line_contact_pressure(line_load, 2 / d + 2 / (dm - d), 207e9 / (2 * (1 - 0.3**2)))
+    assert pressure == pytest.approx(4000e6, rel=5e-3)
+
+
+def test_the_largest_slice_line_load_is_the_middle_slices_load_over_its_length():
+    # Uniform law: slice lambda carries K/k (delta - c_lambda)^n on l/k; 'paper' law: K/k_j.
+    k, constant, length, approach = 10, 3e9, 0.012, 1e-6
+    shape, count = distinct_slices(k)
+    gaps = 5e-6 * shape
+    n = LINE_CONTACT_EXPONENT
+    loads = constant / k * np.maximum(approach - 5e-6 * crown_shape(k), 0.0) ** n
+    uniform = largest_slice_line_load(np.array(approach), gaps, count, constant, length)
+    assert uniform == pytest.approx(loads.max() / (length / k), rel=1e-12)
+    loaded = np.count_nonzero(approach > 5e-6 * crown_shape(k))
+    paper = largest_slice_line_load(np.array(approach), gaps, count, constant, length, "paper")
+    assert paper == pytest.approx(loads.max() * k / loaded / (length / k), rel=1e-12)
+    assert 0 < loaded < k

@@ -162,3 +162,87 @@ def test_paper_fig12_zero_clearance_keeps_the_loaded_rollers():
     result = crb_radial(np.linspace(1000, 12000, 45), clearance=0.0, crown=0.004 * MM,
                         speed=5000 * RPM, **BEARING_D)
     assert np.unique(result["loaded_rollers"]).size == 1
+
+
+STEEL_MODULUS = 207e9 / (2 * (1 - 0.3**2))  # E* of two steel bodies, E = 207 GPa, nu = 0.3
+
+
+def test_a_straight_rollers_pressure_is_harris_line_contact_pressure():
+    # Harris & Kotzalas, Rolling Bearing Analysis, ch. 6: b = [8 Q (1 - nu^2) / (pi l E
+    # sum(rho))]^(1/2), sigma_max = 2 Q / (pi l b); inner contact sum(rho) = 2/D + 2/(dm - D),
+    # outer 2/D - 2/(dm + D). A straight roller's slices carry equal loads (no speed: the
+    # outer contact carries the same load on a flatter raceway, so the inner one governs).
+    result = crb_radial(np.array([1000.0, 4000.0, 12000.0]), clearance=0.02 * MM, **BEARING_D)
+    q, length = result["roller_load"], BEARING_D["effective_length"]
+    d, dm = BEARING_D["roller_diameter"], BEARING_D["pitch_diameter"]
+    curvature = 2 / d + 2 / (dm - d)
+    b = np.sqrt(8 * q * (1 - 0.3**2) / (np.pi * length * 207e9 * curvature))
+    with np.errstate(invalid="ignore", divide="ignore"):
+        expected = np.where(q > 0, 2 * q / (np.pi * length * b), 0.0)
+    np.testing.assert_allclose(result["max_contact_pressure"], expected, rtol=1e-9)
+    assert np.all(result["status"] == CONVERGED)
+
+
+def test_a_crowned_rollers_middle_slice_carries_more_than_its_mean():
+    # The logarithmic crown loads the middle slice most: its pressure exceeds that of the
+    # roller's mean load per unit length, more so with a larger crown; a straight roller's
+    # equals it.
+    result = crb_radial(4000.0, crown=np.array([0.0, 0.004, 0.01]) * MM, **BEARING_D)
+    d, dm = BEARING_D["roller_diameter"], BEARING_D["pitch_diameter"]
+    mean = np.sqrt(result["roller_load"][:, 0] / BEARING_D["effective_length"] * STEEL_MODULUS
+                   * (2 / d + 2 / (dm - d)) / np.pi)
+    ratio = result["max_contact_pressure"][:, 0] / mean
+    assert ratio[0] == pytest.approx(1.0, rel=1e-9)
+    assert 1.0 < ratio[1] < ratio[2]
+
+
+def test_absurd_loads_and_speeds_are_out_of_validity_with_their_values_kept():
+    # Issue 11: 1e6 kN gave a 522 mm displacement on a 10 mm roller, and 1e6 r/min, both
+    # "converged". Ordinary points stay converged.
+    from models.registry import OUT_OF_VALIDITY
+
+    by_load = crb_radial(np.array([4000.0, 1e9]), crown=0.004 * MM, **BEARING_D)
+    assert by_load["status"].tolist() == [CONVERGED, OUT_OF_VALIDITY]
+    assert by_load["radial_displacement"][1] > 100 * MM  # kept, not NaN
+    assert np.nanmax(by_load["max_contact_pressure"][1]) > 4000e6
+    by_speed = crb_radial(4000.0, speed=np.array([10000.0, 1e6]) * RPM, **BEARING_D)
+    assert by_speed["status"].tolist() == [CONVERGED, OUT_OF_VALIDITY]
+    assert np.isfinite(by_speed["radial_stiffness"][1])
+    assert by_speed["max_contact_pressure"][1].min() > 4000e6  # every roller, outer contact
+
+
+def test_a_soft_contact_constant_is_out_of_validity_by_its_approach():
+    # A hundred times softer than Palmgren's: 4 kN needs an approach of 4.6 % of D (limit 2 %).
+    from models.registry import OUT_OF_VALIDITY
+
+    soft = palmgren_constant(BEARING_D["effective_length"]) / 100
+    result = crb_radial(np.array([100.0, 4000.0]), contact_constant=soft, **BEARING_D)
+    assert result["status"].tolist() == [CONVERGED, OUT_OF_VALIDITY]
+    assert np.all(result["max_contact_pressure"] < 4000e6)
+
+
+@pytest.mark.parametrize("nan_input", ["radial_load", "speed", "clearance", "cage_position"])
+def test_a_nan_input_fails_the_point(nan_input):
+    values = dict(radial_load=4000.0, speed=5000 * RPM, clearance=0.01 * MM, cage_position=0.0)
+    values[nan_input] = np.array([values[nan_input], np.nan])
+    result = crb_radial(**values, crown=0.004 * MM, **BEARING_D)
+    assert result["status"].tolist() == [CONVERGED, NOT_CONVERGED]
+    assert np.isnan(result["radial_displacement"][1])
+    assert np.isnan(result["max_contact_pressure"][1]).all()
+
+
+def test_an_unconverged_free_outer_approach_fails_the_point(monkeypatch):
+    # The first solve of a spinning crowned bearing finds the outer approach that the
+    # centrifugal force alone causes; its convergence used to be dropped.
+    original = cylindrical.solve_increasing
+    calls = []
+
+    def first_starved(residual, lower, upper, start, xtol, max_iter=200):
+        calls.append(max_iter)
+        return original(residual, lower, upper, start, xtol, max_iter=1 if len(calls) == 1
+                        else max_iter)
+
+    monkeypatch.setattr(cylindrical, "solve_increasing", first_starved)
+    result = crb_radial(4000.0, crown=0.004 * MM, speed=8000 * RPM, **BEARING_D)
+    assert result["status"] == NOT_CONVERGED
+    assert np.isnan(result["radial_displacement"])

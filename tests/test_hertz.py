@@ -94,7 +94,7 @@ def test_hamrock_brewe_closed_forms_stay_near_the_exact_solution():
     # bound asserted is 5 %, and the circle (ratio 1) is exact.
     ratio = np.logspace(0, 2, 300)
     exact = hertz_point(100.0, ratio, 1.0, **STEEL)
-    approximate = hertz_point(100.0, ratio, 1.0, method="hamrock_brewe", **STEEL)
+    approximate = hertz_point(100.0, ratio, 1.0, formula="hamrock_brewe", **STEEL)
     for name in ("semi_major", "semi_minor", "approach", "max_pressure"):
         error = np.abs(approximate[name] / exact[name] - 1)
         assert error.max() < 0.05, name
@@ -134,3 +134,58 @@ def test_a_line_contact_is_refused_before_computing():
         spec.parse(text)
     ball_in_groove = text.replace('"0 1/mm"', '"0.2 1/mm"') + 'curvature_2y = "-0.19 1/mm"\n'
     assert spec.parse(ball_in_groove).fixed["curvature_2y"].si == pytest.approx(-190.0)
+
+
+def _steel_star():
+    return 207e9 / (2 * (1 - 0.3**2))
+
+
+@pytest.mark.parametrize("pressure, status", [(4100e6, 0), (4300e6, 4)])
+def test_a_pressure_beyond_iso_76s_4200_mpa_is_out_of_validity(pressure, status):
+    # Sphere (R = 10 mm) on a flat, Johnson eq. 4.24: p0 = (6 Q E*^2 / (pi^3 R^2))^(1/3),
+    # so Q = p0^3 pi^3 R^2 / (6 E*^2). Here a/R = pi p0 / (2 E*) < 0.06: only the pressure
+    # limit (ISO 76: 4200 MPa for ball bearings) decides.
+    radius = 0.01
+    load = pressure**3 * np.pi**3 * radius**2 / (6 * _steel_star() ** 2)
+    result = hertz_point(load, 1 / radius, 1 / radius, **STEEL)
+    assert result["max_pressure"] == pytest.approx(pressure, rel=1e-9)
+    assert result["status"] == status
+    assert np.isfinite(result["semi_major"])  # the values are kept
+
+
+@pytest.mark.parametrize("ratio, status", [(0.45, 0), (0.55, 4)])
+def test_a_contact_large_against_the_radius_is_out_of_validity(ratio, status):
+    # A soft sphere (E = 1 GPa) on a flat: a = (3 Q R / (4 E*))^(1/3) (Johnson eq. 4.22), so
+    # Q = 4 E* a^3 / (3 R); the pressure stays far below 4200 MPa and a/R decides (limit 0.5).
+    radius, soft = 0.01, dict(youngs_modulus=1e9, poisson_ratio=0.3)
+    star = 1e9 / (2 * (1 - 0.3**2))
+    load = 4 * star * (ratio * radius) ** 3 / (3 * radius)
+    result = hertz_point(load, 1 / radius, 1 / radius, **soft)
+    assert result["semi_major"] == pytest.approx(ratio * radius, rel=1e-9)
+    assert result["status"] == status
+
+
+def test_an_absurd_load_is_out_of_validity_with_its_values_kept():
+    # Issue 11: 1e9 N gave a semi-axis of metres and hundreds of GPa, "converged".
+    result = hertz_point(np.array([100.0, 1e9]), 1 / 0.004, 1 / 0.004, 1 / 0.02, -1 / 0.0042,
+                         **STEEL)
+    assert result["status"].tolist() == [0, 4]
+    assert result["max_pressure"][1] > 1e11 and np.isfinite(result["approach"][1])
+
+
+def test_a_nan_load_fails_the_point():
+    result = hertz_point(np.array([100.0, np.nan]), 250.0, 250.0, **STEEL)
+    assert result["status"].tolist() == [0, 1]
+
+
+def test_the_formula_choice_is_selectable_in_a_dataset():
+    # The input was called `method`, which xarray's .sel() takes as its own keyword: a
+    # dimension of that name could not be selected by label.
+    import xarray as xr
+
+    from models.registry import get_model
+
+    choice = next(i for i in get_model("hertz_point").inputs if i.kind == "choice")
+    data = xr.DataArray([1.0, 2.0], dims=choice.name, coords={choice.name: list(choice.choices)})
+    assert float(data.sel({choice.name: "hamrock_brewe"})) == 2.0
+    assert float(data.sel(**{choice.name: "hamrock_brewe"})) == 2.0

@@ -3,7 +3,7 @@ import numpy as np
 import pytest
 from scipy.optimize import minimize
 
-from models.registry import CONVERGED, MODEL_ERROR
+from models.registry import CONVERGED, NOT_CONVERGED
 from models.runout import crb_runout, roller_angles
 
 MM, UM = 1e-3, 1e-6
@@ -83,8 +83,7 @@ def _direct_lowest_centre(step_rotation, errors, order, amplitude, phase):
         direction = np.arctan2(towards[1], towards[0])
         return np.hypot(*towards) - radius(j, direction + np.pi) - 0.5 * di
 
-    # Searched in micrometres: SLSQP's tolerances are absolute, and in metres the whole
-    # problem sits below them (scipy 1.16's SLSQP then wanders off).
+    # In micrometres, so that the minimiser's steps and tolerances are of order one.
     constraints = [{"type": "ineq", "fun": lambda c, j: gap(c * UM, j) / UM, "args": (j,)}
                    for j in lower]
     found = minimize(lambda c: c[1], x0=np.array([0.0, 0.0]), constraints=constraints,
@@ -140,4 +139,28 @@ def test_even_orders_peak_at_multiples_of_the_roller_count():
 def test_a_pattern_of_the_wrong_length_is_an_error():
     with pytest.raises(ValueError, match="4 values for 14 rollers"):
         crb_runout(**NU208, roller_diameter_error=np.zeros(4))
-    assert MODEL_ERROR != CONVERGED
+
+
+def test_a_nan_input_fails_the_point_as_not_converged():
+    # No resting position can be found from a NaN; model_error is kept for exceptions.
+    result = crb_runout(**{**NU208, "roller_diameter": np.array([10.998 * MM, np.nan])},
+                        revolutions=1, steps_per_revolution=36)
+    assert result["status"].tolist() == [CONVERGED, NOT_CONVERGED]
+    assert np.isnan(result["runout"][1])
+
+
+def test_a_zero_clearance_written_in_mm_is_accepted():
+    # Issue 11: NU208 number 1 with de = 71.478 mm = di + 2 D has zero clearance, but in
+    # metres the difference came out -3.5e-18 m and the definition was refused.
+    from sweeps import spec
+
+    text = ('[sweep]\nmodel = "crb_runout"\nbearing = "paper004-NU208-1"\n[fixed]\n'
+            'outer_raceway_diameter = "71.478 mm"\n')
+    sweep = spec.parse(text)
+    arguments = {name: value.si for name, value in sweep.fixed.items() if value is not None}
+    result = crb_runout(**arguments)
+    assert result["status"][0] == CONVERGED
+    assert result["runout"][0] < 1e-9 * UM
+    tight = text.replace("71.478 mm", "71.4779 mm")  # 0.1 um of interference: refused
+    with pytest.raises(spec.SpecError, match="must not be negative"):
+        spec.parse(tight)

@@ -2,7 +2,7 @@
 import numpy as np
 import pytest
 
-from models.registry import CONVERGED, INFEASIBLE
+from models.registry import CONVERGED, INFEASIBLE, NO_ROOT_IN_RANGE, NOT_CONVERGED, OUT_OF_VALIDITY
 from models.tapered import paper_contact_constant, trb_load, trb_rib
 
 MM = 1e-3
@@ -56,7 +56,8 @@ def test_the_papers_limit_rib_angle_and_ellipse():
     # 89 deg 18' 58", where b = CE = 0.6506 mm. The rib diameter is not stated: the preset's
     # comes from Table 1's rib radius rho = 109 mm at 88 deg 53', so this is a prediction.
     result = trb_rib(40e3, 27e3, **BEARING, **END, rib_angle=LIMIT, rib_force="paper")
-    assert result["status"][0] == CONVERGED
+    # 2" past the model's limit the groove cuts the ellipse by 0.8 um: out of validity.
+    assert result["status"][0] == OUT_OF_VALIDITY
     assert np.degrees(result["limit_rib_angle"][0]) * 3600 == pytest.approx(
         np.degrees(LIMIT) * 3600, abs=5.0)  # arcseconds
     assert result["semi_minor"][0] / MM == pytest.approx(0.6506, abs=0.002)
@@ -134,3 +135,115 @@ def test_the_rib_curvature_is_the_normals_length_to_the_axis():
     apex = END["rib_diameter"] / (2 * np.sin(beta))  # eq. 6: from the raceway cone's apex
     assert paper["rib_curvature_radius"][0] == pytest.approx(
         np.sqrt(apex**2 - np.sum((contact - foot) ** 2)), rel=1e-12)
+
+
+# -- the limit search where the contact is not a point contact everywhere (issue 11, item 16)
+
+def test_the_limit_is_found_where_the_low_rib_angles_give_no_point_contact():
+    # With SR = 107 mm the rib curves more than the end sphere below about 80.5 deg (no point
+    # contact there), which used to leave the limit NaN under 'converged'. scipy's brentq on
+    # the model's own edge margin between 89 and 90 deg is the independent check.
+    from scipy.optimize import brentq
+
+    end = {**END, "roller_end_radius": 107 * MM}
+    low = trb_rib(40e3, 27e3, **BEARING, **end, rib_angle=DEG(80.0))
+    assert low["status"][0] == INFEASIBLE
+    result = trb_rib(40e3, 27e3, **BEARING, **end, rib_angle=DEG(89.0))
+    assert result["status"][0] == CONVERGED
+
+    def margin(psi):
+        return trb_rib(40e3, 27e3, **BEARING, **end, rib_angle=psi)["edge_margin"][0]
+
+    expected = brentq(margin, DEG(89.0), DEG(90.0), xtol=1e-12)
+    assert result["limit_rib_angle"][0] == pytest.approx(expected, abs=1e-8)
+    assert np.degrees(expected) == pytest.approx(89.3, abs=0.05)
+
+
+def test_no_limit_in_the_range_is_said_and_the_other_outputs_hold():
+    # A small end sphere (SR = 80 mm) keeps the ellipse off the groove up to 90 deg.
+    result = trb_rib(40e3, 27e3, **BEARING, **{**END, "roller_end_radius": 80 * MM},
+                     rib_angle=DEG(89.0))
+    assert result["status"][0] == NO_ROOT_IN_RANGE
+    assert np.isnan(result["limit_rib_angle"][0])
+    assert result["edge_margin"][0] > 0 and np.isfinite(result["max_pressure"][0])
+    at_90 = trb_rib(40e3, 27e3, **BEARING, **{**END, "roller_end_radius": 80 * MM},
+                    rib_angle=DEG(90.0) - 1e-9)
+    assert at_90["edge_margin"][0] > 0  # the margin never reaches zero in the range
+
+
+def test_a_nan_input_fails_the_rib_point():
+    groove = np.array([1 * MM, np.nan])
+    result = trb_rib(40e3, 27e3, **BEARING, **{**END, "oil_groove_size": groove},
+                     rib_angle=DEG(89.0))
+    assert result["status"].tolist() == [CONVERGED, NOT_CONVERGED]
+
+
+# -- contact pressure and validity of trb_load (issue 11, item 3)
+
+PITCH = 79.5 * MM  # about paper 003's: d_i - l sin(beta) + D_w cos(beta) with d_i = 74.007 mm
+
+
+def test_the_cone_pressure_is_harris_line_contact_pressure():
+    # Harris & Kotzalas, ch. 6: b = [8 Q (1 - nu^2) / (pi l E sum(rho))]^(1/2), sigma_max =
+    # 2 Q / (pi l b); on the cone sum(rho) = 2/Dw + 2 cos a / (dm - Dw cos a), the cone's
+    # radius across its generatrix being its radius over cos a. Table 2's loads.
+    result = trb_load(40e3, 27e3, **BEARING, pitch_diameter=PITCH)
+    q, length, dw = result["roller_load"][0], 21.5 * MM, 13.71 * MM
+    alpha = DEG(28)
+    curvature = 2 / dw + 2 * np.cos(alpha) / (PITCH - dw * np.cos(alpha))
+    b = np.sqrt(8 * q * (1 - 0.3**2) / (np.pi * length * 206e9 * curvature))
+    with np.errstate(invalid="ignore", divide="ignore"):
+        expected = np.where(q > 0, 2 * q / (np.pi * length * b), 0.0)
+    np.testing.assert_allclose(result["max_contact_pressure"][0], expected, rtol=1e-9)
+    assert 1800e6 < result["max_contact_pressure"][0, 0] < 1830e6  # roller 1, 11423 N
+    assert result["status"][0] == CONVERGED
+
+
+def test_trb_rib_checks_the_raceways_with_its_own_pitch_diameter():
+    # trb_rib passes trb_load d_m = d_i - l sin(beta) + D_w cos(beta) (= 79.537 mm here):
+    # five and a half times the loads give 4256 MPa on the cone (pressure ~ load^(1/2)).
+    scale = 5.5
+    result = trb_rib(scale * 40e3, scale * 27e3, **BEARING, **END, rib_angle=DEG(85.0))
+    assert result["status"][0] == OUT_OF_VALIDITY
+    assert result["max_pressure"][0] < 4000e6 and result["edge_margin"][0] > 0  # not the rib
+    alone = trb_rib(40e3, 27e3, **BEARING, **END, rib_angle=DEG(85.0))
+    assert alone["status"][0] == CONVERGED
+
+
+def test_a_cone_pressure_beyond_4000_mpa_is_out_of_validity_with_values_kept():
+    # Five and a half times paper 003's loads: the roller loads scale with the loads (the
+    # load law is homogeneous), the pressure with their square root, 1815 MPa -> 4256 MPa,
+    # while the compression (0.25 % of Dw -> 1.2 %) stays below its 2 % limit. Without the
+    # pitch diameter there is no pressure to check.
+    scale = 5.5
+    loads = dict(radial_load=np.array([40e3, scale * 40e3]),
+                 axial_load=np.array([27e3, scale * 27e3]))
+    result = trb_load(**loads, **BEARING, pitch_diameter=PITCH)
+    assert result["status"].tolist() == [CONVERGED, OUT_OF_VALIDITY]
+    assert result["max_contact_pressure"][1, 0] == pytest.approx(
+        np.sqrt(scale) * result["max_contact_pressure"][0, 0], rel=1e-6)
+    assert result["roller_load"][1, 0] == pytest.approx(scale * 11423, rel=2e-4)
+    blind = trb_load(**loads, **BEARING)
+    assert blind["status"].tolist() == [CONVERGED, CONVERGED]
+    assert np.isnan(blind["max_contact_pressure"]).all()
+
+
+def test_an_absurd_load_is_out_of_validity_by_its_compression():
+    result = trb_load(np.array([40e3, 4e7]), np.array([27e3, 2.7e7]), **BEARING)
+    assert result["status"].tolist() == [CONVERGED, OUT_OF_VALIDITY]
+    assert np.isfinite(result["axial_displacement"][1])
+
+
+def test_the_limits_do_not_depend_on_the_other_points_in_the_batch():
+    # Points without a limit (small SR) among points with one: each keeps its own.
+    radii = np.array([80.0, 90.0, 103.0, 107.0, 120.0]) * MM
+    together = trb_rib(40e3, 27e3, **BEARING, **{**END, "roller_end_radius": radii},
+                       rib_angle=DEG(89.0))
+    for i, radius in enumerate(radii):
+        alone = trb_rib(40e3, 27e3, **BEARING, **{**END, "roller_end_radius": radius},
+                        rib_angle=DEG(89.0))
+        assert alone["status"][0] == together["status"][i]
+        np.testing.assert_array_equal(alone["limit_rib_angle"][0],
+                                      together["limit_rib_angle"][i])
+    assert together["status"].tolist() == [NO_ROOT_IN_RANGE, CONVERGED, CONVERGED, CONVERGED,
+                                           INFEASIBLE]
