@@ -236,7 +236,8 @@ MODELS = [Model(
             "roller slip in time, from the steady state.",
     reference="Paper 002, eq. 27-28 and section 3",
     version="2",
-    inputs=tuple(i for i in STEADY_MODELS[0].inputs if i.name != "orbit_points") + (
+    inputs=tuple(i for i in STEADY_MODELS[0].inputs if i.name not in ("orbit_points", "branch"))
+    + (
         Input("cage_density", "kg/m^3", "cage density (brass: 8600)", default=8600.0,
               minimum=0.0, exclusive_minimum=True),
         Input("cage_eccentricity", "mm", "distance of the cage's mass centre from its "
@@ -253,6 +254,7 @@ MODELS = [Model(
               exclusive_minimum=True, maximum=10.0),
         Input("output_interval", "s", "interval of the returned samples", default=1e-4,
               minimum=0.0, exclusive_minimum=True),
+        STEADY_MODELS[0].input("branch"),
     ),
     outputs=(
         Output("cage_slip", "percent", "cage slip 1 - omega_c / omega_c,kin (eq. 27)",

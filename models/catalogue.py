@@ -85,10 +85,12 @@ _PRESETS = (
     Preset(
         name="paper003-table1",
         model="trb_load",
-        values=_PAPER003_LOADING,
+        values={**_PAPER003_LOADING, "pitch_diameter": "79.537 mm"},
         source="Paper 003, Table 1 (single-row tapered roller bearing of a vehicle reducer)",
         notes="Roller length 21.5 mm is taken as the effective length l of eq. 14; the "
-              "contact constant is eq. 14's default.",
+              "contact constant is eq. 14's default. The pitch diameter (for the contact "
+              "pressure only) is not stated: 79.537 mm is the one trb_rib derives from the "
+              "rib diameter of paper003-table1-rib.",
     ),
     Preset(
         name="paper003-table1-rib",

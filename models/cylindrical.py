@@ -443,11 +443,14 @@ MODELS = [Model(
         Input("roller_density", "kg/m^3", "roller density rho", default=7850.0, minimum=0.0),
         Input("contact_constant", "N/mm^(10/9)", "load-deflection constant K of one contact, "
               "Q = K delta^(10/9); default Palmgren 8.06e4 l^(8/9) (N, mm)", default=None,
-              minimum=0.0, exclusive_minimum=True),
+              minimum=0.0, exclusive_minimum=True,
+              label="load-deflection constant K"),
         Input("cage_position", "deg", "azimuth of roller 1 from the load direction",
-              default=0.0, minimum=-360.0, maximum=360.0),
+              default=0.0, minimum=-360.0, maximum=360.0,
+              label="azimuth of roller 1"),
         Input("perturbation", "mm", "displacement step of the forward-difference stiffness "
-              "(section 2.3)", default=0.001, minimum=0.0, exclusive_minimum=True),
+              "(section 2.3)", default=0.001, minimum=0.0, exclusive_minimum=True,
+              label="perturbation step"),
         Input("youngs_modulus", "GPa", "Young's modulus of rollers and rings (contact pressure "
               "only)", default=207.0, minimum=0.0, exclusive_minimum=True),
         Input("poisson_ratio", "1", "Poisson's ratio of rollers and rings (contact pressure "
@@ -458,15 +461,19 @@ MODELS = [Model(
         Output("radial_stiffness", "N/mm", "radial stiffness dFr/d(delta_r), implicit "
                "differentiation (eq. 12-16)"),
         Output("perturbation_stiffness", "N/mm", "forward-difference radial stiffness with the "
-               "displacement step 'perturbation'"),
+               "displacement step 'perturbation'",
+               label="perturbation stiffness"),
         Output("loaded_rollers", "1", "number of rollers carrying load"),
         Output("centrifugal_force", "N", "centrifugal force of one roller (eq. 3)"),
         Output("roller_load", "N", "inner-raceway contact load of each roller (eq. 9)",
-               dims=("roller",)),
+               dims=("roller",),
+               label="roller load"),
         Output("inner_contact_deflection", "mm", "inner-raceway contact approach of each roller; "
-               "negative: its gap", dims=("roller",)),
+               "negative: its gap", dims=("roller",),
+               label="inner contact approach"),
         Output("max_contact_pressure", "MPa", "largest Hertz line-contact pressure of each "
-               "roller's slices, inner or outer raceway", dims=("roller",)),
+               "roller's slices, inner or outer raceway", dims=("roller",),
+               label="maximum contact pressure"),
     ),
     dim_sizes={"roller": "roller_count"},
     constraints=(

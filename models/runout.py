@@ -22,7 +22,8 @@ from __future__ import annotations
 import numpy as np
 
 from models.geometry import elements_fit
-from models.registry import CONVERGED, NOT_CONVERGED, Constraint, Input, Model, Output
+from models.registry import (CONVERGED, NOT_CONVERGED, Constraint, DimCoordinate, Input, Model,
+                             Output)
 
 SPINS = ("absolute", "paper")
 _TIE = 1e-13  # [m]: lines this close count as meeting
@@ -246,6 +247,11 @@ def _fits(inner_raceway_diameter, outer_raceway_diameter, roller_diameter, rolle
                         roller_diameter)
 
 
+def _rotation_angles(size, steps_per_revolution):
+    """The rotation of every step [rad] when one step count serves the whole grid."""
+    return 2.0 * np.pi * np.arange(size) / steps_per_revolution
+
+
 def _clearance(inner_raceway_diameter, outer_raceway_diameter, roller_diameter):
     # Zero clearance written in mm may come out a few 1e-18 m negative in metres.
     clearance = outer_raceway_diameter - inner_raceway_diameter - 2.0 * roller_diameter
@@ -260,11 +266,13 @@ def _whole_orders(roller_roundness_order, inner_roundness_order, outer_roundness
 def _roundness(part: str, dims: tuple, per: str):
     return (
         Input(f"{part}_roundness_order", "1", f"{per} harmonic order n of the {part} profile "
-              "(0: round)", default=0.0, kind="number", minimum=0.0, dims=dims, broadcast=True),
+              "(0: round)", default=0.0, kind="number", minimum=0.0, dims=dims, broadcast=True,
+              label=f"{part} roundness order"),
         Input(f"{part}_roundness_amplitude", "um", f"{per} amplitude C of the {part} radius",
-              default=0.0, minimum=0.0, dims=dims, broadcast=True),
+              default=0.0, minimum=0.0, dims=dims, broadcast=True,
+              label=f"{part} roundness amplitude"),
         Input(f"{part}_roundness_phase", "deg", f"{per} phase psi of the {part} harmonic",
-              default=0.0, dims=dims, broadcast=True),
+              default=0.0, dims=dims, broadcast=True, label=f"{part} roundness phase"),
     )
 
 
@@ -297,22 +305,31 @@ MODELS = [Model(
               "eq. 1 as printed (spin relative to the cage)", default="absolute",
               kind="choice", choices=SPINS),
         Input("phase_seed", "1", "0: roller phases as given; else drawn at random from this "
-              "seed", default=0, kind="count", minimum=0),
+              "seed", default=0, kind="count", minimum=0,
+              label="phase seed"),
         Input("order_seed", "1", "0: diameter errors in the order given; else shuffled by "
-              "this seed", default=0, kind="count", minimum=0),
+              "this seed", default=0, kind="count", minimum=0,
+              label="order seed"),
     ),
     outputs=(
-        Output("runout", "um", "largest minus smallest distance between the ring centres"),
+        Output("runout", "um", "largest minus smallest distance between the ring centres",
+               label="runout"),
         Output("vertical_runout", "um", "largest minus smallest height of the inner-ring "
-               "centre"),
+               "centre",
+               label="vertical runout"),
         Output("center_x", "um", "horizontal position of the inner-ring centre",
-               dims=("angle",)),
-        Output("center_y", "um", "vertical position of the inner-ring centre", dims=("angle",)),
+               dims=("angle",),
+               label="inner-ring centre x"),
+        Output("center_y", "um", "vertical position of the inner-ring centre", dims=("angle",),
+               label="inner-ring centre y"),
         Output("rotation_angle", "deg", "inner-ring rotation alpha", dims=("angle",)),
         Output("assembly_order", "1", "which of the given diameter errors each roller position "
-               "has", dims=("roller",)),
+               "has", dims=("roller",),
+               label="assembly order"),
     ),
     dim_sizes={"angle": "revolutions*steps_per_revolution", "roller": "roller_count"},
+    dim_coordinates={"angle": DimCoordinate(("steps_per_revolution",), _rotation_angles, "deg",
+                                            "inner-ring rotation")},
     constraints=(
         Constraint(("inner_raceway_diameter", "outer_raceway_diameter", "roller_diameter",
                     "roller_count"), _fits, "the rollers do not fit on the pitch circle"),

@@ -482,14 +482,17 @@ MODELS = [
                   minimum=0.0, exclusive_minimum=True),
             _MODULUS, _POISSON),
         outputs=(
-            Output("radial_displacement", "mm", "radial displacement delta_r of the inner ring"),
-            Output("axial_displacement", "mm", "axial displacement delta_a of the inner ring"),
+            Output("radial_displacement", "mm", "radial displacement delta_r of the inner ring",
+                   label="radial displacement"),
+            Output("axial_displacement", "mm", "axial displacement delta_a of the inner ring",
+                   label="axial displacement"),
             Output("roller_load", "N", "cup contact load Qe of each roller (eq. 18); roller 1 "
                    "on the radial load", dims=("roller",)),
             Output("loaded_rollers", "1", "number of rollers carrying load"),
             Output("max_contact_pressure", "MPa", "Hertz line-contact pressure of each roller "
                    "on the cone (inner raceway, the more curved), its load Qe spread over l; "
-                   "NaN without pitch_diameter", dims=("roller",)),
+                   "NaN without pitch_diameter", dims=("roller",),
+                   label="maximum contact pressure"),
         ),
         dim_sizes={"roller": "roller_count"},
         constraints=(_CARRIED, Constraint(
@@ -517,10 +520,12 @@ MODELS = [
             Input("roller_end_radius", "mm", "radius SR of the roller's spherical end",
                   minimum=0.0, exclusive_minimum=True),
             Input("rib_angle", "deg", "rib angle Psi between rib generatrix and inner raceway",
-                  minimum=80.0, maximum=90.0, exclusive_minimum=True),
+                  minimum=80.0, maximum=90.0, exclusive_minimum=True,
+                  label="rib angle"),
             Input("oil_groove_size", "mm", "oil groove size m along the rib", minimum=0.0),
             Input("rib_diameter", "mm", "inner ring diameter di where the rib meets the raceway "
-                  "line", minimum=0.0, exclusive_minimum=True),
+                  "line", minimum=0.0, exclusive_minimum=True,
+                  label="rib diameter di"),
             _MODULUS, _POISSON,
             _CONSTANT,
             Input("rib_force", "", "balance: the roller's force balance (eq. 10); paper: "
@@ -531,20 +536,27 @@ MODELS = [
         ),
         outputs=(
             Output("rib_load", "N", "rib contact load Qr"),
-            Output("semi_major", "mm", "semi-major axis a of the rib contact ellipse"),
-            Output("semi_minor", "mm", "semi-minor axis b of the rib contact ellipse"),
+            Output("semi_major", "mm", "semi-major axis a of the rib contact ellipse",
+                   label="semi-major axis a"),
+            Output("semi_minor", "mm", "semi-minor axis b of the rib contact ellipse",
+                   label="semi-minor axis b"),
             Output("approach", "mm", "approach delta of roller end and rib"),
             Output("max_pressure", "MPa", "maximum rib contact pressure p0"),
             Output("groove_distance", "mm", "distance CE of the contact point from the oil "
-                   "groove's edge (eq. 19)"),
+                   "groove's edge (eq. 19)",
+                   label="distance CE to the oil groove"),
             Output("edge_margin", "mm", "CE - b: negative where the ellipse is cut by the "
-                   "groove (eq. 20)"),
-            Output("limit_rib_angle", "deg", "rib angle at which CE = b for the other inputs"),
+                   "groove (eq. 20)",
+                   label="edge margin CE - b"),
+            Output("limit_rib_angle", "deg", "rib angle at which CE = b for the other inputs",
+                   label="limit rib angle"),
             Output("roller_load", "N", "cup load Qe of the most loaded roller"),
             Output("inner_load", "N", "inner raceway load Qi of that roller"),
             Output("inner_load_offset", "mm", "where Qi acts for the roller's moment balance, "
-                   "from the middle of the contact towards the rib"),
-            Output("rib_curvature_radius", "mm", "rib radius of curvature R12 at the contact"),
+                   "from the middle of the contact towards the rib",
+                   label="inner load offset"),
+            Output("rib_curvature_radius", "mm", "rib radius of curvature R12 at the contact",
+                   label="rib radius of curvature R12"),
         ),
         constraints=(_CARRIED, Constraint(
             ("roller_end_radius", "roller_large_diameter"), _end_sphere_fits,
