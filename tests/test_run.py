@@ -186,3 +186,19 @@ def test_statuses_combine_by_severity():
     c, nc, inf, err, oov, nr = range(6)
     assert combine([c, oov, nr, c, inf], [oov, c, oov, nc, nc]).tolist() == [oov, oov, nr, nc, nc]
     assert combine(err, [c, nc, inf, oov, nr]).tolist() == [err] * 5
+
+
+def test_files_written_in_different_units_combine_into_one_consistent_axis(tmp_path):
+    paths = []
+    for name, loads in (("newtons", '["1 N", "12 N"]'), ("kilonewtons", '["13 kN", "14 kN"]')):
+        text = TEXT.replace('radial_load = { start = "0.5 kN", stop = "12 kN", num = 9 }',
+                            f"radial_load = {loads}")
+        paths.append(tmp_path / f"{name}.nc")
+        run_sweep(spec.parse(text, f"{name}.toml"), paths[-1], Executor(workers=0),
+                  progress=False)
+    with xr.open_mfdataset(paths, combine="nested", concat_dim="radial_load",
+                           data_vars="minimal", coords="minimal", compat="override") as both:
+        assert both.radial_load.values.tolist() == [1, 12, 13000, 14000]
+        assert both.radial_load.attrs["units"] == "N"
+        stiffness = both.radial_stiffness.sel(clearance=0.02, slices=30, arrangement="uniform")
+        assert (np.diff(stiffness.values) > 0).all()  # stiffer with load across both files
