@@ -7,14 +7,41 @@ import numpy as np
 import pytest
 import xarray as xr
 
+from sweeps import units
 from sweeps.plotting import at, conditions, in_unit
+from sweeps.store import open_result
 from sweeps.study import find_studies
 
 STUDIES = Path(__file__).resolve().parents[1] / "studies"
 
+#: Another unit for each unit the studies' inputs are stored in: a figure script that selects
+#: or draws by bare numbers in the stored unit gives other numbers in these.
+OTHER_UNIT = {"N": "kN", "mm": "um", "um": "nm", "degree": "arcmin", "rpm": "rad/s"}
 
-# radial_stiffness is left to `make reproduce`: its sweeps take half a minute.
-@pytest.mark.parametrize("name", ["ball_stiffness", "tapered_rib", "runout", "cage_slip"])
+
+def _store_in_other_units(source: Path, target: Path) -> int:
+    """Copy every result in ``source`` to ``target`` with its inputs (coordinates and fixed
+    inputs) in other units; return how many variables were converted."""
+    target.mkdir(parents=True)
+    converted = 0
+    for path in sorted(source.glob("*.nc")):
+        data = open_result(path)
+        for name, variable in list(data.variables.items()):
+            unit = variable.attrs.get("units")
+            if unit not in OTHER_UNIT or not (name in data.coords or "origin" in variable.attrs):
+                continue
+            values = units.convert(variable.values, units.parse_unit(unit),
+                                   units.parse_unit(OTHER_UNIT[unit]))
+            replaced = (variable.dims, values, {**variable.attrs, "units": OTHER_UNIT[unit]})
+            data = (data.assign_coords({name: replaced}) if name in data.coords
+                    else data.assign({name: replaced}))
+            converted += 1
+        data.to_netcdf(target / path.name, engine="netcdf4")
+    return converted
+
+
+@pytest.mark.parametrize("name", ["ball_stiffness", "tapered_rib", "runout", "cage_slip",
+                                  "radial_stiffness"])
 def test_a_study_regenerates_its_figures_and_report(name, tmp_path):
     study = find_studies(STUDIES)[name]
     folders = ["--studies", STUDIES, "--results", tmp_path / "results", "--figures",
@@ -31,6 +58,27 @@ def test_a_study_regenerates_its_figures_and_report(name, tmp_path):
     computed = [claim for claim in study.claims() if "paper" in claim and "not recomputed"
                 not in claim.get("assumptions", "")]
     assert page.count("not computed") == len(study.claims()) - len(computed)
+
+
+@pytest.mark.parametrize("name", ["ball_stiffness", "tapered_rib", "runout",
+                                  "radial_stiffness"])
+def test_a_study_selects_by_quantity_not_by_stored_numbers(name, tmp_path):
+    """The same results with their inputs stored in other units give the same stated numbers
+    and still draw: the figure scripts select by quantities and convert what they show."""
+    study = find_studies(STUDIES)[name]
+    done = subprocess.run([sys.executable, "-m", "sweeps", "study", name, "--workers", "0",
+                           "--studies", str(STUDIES), "--results", str(tmp_path / "results"),
+                           "--figures", str(tmp_path / "figures")],
+                          capture_output=True, text=True, timeout=300, cwd=tmp_path)
+    assert done.returncode == 0, done.stderr
+    stored = tmp_path / "results" / name
+    assert _store_in_other_units(stored, tmp_path / "other") > 0
+    module = study.figures_module()
+    ours, in_other_units = module.ours(stored), module.ours(tmp_path / "other")
+    assert in_other_units == pytest.approx(ours, rel=1e-9, nan_ok=True)
+    (tmp_path / "redrawn").mkdir()
+    module.draw(tmp_path / "other", tmp_path / "redrawn")
+    assert sorted(p.name for p in (tmp_path / "redrawn").iterdir()) == sorted(module.FIGURES)
 
 
 def _loads(values_in_n):
