@@ -118,7 +118,8 @@ def _geometry(results, figures):
                                    ("radial_stiffness", radial, radial.radial_load, axes[1])):
         ratio = data[name].sel(form="fixed_angle") / data[name].sel(form="jones")
         axis.plot(load, 100 * (ratio - 1), "o-", ms=2)
-        axis.set(xlabel=label(load), ylabel=f"{name.replace('_', ' ')}:\nfixed angle / Jones - 1 [%]")
+        axis.set(xlabel=label(load),
+                 ylabel=f"{name.replace('_', ' ')}:\nfixed angle / Jones - 1 [%]")
         axis.grid(alpha=0.3)
     axes[0].set_title(conditions(axial, "radial_load", preset=False), fontsize=9)
     axes[1].set_title(conditions(radial, "axial_load", preset=False), fontsize=9)

@@ -40,10 +40,6 @@ def draw(results: Path, figures: Path):
     _assembly(results, figures)
 
 
-#: The inputs every figure of equal roller harmonics states.
-_HARMONICS = ("roller_count", "roller_roundness_amplitude", "roller_roundness_phase")
-
-
 def _table3(results, figures):
     data = result(results, "fig07_table3")
     figure, axis = plt.subplots(figsize=(8, 3.6))
