@@ -69,3 +69,61 @@ def at(data, method=None, **where):
             scale = np.max(np.abs(converted)) if np.size(converted) else 0.0
             data = data.sel({name: converted}, method="nearest", tolerance=1e-9 * scale)
     return data
+
+
+def in_unit(variable: xr.DataArray, unit: str) -> xr.DataArray:
+    """``variable``'s values in ``unit``, whatever unit the file stores them in.
+
+    Its ``units`` attribute becomes ``unit``, so ``label`` shows it; a dimension coordinate is
+    converted with its index, so ``data.assign_coords(radial_load=in_unit(data.radial_load,
+    "kN"))`` draws and selects in kN. A variable without ``units`` holds SI values (UDUNITS has
+    no form for fractional powers such as N/m^1.5: the file says so in ``comment``).
+    """
+    stored = variable.attrs.get("units")
+    if stored is None:
+        values = units.from_si(variable.values, unit)
+    else:
+        values = units.convert(variable.values, units.parse_unit(stored),
+                               units.parse_unit(unit))
+    converted = variable.copy(data=values)
+    converted.attrs["units"] = unit
+    if variable.name in variable.dims:
+        converted = converted.assign_coords({variable.name: converted.variable})
+    return converted
+
+
+def conditions(data: xr.Dataset, *names: str, width: int | None = 80, preset: bool = True,
+               **shown_in: str) -> str:
+    """The preset (unless ``preset`` is false) and the inputs ``names`` a result holds fixed,
+    as read from the file: ``"paper000-D: speed = 5000 rpm, crown = 0.004 mm"``, wrapped
+    between inputs at ``width`` characters (None: one line).
+
+    Each value is shown in the unit ``shown_in`` names for it (``radial_load="kN"``), else in
+    the unit its definition was written in, else in its stored unit. An input that varies
+    over a pattern is shown as its range.
+    """
+    parts = []
+    for name in names:
+        variable = data[name]
+        unit = shown_in.get(name, variable.attrs.get("written_units",
+                                                     variable.attrs.get("units", "1")))
+        if variable.dtype.kind in "OUS":
+            parts.append(f"{name.replace('_', ' ')} = {variable.values}")
+            continue
+        if "units" in variable.attrs or unit != "1":
+            variable = in_unit(variable, unit)
+        low, high = float(variable.min()), float(variable.max())
+        shown = f"{low:g}" if low == high else f"{low:g} to {high:g}"
+        shown_unit = "" if unit == "1" else " " + {"degree": "deg"}.get(unit, unit)
+        parts.append(f"{name.replace('_', ' ')} = {shown}{shown_unit}")
+    bearing = data.attrs.get("bearing") if preset else None
+    if bearing:
+        parts = [f"{bearing}:" + (f" {parts[0]}" if parts else ""), *parts[1:]]
+    lines = [""]
+    for part in parts:  # wrapped between inputs, never inside one
+        if lines[-1] and width and len(lines[-1]) + len(part) + 2 > width:
+            lines[-1] += ","
+            lines.append(part)
+        else:
+            lines[-1] += (", " if lines[-1] else "") + part
+    return "\n".join(lines)

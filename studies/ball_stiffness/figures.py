@@ -6,7 +6,7 @@ import matplotlib.pyplot as plt
 import numpy as np
 
 from sweeps import units
-from sweeps.plotting import label, result, save
+from sweeps.plotting import at, conditions, in_unit, label, result, save
 
 FIGURES = {
     "fig06_07_axial.png": "Figs. 6-7: 71807AC, axial displacement and axial stiffness against "
@@ -39,33 +39,46 @@ def draw(results: Path, figures: Path):
     _contact_constant(results, figures)
 
 
+#: The units the figures show: displacements in um, stiffnesses in kN/mm.
+_SHOWN = {"axial_displacement": "um", "radial_displacement": "um", "axial_stiffness": "kN/mm",
+          "radial_stiffness": "kN/mm"}
+
+
 def _axial(results, figures):
     data, hertz = result(results, "fig06_07_axial"), result(results, "fig06_07_axial_hertz")
-    figure, axes = plt.subplots(1, 2, figsize=(9, 3.6))
+    figure, axes = plt.subplots(1, 2, figsize=(9, 3.9))
     for axis, name in zip(axes, ("axial_displacement", "axial_stiffness")):
         for form in data.form.values:
-            axis.plot(data.axial_load, data[name].sel(form=form), "o-", ms=2,
-                      label=f"{_FORMS[form]}, paper's K")
-        axis.plot(hertz.axial_load, hertz[name], "s--", ms=2,
-                  label="Jones, Hertz K (fi 0.52, fo 0.53)")
-        axis.set(xlabel=label(data.axial_load), ylabel=label(data[name]))
+            axis.plot(data.axial_load, in_unit(data[name].sel(form=form), _SHOWN[name]), "o-",
+                      ms=2, label=f"{_FORMS[form]}, paper's K")
+        axis.plot(hertz.axial_load, in_unit(hertz[name], _SHOWN[name]), "s--", ms=2,
+                  label="Jones, tilts held, Hertz K (fi 0.52, fo 0.53)")
+        axis.set(xlabel=label(data.axial_load), ylabel=label(in_unit(data[name], _SHOWN[name])))
         axis.grid(alpha=0.3)
     axes[0].legend(fontsize=7)
+    figure.suptitle(conditions(data, "contact_angle", "clearance", "radial_load", width=None),
+                    fontsize=9)
     save(figure, figures, "fig06_07_axial.png")
 
 
 def _radial(results, figures):
     data = result(results, "fig08_09_radial")
-    figure, axes = plt.subplots(1, 2, figsize=(9, 3.6))
+    figure, axes = plt.subplots(1, 2, figsize=(9, 3.9))
     for axis, name in zip(axes, ("radial_displacement", "radial_stiffness")):
         for form in data.form.values:
-            axis.plot(data.radial_load, data[name].sel(form=form), "o-", ms=2,
-                      label=_FORMS[form])
-        axis.set(xlabel=label(data.radial_load), ylabel=label(data[name]),
-                 title="axial preload 2800 N")
+            axis.plot(data.radial_load, in_unit(data[name].sel(form=form), _SHOWN[name]), "o-",
+                      ms=2, label=_FORMS[form])
+        axis.set(xlabel=label(data.radial_load), ylabel=label(in_unit(data[name],
+                                                                       _SHOWN[name])))
         axis.grid(alpha=0.3)
     axes[0].legend(fontsize=7)
+    figure.suptitle(_radial_conditions(data), fontsize=9)
     save(figure, figures, "fig08_09_radial.png")
+
+
+def _radial_conditions(data) -> str:
+    """The fixed inputs of the radial sweep: the preload, the paper's K, the geometry."""
+    return conditions(data, "axial_load", "contact_angle", "clearance", width=None)
 
 
 def _in_si(data):
@@ -85,15 +98,16 @@ def _coupling(matrix, row: str, column: str):
 def _cross_terms(results, figures):
     data = result(results, "fig08_09_radial")
     matrix = _in_si(data)
-    figure, axes = plt.subplots(1, 2, figsize=(9, 3.6), sharey=True)
+    figure, axes = plt.subplots(1, 2, figsize=(9, 3.9), sharey=True)
     for axis, form in zip(axes, ("jones_free_tilt", "jones")):
         for row, column in _PAIRS:
             axis.plot(data.radial_load, _coupling(matrix.sel(form=form), row,
                                                   column), "o-", ms=2, label=f"{row} - {column}")
         axis.set(xlabel=label(data.radial_load), title=_FORMS[form])
         axis.grid(alpha=0.3)
-    axes[0].set_ylabel("K_ij / sqrt(K_ii K_jj) [1]")
-    axes[0].legend(fontsize=7)
+    axes[0].set_ylabel(r"coupling $K_{ij} / \sqrt{K_{ii} K_{jj}}$")
+    axes[1].legend(fontsize=7, loc="center left", bbox_to_anchor=(1.02, 0.5))
+    figure.suptitle(_radial_conditions(data), fontsize=9)
     save(figure, figures, "cross_terms.png")
 
 
@@ -104,15 +118,21 @@ def _geometry(results, figures):
                                    ("radial_stiffness", radial, radial.radial_load, axes[1])):
         ratio = data[name].sel(form="fixed_angle") / data[name].sel(form="jones")
         axis.plot(load, 100 * (ratio - 1), "o-", ms=2)
-        axis.set(xlabel=label(load), ylabel=f"fixed angle / Jones - 1, {name} [%]")
+        axis.set(xlabel=label(load),
+                 ylabel=f"{name.replace('_', ' ')}:\nfixed angle / Jones - 1 [%]")
         axis.grid(alpha=0.3)
-    angles = radial.ball_contact_angle.sel(form="jones")
-    for ball, text in ((1, "ball on the load line"), (13, "ball opposite")):
+    axes[0].set_title(conditions(axial, "radial_load", preset=False), fontsize=9)
+    axes[1].set_title(conditions(radial, "axial_load", preset=False), fontsize=9)
+    angles = in_unit(radial.ball_contact_angle.sel(form="jones"), "degree")
+    opposite = 1 + radial.ball.size // 2
+    for ball, text in ((1, "ball on the load line"), (opposite, "ball opposite")):
         axes[2].plot(radial.radial_load, angles.sel(ball=ball), "o-", ms=2, label=text)
-    axes[2].set(xlabel=label(radial.radial_load), ylabel=label(angles),
-                title="Jones, tilts held, 2800 N axial")
+    axes[2].set(xlabel=label(radial.radial_load), ylabel="ball contact angle [deg]")
+    axes[2].set_title(f"Jones, tilts held, {conditions(radial, 'axial_load', preset=False)}",
+                      fontsize=9)
     axes[2].legend(fontsize=7)
     axes[2].grid(alpha=0.3)
+    figure.suptitle(conditions(radial, "contact_angle", "clearance", width=None), fontsize=9)
     save(figure, figures, "geometry.png")
 
 
@@ -121,11 +141,14 @@ def _contact_constant(results, figures):
     constant = data.hertz_contact_constant
     figure, axis = plt.subplots(figsize=(5.5, 3.8))
     for outer in data.outer_curvature_ratio.values:
-        axis.plot(data.inner_curvature_ratio, _per_m(constant.sel(outer_curvature_ratio=outer)),
+        axis.plot(data.inner_curvature_ratio,
+                  _per_m(constant.sel(outer_curvature_ratio=outer)) / 1e10,
                   label=f"fo = {outer:g}")
-    axis.axhline(_PAPER_CONSTANT, ls=":", color="k", label="paper, Table 1")
-    axis.set(xlabel="inner curvature ratio fi [1]", ylabel="K [N/m^1.5]", yscale="log")
-    axis.legend(fontsize=7)
+    axis.axhline(_PAPER_CONSTANT / 1e10, ls=":", color="k", label="paper, Table 1")
+    axis.set(xlabel="inner curvature ratio fi", ylabel=r"contact constant K [1e10 N/m$^{1.5}$]")
+    axis.set_title(conditions(data, "ball_diameter", "pitch_diameter", "contact_angle"),
+                   fontsize=8)
+    axis.legend(fontsize=7, loc="center right", bbox_to_anchor=(1.0, 0.45))
     axis.grid(alpha=0.3)
     save(figure, figures, "contact_constant.png")
 
@@ -134,9 +157,8 @@ _PAPER_CONSTANT = 1.0649e10  # N/m^1.5, paper 001 Table 1
 
 
 def _per_m(constant):
-    """A contact constant from the dataset's units in N/m^1.5."""
-    return units.convert(np.asarray(constant), units.parse_unit(constant.attrs["units"]),
-                         units.parse_unit("N/m^1.5"))
+    """A contact constant in N/m^1.5."""
+    return in_unit(constant, "N/m^1.5")
 
 
 def _deviation_from_line(load, displacement) -> float:
@@ -149,10 +171,10 @@ def _deviation_from_line(load, displacement) -> float:
 def ours(results: Path) -> dict:
     results = Path(results)
     axial = result(results, "fig06_07_axial")
-    radial = result(results, "fig08_09_radial").sel(radial_load=slice(500, 3000))
+    radial = at(result(results, "fig08_09_radial"), radial_load=slice("500 N", "3000 N"))
     constants = result(results, "contact_constant").hertz_contact_constant
-    values = {"contact_constant": float(_per_m(constants.sel(
-        inner_curvature_ratio=0.52, outer_curvature_ratio=0.53, method="nearest")))}
+    values = {"contact_constant": float(_per_m(at(
+        constants, inner_curvature_ratio=0.52, outer_curvature_ratio=0.53, method="nearest")))}
     for form in ("jones", "fixed_angle"):
         stiffness = axial.axial_stiffness.sel(form=form)
         values[f"axial_stiffness_rises_{form}"] = float(stiffness[-1] / stiffness[0])

@@ -4,7 +4,10 @@ from pathlib import Path
 import matplotlib.pyplot as plt
 import numpy as np
 
+from sweeps.plotting import at as _at
+from sweeps.plotting import conditions as _conditions
 from sweeps.plotting import family as _family
+from sweeps.plotting import in_unit as _in_unit
 from sweeps.plotting import label as _label
 from sweeps.plotting import result as _open
 from sweeps.plotting import save as _save
@@ -50,126 +53,162 @@ def draw(results: Path, figures: Path):
     _contact_constant(results, figures)
 
 
+_STIFFNESS_LABEL = "radial stiffness [1e5 N/mm]"
+
+
+def _stiffness(variable):
+    """A stiffness in units of 1e5 N/mm, the paper's scale."""
+    return _in_unit(variable, "N/mm") / 1e5
+
+
+def _in_kn(data):
+    """``data`` with its radial loads in kN, the unit the figures show them in."""
+    return data.assign_coords(radial_load=_in_unit(data.radial_load, "kN"))
+
+
+def _title(axis, heading: str, data, *names, **shown_in):
+    axis.set_title(f"{heading}\n{_conditions(data, *names, width=70, **shown_in)}", fontsize=8)
+
+
 def _bearing_a(results, figures):
-    data = _open(results, "fig06_bearing_a")
+    data = _in_kn(_open(results, "fig06_bearing_a"))
     figure, axis = plt.subplots(figsize=(5, 3.6))
-    axis.plot(data.radial_load, data.radial_stiffness / 1e5, "o-", ms=3)
-    axis.set(xlabel=_label(data.radial_load), ylabel="radial stiffness [1e5 N/mm]",
-             title="Bearing A (Table 1)")
+    axis.plot(data.radial_load, _stiffness(data.radial_stiffness), "o-", ms=3)
+    axis.set(xlabel=_label(data.radial_load), ylabel=_STIFFNESS_LABEL)
+    _title(axis, "Bearing A (Table 1)", data, "speed", "clearance", "crown", "slices")
     axis.grid(alpha=0.3)
     _save(figure, figures, "fig06_bearing_a.png")
 
 
 def _bearing_b(results, figures):
-    data = _open(results, "fig07_bearing_b")
+    data = _in_kn(_open(results, "fig07_bearing_b"))
     figure, axis = plt.subplots(figsize=(5, 3.6))
-    _family(axis, data.radial_load, data.radial_stiffness / 1e5, "length", "{}",
-            xlabel=_label(data.radial_load), ylabel="radial stiffness [1e5 N/mm]",
-            title="Bearing B (Table 2)")
+    _family(axis, data.radial_load, _stiffness(data.radial_stiffness), "length", "{}",
+            xlabel=_label(data.radial_load), ylabel=_STIFFNESS_LABEL)
+    _title(axis, "Bearing B (Table 2), effective length l", data, "speed", "clearance",
+           "crown", "slices")
     _save(figure, figures, "fig07_bearing_b.png")
 
 
 def _bearing_c(results, figures):
     data = _open(results, "fig08_bearing_c")
+    step = float(_in_unit(data.perturbation, "mm"))
     figure, axis = plt.subplots(figsize=(5, 3.6))
-    axis.plot(data.speed, data.radial_stiffness / 1e5, label="implicit differentiation (eq. 16)")
-    axis.plot(data.speed, data.perturbation_stiffness / 1e5, "--",
-              label=f"perturbation {float(data.perturbation):g} {data.perturbation.units}")
-    axis.set(xlabel=_label(data.speed), ylabel="radial stiffness [1e5 N/mm]",
-             title="Bearing C (Table 3), Fr = 4000 N")
-    axis.legend()
+    axis.plot(data.speed, _stiffness(data.radial_stiffness),
+              label="implicit differentiation (eq. 16)")
+    axis.plot(data.speed, _stiffness(data.perturbation_stiffness), "--",
+              label=f"perturbation, step {step:g} mm")
+    axis.set(xlabel=_label(data.speed), ylabel=_STIFFNESS_LABEL)
+    _title(axis, "Bearing C (Table 3)", data, "radial_load", "clearance", "crown", "slices")
+    axis.legend(fontsize=7)
     axis.grid(alpha=0.3)
     _save(figure, figures, "fig08_bearing_c.png")
 
 
 def _crown(results, figures):
     data = _open(results, "fig09_crown")
-    figure, axes = plt.subplots(2, 2, figsize=(9, 6.4), sharex=True)
+    data = data.assign_coords(crown=_in_unit(data.crown, "um"))
+    displacement = _in_unit(data.radial_displacement, "um")
+    figure, axes = plt.subplots(2, 2, figsize=(9, 6.6), sharex=True)
     for row, form in enumerate(data.form.values):
-        point = data.sel(form=form)
-        _family(axes[row, 0], data.crown * 1e3, point.radial_displacement * 1e3, "slices",
-                "k = {}", ylabel="radial displacement [um]", title=f"{form} slicing: displacement")
-        _family(axes[row, 1], data.crown * 1e3, point.radial_stiffness / 1e5, "slices", "k = {}",
-                ylabel="radial stiffness [1e5 N/mm]", title=f"{form} slicing: stiffness")
+        _family(axes[row, 0], data.crown, displacement.sel(form=form), "slices", "k = {}",
+                ylabel=_label(displacement), title=f"{form} slicing: displacement")
+        _family(axes[row, 1], data.crown, _stiffness(data.radial_stiffness.sel(form=form)),
+                "slices", "k = {}", ylabel=_STIFFNESS_LABEL, title=f"{form} slicing: stiffness")
     for axis in axes[1]:
         axis.set_xlabel("crown cmax [um]")
+    figure.suptitle(_conditions(data, "radial_load", "speed", "clearance", "crown_profile"),
+                    fontsize=9)
     _save(figure, figures, "fig09_crown.png")
 
 
 def _clearance(results, figures):
     data = _open(results, "fig10_clearance")
-    figure, (left, right) = plt.subplots(1, 2, figsize=(10, 3.8))
+    figure, (left, right) = plt.subplots(1, 2, figsize=(10, 4.2))
     count = data.roller.size
-    azimuth = 360.0 * (data.roller - 1) / count
+    azimuth = (float(_in_unit(data.cage_position, "degree"))
+               + 360.0 * (data.roller - 1) / count)
     azimuth = (azimuth + 180.0) % 360.0 - 180.0
     order = np.argsort(azimuth.values)
-    for clearance in (0.0, 0.01, 0.02, 0.04):
-        loads = data.roller_load.sel(clearance=clearance, method="nearest")
-        left.plot(azimuth[order], loads[order], "o-", ms=3, label=f"Pd = {clearance:g} mm")
-    left.set(xlabel="roller azimuth from the load direction [deg]", ylabel="roller load [N]",
-             title="Load distribution")
+    for clearance in ("0 mm", "0.01 mm", "0.02 mm", "0.04 mm"):
+        loads = _at(data.roller_load, clearance=clearance, method="nearest")
+        left.plot(azimuth[order], loads[order], "o-", ms=3, label=f"Pd = {clearance}")
+    left.set(xlabel="roller azimuth from the load direction [deg]", ylabel=_label(loads),
+             title="Load distribution", xticks=np.arange(-180, 181, 60))
     left.legend(fontsize=7)
-    right.plot(data.clearance, data.radial_stiffness / 1e5, color="C0")
-    right.set(xlabel=_label(data.clearance), ylabel="radial stiffness [1e5 N/mm]",
-              title="Stiffness and loaded rollers")
+    right.plot(data.clearance, _stiffness(data.radial_stiffness), color="C0")
+    right.set(xlabel=_label(data.clearance), title="Stiffness and loaded rollers")
+    right.set_ylabel(_STIFFNESS_LABEL, color="C0")
     twin = right.twinx()
     twin.step(data.clearance, data.loaded_rollers, where="post", color="C3", alpha=0.7)
     twin.set_ylabel("loaded rollers", color="C3")
+    twin.yaxis.get_major_locator().set_params(integer=True)
     for axis in (left, right):
         axis.grid(alpha=0.3)
+    figure.suptitle(_conditions(data, "radial_load", "speed", "crown", "slices"), fontsize=9)
     _save(figure, figures, "fig10_clearance.png")
 
 
 def _load_clearance(results, figures):
-    data = _open(results, "fig11_12_load_clearance")
-    title = "Bearing D, 5000 r/min, cmax = 0.004 mm"
+    data = _in_kn(_open(results, "fig11_12_load_clearance"))
+    fixed = ("speed", "crown", "slices")
     figure, axis = plt.subplots(figsize=(5, 3.6))
-    _family(axis, data.radial_load, data.radial_stiffness / 1e5, "clearance", "Pd = {:g} mm",
-            xlabel=_label(data.radial_load), ylabel="radial stiffness [1e5 N/mm]", title=title)
+    _family(axis, data.radial_load, _stiffness(data.radial_stiffness), "clearance",
+            "Pd = {:g} mm", xlabel=_label(data.radial_load), ylabel=_STIFFNESS_LABEL)
+    _title(axis, "Bearing D, diametral clearance Pd", data, *fixed)
     _save(figure, figures, "fig11_load_clearance.png")
     figure, axis = plt.subplots(figsize=(5, 3.6))
-    _family(axis, data.radial_load, data.loaded_rollers.sel(clearance=[0.0, 0.01, 0.02]),
-            "clearance", "Pd = {:g} mm", plot="step", xlabel=_label(data.radial_load),
-            ylabel="loaded rollers", ylim=(0, 9), title=title)
+    counts = _at(data.loaded_rollers, clearance=["0 mm", "0.01 mm", "0.02 mm"])
+    _family(axis, data.radial_load, counts, "clearance", "Pd = {:g} mm", plot="step",
+            xlabel=_label(data.radial_load), ylabel="loaded rollers", ylim=(0, 9))
+    axis.legend(fontsize=7, loc="lower right")
+    _title(axis, "Bearing D, diametral clearance Pd", data, *fixed)
     _save(figure, figures, "fig12_loaded_rollers.png")
 
 
 def _crown_load(results, figures):
-    data = _open(results, "fig13_crown_load")
+    data = _in_kn(_open(results, "fig13_crown_load"))
     figure, axis = plt.subplots(figsize=(5, 3.6))
-    _family(axis, data.radial_load, data.radial_stiffness / 1e5, "crown", "cmax = {:g} mm",
-            xlabel=_label(data.radial_load), ylabel="radial stiffness [1e5 N/mm]",
-            title="Bearing D, 5000 r/min, Pd = 0")
+    _family(axis, data.radial_load, _stiffness(data.radial_stiffness), "crown",
+            "cmax = {:g} mm", xlabel=_label(data.radial_load), ylabel=_STIFFNESS_LABEL)
+    _title(axis, "Bearing D, crown cmax", data, "speed", "clearance", "slices")
     _save(figure, figures, "fig13_crown_load.png")
 
 
 def _speed_load(results, figures):
-    data = _open(results, "fig14_speed_load")
-    figure, (left, right) = plt.subplots(1, 2, figsize=(10, 3.8))
-    _family(left, data.speed, data.radial_displacement * 1e3, "radial_load", "Fr = {:g} kN",
-            xlabel=_label(data.speed), ylabel="radial displacement [um]", title="Displacement")
-    _family(right, data.speed, data.radial_stiffness / 1e5, "radial_load", "Fr = {:g} kN",
-            xlabel=_label(data.speed), ylabel="radial stiffness [1e5 N/mm]", title="Stiffness")
+    data = _in_kn(_open(results, "fig14_speed_load"))
+    displacement = _in_unit(data.radial_displacement, "um")
+    figure, (left, right) = plt.subplots(1, 2, figsize=(10, 4.2))
+    _family(left, data.speed, displacement, "radial_load", "Fr = {:g} kN",
+            xlabel=_label(data.speed), ylabel=_label(displacement), title="Displacement")
+    _family(right, data.speed, _stiffness(data.radial_stiffness), "radial_load",
+            "Fr = {:g} kN", xlabel=_label(data.speed), ylabel=_STIFFNESS_LABEL,
+            title="Stiffness")
+    left.get_legend().remove()  # one legend, beside the data: the colours are shared
+    right.legend(fontsize=8, loc="center left", bbox_to_anchor=(1.02, 0.5))
+    figure.suptitle(_conditions(data, "clearance", "crown", "slices"), fontsize=9)
     _save(figure, figures, "fig14_speed_load.png")
 
 
 def _slices(results, figures):
     data = _open(results, "slices_convergence")
     relative = 100 * (data.radial_stiffness / data.radial_stiffness.sel(slices=1000) - 1)
-    figure, axes = plt.subplots(1, 2, figsize=(10, 3.8), sharey=True)
+    figure, axes = plt.subplots(1, 2, figsize=(10, 4.2), sharey=True)
     for axis, form in zip(axes, data.form.values):
         axis.axvline(60, color="k", lw=0.8, ls=":")
         _family(axis, data.slices, relative.sel(form=form), "effective_length", "l = {:g} mm",
                 plot="semilogx", xlabel="slices k", title=f"{form} slicing")
     axes[0].set_ylabel("stiffness relative to k = 1000 [%]")
+    figure.suptitle(_conditions(data, "radial_load", "speed", "crown", "clearance"),
+                    fontsize=9)
     _save(figure, figures, "slices_convergence.png")
 
 
 def _contact_constant(results, figures):
     data = _open(results, "contact_constant")
     multiple = data.contact_constant / data.contact_constant[0]
-    curves = {"crown 0 -> 0.0032 mm (4.1 %)": (4.1, []),
-              "5 -> 3 loaded rollers (21.3 %)": (21.3, []),
+    curves = {"crown 0 -> 0.0032 mm, 4 kN (4.1 %)": (4.1, []),
+              "5 -> 3 loaded rollers, 4 kN (21.3 %)": (21.3, []),
               "Pd 0 -> 0.04 mm at 6 kN (18.7 %)": (18.7, []),
               "Pd 0 -> 0.04 mm at 8 kN (13.6 %)": (13.6, [])}
     for constant in data.contact_constant.values:
@@ -181,8 +220,9 @@ def _contact_constant(results, figures):
     for index, (label, (paper, series)) in enumerate(curves.items()):
         axis.semilogx(multiple, series, "o-", color=f"C{index}", label=label)
         axis.axhline(paper, color=f"C{index}", ls=":", lw=1)
-    axis.set(xlabel="K / Palmgren's K", ylabel="fall of radial stiffness [%]",
-             title="Bearing D, 5000 r/min, k = 60")
+    axis.set(xlabel="K / Palmgren's K", ylabel="fall of radial stiffness [%]")
+    _title(axis, "Bearing D, crown 0.004 mm unless named; dotted: the paper", data, "speed",
+           "slices")
     axis.legend(fontsize=7)
     axis.grid(alpha=0.3)
     _save(figure, figures, "contact_constant.png")
@@ -204,13 +244,13 @@ def _shedding_drop(stiffness, loaded) -> float:
 
 def _stated_percentages(stiffness, loaded):
     """The crown, shedding and clearance percentages from a load x crown x clearance grid."""
-    at = dict(radial_load=4000, crown=0.004)
-    return (_drop(stiffness.sel(radial_load=4000, crown=0, clearance=0),
-                  stiffness.sel(radial_load=4000, crown=0.0032, clearance=0)),
-            _shedding_drop(stiffness.sel(**at), loaded.sel(**at)),
-            *(_drop(stiffness.sel(radial_load=load, crown=0.004, clearance=0),
-                    stiffness.sel(radial_load=load, crown=0.004, clearance=0.04))
-              for load in (6000, 8000)))
+    fig10 = dict(radial_load="4 kN", crown="0.004 mm")
+    return (_drop(_at(stiffness, radial_load="4 kN", crown="0 mm", clearance="0 mm"),
+                  _at(stiffness, radial_load="4 kN", crown="0.0032 mm", clearance="0 mm")),
+            _shedding_drop(_at(stiffness, **fig10), _at(loaded, **fig10)),
+            *(_drop(_at(stiffness, radial_load=load, crown="0.004 mm", clearance="0 mm"),
+                    _at(stiffness, radial_load=load, crown="0.004 mm", clearance="0.04 mm"))
+              for load in ("6 kN", "8 kN")))
 
 
 def ours(results: Path) -> dict:
@@ -218,14 +258,16 @@ def ours(results: Path) -> dict:
     values = {}
     crown = _open(results, "fig09_crown").radial_stiffness.sel(slices=60)
     for form in crown.form.values:
-        values[f"crown_{form}"] = _drop(crown.sel(form=form, crown=0.0),
-                                        crown.sel(form=form).sel(crown=0.0032, method="nearest"))
+        values[f"crown_{form}"] = _drop(_at(crown.sel(form=form), crown="0 mm"),
+                                        _at(crown.sel(form=form), crown="0.0032 mm",
+                                            method="nearest"))
     clearance = _open(results, "fig10_clearance")
     values["rollers_5_to_3"] = _shedding_drop(clearance.radial_stiffness, clearance.loaded_rollers)
     grid = _open(results, "fig11_12_load_clearance").radial_stiffness
     for load in (6, 8):
-        point = grid.sel(radial_load=load, method="nearest")
-        values[f"clearance_{load}kN"] = _drop(point.sel(clearance=0.0), point.sel(clearance=0.04))
+        point = _at(grid, radial_load=f"{load} kN")
+        values[f"clearance_{load}kN"] = _drop(_at(point, clearance="0 mm"),
+                                              _at(point, clearance="0.04 mm"))
     speed = _open(results, "fig08_bearing_c")
     values["perturbation_c"] = float(100 * np.abs(
         speed.perturbation_stiffness / speed.radial_stiffness - 1).max())
@@ -235,6 +277,6 @@ def ours(results: Path) -> dict:
     outside = np.flatnonzero(error > 0.005)
     first = outside[-1] + 1 if outside.size else 0
     values["slices_enough"] = float(slices.slices[first])
-    counts = _open(results, "fig11_12_load_clearance").loaded_rollers.sel(clearance=0.0)
+    counts = _at(_open(results, "fig11_12_load_clearance").loaded_rollers, clearance="0 mm")
     values["rollers_fixed_at_zero_clearance"] = float(np.unique(counts).size)
     return values

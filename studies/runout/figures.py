@@ -4,8 +4,10 @@ from pathlib import Path
 
 import matplotlib.pyplot as plt
 import numpy as np
+from matplotlib.lines import Line2D
+from matplotlib.patches import Patch
 
-from sweeps.plotting import family, label, result, save
+from sweeps.plotting import at, conditions, family, label, result, save
 
 FIGURES = {
     "fig07_table3.png": "Fig. 7: runout of NU208 number 1 for the roller size arrangements of "
@@ -13,13 +15,14 @@ FIGURES = {
     "fig08_amplitude.png": "Fig. 8: runout against roller roundness amplitude; even orders "
                            "solid, odd dashed (all on zero).",
     "fig09_10_order.png": "Figs. 9-10: runout against roller roundness order for 12-15 rollers "
-                          "(amplitude 0.5 um, equal phases); right: even orders only.",
+                          "(amplitude 0.5 um, equal phases), at whole orders only; filled: "
+                          "even orders (Fig. 10), open: odd orders; dotted: multiples of Z.",
     "fig11_table4.png": "Fig. 11: runout for the roller order arrangements of Table 4; light "
                         "bars: rows 10-15 with the odd-order rollers made round.",
     "fig12_roller_count.png": "Fig. 12: runout against the number of rollers for even orders "
                               "(amplitude 0.5 um, equal phases).",
     "monte_carlo_phases.png": "Beyond the paper: runout with random roller phases (200 draws "
-                              "each) against the paper's equal phases (dotted).",
+                              "for each order) against the paper's equal phases (dotted).",
     "selective_assembly.png": "Beyond the paper: runout over 500 random assembly orders of the "
                               "roller set of Table 3 row 19, with the paper's increasing and "
                               "alternating orders.",
@@ -43,6 +46,8 @@ def _table3(results, figures):
     axis.bar(np.arange(1, data.arrangement.size + 1), data.runout)
     axis.set(xlabel="arrangement (row of Table 3)", ylabel=label(data.runout),
              xticks=np.arange(1, data.arrangement.size + 1))
+    axis.set_title(conditions(data, "roller_count") + "; roller diameter errors of Table 3, "
+                   "raceways and rollers otherwise round", fontsize=9)
     axis.grid(alpha=0.3, axis="y")
     save(figure, figures, "fig07_table3.png")
 
@@ -54,19 +59,42 @@ def _amplitude(results, figures):
         axis.plot(data.roller_roundness_amplitude, data.runout.sel(roller_roundness_order=order),
                   "o-" if order % 2 == 0 else "x--", ms=3, label=f"order {order:g}")
     axis.set(xlabel=label(data.roller_roundness_amplitude), ylabel=label(data.runout))
+    axis.set_title(conditions(data, "roller_count", "roller_roundness_phase", width=70)
+                   + "\nthe same harmonic on every roller; odd orders all on zero", fontsize=8)
     axis.legend(fontsize=7)
     axis.grid(alpha=0.3)
     save(figure, figures, "fig08_amplitude.png")
 
 
 def _order(results, figures):
+    """One row per roller count; a stem at each whole order (no line between orders, which
+    do not exist in between); even orders filled, odd orders open; dotted: multiples of Z."""
     data = result(results, "fig09_10_order")
-    figure, axes = plt.subplots(1, 2, figsize=(11, 3.8))
-    family(axes[0], data.roller_roundness_order, data.runout, "roller_count", "Z = {}",
-           xlabel="roller roundness order", ylabel=label(data.runout))
-    even = data.sel(roller_roundness_order=data.roller_roundness_order % 2 == 0)
-    family(axes[1], even.roller_roundness_order, even.runout, "roller_count", "Z = {}",
-           xlabel="even roller roundness order", ylabel=label(data.runout))
+    orders = data.roller_roundness_order.values
+    even = orders % 2 == 0
+    counts = data.roller_count.values
+    figure, axes = plt.subplots(counts.size, 1, figsize=(10, 1.7 * counts.size + 1.4),
+                                sharex=True, sharey=True)
+    for index, (axis, count) in enumerate(zip(np.atleast_1d(axes), counts)):
+        runout = data.runout.sel(roller_count=count).values
+        color = f"C{index}"
+        for multiple in np.arange(count, orders.max() + 1, count):
+            axis.axvline(multiple, color="0.4", ls="--", lw=0.8, zorder=0)
+        axis.vlines(orders, 0, runout, color=color, lw=1, alpha=0.5)
+        axis.plot(orders[even], runout[even], "o", color=color, ms=4)
+        axis.plot(orders[~even], runout[~even], "o", mfc="white", color=color, ms=4)
+        axis.set_ylabel(f"Z = {count}\n{label(data.runout)}")
+        axis.grid(alpha=0.3, axis="y")
+    axis.set(xlabel="roller roundness order n", xticks=np.arange(0, orders.max() + 1, 2),
+             xlim=(orders.min() - 1, orders.max() + 1))
+    keys = [Line2D([], [], marker="o", ls="", color="k", label="even order"),
+            Line2D([], [], marker="o", ls="", color="k", mfc="white", label="odd order"),
+            Line2D([], [], color="0.4", ls="--", lw=0.8, label="multiple of Z")]
+    axis.legend(handles=keys, fontsize=8, loc="upper center", bbox_to_anchor=(0.5, -0.32),
+                ncol=3)
+    figure.suptitle(conditions(data, "roller_roundness_amplitude", "roller_roundness_phase",
+                               width=None) + " (the same harmonic on every roller)",
+                    fontsize=9)
     save(figure, figures, "fig09_10_order.png")
 
 
@@ -81,6 +109,10 @@ def _table4(results, figures):
              label="odd-order rollers round")
     axis.set(xlabel="arrangement (row of Table 4)", ylabel=label(data.runout),
              xticks=np.arange(len(rows)), xticklabels=rows)
+    amplitude = data.roller_roundness_amplitude.where(data.roller_roundness_amplitude > 0)
+    axis.set_title(conditions(data, "roller_count", "roller_roundness_phase") + "\namplitude "
+                   f"{float(amplitude.max()):g} {amplitude.units} on every out-of-round roller",
+                   fontsize=9)
     axis.legend(fontsize=7)
     axis.grid(alpha=0.3, axis="y")
     save(figure, figures, "fig11_table4.png")
@@ -88,23 +120,36 @@ def _table4(results, figures):
 
 def _roller_count(results, figures):
     data = result(results, "fig12_roller_count")
-    figure, axis = plt.subplots(figsize=(5.5, 3.8))
+    figure, axis = plt.subplots(figsize=(6.5, 3.8))
     family(axis, data.roller_count, data.runout, "roller_roundness_order", "order {:g}",
-           xlabel="number of rollers Z", ylabel=label(data.runout))
+           xlabel="number of rollers Z", ylabel=label(data.runout),
+           xticks=data.roller_count.values)
+    axis.legend(fontsize=7, loc="center left", bbox_to_anchor=(1.02, 0.5))
+    axis.set_title(conditions(data, "roller_roundness_amplitude", "roller_roundness_phase",
+                              width=60), fontsize=8)
     save(figure, figures, "fig12_roller_count.png")
 
 
 def _phases(results, figures):
     data = result(results, "monte_carlo_phases")
-    equal = result(results, "fig09_10_order").sel(roller_count=14)
-    figure, axis = plt.subplots(figsize=(5.5, 3.8))
-    for index, order in enumerate(data.roller_roundness_order.values):
-        axis.hist(data.runout.sel(roller_roundness_order=order), bins=20, alpha=0.6,
-                  color=f"C{index}", label=f"order {order:g}, random phases")
-        axis.axvline(float(equal.runout.sel(roller_roundness_order=order)), color=f"C{index}",
-                     ls=":", label=f"order {order:g}, equal phases")
-    axis.set(xlabel=label(data.runout), ylabel="draws")
-    axis.legend(fontsize=7)
+    count = int(data.roller_count)
+    equal = at(result(results, "fig09_10_order"), roller_count=count)
+    orders = data.roller_roundness_order.values
+    figure, axes = plt.subplots(orders.size, 1, figsize=(6, 1.9 * orders.size + 1.2),
+                                sharex=True)
+    bins = np.arange(0.0, float(data.runout.max()) + 0.04, 0.02)
+    for index, (axis, order) in enumerate(zip(np.atleast_1d(axes), orders)):
+        axis.hist(data.runout.sel(roller_roundness_order=order), bins=bins, color=f"C{index}")
+        axis.axvline(float(at(equal.runout, roller_roundness_order=order)), color="k", ls=":")
+        axis.set(ylabel="draws", title=f"order {order:g}")
+        axis.grid(alpha=0.3, axis="y")
+    axis.set_xlabel(label(data.runout))
+    keys = [Patch(color="0.5", label=f"random phases ({data.phase_seed.size} draws)"),
+            Line2D([], [], color="k", ls=":", label="equal phases (Figs. 9-10)")]
+    axis.legend(handles=keys, fontsize=8, loc="upper center", bbox_to_anchor=(0.5, -0.4),
+                ncol=2)
+    figure.suptitle(conditions(data, "roller_count", "roller_roundness_amplitude", width=None),
+                    fontsize=9)
     save(figure, figures, "monte_carlo_phases.png")
 
 
@@ -112,12 +157,15 @@ def _assembly(results, figures):
     data = result(results, "selective_assembly")
     table3 = result(results, "fig07_table3")
     figure, axis = plt.subplots(figsize=(5.5, 3.8))
-    axis.hist(data.runout, bins=30, color="C0", alpha=0.7, label="random orders")
+    axis.hist(data.runout, bins=30, color="C0", alpha=0.7,
+              label=f"random orders ({data.order_seed.size})")
     for row, text, color in ((19, "increasing (row 19)", "C3"), (20, "alternating (row 20)",
                                                                   "C2")):
         axis.axvline(float(table3.runout.sel(arrangement=row)), color=color, label=text)
     axis.set(xlabel=label(data.runout), ylabel="orders")
-    axis.legend(fontsize=7)
+    axis.set_title(conditions(data, "roller_count", "roller_diameter_error", width=60),
+                   fontsize=8)
+    axis.legend(fontsize=7, loc="upper left")
     save(figure, figures, "selective_assembly.png")
 
 
@@ -141,7 +189,9 @@ def ours(results: Path) -> dict:
     values["odd_orders_effect"] = float(odd.max())
     for order in (2, 4, 6):
         series = amplitude.runout.sel(roller_roundness_order=order)
-        values[f"amplitude_linear_{order}"] = float(series[-1] / (2 * series[5]))
+        values[f"amplitude_linear_{order}"] = float(
+            at(series, roller_roundness_amplitude="1 um")
+            / (2 * at(series, roller_roundness_amplitude="0.5 um")))
     order = result(results, "fig09_10_order")
     values["period_even_z"] = _period_gap(order, 14, 14)
     values["period_odd_z"] = _period_gap(order, 13, 26)

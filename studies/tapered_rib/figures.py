@@ -3,10 +3,8 @@ results only."""
 from pathlib import Path
 
 import matplotlib.pyplot as plt
-import numpy as np
 
-from sweeps import units
-from sweeps.plotting import label, result, save
+from sweeps.plotting import conditions, in_unit, label, result, save
 
 FIGURES = {
     "table2_roller_loads.png": "Table 2: load of each roller under Fr = 40 kN, Fa = 27 kN; "
@@ -26,7 +24,10 @@ TABLE_2 = [11423, 10504, 7934, 4247, 360, 0, 0, 0, 0, 0, 0, 0, 360, 4247, 7934, 
 PAPER_LIMIT = 89 + 18 / 60 + 58 / 3600
 _FORMS = {"balance": "force balance (eq. 10)", "paper": "eq. 12 as printed",
           "paper_eq6": "eq. 12 and eq. 6 as printed"}
+_SHORT = {"balance": "balance", "paper": "eq. 12", "paper_eq6": "eq. 12, eq. 6"}
 _FIG04 = ("rib_load", "semi_major", "semi_minor", "approach", "max_pressure")
+#: The units Fig. 4 shows, where they are not the stored ones.
+_SHOWN = {"approach": "um"}
 
 
 def draw(results: Path, figures: Path):
@@ -36,10 +37,9 @@ def draw(results: Path, figures: Path):
     _limits(results, figures)
 
 
-def _degrees(variable) -> np.ndarray:
-    """An angle variable's values in degrees, whatever unit the definition used."""
-    return units.convert(np.asarray(variable), units.parse_unit(variable.attrs["units"]),
-                         units.parse_unit("deg"))
+def _degrees(variable):
+    """An angle variable's values in degrees, whatever unit the file stores it in."""
+    return in_unit(variable, "degree")
 
 
 def _table2(results, figures):
@@ -49,6 +49,8 @@ def _table2(results, figures):
     axis.plot(data.roller, TABLE_2, "kx", ms=7, label="paper, Table 2")
     axis.set(xlabel="roller (1 on the radial load)", ylabel=label(data.roller_load),
              xticks=data.roller.values)
+    axis.set_title(conditions(data, "radial_load", "axial_load", "roller_count", width=60),
+                   fontsize=9)
     axis.legend(fontsize=7)
     axis.grid(alpha=0.3, axis="y")
     save(figure, figures, "table2_roller_loads.png")
@@ -57,37 +59,48 @@ def _table2(results, figures):
 def _fig04(results, figures):
     data = result(results, "fig04_rib_angle")
     angle = _degrees(data.rib_angle)
-    figure, axes = plt.subplots(2, 3, figsize=(12, 6))
+    figure, axes = plt.subplots(2, 3, figsize=(12, 6.4), sharex=True)
     for axis, name in zip(axes.flat, _FIG04):
+        shown = in_unit(data[name], _SHOWN.get(name, data[name].attrs["units"]))
         for form in data.form.values:
-            axis.plot(angle, data[name].sel(form=form), "o-", ms=2, label=_FORMS[form])
-        axis.set(xlabel="rib angle [deg]", ylabel=label(data[name]))
+            axis.plot(angle, shown.sel(form=form), "o-", ms=2, label=_FORMS[form])
+        axis.set(ylabel=label(shown))
         axis.grid(alpha=0.3)
-    axes.flat[0].legend(fontsize=7)
     last = axes.flat[5]
+    axes.flat[0].legend(fontsize=7, loc="center right")
     last.plot(angle, data.groove_distance.sel(form="paper"), "k-", label="CE")
-    for form in data.form.values:
-        last.plot(angle, data.semi_minor.sel(form=form), "--", label=f"b, {form}")
-    last.axvline(PAPER_LIMIT, ls=":", color="k", lw=1)
-    last.set(xlabel="rib angle [deg]", ylabel="length [mm]", title="ellipse edge meets groove")
-    last.legend(fontsize=7)
+    for index, form in enumerate(data.form.values):
+        last.plot(angle, data.semi_minor.sel(form=form), "--", color=f"C{index}",
+                  label=f"b, {_SHORT[form]}")
+    last.axvline(PAPER_LIMIT, ls=":", color="k", lw=1, label="paper's limit")
+    last.set(ylabel=f"length [{data.semi_minor.units}]", title="ellipse edge meets groove")
+    last.legend(fontsize=7, loc="upper right")
     last.grid(alpha=0.3)
+    for axis in axes[1]:
+        axis.set_xlabel("rib angle [deg]")
+    figure.suptitle(conditions(data, "radial_load", "axial_load", "roller_end_radius",
+                               "oil_groove_size", width=None), fontsize=9)
     save(figure, figures, "fig04_rib_angle.png")
 
 
 def _limits(results, figures):
     load, radius = result(results, "limit_axial_load"), result(results, "limit_end_radius")
-    figure, axes = plt.subplots(1, 2, figsize=(9, 3.6), sharey=True)
-    for axis, data, x in ((axes[0], load, load.axial_load),
-                          (axes[1], radius, radius.roller_end_radius)):
+    load = load.assign_coords(axial_load=in_unit(load.axial_load, "kN"))
+    figure, axes = plt.subplots(1, 2, figsize=(9, 4), sharey=True)
+    for axis, data, x, fixed in ((axes[0], load, load.axial_load, ("radial_load",
+                                                                    "roller_end_radius")),
+                                 (axes[1], radius, radius.roller_end_radius, ("radial_load",
+                                                                             "axial_load"))):
         for form in data.rib_force.values:
-            axis.plot(x, data.limit_rib_angle.sel(rib_force=form), "o-", ms=2,
+            axis.plot(x, _degrees(data.limit_rib_angle.sel(rib_force=form)), "o-", ms=2,
                       label=_FORMS[form])
-        axis.axhline(PAPER_LIMIT, ls=":", color="k", lw=1)
+        axis.axhline(PAPER_LIMIT, ls=":", color="k", lw=1, label="the paper's limit")
         axis.set(xlabel=label(x))
+        axis.set_title(conditions(data, *fixed, preset=False), fontsize=9)
         axis.grid(alpha=0.3)
-    axes[0].set_ylabel(label(load.limit_rib_angle))
+    axes[0].set_ylabel("limit rib angle [deg]")
     axes[0].legend(fontsize=7)
+    figure.suptitle(load.attrs.get("bearing", ""), fontsize=9)
     save(figure, figures, "limit_rib_angle.png")
 
 
