@@ -180,3 +180,33 @@ def test_statuses_combine_by_severity():
     c, nc, inf, err, oov, nr = range(6)
     assert combine([c, oov, nr, c, inf], [oov, c, oov, nc, nc]).tolist() == [oov, oov, nr, nc, nc]
     assert combine(err, [c, nc, inf, oov, nr]).tolist() == [err] * 5
+
+def open_files() -> set:
+    """The files this process holds open (Linux)."""
+    import os
+
+    found = set()
+    for descriptor in os.listdir("/proc/self/fd"):
+        try:
+            found.add(os.readlink(f"/proc/self/fd/{descriptor}"))
+        except OSError:
+            continue
+    return found
+
+
+@pytest.mark.skipif(not __import__("os").path.isdir("/proc/self/fd"), reason="needs /proc")
+def test_writing_a_result_closes_its_file_and_leaves_the_others(tmp_path):
+    # xarray caches the files it opens; a sweep must close its own file through xarray's public
+    # interface, not by emptying that cache under the feet of whoever else uses it.
+    from xarray.backends.file_manager import FILE_CACHE
+
+    store.write_netcdf(xr.Dataset({"x": ("i", np.arange(3.0))}), tmp_path / "mine.nc")
+    mine = xr.open_dataset(tmp_path / "mine.nc")
+    mine.x.values  # read: xarray holds the file open in its cache
+    cached = dict(FILE_CACHE)
+    assert cached and str(tmp_path / "mine.nc") in open_files()
+    compute(tmp_path, "sweep")
+    assert all(FILE_CACHE.get(key) is file for key, file in cached.items())
+    assert not [f for f in open_files() if "sweep.nc" in f]
+    np.testing.assert_array_equal(mine.x.values, [0, 1, 2])
+    mine.close()
