@@ -181,6 +181,7 @@ def test_statuses_combine_by_severity():
     assert combine([c, oov, nr, c, inf], [oov, c, oov, nc, nc]).tolist() == [oov, oov, nr, nc, nc]
     assert combine(err, [c, nc, inf, oov, nr]).tolist() == [err] * 5
 
+
 def open_files() -> set:
     """The files this process holds open (Linux)."""
     import os
@@ -210,3 +211,40 @@ def test_writing_a_result_closes_its_file_and_leaves_the_others(tmp_path):
     assert not [f for f in open_files() if "sweep.nc" in f]
     np.testing.assert_array_equal(mine.x.values, [0, 1, 2])
     mine.close()
+
+
+def test_each_chunk_reports_the_versions_it_was_computed_with():
+    from sweeps.grid import Grid
+    from sweeps.run import evaluate_chunk
+
+    grid = Grid.from_sweep(spec.parse(TEXT))
+    result = evaluate_chunk(grid, 0, 5)
+    assert result["versions"] == {"package": store.package_version(),
+                                  "model": registry.get_model("crb_radial").version}
+
+
+def test_chunks_of_another_version_are_refused_and_the_others_kept(tmp_path, capsys,
+                                                                  monkeypatch):
+    from sweeps import cli, run
+
+    original = run.evaluate_chunk
+
+    def elsewhere(grid, start, stop):  # as a worker with another installation would answer
+        result = original(grid, start, stop)
+        if start >= 20:
+            result["versions"] = dict(result["versions"], package="0.0.1")
+        return result
+
+    monkeypatch.setattr(run, "evaluate_chunk", elsewhere)
+    definition = tmp_path / "inv.toml"
+    definition.write_text(TEXT)
+    output = tmp_path / "out.nc"
+    code = cli.main(["run", str(definition), "-o", str(output), "--workers", "0",
+                     "--chunk-size", "10", "--quiet"])
+    err = capsys.readouterr().err
+    assert code == 1 and len(err.strip().splitlines()) == 1, err
+    assert "runs bearing-sweep 0.0.1 (model version" in err
+    assert f"where this run has bearing-sweep {store.package_version()} (model version" in err
+    assert "2 chunks computed so far are kept" in err
+    assert not output.exists()
+    assert len(list((tmp_path / "out.nc.parts").glob("chunk-*.npz"))) == 2
