@@ -143,6 +143,7 @@ class Parts:
                         f"discarding {count} finished chunks in {self.folder}")
                 shutil.rmtree(self.folder)
             else:
+                count -= self._remove_unreadable(log)
                 if count:
                     log(f"resuming: {count} chunks already computed in {self.folder}")
                 return int(found["chunk_size"])
@@ -151,22 +152,28 @@ class Parts:
         _write_durably(manifest, lambda handle: handle.write(text))
         return chunk_size
 
-    def finished(self, log=None) -> set:
-        """``(start, stop)`` of every readable chunk on disk; unreadable ones are removed (they
-        are computed again), with one line to ``log``."""
-        done, unreadable = set(), []
+    def _remove_unreadable(self, log) -> int:
+        """Remove the parts that cannot be read (they are computed again), with one line to
+        ``log``; return how many."""
+        unreadable = []
         for path in sorted(self.folder.glob("chunk-*.npz")):
             _, start, stop = path.stem.split("-")
             reason = _unreadable(path, int(stop) - int(start))
             if reason:
                 unreadable.append(f"{path.name} ({reason})")
                 path.unlink(missing_ok=True)
-            else:
-                done.add((int(start), int(stop)))
-        if unreadable and log:
+        if unreadable:
             more = f" and {len(unreadable) - 1} more" if len(unreadable) > 1 else ""
             log(f"unreadable part {unreadable[0]}{more} in {self.folder}: computing "
                 f"{'them' if more else 'it'} again")
+        return len(unreadable)
+
+    def finished(self) -> set:
+        """``(start, stop)`` of every chunk on disk."""
+        done = set()
+        for path in self.folder.glob("chunk-*.npz"):
+            _, start, stop = path.stem.split("-")
+            done.add((int(start), int(stop)))
         return done
 
     def path(self, start: int, stop: int) -> Path:

@@ -364,7 +364,7 @@ def run_sweep(sweep: Sweep, output, executor: Executor | None = None,
                                    "model_version": model.version, "points": grid.size})
             size = parts.open(size, fresh, log)
             chunks = grid.chunks(size)
-            done = parts.finished(log)
+            done = parts.finished()
             todo = [chunk for chunk in chunks if chunk not in done]
             bar = Progress(grid.size, model.name, progress)
             bar.advance(grid.size - sum(stop - start for start, stop in todo))
