@@ -1,10 +1,10 @@
 """Finished chunks kept on disk beside a sweep's output, so that an interrupted sweep resumes.
 
 ``<output>.parts/`` holds a manifest (what the parts belong to: the definition's sha256, the
-model's version, the grid's size and the chunk size) and one ``.npz`` file per finished chunk,
-each written atomically and flushed to the disk before it is renamed into place. Parts of
-another definition are discarded, with a message; a part that cannot be read (a power loss
-before it reached the disk) is computed again.
+model's and the package's versions, the grid's size and the chunk size) and one ``.npz`` file
+per finished chunk, each written atomically and flushed to the disk before it is renamed into
+place. Parts of another definition, model or package version are discarded, with a message;
+a part that cannot be read (a power loss before it reached the disk) is computed again.
 A lock on ``.<output>.lock`` keeps two runs from writing the same output, and
 :func:`check_output` refuses an output path that holds something other than an earlier result.
 """
@@ -139,7 +139,7 @@ class Parts:
             same = found is not None and {k: found.get(k) for k in self.key} == self.key
             if fresh or not same:
                 if count:
-                    log(f"{'--fresh' if fresh else 'the definition or model changed'}: "
+                    log(f"{'--fresh' if fresh else 'the definition, model or package changed'}: "
                         f"discarding {count} finished chunks in {self.folder}")
                 shutil.rmtree(self.folder)
             else:

@@ -361,7 +361,8 @@ def run_sweep(sweep: Sweep, output, executor: Executor | None = None,
             size = chunk_size or choose_chunk_size(
                 grid, executor.worker_count() if parallel else 1)
             parts = Parts(output, {"definition_sha256": sweep.sha256,
-                                   "model_version": model.version, "points": grid.size})
+                                   "model_version": model.version, "points": grid.size,
+                                   "package_version": expected["package"]})
             size = parts.open(size, fresh, log)
             chunks = grid.chunks(size)
             done = parts.finished()

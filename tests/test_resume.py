@@ -71,7 +71,7 @@ def test_a_changed_definition_discards_old_parts(tmp_path, capsys):
                                           '"points": 16, "chunk_size": 4}')
     np.savez(folder / "chunk-000000000000-000000000004.npz", status=np.zeros(4))
     assert cli.main(["run", str(definition), "-o", str(output), "--workers", "0"]) == 0
-    assert "the definition or model changed: discarding 1 finished chunks" in \
+    assert "the definition, model or package changed: discarding 1 finished chunks" in \
         capsys.readouterr().err
     assert store.open_result(output).status.size == 16
 
@@ -297,3 +297,22 @@ def test_a_part_damaged_after_the_run_began_is_removed_with_one_clear_error(tmp_
     with pytest.raises(UnreadablePart, match="run the same command again to compute it"):
         chunks.load(0, 4)
     assert not chunks.path(0, 4).exists()
+
+
+def test_parts_of_another_package_version_are_discarded(tmp_path, capsys, monkeypatch):
+    definition = tmp_path / "d.toml"
+    definition.write_text(SLOW.replace("num = 200", "num = 4"))
+    arguments = ["run", str(definition), "-o", str(tmp_path / "out.nc"), "--workers", "0",
+                 "--chunk-size", "4"]
+
+    def interrupted(*args):  # every chunk computed, the file not yet written
+        raise KeyboardInterrupt
+
+    monkeypatch.setattr("sweeps.store.assemble", interrupted)
+    monkeypatch.setattr("sweeps.store.package_version", lambda: "0.0.1")
+    assert cli.main(arguments) == 130
+    monkeypatch.undo()  # the package is upgraded before the run is resumed
+    capsys.readouterr()
+    assert cli.main(arguments) == 0
+    assert "the definition, model or package changed: discarding 4 finished chunks" in \
+        capsys.readouterr().err
