@@ -283,9 +283,10 @@ def test_ctrl_c_on_the_local_cluster_is_one_line_and_resumes(tmp_path):
     kept = len(list(parts.glob("chunk-*.npz")))
     assert kept and not (tmp_path / "out.nc").exists()
     again = cli_run("slow.toml", "-o", "out.nc", "--quiet", cwd=tmp_path)
-    _, err = again.communicate(timeout=300)
+    out, err = again.communicate(timeout=300)
     assert again.returncode == 0, err
     assert f"resuming: {kept} chunks already computed" in err
+    assert "on dask LocalCluster (2 single-threaded worker processes)" in out
 
 
 def test_a_part_damaged_after_the_run_began_is_removed_with_one_clear_error(tmp_path):
