@@ -63,10 +63,16 @@ def external_cluster(folder, nanny=True):
             client.wait_for_workers(2, timeout=60)
         yield address, workers
     finally:
-        for process in processes:
+        # Workers first, while their scheduler still answers: a worker left without one can
+        # spend its shutdown retrying it.
+        for process in reversed(processes):
             process.terminate()
         for process in processes:
-            process.wait(timeout=30)
+            try:
+                process.wait(timeout=30)
+            except subprocess.TimeoutExpired:
+                process.kill()
+                process.wait()
 
 
 def equals_local_run(folder, remote_name):
