@@ -8,7 +8,8 @@ from pathlib import Path
 from models.catalogue import PRESETS
 from models.registry import STATUS_DESCRIPTIONS, all_models
 from sweeps import spec, study
-from sweeps.run import Executor, run_sweep
+from sweeps.parts import check_output
+from sweeps.run import Executor, WorkerMismatch, check_scheduler_address, run_sweep
 from sweeps.spec import SpecError
 
 #: Exit status for a mistake in the user's input (a definition, a name, an option).
@@ -63,6 +64,8 @@ def _check_cluster_options(args):
         raise SpecError(f"--workers {args.workers}: expected 0 (in-process) or more workers")
     if args.workers == 0 and args.scheduler:
         raise SpecError("--workers 0 and --scheduler exclude each other")
+    if args.scheduler:
+        check_scheduler_address(args.scheduler)
 
 
 def _note(message: str):
@@ -139,6 +142,9 @@ def main(argv=None) -> int:
             _check_cluster_options(args)
             folder = args.studies or study.default_studies_folder()
             chosen = study.select(folder, args.name)
+            for one in chosen:  # every result it may write, before any computing
+                for definition in one.definitions:
+                    check_output(one.result(args.results, definition), definition)
             with Executor(args.workers, args.scheduler) as executor:
                 for one in chosen:
                     study.run_study(one, args.results, args.figures, executor, args.force)
@@ -149,6 +155,9 @@ def main(argv=None) -> int:
     except SpecError as error:
         print(f"error: {error}", file=sys.stderr)
         return USAGE_ERROR
+    except WorkerMismatch as error:  # the cluster, not the user's input, is at fault
+        print(f"error: {error}", file=sys.stderr)
+        return 1
     except OSError as error:  # a folder that cannot be written, a full disk, a busy output
         # A failed rename names its destination second: that is the file the user asked for.
         target = getattr(error, "filename2", None) or error.filename

@@ -1,23 +1,125 @@
 """Finished chunks kept on disk beside a sweep's output, so that an interrupted sweep resumes.
 
 ``<output>.parts/`` holds a manifest (what the parts belong to: the definition's sha256, the
-model's version, the grid's size and the chunk size) and one ``.npz`` file per finished chunk,
-each written atomically. Parts of another definition are discarded, with a message.
-A lock file ``<output>.lock`` keeps two runs from writing the same output.
+model's and the package's versions, the grid's size and the chunk size) and one ``.npz`` file
+per finished chunk, each written atomically and flushed to the disk before it is renamed into
+place. Parts of another definition, model or package version are discarded, with a message;
+a part that cannot be read (a power loss before it reached the disk) is computed again.
+A lock on ``.<output>.lock`` keeps two runs from writing the same output, and
+:func:`check_output` refuses an output path that holds something other than an earlier result.
 """
 from __future__ import annotations
 
-import fcntl
 import json
 import os
 import shutil
+import stat
+import zipfile
 from pathlib import Path
 
+import filelock
 import numpy as np
+
+from sweeps.spec import SpecError
 
 
 class OutputBusy(OSError):
     """Another run holds the output; the message is for the user."""
+
+
+class UnsafeOutput(SpecError):
+    """An output path that must not be written; the message is for the user."""
+
+
+class UnreadablePart(OSError):
+    """A part file that cannot be read; the message is for the user."""
+
+
+#: The first bytes of a netCDF file: classic and 64-bit offset formats, and HDF5 (netCDF-4).
+NETCDF_SIGNATURES = (b"CDF\x01", b"CDF\x02", b"CDF\x05", b"\x89HDF\r\n\x1a\n")
+
+
+def check_output(output, definition=None):
+    """Refuse, before any computing, an output path that a sweep must not replace.
+
+    Accepted: a path that does not exist yet in a folder that exists or can be made, or a
+    regular netCDF file that this program wrote (its global attributes name it: only the
+    header is read). Anything else (the definition itself, a folder, a device, a pipe, a
+    symbolic link, another program's file) raises :class:`UnsafeOutput`; nothing is opened
+    but a regular file's first bytes and header.
+    """
+    output = Path(output)
+    try:
+        found = output.lstat()
+    except (FileNotFoundError, NotADirectoryError):  # the second: a file on the way to it
+        found = None
+    except OSError as error:
+        raise UnsafeOutput(f"{output}: cannot be the output: {error.strerror}") from None
+    if found is None:
+        _check_folder(output)
+        return
+    if definition is not None and _same_file(output, Path(definition)):
+        raise UnsafeOutput(f"{output}: is the sweep definition itself; choose another output")
+    kind = _file_kind(found.st_mode)
+    if kind != "regular file":
+        raise UnsafeOutput(f"{output}: exists and is {kind}, not an earlier result; refusing to "
+                           "replace it (choose another output)")
+    reason = _not_ours(output)
+    if reason:
+        raise UnsafeOutput(f"{output}: exists and is not a netCDF file written by bearing-sweep "
+                           f"({reason}); refusing to replace it (remove it or choose another "
+                           "output)")
+
+
+def _check_folder(output: Path):
+    """The output's folder exists, or the nearest existing ancestor is a writable folder."""
+    ancestor = output.parent
+    while not os.path.lexists(ancestor) and ancestor != ancestor.parent:
+        ancestor = ancestor.parent
+    if not ancestor.is_dir():
+        raise UnsafeOutput(f"{output}: its folder cannot be created: {ancestor} is not a folder")
+    if not os.access(ancestor, os.W_OK | os.X_OK):
+        raise UnsafeOutput(f"{output}: its folder cannot be written: permission denied on "
+                           f"{ancestor}")
+
+
+def _same_file(first: Path, second: Path) -> bool:
+    try:
+        return os.path.samefile(first, second)
+    except OSError:
+        return False
+
+
+def _file_kind(mode: int) -> str:
+    for test, kind in ((stat.S_ISREG, "regular file"), (stat.S_ISDIR, "a folder"),
+                       (stat.S_ISLNK, "a symbolic link"), (stat.S_ISFIFO, "a named pipe"),
+                       (stat.S_ISCHR, "a device"), (stat.S_ISBLK, "a device"),
+                       (stat.S_ISSOCK, "a socket")):
+        if test(mode):
+            return kind
+    return "not a regular file"
+
+
+def _not_ours(path: Path) -> str | None:
+    """Why the regular file at ``path`` is not a result of this program, or None if it is."""
+    import netCDF4
+
+    try:
+        with open(path, "rb") as handle:
+            head = handle.read(8)
+    except OSError as error:
+        return error.strerror
+    if not head.startswith(NETCDF_SIGNATURES):
+        return "not a netCDF file"
+    try:
+        with netCDF4.Dataset(path, "r") as dataset:
+            attributes = dataset.ncattrs()
+            source = dataset.getncattr("source") if "source" in attributes else ""
+    except OSError as error:
+        return str(error).splitlines()[0]
+    if "definition_sha256" in attributes or str(source).startswith("bearing-sweep"):
+        return None
+    return "its attributes do not name bearing-sweep"
 
 
 class Parts:
@@ -37,16 +139,34 @@ class Parts:
             same = found is not None and {k: found.get(k) for k in self.key} == self.key
             if fresh or not same:
                 if count:
-                    log(f"{'--fresh' if fresh else 'the definition or model changed'}: "
+                    log(f"{'--fresh' if fresh else 'the definition, model or package changed'}: "
                         f"discarding {count} finished chunks in {self.folder}")
                 shutil.rmtree(self.folder)
             else:
+                count -= self._remove_unreadable(log)
                 if count:
                     log(f"resuming: {count} chunks already computed in {self.folder}")
                 return int(found["chunk_size"])
         self.folder.mkdir(parents=True)
-        _write_atomically(manifest, json.dumps({**self.key, "chunk_size": chunk_size}).encode())
+        text = json.dumps({**self.key, "chunk_size": chunk_size}).encode()
+        _write_durably(manifest, lambda handle: handle.write(text))
         return chunk_size
+
+    def _remove_unreadable(self, log) -> int:
+        """Remove the parts that cannot be read (they are computed again), with one line to
+        ``log``; return how many."""
+        unreadable = []
+        for path in sorted(self.folder.glob("chunk-*.npz")):
+            _, start, stop = path.stem.split("-")
+            reason = _unreadable(path, int(stop) - int(start))
+            if reason:
+                unreadable.append(f"{path.name} ({reason})")
+                path.unlink(missing_ok=True)
+        if unreadable:
+            more = f" and {len(unreadable) - 1} more" if len(unreadable) > 1 else ""
+            log(f"unreadable part {unreadable[0]}{more} in {self.folder}: computing "
+                f"{'them' if more else 'it'} again")
+        return len(unreadable)
 
     def finished(self) -> set:
         """``(start, stop)`` of every chunk on disk."""
@@ -56,48 +176,61 @@ class Parts:
             done.add((int(start), int(stop)))
         return done
 
+    def path(self, start: int, stop: int) -> Path:
+        return self.folder / f"chunk-{start:012d}-{stop:012d}.npz"
+
     def save(self, start: int, stop: int, result: dict):
         arrays = {f"output_{name}": values for name, values in result["outputs"].items()}
         arrays["status"] = result["status"]
         arrays["errors"] = np.array(result["errors"], dtype=str)
-        temporary = self.folder / f".chunk-{start}-{stop}.{os.getpid()}.tmp"
-        with open(temporary, "wb") as handle:
-            np.savez(handle, **arrays)
-        os.replace(temporary, self.folder / f"chunk-{start:012d}-{stop:012d}.npz")
+        _write_durably(self.path(start, stop), lambda handle: np.savez(handle, **arrays))
 
     def load(self, start: int, stop: int) -> dict:
-        with np.load(self.folder / f"chunk-{start:012d}-{stop:012d}.npz") as data:
-            return {"outputs": {key[len("output_"):]: data[key] for key in data.files
-                                if key.startswith("output_")},
-                    "status": data["status"], "errors": data["errors"].tolist()}
+        path = self.path(start, stop)
+        try:
+            with np.load(path) as data:
+                return {"outputs": {key[len("output_"):]: data[key] for key in data.files
+                                    if key.startswith("output_")},
+                        "status": data["status"], "errors": data["errors"].tolist()}
+        except (OSError, ValueError, EOFError, KeyError, zipfile.BadZipFile) as error:
+            # Found readable when the run began, damaged since: removed, so that the next run
+            # computes it again.
+            path.unlink(missing_ok=True)
+            raise UnreadablePart(f"{path}: unreadable part ({type(error).__name__}); it is "
+                                 "removed: run the same command again to compute it") from None
 
     def remove(self):
         shutil.rmtree(self.folder, ignore_errors=True)
 
 
 class OutputLock:
-    """An exclusive lock on an output path, released when the process ends, however it ends."""
+    """An exclusive lock on an output path, released when the process ends, however it ends.
+
+    The lock file is removed while it is still locked, never after: a run that opened it
+    meanwhile then finds, once it gets the lock, that the file has no name any more (filelock
+    checks it) and is refused, instead of holding the lock of a file that no other run sees.
+    """
 
     def __init__(self, output):
         self.output = Path(output)
         self.path = self.output.with_name(f".{self.output.name}.lock")
-        self.handle = None
+        self.lock = filelock.FileLock(self.path, timeout=0)
 
     def __enter__(self):
         self.path.parent.mkdir(parents=True, exist_ok=True)
-        self.handle = open(self.path, "a+")
         try:
-            fcntl.flock(self.handle, fcntl.LOCK_EX | fcntl.LOCK_NB)
-        except BlockingIOError:
-            self.handle.close()
+            self.lock.acquire()
+        except filelock.Timeout:
             raise OutputBusy(f"{self.output}: another bearing-sweep run is writing this output; "
                              "wait for it to finish or choose another -o") from None
         return self
 
     def __exit__(self, *exc):
-        self.path.unlink(missing_ok=True)
-        fcntl.flock(self.handle, fcntl.LOCK_UN)
-        self.handle.close()
+        try:
+            self.path.unlink(missing_ok=True)
+        except OSError:  # Windows cannot remove an open file: filelock removes it on release
+            pass
+        self.lock.release()
 
 
 def _read_json(path: Path):
@@ -107,7 +240,34 @@ def _read_json(path: Path):
         return None
 
 
-def _write_atomically(path: Path, data: bytes):
+def _unreadable(path: Path, points: int) -> str | None:
+    """Why the part at ``path`` cannot be used, or None. Reads its index and status only."""
+    try:
+        with np.load(path) as data:
+            if "status" not in data.files or "errors" not in data.files:
+                return "incomplete"
+            if data["status"].shape != (points,):
+                return f"{data['status'].shape[0]} points instead of {points}"
+    except (OSError, ValueError, EOFError, zipfile.BadZipFile) as error:
+        return str(error).splitlines()[0] if str(error) else type(error).__name__
+    return None
+
+
+def _write_durably(path: Path, write):
+    """Write ``path`` atomically: ``write(handle)`` fills a temporary file beside it, which
+    reaches the disk before it is renamed into place, and the rename then too. Without the
+    flush a power loss can leave a renamed but empty file."""
     temporary = path.with_name(f".{path.name}.{os.getpid()}.tmp")
-    temporary.write_bytes(data)
+    with open(temporary, "wb") as handle:
+        write(handle)
+        handle.flush()
+        os.fsync(handle.fileno())
     os.replace(temporary, path)
+    try:
+        folder = os.open(path.parent, os.O_RDONLY)
+    except OSError:  # a folder cannot be opened on some systems (Windows): the rename stands
+        return
+    try:
+        os.fsync(folder)
+    finally:
+        os.close(folder)

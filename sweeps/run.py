@@ -3,7 +3,10 @@ from __future__ import annotations
 
 import logging
 import math
+import signal
+import socket
 import sys
+import threading
 import time
 from dataclasses import dataclass, field
 
@@ -12,8 +15,8 @@ import numpy as np
 from models.registry import MODEL_ERROR, VALUES_KEPT, get_model
 from sweeps import store, units
 from sweeps.grid import Grid, stored_unit
-from sweeps.parts import OutputLock, Parts
-from sweeps.spec import Sweep
+from sweeps.parts import OutputLock, Parts, check_output
+from sweeps.spec import SpecError, Sweep
 
 #: Below this estimated single-core time [s] a sweep runs in-process: starting a cluster
 #: would take longer than the work.
@@ -21,15 +24,28 @@ IN_PROCESS_SECONDS = 3.0
 #: Largest chunk, in estimated seconds of work on one core (a task costs a few milliseconds of
 #: scheduling; within a chunk the model runs in blocks of its ``points_per_call``).
 CHUNK_SECONDS = 1.0
+#: How long to wait for a scheduler given by ``--scheduler`` to answer [s].
+CONNECT_SECONDS = 10.0
+
+
+class WorkerMismatch(RuntimeError):
+    """A worker runs another version of the package or the model; the message is for the user."""
+
+
+def versions(model) -> dict:
+    """What a chunk's numbers depend on besides the definition: the package's and the model's
+    versions in the process that computes it."""
+    return {"package": store.package_version(), "model": model.version}
 
 
 def evaluate_chunk(grid: Grid, start: int, stop: int) -> dict:
     """Run the model on points ``start..stop-1``.
 
-    Returns ``{"outputs": {name: array}, "status": array, "errors": [str]}``; outputs are in
-    their declared units, with the grid's largest size on each own dimension (NaN beyond a
-    point's own size). Points are grouped by their structural inputs (counts, choices) and the
-    model is called once per group. An exception in the model marks that group's points with
+    Returns ``{"outputs": {name: array}, "status": array, "errors": [str], "versions": dict}``
+    (the :func:`versions` of the process that computed it); outputs are in their declared
+    units, with the grid's largest size on each own dimension (NaN beyond a point's own size).
+    Points are grouped by their structural inputs (counts, choices) and the model is called
+    once per group. An exception in the model marks that group's points with
     ``model_error`` and records its message; it does not stop the sweep.
     """
     model = get_model(grid.model_name)
@@ -70,7 +86,7 @@ def evaluate_chunk(grid: Grid, start: int, stop: int) -> dict:
     failed = ~np.isin(status, VALUES_KEPT)
     for values in outputs.values():
         values[failed] = np.nan  # whatever a model left there, a failed point is NaN
-    return {"outputs": outputs, "status": status, "errors": errors}
+    return {"outputs": outputs, "status": status, "errors": errors, "versions": versions(model)}
 
 
 def _from_si(value: np.ndarray, spec) -> np.ndarray:
@@ -110,6 +126,59 @@ class Summary:
             line += f"\n  model errors: {self.errors[0]}" + (
                 f" (and {len(self.errors) - 1} more)" if len(self.errors) > 1 else "")
         return line
+
+
+def check_scheduler_address(address: str) -> str:
+    """Refuse at once (:class:`SpecError`) an address that names no dask scheduler."""
+    from distributed.comm import parse_address, parse_host_port
+    from distributed.comm.registry import backends
+
+    expected = f"--scheduler {address}: not a scheduler address (expected tcp://HOST:PORT)"
+    try:
+        scheme, location = parse_address(address, strict=False)
+        if scheme not in backends:
+            raise ValueError(f"unknown protocol {scheme!r}")
+        if scheme != "inproc":
+            host, port = parse_host_port(location)
+            if not host or not 0 < port < 65536:
+                raise ValueError("no host or no valid port")
+    except ValueError:
+        raise SpecError(expected) from None
+    return address
+
+
+class SchedulerUnreachable(OSError):
+    """No scheduler answers at the address given; the message is for the user."""
+
+
+def _connect_to_scheduler(address: str):
+    """A client of the scheduler at ``address``, or :class:`SchedulerUnreachable` within
+    ``CONNECT_SECONDS`` (dask itself would retry a refused connection until its timeout)."""
+    from distributed import Client
+    from distributed.comm import parse_address, parse_host_port
+
+    scheme, location = parse_address(check_scheduler_address(address), strict=False)
+    if scheme in ("tcp", "tls", "ws", "wss"):
+        try:
+            socket.create_connection(parse_host_port(location), timeout=CONNECT_SECONDS).close()
+        except OSError as error:
+            reason = error.strerror or (f"no answer within {CONNECT_SECONDS:g} s"
+                                        if isinstance(error, TimeoutError) else str(error))
+            raise SchedulerUnreachable(f"--scheduler {address}: cannot reach it: {reason}") \
+                from None
+    try:
+        return Client(address, timeout=f"{CONNECT_SECONDS}s", set_as_default=False)
+    except OSError as error:  # something answers, but not a dask scheduler in time
+        raise SchedulerUnreachable(f"--scheduler {address}: no dask scheduler answered: "
+                                   f"{str(error).splitlines()[0]}") from None
+
+
+def dask_setup(worker):
+    """Run by dask in each worker process of the local cluster (a preload): Ctrl-C reaches the
+    whole process group, and is for the driver to handle, which closes the cluster. Without
+    this every worker would print a traceback."""
+    if threading.current_thread() is threading.main_thread():
+        signal.signal(signal.SIGINT, signal.SIG_IGN)
 
 
 class Executor:
@@ -160,7 +229,7 @@ class Executor:
             # Not the default client: xarray would then guard every netCDF write with a lock
             # held through the scheduler, a round trip per variable.
             if self.scheduler:
-                self.client = Client(self.scheduler, timeout="20s", set_as_default=False)
+                self.client = _connect_to_scheduler(self.scheduler)
             else:
                 # dask sets MALLOC_TRIM_THRESHOLD_=65536 in its workers, which makes glibc map
                 # and unmap every large numpy temporary of a model afresh: twice the time. Its
@@ -173,9 +242,11 @@ class Executor:
                                       "distributed.admin.tick.interval": "500ms",
                                       "distributed.admin.system-monitor.interval": "2s",
                                       "distributed.worker.memory.monitor-interval": "1s"}):
+                    # The preload runs this module's dask_setup in every worker process,
+                    # restarted ones too.
                     self.cluster = LocalCluster(n_workers=self.workers or 2, threads_per_worker=1,
                                                 processes=True, dashboard_address=":0",
-                                                silence_logs=logging.ERROR)
+                                                silence_logs=logging.ERROR, preload=[__name__])
                 self.client = Client(self.cluster, set_as_default=False)
         return self.client
 
@@ -250,6 +321,20 @@ def choose_chunk_size(grid: Grid, workers: int) -> int:
     return max(1, min(largest, math.ceil(grid.size / (8 * workers))))
 
 
+def _check_versions(found: dict, expected: dict, executor: Executor, parts: Parts):
+    """Refuse a chunk computed by another version of the package or the model: the file
+    would mix two sets of numbers under one provenance."""
+    if found == expected:
+        return
+    kept = len(list(parts.folder.glob("chunk-*.npz")))
+    where = f"dask scheduler {executor.scheduler}" if executor.scheduler else "the cluster"
+    raise WorkerMismatch(
+        f"a worker of {where} runs bearing-sweep {found['package']} (model version "
+        f"{found['model']}) where this run has bearing-sweep {expected['package']} (model version "
+        f"{expected['model']}): install the same on every worker ({kept} chunks computed so far "
+        f"are kept in {parts.folder})")
+
+
 def run_sweep(sweep: Sweep, output, executor: Executor | None = None,
               chunk_size: int | None = None, progress: bool = True, fresh: bool = False,
               log=None) -> Summary:
@@ -260,6 +345,7 @@ def run_sweep(sweep: Sweep, output, executor: Executor | None = None,
     file is assembled one chunk at a time: memory is bounded by the chunk size. ``log``
     receives messages for the user (resuming, discarding).
     """
+    check_output(output, sweep.path)
     own = executor is None
     executor = executor or Executor()
     log = log or (lambda message: None)
@@ -268,13 +354,15 @@ def run_sweep(sweep: Sweep, output, executor: Executor | None = None,
         with OutputLock(output):
             grid = Grid.from_sweep(sweep)
             model = get_model(grid.model_name)
+            expected = versions(model)
             parallel = executor.parallel(grid)
             if parallel:
                 executor.connect()
             size = chunk_size or choose_chunk_size(
                 grid, executor.worker_count() if parallel else 1)
             parts = Parts(output, {"definition_sha256": sweep.sha256,
-                                   "model_version": model.version, "points": grid.size})
+                                   "model_version": model.version, "points": grid.size,
+                                   "package_version": expected["package"]})
             size = parts.open(size, fresh, log)
             chunks = grid.chunks(size)
             done = parts.finished()
@@ -283,11 +371,13 @@ def run_sweep(sweep: Sweep, output, executor: Executor | None = None,
             bar.advance(grid.size - sum(stop - start for start, stop in todo))
             try:
                 for start, stop, result in executor.map(grid, todo, parallel):
+                    _check_versions(result.pop("versions"), expected, executor, parts)
                     parts.save(start, stop, result)
                     bar.advance(stop - start)
             finally:
                 bar.close()
             scheduler = executor.describe(parallel)
+            check_output(output, sweep.path)  # nothing has taken its place meanwhile
             counts, errors = store.assemble(sweep, grid, parts, chunks, output, scheduler)
             parts.remove()
         return Summary(model.name, grid.size, counts, time.monotonic() - began, str(output),

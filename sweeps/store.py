@@ -127,7 +127,6 @@ def assemble(sweep: Sweep, grid: Grid, parts, chunks, path, scheduler: str) -> t
     """
     import dask.array
     import netCDF4
-    from xarray.backends.file_manager import FILE_CACHE
 
     model = get_model(grid.model_name)
     counts = np.zeros(len(STATUS_MEANINGS), dtype=np.int64)
@@ -145,9 +144,14 @@ def assemble(sweep: Sweep, grid: Grid, parts, chunks, path, scheduler: str) -> t
     path.parent.mkdir(parents=True, exist_ok=True)
     temporary = path.with_name(f".{path.name}.{os.getpid()}.tmp")
     try:
-        skeleton.to_netcdf(temporary, engine="netcdf4", compute=False)
+        # The structure only: dump_to_store queues the lazy values for a write that is never
+        # made (the parts fill them in below), and closing the store closes the file.
+        skeleton_store = xr.backends.NetCDF4DataStore.open(temporary, mode="w")
+        try:
+            skeleton.dump_to_store(skeleton_store)
+        finally:
+            skeleton_store.close()
         del skeleton
-        FILE_CACHE.clear()  # closes the file xarray left open for the values never computed
         with netCDF4.Dataset(temporary, "r+") as target:
             for start, stop in chunks:
                 part = parts.load(start, stop)

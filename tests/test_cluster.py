@@ -63,10 +63,16 @@ def external_cluster(folder, nanny=True):
             client.wait_for_workers(2, timeout=60)
         yield address, workers
     finally:
-        for process in processes:
+        # Workers first, while their scheduler still answers: a worker left without one can
+        # spend its shutdown retrying it.
+        for process in reversed(processes):
             process.terminate()
         for process in processes:
-            process.wait(timeout=30)
+            try:
+                process.wait(timeout=30)
+            except subprocess.TimeoutExpired:
+                process.kill()
+                process.wait()
 
 
 def equals_local_run(folder, remote_name):
@@ -82,6 +88,14 @@ def equals_local_run(folder, remote_name):
     return a
 
 
+def run_on(address, folder, *extra, output="remote.nc"):
+    began = time.monotonic()
+    done = subprocess.run([sys.executable, "-m", "sweeps", "run", "def.toml", "-o", output,
+                           "--scheduler", address, *extra], cwd=folder, capture_output=True,
+                          text=True, timeout=300)
+    return done, time.monotonic() - began
+
+
 @pytest.mark.slow
 def test_sweep_on_a_real_scheduler_and_two_workers(tmp_path):
     (tmp_path / "def.toml").write_text(DEFINITION)
@@ -91,8 +105,23 @@ def test_sweep_on_a_real_scheduler_and_two_workers(tmp_path):
                                 cwd=tmp_path, capture_output=True, text=True, timeout=300)
         assert remote.returncode == 0, remote.stderr
         assert f"dask scheduler {address} (2 workers)" in remote.stdout
+        workers_of_another_version_are_refused(address, tmp_path)  # same cluster: it is slow
     result = equals_local_run(tmp_path, "remote.nc")
     assert result.attrs["scheduler"].startswith("dask scheduler")
+
+
+def workers_of_another_version_are_refused(address, folder):
+    from distributed import Client
+
+    with Client(address, timeout="60s") as client:  # the workers' installation now differs
+        client.run(exec, "import sweeps.store\n"
+                         "sweeps.store.package_version = lambda: '0.0.1'", {})
+    done, _ = run_on(address, folder, "--chunk-size", "7", "--quiet", output="other.nc")
+    assert done.returncode == 1, done.stderr
+    assert len(done.stderr.strip().splitlines()) == 1, done.stderr
+    assert f"a worker of dask scheduler {address} runs bearing-sweep 0.0.1" in done.stderr
+    assert "install the same on every worker" in done.stderr
+    assert not (folder / "other.nc").exists() and (folder / "other.nc.parts").is_dir()
 
 
 @pytest.mark.slow
@@ -114,3 +143,25 @@ def test_a_worker_killed_on_an_external_cluster_costs_only_a_retry(tmp_path):
         assert remote.returncode == 0, err
         assert len(list(parts.glob("*"))) == 0 and workers[0].poll() is not None
     equals_local_run(tmp_path, "remote.nc")
+
+
+def test_an_address_that_cannot_be_parsed_is_refused_at_once(tmp_path):
+    (tmp_path / "def.toml").write_text(DEFINITION)
+    for address in ("nonsense", "tcp://127.0.0.1:99999", "carrier-pigeon://loft:1"):
+        done, seconds = run_on(address, tmp_path)
+        assert done.returncode == 2, done.stderr
+        assert done.stderr.strip() == (f"error: --scheduler {address}: not a scheduler address "
+                                       "(expected tcp://HOST:PORT)")
+        assert seconds < 15  # dask's own connection attempts took 20 s or more
+    assert sorted(p.name for p in tmp_path.iterdir()) == ["def.toml"]
+
+
+def test_an_unreachable_scheduler_is_one_line_within_seconds(tmp_path):
+    (tmp_path / "def.toml").write_text(DEFINITION)
+    address = f"tcp://127.0.0.1:{free_port()}"  # nothing listens there
+    done, seconds = run_on(address, tmp_path)
+    assert done.returncode == 1, done.stderr
+    assert len(done.stderr.strip().splitlines()) == 1 and "Traceback" not in done.stderr
+    assert f"--scheduler {address}: cannot reach it: Connection refused" in done.stderr
+    assert seconds < 15
+    assert not (tmp_path / "remote.nc").exists()

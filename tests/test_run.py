@@ -202,3 +202,71 @@ def test_files_written_in_different_units_combine_into_one_consistent_axis(tmp_p
         assert both.radial_load.attrs["units"] == "N"
         stiffness = both.radial_stiffness.sel(clearance=0.02, slices=30, arrangement="uniform")
         assert (np.diff(stiffness.values) > 0).all()  # stiffer with load across both files
+
+
+def open_files() -> set:
+    """The files this process holds open (Linux)."""
+    import os
+
+    found = set()
+    for descriptor in os.listdir("/proc/self/fd"):
+        try:
+            found.add(os.readlink(f"/proc/self/fd/{descriptor}"))
+        except OSError:
+            continue
+    return found
+
+
+@pytest.mark.skipif(not __import__("os").path.isdir("/proc/self/fd"), reason="needs /proc")
+def test_writing_a_result_closes_its_file_and_leaves_the_others(tmp_path):
+    # xarray caches the files it opens; a sweep must close its own file through xarray's public
+    # interface, not by emptying that cache under the feet of whoever else uses it.
+    from xarray.backends.file_manager import FILE_CACHE
+
+    store.write_netcdf(xr.Dataset({"x": ("i", np.arange(3.0))}), tmp_path / "mine.nc")
+    mine = xr.open_dataset(tmp_path / "mine.nc")
+    mine.x.values  # read: xarray holds the file open in its cache
+    cached = dict(FILE_CACHE)
+    assert cached and str(tmp_path / "mine.nc") in open_files()
+    compute(tmp_path, "sweep")
+    assert all(FILE_CACHE.get(key) is file for key, file in cached.items())
+    assert not [f for f in open_files() if "sweep.nc" in f]
+    np.testing.assert_array_equal(mine.x.values, [0, 1, 2])
+    mine.close()
+
+
+def test_each_chunk_reports_the_versions_it_was_computed_with():
+    from sweeps.grid import Grid
+    from sweeps.run import evaluate_chunk
+
+    grid = Grid.from_sweep(spec.parse(TEXT))
+    result = evaluate_chunk(grid, 0, 5)
+    assert result["versions"] == {"package": store.package_version(),
+                                  "model": registry.get_model("crb_radial").version}
+
+
+def test_chunks_of_another_version_are_refused_and_the_others_kept(tmp_path, capsys,
+                                                                  monkeypatch):
+    from sweeps import cli, run
+
+    original = run.evaluate_chunk
+
+    def elsewhere(grid, start, stop):  # as a worker with another installation would answer
+        result = original(grid, start, stop)
+        if start >= 20:
+            result["versions"] = dict(result["versions"], package="0.0.1")
+        return result
+
+    monkeypatch.setattr(run, "evaluate_chunk", elsewhere)
+    definition = tmp_path / "inv.toml"
+    definition.write_text(TEXT)
+    output = tmp_path / "out.nc"
+    code = cli.main(["run", str(definition), "-o", str(output), "--workers", "0",
+                     "--chunk-size", "10", "--quiet"])
+    err = capsys.readouterr().err
+    assert code == 1 and len(err.strip().splitlines()) == 1, err
+    assert "runs bearing-sweep 0.0.1 (model version" in err
+    assert f"where this run has bearing-sweep {store.package_version()} (model version" in err
+    assert "2 chunks computed so far are kept" in err
+    assert not output.exists()
+    assert len(list((tmp_path / "out.nc.parts").glob("chunk-*.npz"))) == 2

@@ -173,7 +173,7 @@ def test_an_unwritable_output_is_one_line(tmp_path, capsys):
     path.write_text(GOOD)
     blocked = tmp_path / "file"
     blocked.write_text("")
-    assert main(["run", str(path), "-o", str(blocked / "out.nc"), "--workers", "0"]) == 1
+    assert main(["run", str(path), "-o", str(blocked / "out.nc"), "--workers", "0"]) == 2
     error = capsys.readouterr().err.strip()
     assert error.startswith("error: ") and len(error.splitlines()) == 1
 

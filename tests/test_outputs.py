@@ -1,0 +1,148 @@
+"""What `run -o` and `study --results` may replace: only an earlier result of this program.
+
+Everything else is refused in one line, exit status 2, before any computing and with nothing
+written. The device case is played by stand-ins inside tmp_path (a named pipe, a symbolic
+link); /dev/null itself is only looked at, with every way of writing made to fail first.
+"""
+import os
+import stat
+import subprocess
+import sys
+import textwrap
+
+import netCDF4
+import pytest
+
+from sweeps import cli, parts, store
+from test_cli import DEFINITION  # a four-point sweep
+
+
+def tree(folder):
+    """Every path under ``folder`` with its kind and size: what a refusal must leave as it was."""
+    return {str(p.relative_to(folder)): (stat.S_IFMT(p.lstat().st_mode), p.lstat().st_size)
+            for p in folder.rglob("*")}
+
+
+@pytest.fixture
+def no_computing(monkeypatch):
+    """A refusal must come before the lock, the parts and the model."""
+
+    def computed(*args, **kwargs):
+        raise AssertionError("computing started before the output was checked")
+
+    monkeypatch.setattr("sweeps.run.OutputLock", computed)
+    monkeypatch.setattr("sweeps.run.evaluate_chunk", computed)
+
+
+def refused(tmp_path, capsys, output, definition=None):
+    definition = definition or tmp_path / "def.toml"
+    if not definition.exists():
+        definition.write_text(DEFINITION)
+    before = tree(tmp_path)
+    code = cli.main(["run", str(definition), "-o", str(output), "--workers", "0", "--quiet"])
+    err = capsys.readouterr().err
+    assert code == 2, err
+    assert err.startswith("error: ") and len(err.strip().splitlines()) == 1, err
+    assert tree(tmp_path) == before  # nothing written, nothing replaced
+    return err
+
+
+def test_the_definition_itself_is_refused(tmp_path, capsys, no_computing):
+    definition = tmp_path / "def.toml"
+    definition.write_text(DEFINITION)
+    err = refused(tmp_path, capsys, definition, definition)
+    assert "is the sweep definition itself" in err
+    assert definition.read_text() == DEFINITION
+
+
+def test_a_folder_is_refused_before_computing(tmp_path, capsys, no_computing):
+    (tmp_path / "results").mkdir()
+    assert "is a folder" in refused(tmp_path, capsys, tmp_path / "results")
+
+
+def test_a_named_pipe_is_refused_without_being_opened(tmp_path):
+    # A stand-in for a device such as /dev/null: not a regular file. Opening a pipe for reading
+    # would block, so a run that opened it would reach the timeout here.
+    (tmp_path / "def.toml").write_text(DEFINITION)
+    os.mkfifo(tmp_path / "pipe")
+    done = subprocess.run([sys.executable, "-m", "sweeps", "run", "def.toml", "-o", "pipe",
+                           "--workers", "0"], cwd=tmp_path, capture_output=True, text=True,
+                          timeout=120)
+    assert done.returncode == 2, done.stderr
+    assert done.stderr.strip() == ("error: pipe: exists and is a named pipe, not an earlier "
+                                   "result; refusing to replace it (choose another output)")
+    assert stat.S_ISFIFO((tmp_path / "pipe").lstat().st_mode)
+    assert sorted(p.name for p in tmp_path.iterdir()) == ["def.toml", "pipe"]
+
+
+def test_a_symbolic_link_is_refused_and_its_target_kept(tmp_path, capsys, no_computing):
+    target = tmp_path / "target.nc"
+    target.write_bytes(b"someone else's data")
+    (tmp_path / "link.nc").symlink_to(target)
+    assert "is a symbolic link" in refused(tmp_path, capsys, tmp_path / "link.nc")
+    assert target.read_bytes() == b"someone else's data"
+
+
+def test_another_programs_file_is_refused(tmp_path, capsys, no_computing):
+    (tmp_path / "notes.nc").write_text("not a netCDF file")
+    assert "not a netCDF file" in refused(tmp_path, capsys, tmp_path / "notes.nc")
+    with netCDF4.Dataset(tmp_path / "theirs.nc", "w") as theirs:
+        theirs.source = "another model 2.0"
+    assert "do not name bearing-sweep" in refused(tmp_path, capsys, tmp_path / "theirs.nc")
+    (tmp_path / "empty.nc").touch()
+    refused(tmp_path, capsys, tmp_path / "empty.nc")
+
+
+def test_a_file_as_the_outputs_folder_is_refused(tmp_path, capsys, no_computing):
+    (tmp_path / "plain").write_text("a file")
+    err = refused(tmp_path, capsys, tmp_path / "plain" / "deeper" / "out.nc")
+    assert "its folder cannot be created" in err and "is not a folder" in err
+
+
+def test_an_earlier_result_is_replaced(tmp_path, capsys):
+    (tmp_path / "def.toml").write_text(DEFINITION)
+    output = tmp_path / "out.nc"
+    arguments = ["run", str(tmp_path / "def.toml"), "-o", str(output), "--workers", "0"]
+    assert cli.main(arguments) == 0
+    (tmp_path / "def.toml").write_text(DEFINITION.replace('"4 kN"', '"5 kN"'))
+    assert cli.main(arguments) == 0, capsys.readouterr().err
+    assert store.open_result(output).radial_load.values.tolist() == [2, 5]
+
+
+def test_dev_null_is_refused_by_looking_only(monkeypatch):
+    device = "/dev/null"
+    before = os.stat(device)
+
+    def written(*args, **kwargs):
+        raise AssertionError("an attempt to write near /dev/null")
+
+    # Every way the check could write, made to fail before it could: it may only look.
+    for name in ("open", "replace", "rename", "unlink", "mkdir", "makedirs", "mkfifo", "remove"):
+        monkeypatch.setattr(os, name, written)
+    monkeypatch.setattr(netCDF4, "Dataset", written)
+    monkeypatch.setattr("builtins.open", written)
+    with pytest.raises(parts.UnsafeOutput, match="is a device"):
+        parts.check_output(device)
+    after = os.stat(device)
+    assert (after.st_ino, after.st_mode, after.st_rdev) == \
+        (before.st_ino, before.st_mode, before.st_rdev)
+
+
+def test_study_refuses_a_result_path_that_is_not_a_result(tmp_path):
+    study = tmp_path / "studies" / "tiny"
+    study.mkdir(parents=True)
+    (study / "loads.toml").write_text(DEFINITION)
+    (study / "figures.py").write_text(textwrap.dedent("""
+        FIGURES = {}
+        def draw(results, figures):
+            pass
+        """))
+    (tmp_path / "results" / "tiny").mkdir(parents=True)
+    (tmp_path / "results" / "tiny" / "loads.nc").write_text("my own notes")
+    done = subprocess.run([sys.executable, "-m", "sweeps", "study", "tiny", "--studies",
+                           "studies"], cwd=tmp_path, capture_output=True, text=True,
+                          timeout=120)
+    assert done.returncode == 2 and len(done.stderr.strip().splitlines()) == 1, done.stderr
+    assert "results/tiny/loads.nc: exists and is not a netCDF file" in done.stderr
+    assert (tmp_path / "results" / "tiny" / "loads.nc").read_text() == "my own notes"
+    assert not (tmp_path / "figures").exists()
