@@ -106,7 +106,7 @@ def test_an_earlier_result_is_replaced(tmp_path, capsys):
     assert cli.main(arguments) == 0
     (tmp_path / "def.toml").write_text(DEFINITION.replace('"4 kN"', '"5 kN"'))
     assert cli.main(arguments) == 0, capsys.readouterr().err
-    assert store.open_result(output).radial_load.values.tolist() == [2, 5]
+    assert store.open_result(output).radial_load.values.tolist() == [2000, 5000]
 
 
 def test_dev_null_is_refused_by_looking_only(monkeypatch):
