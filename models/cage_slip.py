@@ -432,6 +432,10 @@ def _secant_root(residual, lower, upper, tolerance):
     return solve_increasing(with_secant, lower, upper, 0.5 * (lower + upper), tolerance)
 
 
+def _several(equilibrium_count):
+    return equilibrium_count >= 2
+
+
 def _rollers_fit(roller_count, inner_raceway_diameter, roller_diameter):
     return (inner_raceway_diameter + roller_diameter) * np.sin(np.pi / roller_count) \
         > roller_diameter
@@ -531,7 +535,8 @@ MODELS = [Model(
         Output("max_roller_load", "N", "largest roller load at the inner raceway"),
         Output("equilibrium_count", "1", "stable equilibria of the cage's torque balance "
                "found (2 or more: a hysteresis band; 0: the rollers cannot drive the cage)",
-               label="stable equilibria"),
+               label="stable equilibria",
+               counted=("points with several stable equilibria", _several)),
     ),
     dim_sizes={"orbit": "orbit_points"},
     constraints=(

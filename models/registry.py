@@ -138,6 +138,9 @@ class Output:
     #: A short name for an axis label (netCDF ``long_name``); derived from ``meaning`` when
     #: not given.
     label: str = ""
+    #: ``(text, where)``: the run's summary counts the points where ``where(values)`` is true
+    #: ("points with two stable equilibria").
+    counted: tuple = ()
 
     @property
     def short(self) -> str:

@@ -255,12 +255,18 @@ def _unreadable(path: Path, points: int) -> str | None:
 
 def _write_durably(path: Path, write):
     """Write ``path`` atomically: ``write(handle)`` fills a temporary file beside it, which
-    reaches the disk before it is renamed into place, and the rename then too. Without the
-    flush a power loss can leave a renamed but empty file."""
+    is then put in place by :func:`replace_durably`."""
     temporary = path.with_name(f".{path.name}.{os.getpid()}.tmp")
     with open(temporary, "wb") as handle:
         write(handle)
-        handle.flush()
+    replace_durably(temporary, path)
+
+
+def replace_durably(temporary: Path, path: Path):
+    """Rename the finished ``temporary`` to ``path`` so that a power loss leaves the old file
+    or the new one, never a renamed but empty one: the data reaches the disk before the
+    rename, and the rename then too."""
+    with open(temporary, "rb+") as handle:
         os.fsync(handle.fileno())
     os.replace(temporary, path)
     try:

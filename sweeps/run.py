@@ -117,9 +117,11 @@ class Summary:
     output: str
     scheduler: str
     errors: list = field(default_factory=list)
+    noted: dict = field(default_factory=dict)  # what the model counts, e.g. several equilibria
 
     def text(self) -> str:
         counts = ", ".join(f"{n} {name}" for name, n in self.status_counts.items() if n)
+        counts += "".join(f"; {n} {text}" for text, n in self.noted.items())
         line = (f"{self.model}: {self.points} points ({counts or 'none'}) in {self.seconds:.1f} s "
                 f"on {self.scheduler} -> {self.output}")
         if self.errors:
@@ -378,10 +380,11 @@ def run_sweep(sweep: Sweep, output, executor: Executor | None = None,
                 bar.close()
             scheduler = executor.describe(parallel)
             check_output(output, sweep.path)  # nothing has taken its place meanwhile
-            counts, errors = store.assemble(sweep, grid, parts, chunks, output, scheduler)
+            counts, errors, noted = store.assemble(sweep, grid, parts, chunks, output,
+                                                   scheduler)
             parts.remove()
         return Summary(model.name, grid.size, counts, time.monotonic() - began, str(output),
-                       scheduler, errors)
+                       scheduler, errors, noted)
     finally:
         if own:
             executor.close()

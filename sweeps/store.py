@@ -13,6 +13,7 @@ import xarray as xr
 from models.registry import STATUS_DESCRIPTIONS, STATUS_MEANINGS, get_model
 from sweeps import units
 from sweeps.grid import Grid, coordinates, described, fixed_inputs
+from sweeps.parts import replace_durably
 from sweeps.spec import Sweep
 
 CONVENTIONS = "CF-1.10"
@@ -122,8 +123,9 @@ def assemble(sweep: Sweep, grid: Grid, parts, chunks, path, scheduler: str) -> t
 
     The file's structure (coordinates, attributes, empty variables) is written by xarray,
     the chunks' values then into it, region by region, and the finished file renamed into
-    place: an existing file at ``path`` stays intact until then. Returns the status of every
-    point's count by code and the models' error messages.
+    place: an existing file at ``path`` stays intact until then. Returns the count of points
+    by status, the models' error messages and the counts of the outputs a model declares
+    ``counted``.
     """
     import dask.array
     import netCDF4
@@ -131,10 +133,14 @@ def assemble(sweep: Sweep, grid: Grid, parts, chunks, path, scheduler: str) -> t
     model = get_model(grid.model_name)
     counts = np.zeros(len(STATUS_MEANINGS), dtype=np.int64)
     errors = set()
-    for start, stop in chunks:  # first pass: what the attributes must say
+    noted = {o.counted[0]: 0 for o in model.outputs if o.counted}
+    for start, stop in chunks:  # first pass: what the attributes and the summary must say
         part = parts.load(start, stop)
         counts += np.bincount(part["status"], minlength=len(STATUS_MEANINGS))
         errors.update(part["errors"])
+        for output in (o for o in model.outputs if o.counted):
+            text, where = output.counted
+            noted[text] += int(np.count_nonzero(where(part["outputs"][output.name])))
     lazy = {o.name: dask.array.full((grid.size,) + tuple(grid.dim_sizes[d] for d in o.dims),
                                     np.nan, chunks=-1)  # never computed: one chunk
             for o in model.outputs}
@@ -162,11 +168,11 @@ def assemble(sweep: Sweep, grid: Grid, parts, chunks, path, scheduler: str) -> t
                         block = data[low - start:high - start]
                         variable[index or ...] = block.reshape(
                             tuple(s.stop - s.start for s in index) + block.shape[1:])
-        os.replace(temporary, path)
+        replace_durably(temporary, path)
     finally:
         if temporary.exists():
             temporary.unlink()
-    return dict(zip(STATUS_MEANINGS, counts.tolist())), sorted(errors)
+    return dict(zip(STATUS_MEANINGS, counts.tolist())), sorted(errors), noted
 
 
 def _regions(shape: tuple, start: int, stop: int, offset: int = 0):
@@ -211,7 +217,7 @@ def write_netcdf(dataset: xr.Dataset, path) -> Path:
         # Uncompressed: zlib would make writing ten times slower for half the size; a user who
         # wants it smaller can run `nccopy -d 1`.
         dataset.to_netcdf(temporary, engine="netcdf4")
-        os.replace(temporary, path)
+        replace_durably(temporary, path)
     finally:
         if temporary.exists():
             temporary.unlink()

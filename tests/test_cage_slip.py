@@ -199,3 +199,23 @@ def test_the_load_distributions_status_reaches_the_point(monkeypatch, upstream):
     monkeypatch.setattr(steady_module, "crb_radial", marked)
     result = cage_slip(np.array([800.0, 800.0]), 12000 * RPM, **TEST)
     assert result["status"].tolist() == [upstream, CONVERGED]
+
+
+def test_the_run_summary_counts_the_points_with_several_equilibria(tmp_path):
+    from sweeps import spec
+    from sweeps.run import Executor, run_sweep
+
+    text = """
+    [sweep]
+    model = "cage_slip"
+    bearing = "paper002-test"
+    [fixed]
+    speed = "9000 rpm"
+    orbit_points = 12
+    [axes]
+    radial_load = ["150 N", "165 N", "180 N"]
+    """.replace("\n    ", "\n")
+    summary = run_sweep(spec.parse(text), tmp_path / "band.nc", Executor(workers=0),
+                        progress=False)
+    assert summary.noted == {"points with several stable equilibria": 1}
+    assert "; 1 points with several stable equilibria" in summary.text()

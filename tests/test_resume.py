@@ -184,7 +184,7 @@ def test_a_part_emptied_by_a_power_loss_is_computed_again(tmp_path, capsys, monk
     same_data(store.open_result(output), store.open_result(whole))
 
 
-def test_parts_reach_the_disk_before_they_are_renamed(tmp_path, monkeypatch):
+def test_parts_and_the_result_reach_the_disk_before_they_are_renamed(tmp_path, monkeypatch):
     events = []
     real_fsync, real_replace = os.fsync, os.replace
 
@@ -204,6 +204,9 @@ def test_parts_reach_the_disk_before_they_are_renamed(tmp_path, monkeypatch):
     renamed = [i for i, event in enumerate(events)
                if event[0] == "replace" and event[2].startswith(folder)]
     assert len(renamed) == 5  # the manifest and four chunks
+    renamed += [i for i, event in enumerate(events)
+                if event[0] == "replace" and event[2] == str(tmp_path / "out.nc")]
+    assert len(renamed) == 6  # and the result itself
     for i in renamed:
         assert ("fsync", events[i][1]) in events[:i]  # the file's bytes, before the rename
         assert events[i + 1][0] == "fsync"  # then its folder, for the rename itself
