@@ -25,10 +25,11 @@ def _parser() -> argparse.ArgumentParser:
         command.add_argument("--workers", type=int, metavar="N",
                              help="size of the local dask cluster (default 2; 0: in-process)")
         command.add_argument("--scheduler", metavar="ADDRESS",
-                             help="run on an existing dask.distributed scheduler")
+                             help="run on an existing dask.distributed scheduler (its workers "
+                                  "need the same bearing-sweep version installed)")
 
     run = commands.add_parser("run", help="compute a sweep definition into a netCDF file")
-    run.add_argument("definition", type=Path)
+    run.add_argument("definition", type=Path, help="the sweep definition (TOML)")
     run.add_argument("-o", "--output", type=Path,
                      help="netCDF file to write (default results/<definition name>.nc)")
     run.add_argument("--chunk-size", type=int, metavar="POINTS",
@@ -47,15 +48,17 @@ def _parser() -> argparse.ArgumentParser:
     commands.add_parser("report", help="write figures/<study>/README.md and figures/README.md")
     commands.add_parser("models", help="list the models")
     describe = commands.add_parser("describe", help="show one model's inputs and outputs")
-    describe.add_argument("model")
+    describe.add_argument("model", help="a model's name (bearing-sweep models)")
     presets = commands.add_parser("presets", help="list the catalogue's bearings, or show one")
     presets.add_argument("name", nargs="?", help="a preset to show with its values")
     for command in commands.choices.values():
         if command.prog.split()[-1] in ("study", "report"):
             command.add_argument("--studies", type=Path, default=None,
                                  help="folder of studies (default ./studies)")
-            command.add_argument("--results", type=Path, default=Path("results"))
-            command.add_argument("--figures", type=Path, default=Path("figures"))
+            command.add_argument("--results", type=Path, default=Path("results"),
+                                 help="folder of the studies' netCDF files (default ./results)")
+            command.add_argument("--figures", type=Path, default=Path("figures"),
+                                 help="folder of the figures and report pages (default ./figures)")
     return parser
 
 

@@ -30,3 +30,15 @@ def test_the_documented_error_line_is_the_real_one(tmp_path):
                          capture_output=True, text=True, timeout=300)
     assert run.returncode == 2
     assert run.stderr.strip() in README
+
+
+def test_every_command_and_option_is_documented():
+    from sweeps.cli import _parser
+
+    commands = _parser()._subparsers._group_actions[0].choices
+    for name, command in commands.items():
+        assert f"`bearing-sweep {name}" in README, name
+        for action in command._actions:
+            for option in action.option_strings:
+                if option not in ("-h", "--help"):
+                    assert f"`{option}" in README, f"{name} {option}"
