@@ -121,7 +121,7 @@ class Summary:
 
     def text(self) -> str:
         counts = ", ".join(f"{n} {name}" for name, n in self.status_counts.items() if n)
-        counts += "".join(f"; {n} {text}" for text, n in self.noted.items())
+        counts += "".join(f"; {n} {text}" for text, n in self.noted.items() if n)
         line = (f"{self.model}: {self.points} points ({counts or 'none'}) in {self.seconds:.1f} s "
                 f"on {self.scheduler} -> {self.output}")
         if self.errors:
