@@ -12,7 +12,7 @@ import time
 import numpy as np
 from scipy.optimize import root
 
-from models.ball import ball_5dof
+from bearing_sweep.models.ball import ball_5dof
 
 MM = 1e-3
 BEARING = dict(ball_count=25, ball_diameter=3.14 * MM, pitch_diameter=41 * MM,

@@ -15,8 +15,8 @@ import time
 
 import numpy as np
 
-import models.cage_dynamics as dynamics
-from models.cage_slip import cage_slip
+import bearing_sweep.models.cage_dynamics as dynamics
+from bearing_sweep.models.cage_slip import cage_slip
 
 MM, RPM = 1e-3, 2 * np.pi / 60
 TEST = dict(roller_count=13, inner_raceway_diameter=44 * MM, roller_diameter=10 * MM,

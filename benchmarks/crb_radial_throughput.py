@@ -11,9 +11,9 @@ import time
 import numpy as np
 from scipy.optimize import brentq
 
-from models.contact import palmgren_constant
-from models.cylindrical import centrifugal_force, crb_radial
-from models.profiles import crown_shape
+from bearing_sweep.models.contact import palmgren_constant
+from bearing_sweep.models.cylindrical import centrifugal_force, crb_radial
+from bearing_sweep.models.profiles import crown_shape
 
 MM, RPM, N = 1e-3, 2 * np.pi / 60, 10 / 9
 GEOMETRY = dict(roller_count=14, pitch_diameter=65 * MM, roller_diameter=10 * MM,

@@ -12,7 +12,7 @@ import time
 import numpy as np
 from scipy.optimize import linprog
 
-from models.runout import crb_runout, roller_angles
+from bearing_sweep.models.runout import crb_runout, roller_angles
 
 MM, UM = 1e-3, 1e-6
 BEARING = dict(inner_raceway_diameter=49.481 * MM, outer_raceway_diameter=71.555 * MM,

@@ -12,8 +12,8 @@ from pathlib import Path
 
 import numpy as np
 
-from sweeps import spec, store
-from sweeps.run import Executor, run_sweep
+from bearing_sweep import spec, store
+from bearing_sweep.run import Executor, run_sweep
 
 DEFINITION = """
 [sweep]

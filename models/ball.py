@@ -16,11 +16,11 @@ import functools
 
 import numpy as np
 
-from models.contact import POINT_CONTACT_EXPONENT, hertz_point
-from models.geometry import elements_fit
-from models.registry import (CONVERGED, INFEASIBLE, NOT_CONVERGED, OUT_OF_VALIDITY, Constraint,
+from .contact import POINT_CONTACT_EXPONENT, hertz_point
+from .geometry import elements_fit
+from .registry import (CONVERGED, INFEASIBLE, NOT_CONVERGED, OUT_OF_VALIDITY, Constraint,
                              Input, Model, Output, combine_status)
-from models.solvers import solve_equilibrium
+from .solvers import solve_equilibrium
 
 DOFS = ("axial", "radial_y", "radial_z", "tilt_y", "tilt_z")
 GEOMETRIES = ("jones", "fixed_angle")

@@ -12,12 +12,12 @@ from __future__ import annotations
 import numpy as np
 from scipy.integrate import solve_ivp
 
-from models import cage_dynamics_rhs as rhs
-from models.cage_slip import MODELS as STEADY_MODELS
-from models.cage_slip import bearing_terms, cage_slip, cage_windage
-from models.contact import palmgren_constant
-from models.cylindrical import crb_radial
-from models.registry import (CONVERGED, NOT_CONVERGED, Constraint, DimCoordinate, Input, Model,
+from . import cage_dynamics_rhs as rhs
+from .cage_slip import MODELS as STEADY_MODELS
+from .cage_slip import bearing_terms, cage_slip, cage_windage
+from .contact import palmgren_constant
+from .cylindrical import crb_radial
+from .registry import (CONVERGED, NOT_CONVERGED, Constraint, DimCoordinate, Input, Model,
                              Output)
 
 GRAVITY = 9.81

@@ -22,11 +22,11 @@ import inspect
 
 import numpy as np
 
-from models.cylindrical import crb_radial
-from models.lubrication import TractionCurve, central_film_thickness, walther_viscosity
-from models.registry import (CONVERGED, NO_ROOT_IN_RANGE, NOT_CONVERGED, Constraint, Input,
+from .cylindrical import crb_radial
+from .lubrication import TractionCurve, central_film_thickness, walther_viscosity
+from .registry import (CONVERGED, NO_ROOT_IN_RANGE, NOT_CONVERGED, Constraint, Input,
                              Model, Output, combine_status)
-from models.solvers import solve_increasing
+from .solvers import solve_increasing
 
 AIR_DENSITY = 1.2  # [kg/m^3]
 _POSITIONS_PER_PITCH = 20  # cage positions computed per roller pitch: the orbit's resolution

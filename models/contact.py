@@ -4,9 +4,9 @@ from __future__ import annotations
 import numpy as np
 from scipy.special import ellipe, ellipk
 
-from models.registry import (CONVERGED, INFEASIBLE, NOT_CONVERGED, OUT_OF_VALIDITY, Constraint,
+from .registry import (CONVERGED, INFEASIBLE, NOT_CONVERGED, OUT_OF_VALIDITY, Constraint,
                              Input, Model, Output)
-from models.solvers import solve_increasing
+from .solvers import solve_increasing
 
 #: Load-deflection exponent of a line contact, Q = K delta^n [-] (Palmgren).
 LINE_CONTACT_EXPONENT = 10.0 / 9.0

@@ -7,14 +7,14 @@ from __future__ import annotations
 
 import numpy as np
 
-from models.contact import (APPROACH_LIMIT, LINE_CONTACT_EXPONENT, ROLLER_PRESSURE_LIMIT,
+from .contact import (APPROACH_LIMIT, LINE_CONTACT_EXPONENT, ROLLER_PRESSURE_LIMIT,
                             SLICE_LAWS, effective_modulus, largest_slice_line_load,
                             line_contact_pressure, palmgren_constant, sliced_line_contact)
-from models.geometry import elements_fit
-from models.profiles import PROFILES, distinct_slices
-from models.registry import (CONVERGED, NOT_CONVERGED, OUT_OF_VALIDITY, Constraint, Input,
+from .geometry import elements_fit
+from .profiles import PROFILES, distinct_slices
+from .registry import (CONVERGED, NOT_CONVERGED, OUT_OF_VALIDITY, Constraint, Input,
                              Model, Output)
-from models.solvers import solve_increasing
+from .solvers import solve_increasing
 
 OUTER_CONTACTS = ("crowned", "paper")
 

@@ -4,7 +4,7 @@ from __future__ import annotations
 
 import numpy as np
 
-from models.solvers import solve_increasing
+from .solvers import solve_increasing
 
 CELSIUS = 273.15
 

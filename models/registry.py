@@ -53,9 +53,8 @@ REQUIRED = object()
 
 # Modules that declare models (each defines a list ``MODELS``), imported on first use so that
 # model modules can import the declaration classes below without a cycle.
-_DECLARING_MODULES = ("models.cylindrical", "models.contact", "models.ball",
-                      "models.tapered", "models.runout", "models.cage_slip",
-                      "models.cage_dynamics")
+_DECLARING_MODULES = ("cylindrical", "contact", "ball", "tapered", "runout", "cage_slip",
+                      "cage_dynamics")
 
 
 @dataclass(frozen=True)
@@ -226,7 +225,7 @@ def all_models() -> dict[str, Model]:
     """Every registered model, by name."""
     if not _MODELS:
         for module_name in _DECLARING_MODULES:
-            for model in importlib.import_module(module_name).MODELS:
+            for model in importlib.import_module(f".{module_name}", __package__).MODELS:
                 _MODELS[model.name] = model
     return dict(_MODELS)
 

@@ -21,8 +21,8 @@ from __future__ import annotations
 
 import numpy as np
 
-from models.geometry import elements_fit
-from models.registry import (CONVERGED, NOT_CONVERGED, Constraint, DimCoordinate, Input, Model,
+from .geometry import elements_fit
+from .registry import (CONVERGED, NOT_CONVERGED, Constraint, DimCoordinate, Input, Model,
                              Output)
 
 SPINS = ("absolute", "paper")

@@ -17,11 +17,11 @@ from __future__ import annotations
 
 import numpy as np
 
-from models.contact import (APPROACH_LIMIT, ROLLER_PRESSURE_LIMIT, effective_modulus,
+from .contact import (APPROACH_LIMIT, ROLLER_PRESSURE_LIMIT, effective_modulus,
                             hertz_point, line_contact_pressure)
-from models.registry import (CONVERGED, INFEASIBLE, NO_ROOT_IN_RANGE, NOT_CONVERGED,
+from .registry import (CONVERGED, INFEASIBLE, NO_ROOT_IN_RANGE, NOT_CONVERGED,
                              OUT_OF_VALIDITY, Constraint, Input, Model, Output, combine_status)
-from models.solvers import solve_equilibrium, solve_increasing
+from .solvers import solve_equilibrium, solve_increasing
 
 #: Load-deflection exponent of a roller between its raceways, Q = K delta^1.11 (eq. 13-18).
 LOAD_EXPONENT = 1.11

@@ -5,12 +5,12 @@ import argparse
 import sys
 from pathlib import Path
 
-from models.catalogue import PRESETS
-from models.registry import STATUS_DESCRIPTIONS, all_models
-from sweeps import spec, study
-from sweeps.parts import check_output
-from sweeps.run import Executor, WorkerMismatch, check_scheduler_address, run_sweep
-from sweeps.spec import SpecError
+from .models.catalogue import PRESETS
+from .models.registry import STATUS_DESCRIPTIONS, all_models
+from . import spec, study
+from .parts import check_output
+from .run import Executor, WorkerMismatch, check_scheduler_address, run_sweep
+from .spec import SpecError
 
 #: Exit status for a mistake in the user's input (a definition, a name, an option).
 USAGE_ERROR = 2

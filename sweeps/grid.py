@@ -10,8 +10,8 @@ from dataclasses import dataclass
 
 import numpy as np
 
-from sweeps import units
-from sweeps.spec import Sweep, Value, stack
+from . import units
+from .spec import Sweep, Value, stack
 
 
 @dataclass

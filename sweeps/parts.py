@@ -20,7 +20,7 @@ from pathlib import Path
 import filelock
 import numpy as np
 
-from sweeps.spec import SpecError
+from .spec import SpecError
 
 
 class OutputBusy(OSError):

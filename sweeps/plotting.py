@@ -10,8 +10,8 @@ import matplotlib.pyplot as plt  # noqa: E402
 import numpy as np  # noqa: E402
 import xarray as xr  # noqa: E402
 
-from sweeps import units  # noqa: E402
-from sweeps.store import open_result  # noqa: E402
+from . import units  # noqa: E402
+from .store import open_result  # noqa: E402
 
 
 def result(results: Path, name: str) -> xr.Dataset:

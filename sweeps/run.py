@@ -12,11 +12,11 @@ from dataclasses import dataclass, field
 
 import numpy as np
 
-from models.registry import MODEL_ERROR, VALUES_KEPT, get_model
-from sweeps import store, units
-from sweeps.grid import Grid, stored_unit
-from sweeps.parts import OutputLock, Parts, check_output
-from sweeps.spec import SpecError, Sweep
+from .models.registry import MODEL_ERROR, VALUES_KEPT, get_model
+from . import store, units
+from .grid import Grid, stored_unit
+from .parts import OutputLock, Parts, check_output
+from .spec import SpecError, Sweep
 
 #: Below this estimated single-core time [s] a sweep runs in-process: starting a cluster
 #: would take longer than the work.

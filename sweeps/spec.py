@@ -13,9 +13,9 @@ from pathlib import Path
 
 import numpy as np
 
-from models.catalogue import PRESETS
-from models.registry import Input, Model, all_models
-from sweeps import units
+from .models.catalogue import PRESETS
+from .models.registry import Input, Model, all_models
+from . import units
 
 _RANGE_KEYS = {"start", "stop", "num", "step", "units"}
 _VALUES_KEYS = {"values", "units"}

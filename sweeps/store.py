@@ -10,11 +10,11 @@ from pathlib import Path
 import numpy as np
 import xarray as xr
 
-from models.registry import STATUS_DESCRIPTIONS, STATUS_MEANINGS, get_model
-from sweeps import units
-from sweeps.grid import Grid, coordinates, described, fixed_inputs
-from sweeps.parts import replace_durably
-from sweeps.spec import Sweep
+from .models.registry import STATUS_DESCRIPTIONS, STATUS_MEANINGS, get_model
+from . import units
+from .grid import Grid, coordinates, described, fixed_inputs
+from .parts import replace_durably
+from .spec import Sweep
 
 CONVENTIONS = "CF-1.10"
 

@@ -4,7 +4,7 @@ A study is a folder ``studies/<name>/`` holding ``*.toml`` sweep definitions, ``
 (``FIGURES``: file name -> caption; ``draw(results, figures)``; ``ours(results)``: our value
 of each stated number, from the netCDF files only), ``claims.toml`` (the paper's numbers) and
 ``about.md`` (what the study shows and assumes). The figure script is loaded from its file:
-studies are data for the engine, not part of the package.
+studies are data for the engine (installed with it as package data).
 """
 from __future__ import annotations
 
@@ -15,10 +15,10 @@ from pathlib import Path
 
 import xarray as xr
 
-from models.registry import get_model
-from sweeps import spec as spec_module
-from sweeps.run import Executor, run_sweep
-from sweeps.spec import SpecError
+from .models.registry import get_model
+from . import spec as spec_module
+from .run import Executor, run_sweep
+from .spec import SpecError
 
 
 @dataclass(frozen=True)
@@ -54,7 +54,11 @@ class Study:
 def default_studies_folder() -> Path:
     """``./studies`` when run from a checkout's root, else the one beside the package."""
     here = Path("studies")
-    return here if here.is_dir() else Path(__file__).resolve().parents[1] / "studies"
+    if here.is_dir():
+        return here
+    from . import studies  # the studies installed with the package
+
+    return Path(studies.__file__).resolve().parent
 
 
 def find_studies(folder: Path) -> dict[str, Study]:

@@ -7,7 +7,7 @@ import pytest
 from hypothesis import HealthCheck, given, settings
 from hypothesis import strategies as st
 
-from sweeps import cli, store
+from bearing_sweep import cli, store
 
 CORPUS = sorted((Path(__file__).parent / "data" / "bad_definitions").glob("*.toml"))
 

@@ -5,9 +5,9 @@ from hypothesis import assume, given, settings
 from hypothesis import strategies as st
 from scipy.optimize import brentq
 
-from models.ball import DOFS, _Rings, ball_5dof, series_constant
-from models.contact import hertz_point
-from models.registry import CONVERGED, INFEASIBLE, OUT_OF_VALIDITY
+from bearing_sweep.models.ball import DOFS, _Rings, ball_5dof, series_constant
+from bearing_sweep.models.contact import hertz_point
+from bearing_sweep.models.registry import CONVERGED, INFEASIBLE, OUT_OF_VALIDITY
 
 MM = 1e-3
 #: The 71807AC of paper 001, Table 1, with the paper's contact constant.

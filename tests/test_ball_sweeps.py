@@ -2,9 +2,9 @@
 import numpy as np
 import pytest
 
-from models.registry import CONVERGED
-from sweeps import run, spec
-from sweeps.spec import SpecError
+from bearing_sweep.models.registry import CONVERGED
+from bearing_sweep import run, spec
+from bearing_sweep.spec import SpecError
 
 GOOD = """
 [sweep]

@@ -2,9 +2,9 @@
 import numpy as np
 import pytest
 
-from models import cage_dynamics_rhs as rhs
-from models.cage_dynamics import cage_dynamics
-from models.cage_slip import cage_slip
+from bearing_sweep.models import cage_dynamics_rhs as rhs
+from bearing_sweep.models.cage_dynamics import cage_dynamics
+from bearing_sweep.models.cage_slip import cage_slip
 
 MM, RPM = 1e-3, 2 * np.pi / 60
 TEST = dict(roller_count=13, inner_raceway_diameter=44 * MM, roller_diameter=10 * MM,

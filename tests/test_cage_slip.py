@@ -3,11 +3,11 @@ pocket on the cage, the no-drag limit, traction and viscosity."""
 import numpy as np
 import pytest
 
-import models.cage_slip as steady_module
-from models.cage_slip import cage_slip, cage_torque_residual, cage_windage, kinematic_cage_speed
-from models.lubrication import TractionCurve, walther_viscosity
-from models.registry import CONVERGED, NO_ROOT_IN_RANGE, NOT_CONVERGED, OUT_OF_VALIDITY
-from sweeps import run, spec, store
+import bearing_sweep.models.cage_slip as steady_module
+from bearing_sweep.models.cage_slip import cage_slip, cage_torque_residual, cage_windage, kinematic_cage_speed
+from bearing_sweep.models.lubrication import TractionCurve, walther_viscosity
+from bearing_sweep.models.registry import CONVERGED, NO_ROOT_IN_RANGE, NOT_CONVERGED, OUT_OF_VALIDITY
+from bearing_sweep import run, spec, store
 
 MM, RPM = 1e-3, 2 * np.pi / 60
 #: The test bearing of paper 002, Table 2 (outer raceway from di + 2D + Pd).
@@ -202,8 +202,8 @@ def test_the_load_distributions_status_reaches_the_point(monkeypatch, upstream):
 
 
 def test_the_run_summary_counts_the_points_with_several_equilibria(tmp_path):
-    from sweeps import spec
-    from sweeps.run import Executor, run_sweep
+    from bearing_sweep import spec
+    from bearing_sweep.run import Executor, run_sweep
 
     text = """
     [sweep]

@@ -21,7 +21,7 @@ speed = { values = [0, 5000], units = "rpm" }
 
 
 def cli(*args, cwd):
-    return subprocess.run([sys.executable, "-m", "sweeps", *map(str, args)], cwd=cwd,
+    return subprocess.run([sys.executable, "-m", "bearing_sweep", *map(str, args)], cwd=cwd,
                           capture_output=True, text=True, timeout=300)
 
 

@@ -77,7 +77,7 @@ def external_cluster(folder, nanny=True):
 
 def equals_local_run(folder, remote_name):
     """The remote result has the data of an in-process run of the same definition."""
-    local = subprocess.run([sys.executable, "-m", "sweeps", "run", "def.toml", "-o", "local.nc",
+    local = subprocess.run([sys.executable, "-m", "bearing_sweep", "run", "def.toml", "-o", "local.nc",
                             "--workers", "0", "--quiet"], cwd=folder, capture_output=True,
                            text=True)
     assert local.returncode == 0, local.stderr
@@ -90,7 +90,7 @@ def equals_local_run(folder, remote_name):
 
 def run_on(address, folder, *extra, output="remote.nc"):
     began = time.monotonic()
-    done = subprocess.run([sys.executable, "-m", "sweeps", "run", "def.toml", "-o", output,
+    done = subprocess.run([sys.executable, "-m", "bearing_sweep", "run", "def.toml", "-o", output,
                            "--scheduler", address, *extra], cwd=folder, capture_output=True,
                           text=True, timeout=300)
     return done, time.monotonic() - began
@@ -100,7 +100,7 @@ def run_on(address, folder, *extra, output="remote.nc"):
 def test_sweep_on_a_real_scheduler_and_two_workers(tmp_path):
     (tmp_path / "def.toml").write_text(DEFINITION)
     with external_cluster(tmp_path) as (address, _):
-        remote = subprocess.run([sys.executable, "-m", "sweeps", "run", "def.toml", "-o",
+        remote = subprocess.run([sys.executable, "-m", "bearing_sweep", "run", "def.toml", "-o",
                                  "remote.nc", "--scheduler", address, "--chunk-size", "7"],
                                 cwd=tmp_path, capture_output=True, text=True, timeout=300)
         assert remote.returncode == 0, remote.stderr
@@ -114,8 +114,8 @@ def workers_of_another_version_are_refused(address, folder):
     from distributed import Client
 
     with Client(address, timeout="60s") as client:  # the workers' installation now differs
-        client.run(exec, "import sweeps.store\n"
-                         "sweeps.store.package_version = lambda: '0.0.1'", {})
+        client.run(exec, "import bearing_sweep.store\n"
+                         "bearing_sweep.store.package_version = lambda: '0.0.1'", {})
     done, _ = run_on(address, folder, "--chunk-size", "7", "--quiet", output="other.nc")
     assert done.returncode == 1, done.stderr
     assert len(done.stderr.strip().splitlines()) == 1, done.stderr
@@ -130,7 +130,7 @@ def test_a_worker_killed_on_an_external_cluster_costs_only_a_retry(tmp_path):
     (tmp_path / "def.toml").write_text(definition)
     # Without a nanny the process is the worker: killing it loses the worker for good.
     with external_cluster(tmp_path, nanny=False) as (address, workers):
-        remote = subprocess.Popen([sys.executable, "-m", "sweeps", "run", "def.toml", "-o",
+        remote = subprocess.Popen([sys.executable, "-m", "bearing_sweep", "run", "def.toml", "-o",
                                    "remote.nc", "--scheduler", address, "--chunk-size", "1000",
                                    "--quiet"], cwd=tmp_path, stdout=subprocess.PIPE,
                                   stderr=subprocess.PIPE, text=True)

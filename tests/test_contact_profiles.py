@@ -2,9 +2,9 @@
 import numpy as np
 import pytest
 
-from models.contact import (LINE_CONTACT_EXPONENT, largest_slice_line_load, line_contact_pressure,
+from bearing_sweep.models.contact import (LINE_CONTACT_EXPONENT, largest_slice_line_load, line_contact_pressure,
                             palmgren_constant, sliced_line_contact)
-from models.profiles import crown_shape, distinct_slices, slice_centres
+from bearing_sweep.models.profiles import crown_shape, distinct_slices, slice_centres
 
 
 def test_slice_centres_are_symmetric_and_evenly_spaced():

@@ -3,10 +3,10 @@ import numpy as np
 import pytest
 from hypothesis import given, settings, strategies as st
 
-import models.cylindrical as cylindrical
-from models.contact import LINE_CONTACT_EXPONENT, palmgren_constant
-from models.cylindrical import centrifugal_force, crb_radial
-from models.registry import CONVERGED, NOT_CONVERGED
+import bearing_sweep.models.cylindrical as cylindrical
+from bearing_sweep.models.contact import LINE_CONTACT_EXPONENT, palmgren_constant
+from bearing_sweep.models.cylindrical import centrifugal_force, crb_radial
+from bearing_sweep.models.registry import CONVERGED, NOT_CONVERGED
 
 from conftest import BEARING_D, MM, RPM
 
@@ -199,7 +199,7 @@ def test_a_crowned_rollers_middle_slice_carries_more_than_its_mean():
 def test_absurd_loads_and_speeds_are_out_of_validity_with_their_values_kept():
     # Issue 11: 1e6 kN gave a 522 mm displacement on a 10 mm roller, and 1e6 r/min, both
     # "converged". Ordinary points stay converged.
-    from models.registry import OUT_OF_VALIDITY
+    from bearing_sweep.models.registry import OUT_OF_VALIDITY
 
     by_load = crb_radial(np.array([4000.0, 1e9]), crown=0.004 * MM, **BEARING_D)
     assert by_load["status"].tolist() == [CONVERGED, OUT_OF_VALIDITY]
@@ -213,7 +213,7 @@ def test_absurd_loads_and_speeds_are_out_of_validity_with_their_values_kept():
 
 def test_a_soft_contact_constant_is_out_of_validity_by_its_approach():
     # A hundred times softer than Palmgren's: 4 kN needs an approach of 4.6 % of D (limit 2 %).
-    from models.registry import OUT_OF_VALIDITY
+    from bearing_sweep.models.registry import OUT_OF_VALIDITY
 
     soft = palmgren_constant(BEARING_D["effective_length"]) / 100
     result = crb_radial(np.array([100.0, 4000.0]), contact_constant=soft, **BEARING_D)

@@ -1,8 +1,8 @@
 """The labelled grid: axes in order, zipped axes, and the inputs of any range of points."""
 import numpy as np
 
-from sweeps import spec
-from sweeps.grid import Grid, coordinates, fixed_inputs
+from bearing_sweep import spec
+from bearing_sweep.grid import Grid, coordinates, fixed_inputs
 
 TEXT = """
 [sweep]

@@ -2,9 +2,9 @@
 import numpy as np
 import pytest
 
-from models.contact import _curvature_difference, ellipse_parameters, hertz_point
-from sweeps import spec
-from sweeps.spec import SpecError
+from bearing_sweep.models.contact import _curvature_difference, ellipse_parameters, hertz_point
+from bearing_sweep import spec
+from bearing_sweep.spec import SpecError
 
 STEEL = dict(youngs_modulus=207e9, poisson_ratio=0.3)
 
@@ -183,7 +183,7 @@ def test_the_formula_choice_is_selectable_in_a_dataset():
     # dimension of that name could not be selected by label.
     import xarray as xr
 
-    from models.registry import get_model
+    from bearing_sweep.models.registry import get_model
 
     choice = next(i for i in get_model("hertz_point").inputs if i.kind == "choice")
     data = xr.DataArray([1.0, 2.0], dims=choice.name, coords={choice.name: list(choice.choices)})

@@ -13,7 +13,7 @@ import textwrap
 import netCDF4
 import pytest
 
-from sweeps import cli, parts, store
+from bearing_sweep import cli, parts, store
 from test_cli import DEFINITION  # a four-point sweep
 
 
@@ -30,8 +30,8 @@ def no_computing(monkeypatch):
     def computed(*args, **kwargs):
         raise AssertionError("computing started before the output was checked")
 
-    monkeypatch.setattr("sweeps.run.OutputLock", computed)
-    monkeypatch.setattr("sweeps.run.evaluate_chunk", computed)
+    monkeypatch.setattr("bearing_sweep.run.OutputLock", computed)
+    monkeypatch.setattr("bearing_sweep.run.evaluate_chunk", computed)
 
 
 def refused(tmp_path, capsys, output, definition=None):
@@ -65,7 +65,7 @@ def test_a_named_pipe_is_refused_without_being_opened(tmp_path):
     # would block, so a run that opened it would reach the timeout here.
     (tmp_path / "def.toml").write_text(DEFINITION)
     os.mkfifo(tmp_path / "pipe")
-    done = subprocess.run([sys.executable, "-m", "sweeps", "run", "def.toml", "-o", "pipe",
+    done = subprocess.run([sys.executable, "-m", "bearing_sweep", "run", "def.toml", "-o", "pipe",
                            "--workers", "0"], cwd=tmp_path, capture_output=True, text=True,
                           timeout=120)
     assert done.returncode == 2, done.stderr
@@ -139,7 +139,7 @@ def test_study_refuses_a_result_path_that_is_not_a_result(tmp_path):
         """))
     (tmp_path / "results" / "tiny").mkdir(parents=True)
     (tmp_path / "results" / "tiny" / "loads.nc").write_text("my own notes")
-    done = subprocess.run([sys.executable, "-m", "sweeps", "study", "tiny", "--studies",
+    done = subprocess.run([sys.executable, "-m", "bearing_sweep", "study", "tiny", "--studies",
                            "studies"], cwd=tmp_path, capture_output=True, text=True,
                           timeout=120)
     assert done.returncode == 2 and len(done.stderr.strip().splitlines()) == 1, done.stderr

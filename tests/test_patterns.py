@@ -2,11 +2,11 @@
 import numpy as np
 import pytest
 
-import models.registry as registry
-from models.registry import Input, Model, Output
-from sweeps import spec, store
-from sweeps.run import Executor, run_sweep
-from sweeps.spec import SpecError
+import bearing_sweep.models.registry as registry
+from bearing_sweep.models.registry import Input, Model, Output
+from bearing_sweep import spec, store
+from bearing_sweep.run import Executor, run_sweep
+from bearing_sweep.spec import SpecError
 
 
 def pattern_total(scale, pattern):

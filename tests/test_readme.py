@@ -14,7 +14,7 @@ def blocks(language):
 def test_worked_example(tmp_path):
     definition, python = blocks("toml")[0], blocks("python")[0]
     (tmp_path / "example.toml").write_text(definition)
-    run = subprocess.run([sys.executable, "-m", "sweeps", "run", "example.toml"], cwd=tmp_path,
+    run = subprocess.run([sys.executable, "-m", "bearing_sweep", "run", "example.toml"], cwd=tmp_path,
                          capture_output=True, text=True, timeout=300)
     assert run.returncode == 0, run.stderr
     script = "import matplotlib\nmatplotlib.use('Agg')\n" + python
@@ -26,14 +26,14 @@ def test_worked_example(tmp_path):
 def test_the_documented_error_line_is_the_real_one(tmp_path):
     definition = blocks("toml")[0].replace("crown =", "crwn =")
     (tmp_path / "example.toml").write_text(definition)
-    run = subprocess.run([sys.executable, "-m", "sweeps", "run", "example.toml"], cwd=tmp_path,
+    run = subprocess.run([sys.executable, "-m", "bearing_sweep", "run", "example.toml"], cwd=tmp_path,
                          capture_output=True, text=True, timeout=300)
     assert run.returncode == 2
     assert run.stderr.strip() in README
 
 
 def test_every_command_and_option_is_documented():
-    from sweeps.cli import _parser
+    from bearing_sweep.cli import _parser
 
     commands = _parser()._subparsers._group_actions[0].choices
     for name, command in commands.items():

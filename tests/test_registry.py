@@ -4,9 +4,9 @@ import inspect
 import numpy as np
 import pytest
 
-from models.catalogue import PRESETS
-from models.registry import REQUIRED, all_models
-from sweeps import spec, units
+from bearing_sweep.models.catalogue import PRESETS
+from bearing_sweep.models.registry import REQUIRED, all_models
+from bearing_sweep import spec, units
 
 MODELS = list(all_models().values())
 

@@ -11,9 +11,9 @@ import time
 import numpy as np
 import pytest
 
-from sweeps import cli, spec, store
-from sweeps.parts import OutputBusy, OutputLock, Parts, UnreadablePart
-from sweeps.run import Executor, run_sweep
+from bearing_sweep import cli, spec, store
+from bearing_sweep.parts import OutputBusy, OutputLock, Parts, UnreadablePart
+from bearing_sweep.run import Executor, run_sweep
 
 # About 40 chunks of 0.1 s each in one process: long enough to be killed part-way.
 SLOW = """
@@ -34,7 +34,7 @@ def same_data(first, second):
 
 
 def cli_run(*arguments, cwd):
-    return subprocess.Popen([sys.executable, "-m", "sweeps", "run", *map(str, arguments)],
+    return subprocess.Popen([sys.executable, "-m", "bearing_sweep", "run", *map(str, arguments)],
                             cwd=cwd, stdout=subprocess.PIPE, stderr=subprocess.PIPE, text=True)
 
 
@@ -98,7 +98,7 @@ def test_a_full_disk_leaves_the_earlier_result(tmp_path, capsys, monkeypatch):
     def full(*args, **kwargs):  # the disk fills while the values are being written
         raise OSError(errno.ENOSPC, os.strerror(errno.ENOSPC), str(output))
 
-    monkeypatch.setattr("sweeps.store._regions", full)
+    monkeypatch.setattr("bearing_sweep.store._regions", full)
     definition.write_text(SLOW.replace("num = 200", "num = 2"))
     code = cli.main(["run", str(definition), "-o", str(output), "--workers", "0"])
     err = capsys.readouterr().err
@@ -149,7 +149,7 @@ def test_an_output_that_cannot_be_a_file_is_one_line(tmp_path, capsys, monkeypat
     def computed(*args):
         raise AssertionError("computed before the output was refused")
 
-    monkeypatch.setattr("sweeps.run.evaluate_chunk", computed)
+    monkeypatch.setattr("bearing_sweep.run.evaluate_chunk", computed)
     code = cli.main(["run", str(definition), "-o", str(occupied), "--workers", "0"])
     err = capsys.readouterr().err
     assert code == 2 and len(err.strip().splitlines()) == 1 and "Traceback" not in err
@@ -166,7 +166,7 @@ def test_a_part_emptied_by_a_power_loss_is_computed_again(tmp_path, capsys, monk
     def power_loss(*args):  # every chunk is computed, the file not yet written
         raise KeyboardInterrupt
 
-    monkeypatch.setattr("sweeps.store.assemble", power_loss)
+    monkeypatch.setattr("bearing_sweep.store.assemble", power_loss)
     assert cli.main(arguments) == 130
     monkeypatch.undo()
     kept = sorted((tmp_path / "out.nc.parts").glob("chunk-*.npz"))
@@ -263,7 +263,7 @@ def test_two_runs_started_at_once_one_computes_the_other_is_refused(tmp_path):
 def test_the_command_line_imports_without_fcntl():
     # As on Windows, which has no fcntl module.
     done = subprocess.run([sys.executable, "-c", "import sys; sys.modules['fcntl'] = None; "
-                           "import sweeps.cli, sweeps.parts"], capture_output=True, text=True)
+                           "import bearing_sweep.cli, bearing_sweep.parts"], capture_output=True, text=True)
     assert done.returncode == 0, done.stderr
 
 
@@ -271,7 +271,7 @@ def test_the_command_line_imports_without_fcntl():
 def test_ctrl_c_on_the_local_cluster_is_one_line_and_resumes(tmp_path):
     # A terminal's Ctrl-C reaches the whole foreground process group: the workers too.
     (tmp_path / "slow.toml").write_text(SLOW.replace("num = 200", "num = 300"))
-    run = subprocess.Popen([sys.executable, "-m", "sweeps", "run", "slow.toml", "-o", "out.nc",
+    run = subprocess.Popen([sys.executable, "-m", "bearing_sweep", "run", "slow.toml", "-o", "out.nc",
                             "--quiet"], cwd=tmp_path, stdout=subprocess.PIPE,
                            stderr=subprocess.PIPE, text=True, start_new_session=True)
     parts = tmp_path / "out.nc.parts"
@@ -312,8 +312,8 @@ def test_parts_of_another_package_version_are_discarded(tmp_path, capsys, monkey
     def interrupted(*args):  # every chunk computed, the file not yet written
         raise KeyboardInterrupt
 
-    monkeypatch.setattr("sweeps.store.assemble", interrupted)
-    monkeypatch.setattr("sweeps.store.package_version", lambda: "0.0.1")
+    monkeypatch.setattr("bearing_sweep.store.assemble", interrupted)
+    monkeypatch.setattr("bearing_sweep.store.package_version", lambda: "0.0.1")
     assert cli.main(arguments) == 130
     monkeypatch.undo()  # the package is upgraded before the run is resumed
     capsys.readouterr()

@@ -3,10 +3,10 @@ import numpy as np
 import pytest
 import xarray as xr
 
-import models.registry as registry
-from models.registry import MODEL_ERROR
-from sweeps import spec, store
-from sweeps.run import Executor, Summary, run_sweep
+import bearing_sweep.models.registry as registry
+from bearing_sweep.models.registry import MODEL_ERROR
+from bearing_sweep import spec, store
+from bearing_sweep.run import Executor, Summary, run_sweep
 
 TEXT = """
 [sweep]
@@ -137,7 +137,7 @@ class Clock:
 def test_progress_appears_only_after_a_moment(monkeypatch):
     import io
 
-    import sweeps.run as run
+    import bearing_sweep.run as run
 
     clock = Clock()
     monkeypatch.setattr(run.time, "monotonic", clock)
@@ -181,7 +181,7 @@ def test_points_out_of_validity_keep_their_values_and_failures_are_nan(tmp_path,
 
 
 def test_statuses_combine_by_severity():
-    from models.registry import combine_status as combine
+    from bearing_sweep.models.registry import combine_status as combine
 
     c, nc, inf, err, oov, nr = range(6)
     assert combine([c, oov, nr, c, inf], [oov, c, oov, nc, nc]).tolist() == [oov, oov, nr, nc, nc]
@@ -236,8 +236,8 @@ def test_writing_a_result_closes_its_file_and_leaves_the_others(tmp_path):
 
 
 def test_each_chunk_reports_the_versions_it_was_computed_with():
-    from sweeps.grid import Grid
-    from sweeps.run import evaluate_chunk
+    from bearing_sweep.grid import Grid
+    from bearing_sweep.run import evaluate_chunk
 
     grid = Grid.from_sweep(spec.parse(TEXT))
     result = evaluate_chunk(grid, 0, 5)
@@ -247,7 +247,7 @@ def test_each_chunk_reports_the_versions_it_was_computed_with():
 
 def test_chunks_of_another_version_are_refused_and_the_others_kept(tmp_path, capsys,
                                                                   monkeypatch):
-    from sweeps import cli, run
+    from bearing_sweep import cli, run
 
     original = run.evaluate_chunk
 

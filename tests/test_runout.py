@@ -3,8 +3,8 @@ import numpy as np
 import pytest
 from scipy.optimize import minimize
 
-from models.registry import CONVERGED, NOT_CONVERGED
-from models.runout import crb_runout, roller_angles
+from bearing_sweep.models.registry import CONVERGED, NOT_CONVERGED
+from bearing_sweep.models.runout import crb_runout, roller_angles
 
 MM, UM = 1e-3, 1e-6
 #: NU208 number 1 of paper 004, Table 1 (the smaller roller diameter of its range).
@@ -152,7 +152,7 @@ def test_a_nan_input_fails_the_point_as_not_converged():
 def test_a_zero_clearance_written_in_mm_is_accepted():
     # Issue 11: NU208 number 1 with de = 71.478 mm = di + 2 D has zero clearance, but in
     # metres the difference came out -3.5e-18 m and the definition was refused.
-    from sweeps import spec
+    from bearing_sweep import spec
 
     text = ('[sweep]\nmodel = "crb_runout"\nbearing = "paper004-NU208-1"\n[fixed]\n'
             'outer_raceway_diameter = "71.478 mm"\n')

@@ -2,7 +2,7 @@ import numpy as np
 import pytest
 from hypothesis import given, settings, strategies as st
 
-from models.solvers import solve_increasing
+from bearing_sweep.models.solvers import solve_increasing
 
 
 @settings(max_examples=50, deadline=None)

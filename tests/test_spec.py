@@ -2,9 +2,9 @@
 import numpy as np
 import pytest
 
-from sweeps import spec
-from sweeps.cli import main
-from sweeps.spec import SpecError
+from bearing_sweep import spec
+from bearing_sweep.cli import main
+from bearing_sweep.spec import SpecError
 
 GOOD = """
 [sweep]

@@ -7,10 +7,10 @@ import numpy as np
 import pytest
 import xarray as xr
 
-from sweeps import units
-from sweeps.plotting import at, conditions, in_unit
-from sweeps.store import open_result
-from sweeps.study import find_studies
+from bearing_sweep import units
+from bearing_sweep.plotting import at, conditions, in_unit
+from bearing_sweep.store import open_result
+from bearing_sweep.study import find_studies
 
 STUDIES = Path(__file__).resolve().parents[1] / "studies"
 
@@ -47,7 +47,7 @@ def test_a_study_regenerates_its_figures_and_report(name, tmp_path):
     folders = ["--studies", STUDIES, "--results", tmp_path / "results", "--figures",
                tmp_path / "figures"]
     for command in (["study", name, "--workers", "0"], ["report"]):
-        done = subprocess.run([sys.executable, "-m", "sweeps", *command, *map(str, folders)],
+        done = subprocess.run([sys.executable, "-m", "bearing_sweep", *command, *map(str, folders)],
                               capture_output=True, text=True, timeout=300, cwd=tmp_path)
         assert done.returncode == 0, done.stderr
     for figure in study.figures_module().FIGURES:
@@ -67,7 +67,7 @@ def test_a_study_selects_by_quantity_not_by_stored_numbers(name, tmp_path):
     """The same results with their inputs stored in other units give the same stated numbers
     and still draw: the figure scripts select by quantities and convert what they show."""
     study = find_studies(STUDIES)[name]
-    done = subprocess.run([sys.executable, "-m", "sweeps", "study", name, "--workers", "0",
+    done = subprocess.run([sys.executable, "-m", "bearing_sweep", "study", name, "--workers", "0",
                            "--studies", str(STUDIES), "--results", str(tmp_path / "results"),
                            "--figures", str(tmp_path / "figures")],
                           capture_output=True, text=True, timeout=300, cwd=tmp_path)

@@ -2,8 +2,8 @@
 import numpy as np
 import pytest
 
-from models.registry import CONVERGED, INFEASIBLE, NO_ROOT_IN_RANGE, NOT_CONVERGED, OUT_OF_VALIDITY
-from models.tapered import paper_contact_constant, trb_load, trb_rib
+from bearing_sweep.models.registry import CONVERGED, INFEASIBLE, NO_ROOT_IN_RANGE, NOT_CONVERGED, OUT_OF_VALIDITY
+from bearing_sweep.models.tapered import paper_contact_constant, trb_load, trb_rib
 
 MM = 1e-3
 DEG = np.radians

@@ -5,8 +5,8 @@ from pathlib import Path
 import matplotlib.pyplot as plt
 import numpy as np
 
-from sweeps import units
-from sweeps.plotting import at, conditions, in_unit, label, result, save
+from bearing_sweep import units
+from bearing_sweep.plotting import at, conditions, in_unit, label, result, save
 
 FIGURES = {
     "fig06_07_axial.png": "Figs. 6-7: 71807AC, axial displacement and axial stiffness against "

@@ -7,7 +7,7 @@ from pathlib import Path
 import matplotlib.pyplot as plt
 import numpy as np
 
-from sweeps.plotting import at, family, label, result, save
+from bearing_sweep.plotting import at, family, label, result, save
 
 FIGURES = {
     "fig17_load_speed.png": "Fig. 17: steady cage slip of the test bearing against radial load "

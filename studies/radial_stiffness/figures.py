@@ -4,13 +4,13 @@ from pathlib import Path
 import matplotlib.pyplot as plt
 import numpy as np
 
-from sweeps.plotting import at as _at
-from sweeps.plotting import conditions as _conditions
-from sweeps.plotting import family as _family
-from sweeps.plotting import in_unit as _in_unit
-from sweeps.plotting import label as _label
-from sweeps.plotting import result as _open
-from sweeps.plotting import save as _save
+from bearing_sweep.plotting import at as _at
+from bearing_sweep.plotting import conditions as _conditions
+from bearing_sweep.plotting import family as _family
+from bearing_sweep.plotting import in_unit as _in_unit
+from bearing_sweep.plotting import label as _label
+from bearing_sweep.plotting import result as _open
+from bearing_sweep.plotting import save as _save
 
 FIGURES = {
     "fig06_bearing_a.png": "Fig. 6: bearing A, radial stiffness against radial load (no speed, "

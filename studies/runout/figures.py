@@ -7,7 +7,7 @@ import numpy as np
 from matplotlib.lines import Line2D
 from matplotlib.patches import Patch
 
-from sweeps.plotting import at, conditions, family, label, result, save
+from bearing_sweep.plotting import at, conditions, family, label, result, save
 
 FIGURES = {
     "fig07_table3.png": "Fig. 7: runout of NU208 number 1 for the roller size arrangements of "

@@ -4,7 +4,7 @@ from pathlib import Path
 
 import matplotlib.pyplot as plt
 
-from sweeps.plotting import conditions, in_unit, label, result, save
+from bearing_sweep.plotting import conditions, in_unit, label, result, save
 
 FIGURES = {
     "table2_roller_loads.png": "Table 2: load of each roller under Fr = 40 kN, Fa = 27 kN; "
