@@ -5,6 +5,7 @@ The third-party package is the README's "Add your own model" example, laid out a
 distribution (its module and a ``*.dist-info`` with the entry points of its pyproject) in a
 folder put on the path: importlib.metadata finds distributions on ``sys.path``.
 """
+import importlib
 import logging
 import os
 import re
@@ -67,13 +68,17 @@ def plugin_pyproject(name: str, entry_point: str) -> str:
             f'[project.entry-points."bearing_sweep.models"]\n{entry} = "{value}"\n')
 
 
+def example_package() -> dict[str, str]:
+    """The README example's package: its module, and the empty ``__init__.py`` it names."""
+    return {"my_bearings/__init__.py": "",
+            "my_bearings/springs.py": readme_example()["my_bearings/springs.py"]}
+
+
 @pytest.fixture
 def site(tmp_path):
     """A folder holding the README example installed, as ``sys.path`` would see it."""
-    example = readme_example()
-    return lay_out_distribution(tmp_path / "site", example["pyproject.toml"], {
-        "my_bearings/__init__.py": "",
-        "my_bearings/springs.py": example["my_bearings/springs.py"]})
+    return lay_out_distribution(tmp_path / "site", readme_example()["pyproject.toml"],
+                                example_package())
 
 
 @pytest.fixture
@@ -119,7 +124,7 @@ def test_our_models_are_the_modules_declared_in_the_entry_point_group():
     assert {v.rsplit(".", 1)[-1] for v in declared.values()} == declaring
     models = registry.all_models()
     for module in declaring:
-        for model in __import__(f"bearing_sweep.models.{module}", fromlist=["MODELS"]).MODELS:
+        for model in importlib.import_module(f"bearing_sweep.models.{module}").MODELS:
             assert models[model.name] is model
 
 
@@ -147,6 +152,28 @@ def test_the_readme_example_sweeps_on_local_workers(site, tmp_path):
                   cwd=tmp_path, path=[site])
     assert run.returncode == 0, run.stderr
     check_springs_result(store.open_result(tmp_path / "results" / "springs.nc"))
+
+
+@pytest.mark.slow
+def test_the_readme_example_installs_with_pip(tmp_path):
+    # What the other tests lay out by hand is what pip makes of the example's pyproject.
+    source = tmp_path / "my-bearings"
+    for relative, text in {**example_package(),
+                           "pyproject.toml": readme_example()["pyproject.toml"]}.items():
+        (source / relative).parent.mkdir(parents=True, exist_ok=True)
+        (source / relative).write_text(text)
+    environment = {**os.environ, "TMPDIR": str(tmp_path), "PIP_CACHE_DIR": str(tmp_path / "cache"),
+                   "PIP_DISABLE_PIP_VERSION_CHECK": "1"}
+    installed = subprocess.run(
+        [sys.executable, "-m", "pip", "install", "--quiet", "--no-deps", "--target",
+         str(tmp_path / "site"), str(source)],
+        env=environment, capture_output=True, text=True, timeout=600)
+    if installed.returncode and "satisfies the requirement setuptools" in installed.stderr:
+        pytest.skip("pip cannot reach setuptools to build the example (no package index)")
+    assert installed.returncode == 0, installed.stderr
+    described = run_cli("describe", "spring_stack", cwd=tmp_path, path=[tmp_path / "site"])
+    assert described.returncode == 0, described.stderr
+    assert described.stdout.startswith("spring_stack (version 1): Identical springs")
 
 
 def test_the_readme_example_sweeps_through_run_sweep(site, discover, tmp_path):
