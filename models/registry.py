@@ -5,12 +5,21 @@ units engineers customarily write (mm, N, r/min, ...), what each input means, it
 the range in which the model is valid, and what each output is, with its own dimensions.
 The sweep engine uses the declarations to validate definitions, convert units at the boundary
 and label the netCDF output; the models never see a unit string.
+
+Models are found through the entry-point group ``bearing_sweep.models`` (ours are declared in
+this package's ``pyproject.toml``, other packages declare theirs the same way): each entry
+point names a module holding a list ``MODELS``, or (``module:attribute``) one ``Model`` or a
+list of them. A plug-in that cannot be used is left out with one logged line naming it; the
+other models stay available.
 """
 from __future__ import annotations
 
-import importlib
+import inspect
+import logging
 import re
+import types
 from dataclasses import dataclass, field
+from importlib.metadata import EntryPoint, entry_points
 from typing import Callable
 
 import numpy as np
@@ -51,10 +60,12 @@ def combine_status(*codes):
 #: Marks an input that has no default and must be given.
 REQUIRED = object()
 
-# Modules that declare models (each defines a list ``MODELS``), imported on first use so that
-# model modules can import the declaration classes below without a cycle.
-_DECLARING_MODULES = ("cylindrical", "contact", "ball", "tapered", "runout", "cage_slip",
-                      "cage_dynamics")
+#: The entry-point group through which packages declare models (this one included).
+ENTRY_POINT_GROUP = "bearing_sweep.models"
+#: The distribution whose models keep their names when a plug-in declares the same.
+_OWN_DISTRIBUTION = "bearing-sweep"
+
+_LOG = logging.getLogger(__name__)
 
 
 @dataclass(frozen=True)
@@ -217,17 +228,112 @@ class Model:
         return next(i for i in self.inputs if i.name == name)
 
 
+def declaration_problems(model: Model) -> list[str]:
+    """How ``model``'s declaration departs from its function or from itself, in words (empty
+    when it holds).
+
+    Checked: the function's parameters are the declared inputs, in order; an input is
+    required exactly where the function has no default; a choice's, count's or subset's
+    default is the function's (a subset's as its names joined by spaces); every output
+    dimension has a size in ``dim_sizes``; no two inputs or outputs share a name (nor take
+    ``status``). Quantity defaults in SI and readable units need the engine's unit handling:
+    ``bearing_sweep.testing.assert_valid_declaration`` checks those as well.
+    """
+    try:
+        parameters = inspect.signature(model.function).parameters
+    except (TypeError, ValueError):
+        return [f"its function {model.function!r} has no signature to compare"]
+    problems = []
+    declared = [i.name for i in model.inputs]
+    if list(parameters) != declared:
+        problems.append(f"the function's parameters ({', '.join(parameters)}) are not its "
+                        f"declared inputs ({', '.join(declared)}) in that order")
+    for item in model.inputs:
+        if item.name not in parameters:
+            continue
+        default = parameters[item.name].default
+        if item.required != (default is inspect.Parameter.empty):
+            problems.append(f"input {item.name!r} is "
+                            + ("required in the declaration but has a default in the function"
+                               if item.required else
+                               "required by the function but has a declared default"))
+        elif item.kind == "subset" and default != " ".join(item.default):
+            problems.append(f"input {item.name!r}: the function's default {default!r} is not "
+                            f"the declared names joined by spaces {' '.join(item.default)!r}")
+        elif (item.kind in ("choice", "count") or item.default is None) \
+                and not item.required and default != item.default:
+            problems.append(f"input {item.name!r}: the function's default {default!r} is not "
+                            f"the declared {item.default!r}")
+    for output in model.outputs:
+        unsized = [d for d in output.dims if d not in model.dim_sizes]
+        if unsized:
+            problems.append(f"output {output.name!r}: dimension {', '.join(unsized)} has no "
+                            "size in dim_sizes")
+    names = declared + [o.name for o in model.outputs] + ["status"]
+    twice = sorted({n for n in names if names.count(n) > 1})
+    if twice:  # an output named like an input would clash with its coordinate in the dataset
+        problems.append(f"name{'s' * (len(twice) > 1)} {', '.join(twice)} used twice among "
+                        "inputs, outputs and status")
+    return problems
+
 
 _MODELS: dict[str, Model] = {}
 
 
 def all_models() -> dict[str, Model]:
-    """Every registered model, by name."""
+    """Every model declared in the entry-point group ``bearing_sweep.models``, by name.
+
+    Ours come first and keep their names; other packages' follow, sorted by distribution and
+    entry-point name. A plug-in that cannot be imported, holds no models, declares a model
+    whose declaration does not hold (:func:`declaration_problems`) or takes a name already
+    taken is left out, with one warning line on the ``bearing_sweep.models.registry`` logger
+    naming it; the others are kept.
+    """
     if not _MODELS:
-        for module_name in _DECLARING_MODULES:
-            for model in importlib.import_module(f".{module_name}", __package__).MODELS:
-                _MODELS[model.name] = model
+        origins: dict[str, str] = {}  # model name -> "distribution version" that declared it
+        for entry_point in sorted(entry_points(group=ENTRY_POINT_GROUP), key=_loading_order):
+            _MODELS.update(_models_of(entry_point, origins))
     return dict(_MODELS)
+
+
+def _loading_order(entry_point: EntryPoint):
+    # Names compare normalised (PEP 503): metadata may spell ours bearing_sweep.
+    distribution = re.sub(r"[-_.]+", "-", entry_point.dist.name).lower() \
+        if entry_point.dist else ""
+    return distribution != _OWN_DISTRIBUTION, distribution, entry_point.name
+
+
+def _models_of(entry_point: EntryPoint, origins: dict[str, str]) -> dict[str, Model]:
+    """The usable models an entry point declares, recorded in ``origins``; a logged line for
+    each one that is not usable."""
+    dist = entry_point.dist
+    origin = f"{dist.name} {dist.version}" if dist else "an unnamed distribution"
+    where = f"model plug-in {entry_point.name!r} ({origin}: {entry_point.value})"
+    try:
+        loaded = entry_point.load()
+    except Exception as error:  # any failure of someone else's import must not stop ours
+        message = f"{type(error).__name__}: {error}".splitlines()[0]
+        _LOG.warning(f"{where} cannot be imported ({message}); its models are left out")
+        return {}
+    declared = getattr(loaded, "MODELS", None) if isinstance(loaded, types.ModuleType) \
+        else loaded
+    declared = [declared] if isinstance(declared, Model) else declared
+    if not isinstance(declared, (list, tuple)) or not declared \
+            or not all(isinstance(m, Model) for m in declared):
+        _LOG.warning(f"{where} holds no models: expected a module with a list MODELS of "
+                     "bearing_sweep.models.registry.Model, or one Model; left out")
+        return {}
+    found = {}
+    for model in declared:
+        problems = declaration_problems(model)
+        if model.name in origins:
+            problems.append(f"the name is already taken by a model of {origins[model.name]}")
+        if problems:
+            _LOG.warning(f"{where}: model {model.name!r} left out: {'; '.join(problems)}")
+            continue
+        found[model.name] = model
+        origins[model.name] = origin
+    return found
 
 
 def get_model(name: str) -> Model:

@@ -10,6 +10,7 @@ import pytest
 from bearing_sweep.models.registry import all_models
 from bearing_sweep import spec, store, units
 from bearing_sweep.run import Executor, run_sweep
+from bearing_sweep.testing import assert_same_numbers
 
 DEFINITIONS = Path(__file__).parent / "data" / "every_model"
 MODELS = sorted(all_models())
@@ -68,10 +69,7 @@ def files(tmp_path_factory):
 
 @pytest.mark.parametrize("name", MODELS)
 def test_numbers_do_not_depend_on_the_chunking_to_the_last_bit(files, name):
-    whole, single = files[name]
-    for variable in whole.data_vars:
-        np.testing.assert_array_equal(whole[variable].values, single[variable].values,
-                                      err_msg=f"{name}.{variable}")
+    assert_same_numbers(*files[name], label=name)
 
 
 @pytest.mark.parametrize("name", MODELS)
