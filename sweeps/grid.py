@@ -11,14 +11,15 @@ from dataclasses import dataclass
 import numpy as np
 
 from . import units
-from .spec import Sweep, Value, stack
+from .models.registry import Model
+from .spec import Sweep, Value
 
 
 @dataclass
 class Grid:
     """Everything a worker needs to build the model inputs of a chunk (small and picklable)."""
 
-    model_name: str
+    model: Model  # travels to dask workers with the grid (dask pickles it with cloudpickle)
     dims: tuple[str, ...]
     shape: tuple[int, ...]
     fixed: dict  # input name -> SI value (or None) shared by all points
@@ -30,8 +31,8 @@ class Grid:
         fixed = {name: None if v is None else v.si for name, v in sweep.fixed.items()}
         axis_values = {}
         for position, axis in enumerate(sweep.axes):
-            for name, values in axis.values.items():
-                axis_values[name] = (position, stack(values))
+            for name, values in axis.si.items():
+                axis_values[name] = (position, values)
         dim_sizes = {}
         for dim, size in sweep.model.dim_sizes.items():
             if callable(size):  # of the inputs' values anywhere on the grid
@@ -43,7 +44,7 @@ class Grid:
                 size = int(np.prod([np.max(axis_values[name][1]) if name in axis_values
                                     else fixed[name] for name in size.split("*")]))
             dim_sizes[dim] = size if isinstance(size, int) else len(size)
-        return cls(sweep.model.name, tuple(a.name for a in sweep.axes),
+        return cls(sweep.model, tuple(a.name for a in sweep.axes),
                    tuple(len(a) for a in sweep.axes), fixed, axis_values, dim_sizes)
 
     @property

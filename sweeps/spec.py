@@ -46,6 +46,12 @@ class Axis:
     name: str
     values: dict[str, list[Value]]
     labels: list | None = None  # a zipped axis' labels
+    #: Each parameter's SI values stacked, points first: built once, for the conditions
+    #: between parameters and for every chunk's model inputs.
+    si: dict[str, np.ndarray] = field(init=False, repr=False)
+
+    def __post_init__(self):
+        self.si = {name: stack(values) for name, values in self.values.items()}
 
     def __len__(self) -> int:
         return len(next(iter(self.values.values())))
@@ -92,6 +98,16 @@ def parse(text: str, where: str = "<definition>") -> Sweep:
     return _Parser(where).sweep(document, text)
 
 
+def find_model(name: str) -> Model:
+    """The registered model called ``name``; :class:`SpecError` (with the closest name)
+    if there is none."""
+    models = all_models()
+    if name not in models:
+        raise SpecError(f"unknown model {name!r}" + suggestion(name, models)
+                        + " (models: " + ", ".join(sorted(models)) + ")")
+    return models[name]
+
+
 def suggestion(name: str, options) -> str:
     """'; did you mean ...?' for the option closest to ``name``, or nothing."""
     close = difflib.get_close_matches(name, list(options), n=1, cutoff=0.6)
@@ -123,14 +139,14 @@ class _Parser:
                 self.fail(key, "unknown section" + suggestion(key, ("sweep", "fixed", "axes"))
                           + " (accepted: [sweep], [fixed], [axes])")
         head = self.table(document, "sweep", ("model", "bearing", "title"))
-        models = all_models()
         name = head.get("model")
         if not isinstance(name, str):
-            self.fail("sweep.model", "missing: name a model, one of " + ", ".join(sorted(models)))
-        if name not in models:
-            self.fail("sweep.model", f"unknown model {name!r}" + suggestion(name, models)
-                      + " (models: " + ", ".join(sorted(models)) + ")")
-        model = models[name]
+            self.fail("sweep.model", "missing: name a model, one of "
+                      + ", ".join(sorted(all_models())))
+        try:
+            model = find_model(name)
+        except SpecError as error:
+            self.fail("sweep.model", str(error))
         inputs = {i.name: i for i in model.inputs}
         fixed_raw = self.table(document, "fixed", None)
         axes_raw = self.table(document, "axes", None)
@@ -498,26 +514,29 @@ class _Parser:
 
     def check_constraints(self, sweep: Sweep):
         for constraint in sweep.model.constraints:
-            columns, axis_of = {}, {}
+            columns, si, axis_of = {}, {}, {}
             for name in constraint.inputs:
                 if name in sweep.fixed:
                     if sweep.fixed[name] is None:
                         break
                     columns[name] = [sweep.fixed[name]]
+                    si[name] = stack(columns[name])
                 else:
                     axis = next(a for a in sweep.axes if name in a.values)
                     columns[name], axis_of[name] = axis.values[name], axis.name
+                    si[name] = axis.si[name]
             else:
-                self.check_constraint(constraint, columns, axis_of, sweep.model)
+                self.check_constraint(constraint, columns, si, axis_of, sweep.model)
 
-    def check_constraint(self, constraint, columns: dict, axis_of: dict, model: Model):
+    def check_constraint(self, constraint, columns: dict, si: dict, axis_of: dict,
+                         model: Model):
         axis_names = list(dict.fromkeys(axis_of.values()))
         arrays = {}
         for name, column in columns.items():
             shape = [1] * len(axis_names)
             if name in axis_of:
                 shape[axis_names.index(axis_of[name])] = len(column)
-            values = stack(column)
+            values = si[name]
             arrays[name] = values.reshape(shape + list(values.shape[1:]))  # patterns: trailing
         valid = np.broadcast_to(constraint.check(**arrays), np.broadcast_shapes(
             *(a.shape[:len(axis_names)] for a in arrays.values())))

@@ -10,7 +10,7 @@ from pathlib import Path
 import numpy as np
 import xarray as xr
 
-from .models.registry import STATUS_DESCRIPTIONS, STATUS_MEANINGS, get_model
+from .models.registry import STATUS_DESCRIPTIONS, STATUS_MEANINGS
 from . import units
 from .grid import Grid, coordinates, described, fixed_inputs
 from .parts import replace_durably
@@ -43,7 +43,7 @@ def git_commit() -> str | None:
 def build_dataset(sweep: Sweep, grid: Grid, outputs: dict, status: np.ndarray,
                   scheduler: str, errors=()) -> xr.Dataset:
     """The labelled dataset of a finished sweep (outputs flat over points, as computed)."""
-    model = get_model(grid.model_name)
+    model = grid.model
     data_vars = {}
     for spec in model.outputs:
         values = outputs[spec.name].reshape(grid.shape + outputs[spec.name].shape[1:])
@@ -130,7 +130,7 @@ def assemble(sweep: Sweep, grid: Grid, parts, chunks, path, scheduler: str) -> t
     import dask.array
     import netCDF4
 
-    model = get_model(grid.model_name)
+    model = grid.model
     counts = np.zeros(len(STATUS_MEANINGS), dtype=np.int64)
     errors = set()
     noted = {o.counted[0]: 0 for o in model.outputs if o.counted}

@@ -1,4 +1,4 @@
-"""Map a model over a grid in chunks: in this process, on a LocalCluster or on a scheduler."""
+"""Compute a sweep in chunks: in this process, on a LocalCluster or on a dask cluster."""
 from __future__ import annotations
 
 import logging
@@ -12,7 +12,7 @@ from dataclasses import dataclass, field
 
 import numpy as np
 
-from .models.registry import MODEL_ERROR, VALUES_KEPT, get_model
+from .models.registry import MODEL_ERROR, VALUES_KEPT
 from . import store, units
 from .grid import Grid, stored_unit
 from .parts import OutputLock, Parts, check_output
@@ -48,7 +48,7 @@ def evaluate_chunk(grid: Grid, start: int, stop: int) -> dict:
     once per group. An exception in the model marks that group's points with
     ``model_error`` and records its message; it does not stop the sweep.
     """
-    model = get_model(grid.model_name)
+    model = grid.model
     count = stop - start
     varying, axis_index = grid.inputs(start, stop)
     outputs = {o.name: np.full((count,) + tuple(grid.dim_sizes[d] for d in o.dims), np.nan)
@@ -215,7 +215,7 @@ class Executor:
             return True
         if self.workers is not None:  # asked for: 0 in-process, N a local cluster of N
             return self.workers > 0
-        cost = grid.size * get_model(grid.model_name).seconds_per_point
+        cost = grid.size * grid.model.seconds_per_point
         return cost > IN_PROCESS_SECONDS
 
     def worker_count(self) -> int:
@@ -318,7 +318,7 @@ class Progress:
 
 def choose_chunk_size(grid: Grid, workers: int) -> int:
     """Eight chunks per worker to balance uneven points, each at most ``CHUNK_SECONDS``."""
-    cost = get_model(grid.model_name).seconds_per_point
+    cost = grid.model.seconds_per_point
     largest = max(1, int(CHUNK_SECONDS / cost))
     return max(1, min(largest, math.ceil(grid.size / (8 * workers))))
 
@@ -355,7 +355,7 @@ def run_sweep(sweep: Sweep, output, executor: Executor | None = None,
     try:
         with OutputLock(output):
             grid = Grid.from_sweep(sweep)
-            model = get_model(grid.model_name)
+            model = grid.model
             expected = versions(model)
             parallel = executor.parallel(grid)
             if parallel:
