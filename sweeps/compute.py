@@ -402,7 +402,7 @@ def run_sweep(sweep: Sweep, output=None, executor: Executor | None = None,
                 store.assemble(sweep, grid, parts, chunks, output, scheduler, errors)
             parts.remove()
         return Summary(model.name, grid.size, counts, time.monotonic() - began,
-                       "memory" if output is None else str(output), scheduler, errors, noted,
+                       "(in memory)" if output is None else str(output), scheduler, errors, noted,
                        dataset)
     finally:
         if own:

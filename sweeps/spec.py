@@ -7,6 +7,7 @@ from __future__ import annotations
 
 import difflib
 import hashlib
+import json
 import tomllib
 from dataclasses import dataclass, field, replace
 from pathlib import Path
@@ -108,6 +109,57 @@ def find_model(name: str) -> Model:
     return models[name]
 
 
+def from_dict(document: dict, where: str = "<definition>") -> Sweep:
+    """Validate a definition given as a dict of the TOML's structure (units in strings).
+
+    It is written out as TOML and parsed as text, so that it meets the same checks and
+    messages, and its text is stored in the result and keys its resumable parts.
+    """
+    if not isinstance(document, dict):
+        raise SpecError(f"{where}: a definition is TOML text, a path or a dict, not "
+                        f"{type(document).__name__}")
+    return parse(toml_text(document, where), where)
+
+
+def toml_text(document: dict, where: str = "<definition>") -> str:
+    """``document`` as TOML text: each table under its header, its values inline (a nested
+    table keeps its place among the others: the order of axes is the order of dimensions)."""
+    lines = [f"{_toml_key(k, where)} = {_toml_value(v, k, where)}" for k, v in document.items()
+             if not isinstance(v, dict)]
+    for name, table in document.items():
+        if isinstance(table, dict):
+            lines += ["", f"[{_toml_key(name, where)}]"] + [
+                f"{_toml_key(k, where)} = {_toml_value(v, f'{name}.{k}', where)}"
+                for k, v in table.items()]
+    return "\n".join(lines).lstrip("\n") + "\n"
+
+
+def _toml_key(key, where: str) -> str:
+    if not isinstance(key, str):
+        raise SpecError(f"{where}: {key!r}: a key is a string")
+    return key if key and all(c.isalnum() and c.isascii() or c in "_-" for c in key) \
+        else json.dumps(key, ensure_ascii=False)
+
+
+def _toml_value(value, key: str, where: str) -> str:
+    if isinstance(value, bool):
+        return "true" if value else "false"
+    if isinstance(value, (int, np.integer)):
+        return str(int(value))
+    if isinstance(value, (float, np.floating)):
+        return repr(float(value))
+    if isinstance(value, str):
+        return json.dumps(value, ensure_ascii=False)  # its escapes are TOML's too
+    if isinstance(value, (list, tuple)):
+        return "[" + ", ".join(_toml_value(v, f"{key}[{i}]", where)
+                               for i, v in enumerate(value)) + "]"
+    if isinstance(value, dict):
+        return "{ " + ", ".join(f"{_toml_key(k, where)} = {_toml_value(v, f'{key}.{k}', where)}"
+                                for k, v in value.items()) + " }"
+    raise SpecError(f"{where}: {key}: {value!r} is not a value of a definition (a string with "
+                    "units, a number, a boolean, a list or a table)")
+
+
 def suggestion(name: str, options) -> str:
     """'; did you mean ...?' for the option closest to ``name``, or nothing."""
     close = difflib.get_close_matches(name, list(options), n=1, cutoff=0.6)
@@ -181,8 +233,11 @@ class _Parser:
             if spec.name not in fixed and spec.name not in on_axes:
                 fixed[spec.name] = None if spec.default is None else self.default(spec)
                 origin[spec.name] = "default"
-        sweep = Sweep(self.where, text, model, str(head.get("title") or f"{model.name}: "
-                      f"{Path(self.where).stem}"), bearing, fixed, axes, origin)
+        # A definition from a file is named after it; one given as text or a dict is not.
+        title = model.name if self.where.startswith("<") else \
+            f"{model.name}: {Path(self.where).stem}"
+        sweep = Sweep(self.where, text, model, str(head.get("title") or title), bearing, fixed,
+                      axes, origin)
         self.check_pattern_lengths(sweep)
         self.check_constraints(sweep)
         return sweep
