@@ -13,7 +13,7 @@ from pathlib import Path
 import numpy as np
 
 from bearing_sweep import spec, store
-from bearing_sweep.run import Executor, run_sweep
+from bearing_sweep.compute import Executor, run_sweep
 
 DEFINITION = """
 [sweep]

@@ -1,1 +1,10 @@
-"""The sweep engine: definition -> grid -> dask map -> labelled netCDF dataset."""
+"""Parametric studies of rolling bearings: definition -> grid -> dask map -> labelled dataset.
+
+The Python API (:mod:`bearing_sweep.api`): :func:`run`, :func:`check`, :func:`list_models`,
+:func:`describe`; every mistake in what is asked is a :class:`SpecError`. The model functions
+are in :mod:`bearing_sweep.models`.
+"""
+from .api import check, describe, list_models, run
+from .spec import SpecError
+
+__all__ = ["run", "check", "list_models", "describe", "SpecError"]

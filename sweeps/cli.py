@@ -9,7 +9,7 @@ from .models.catalogue import PRESETS
 from .models.registry import STATUS_DESCRIPTIONS, all_models
 from . import spec, study
 from .parts import check_output
-from .run import Executor, WorkerMismatch, check_scheduler_address, run_sweep
+from .compute import Executor, WorkerMismatch, check_scheduler_address, run_sweep
 from .spec import SpecError
 
 #: Exit status for a mistake in the user's input (a definition, a name, an option).
@@ -76,11 +76,7 @@ def _note(message: str):
 
 
 def _describe(name: str) -> str:
-    models = all_models()
-    if name not in models:
-        raise SpecError(f"unknown model {name!r}" + spec.suggestion(name, models)
-                        + f" (models: {', '.join(sorted(models))})")
-    model = models[name]
+    model = spec.find_model(name)
     lines = [f"{model.name} (version {model.version}): {model.summary}",
              f"Reference: {model.reference}", "", "Inputs:"]
     for i in model.inputs:

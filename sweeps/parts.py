@@ -15,6 +15,7 @@ import os
 import shutil
 import stat
 import zipfile
+from contextlib import contextmanager
 from pathlib import Path
 
 import filelock
@@ -203,6 +204,31 @@ class Parts:
         shutil.rmtree(self.folder, ignore_errors=True)
 
 
+class HeldChunks:
+    """Finished chunks held in memory, for a sweep returned without a file: the interface of
+    :class:`Parts`, with nothing to resume."""
+
+    folder = None
+
+    def __init__(self):
+        self.chunks = {}
+
+    def open(self, chunk_size: int, fresh: bool, log) -> int:
+        return chunk_size
+
+    def finished(self) -> set:
+        return set(self.chunks)
+
+    def save(self, start: int, stop: int, result: dict):
+        self.chunks[start, stop] = result
+
+    def load(self, start: int, stop: int) -> dict:
+        return self.chunks[start, stop]
+
+    def remove(self):
+        self.chunks.clear()
+
+
 class OutputLock:
     """An exclusive lock on an output path, released when the process ends, however it ends.
 
@@ -254,12 +280,25 @@ def _unreadable(path: Path, points: int) -> str | None:
 
 
 def _write_durably(path: Path, write):
-    """Write ``path`` atomically: ``write(handle)`` fills a temporary file beside it, which
-    is then put in place by :func:`replace_durably`."""
-    temporary = path.with_name(f".{path.name}.{os.getpid()}.tmp")
-    with open(temporary, "wb") as handle:
+    """Write ``path`` atomically: ``write(handle)`` fills a temporary file beside it."""
+    with written_atomically(path) as temporary, open(temporary, "wb") as handle:
         write(handle)
-    replace_durably(temporary, path)
+
+
+@contextmanager
+def written_atomically(path):
+    """A temporary path beside ``path`` for the block to write; when the block ends without
+    an error it takes ``path``'s place (:func:`replace_durably`), otherwise it is removed.
+    An existing file at ``path`` stays intact until then; the folder is made if need be."""
+    path = Path(path)
+    path.parent.mkdir(parents=True, exist_ok=True)
+    temporary = path.with_name(f".{path.name}.{os.getpid()}.tmp")
+    try:
+        yield temporary
+        replace_durably(temporary, path)
+    finally:
+        if temporary.exists():
+            temporary.unlink()
 
 
 def replace_durably(temporary: Path, path: Path):

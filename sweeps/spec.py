@@ -7,6 +7,7 @@ from __future__ import annotations
 
 import difflib
 import hashlib
+import json
 import tomllib
 from dataclasses import dataclass, field, replace
 from pathlib import Path
@@ -46,6 +47,12 @@ class Axis:
     name: str
     values: dict[str, list[Value]]
     labels: list | None = None  # a zipped axis' labels
+    #: Each parameter's SI values stacked, points first: built once, for the conditions
+    #: between parameters and for every chunk's model inputs.
+    si: dict[str, np.ndarray] = field(init=False, repr=False)
+
+    def __post_init__(self):
+        self.si = {name: stack(values) for name, values in self.values.items()}
 
     def __len__(self) -> int:
         return len(next(iter(self.values.values())))
@@ -92,6 +99,67 @@ def parse(text: str, where: str = "<definition>") -> Sweep:
     return _Parser(where).sweep(document, text)
 
 
+def find_model(name: str) -> Model:
+    """The registered model called ``name``; :class:`SpecError` (with the closest name)
+    if there is none."""
+    models = all_models()
+    if name not in models:
+        raise SpecError(f"unknown model {name!r}" + suggestion(name, models)
+                        + " (models: " + ", ".join(sorted(models)) + ")")
+    return models[name]
+
+
+def from_dict(document: dict, where: str = "<definition>") -> Sweep:
+    """Validate a definition given as a dict of the TOML's structure (units in strings).
+
+    It is written out as TOML and parsed as text, so that it meets the same checks and
+    messages, and its text is stored in the result and keys its resumable parts.
+    """
+    if not isinstance(document, dict):
+        raise SpecError(f"{where}: a definition is TOML text, a path or a dict, not "
+                        f"{type(document).__name__}")
+    return parse(toml_text(document, where), where)
+
+
+def toml_text(document: dict, where: str = "<definition>") -> str:
+    """``document`` as TOML text: each table under its header, its values inline (a nested
+    table keeps its place among the others: the order of axes is the order of dimensions)."""
+    lines = [f"{_toml_key(k, where)} = {_toml_value(v, k, where)}" for k, v in document.items()
+             if not isinstance(v, dict)]
+    for name, table in document.items():
+        if isinstance(table, dict):
+            lines += ["", f"[{_toml_key(name, where)}]"] + [
+                f"{_toml_key(k, where)} = {_toml_value(v, f'{name}.{k}', where)}"
+                for k, v in table.items()]
+    return "\n".join(lines).lstrip("\n") + "\n"
+
+
+def _toml_key(key, where: str) -> str:
+    if not isinstance(key, str):
+        raise SpecError(f"{where}: {key!r}: a key is a string")
+    return key if key and all(c.isalnum() and c.isascii() or c in "_-" for c in key) \
+        else json.dumps(key, ensure_ascii=False)
+
+
+def _toml_value(value, key: str, where: str) -> str:
+    if isinstance(value, bool):
+        return "true" if value else "false"
+    if isinstance(value, (int, np.integer)):
+        return str(int(value))
+    if isinstance(value, (float, np.floating)):
+        return repr(float(value))
+    if isinstance(value, str):
+        return json.dumps(value, ensure_ascii=False)  # its escapes are TOML's too
+    if isinstance(value, (list, tuple)):
+        return "[" + ", ".join(_toml_value(v, f"{key}[{i}]", where)
+                               for i, v in enumerate(value)) + "]"
+    if isinstance(value, dict):
+        return "{ " + ", ".join(f"{_toml_key(k, where)} = {_toml_value(v, f'{key}.{k}', where)}"
+                                for k, v in value.items()) + " }"
+    raise SpecError(f"{where}: {key}: {value!r} is not a value of a definition (a string with "
+                    "units, a number, a boolean, a list or a table)")
+
+
 def suggestion(name: str, options) -> str:
     """'; did you mean ...?' for the option closest to ``name``, or nothing."""
     close = difflib.get_close_matches(name, list(options), n=1, cutoff=0.6)
@@ -123,14 +191,14 @@ class _Parser:
                 self.fail(key, "unknown section" + suggestion(key, ("sweep", "fixed", "axes"))
                           + " (accepted: [sweep], [fixed], [axes])")
         head = self.table(document, "sweep", ("model", "bearing", "title"))
-        models = all_models()
         name = head.get("model")
         if not isinstance(name, str):
-            self.fail("sweep.model", "missing: name a model, one of " + ", ".join(sorted(models)))
-        if name not in models:
-            self.fail("sweep.model", f"unknown model {name!r}" + suggestion(name, models)
-                      + " (models: " + ", ".join(sorted(models)) + ")")
-        model = models[name]
+            self.fail("sweep.model", "missing: name a model, one of "
+                      + ", ".join(sorted(all_models())))
+        try:
+            model = find_model(name)
+        except SpecError as error:
+            self.fail("sweep.model", str(error))
         inputs = {i.name: i for i in model.inputs}
         fixed_raw = self.table(document, "fixed", None)
         axes_raw = self.table(document, "axes", None)
@@ -165,8 +233,11 @@ class _Parser:
             if spec.name not in fixed and spec.name not in on_axes:
                 fixed[spec.name] = None if spec.default is None else self.default(spec)
                 origin[spec.name] = "default"
-        sweep = Sweep(self.where, text, model, str(head.get("title") or f"{model.name}: "
-                      f"{Path(self.where).stem}"), bearing, fixed, axes, origin)
+        # A definition from a file is named after it; one given as text or a dict is not.
+        title = model.name if self.where.startswith("<") else \
+            f"{model.name}: {Path(self.where).stem}"
+        sweep = Sweep(self.where, text, model, str(head.get("title") or title), bearing, fixed,
+                      axes, origin)
         self.check_pattern_lengths(sweep)
         self.check_constraints(sweep)
         return sweep
@@ -498,26 +569,29 @@ class _Parser:
 
     def check_constraints(self, sweep: Sweep):
         for constraint in sweep.model.constraints:
-            columns, axis_of = {}, {}
+            columns, si, axis_of = {}, {}, {}
             for name in constraint.inputs:
                 if name in sweep.fixed:
                     if sweep.fixed[name] is None:
                         break
                     columns[name] = [sweep.fixed[name]]
+                    si[name] = stack(columns[name])
                 else:
                     axis = next(a for a in sweep.axes if name in a.values)
                     columns[name], axis_of[name] = axis.values[name], axis.name
+                    si[name] = axis.si[name]
             else:
-                self.check_constraint(constraint, columns, axis_of, sweep.model)
+                self.check_constraint(constraint, columns, si, axis_of, sweep.model)
 
-    def check_constraint(self, constraint, columns: dict, axis_of: dict, model: Model):
+    def check_constraint(self, constraint, columns: dict, si: dict, axis_of: dict,
+                         model: Model):
         axis_names = list(dict.fromkeys(axis_of.values()))
         arrays = {}
         for name, column in columns.items():
             shape = [1] * len(axis_names)
             if name in axis_of:
                 shape[axis_names.index(axis_of[name])] = len(column)
-            values = stack(column)
+            values = si[name]
             arrays[name] = values.reshape(shape + list(values.shape[1:]))  # patterns: trailing
         valid = np.broadcast_to(constraint.check(**arrays), np.broadcast_shapes(
             *(a.shape[:len(axis_names)] for a in arrays.values())))

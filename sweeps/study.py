@@ -15,9 +15,8 @@ from pathlib import Path
 
 import xarray as xr
 
-from .models.registry import get_model
 from . import spec as spec_module
-from .run import Executor, run_sweep
+from .compute import Executor, run_sweep
 from .spec import SpecError
 
 
@@ -87,7 +86,7 @@ def is_stale(definition: Path, result: Path, sweep) -> bool:
     except (OSError, ValueError):
         return True
     return (attrs.get("definition_sha256") != sweep.sha256
-            or attrs.get("model_version") != get_model(sweep.model.name).version)
+            or attrs.get("model_version") != sweep.model.version)
 
 
 def run_study(study: Study, results: Path, figures: Path, executor: Executor,

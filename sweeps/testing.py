@@ -22,7 +22,7 @@ import numpy as np
 
 from .models.registry import Model, declaration_problems
 from . import spec, store, units
-from .run import Executor, run_sweep
+from .compute import Executor, run_sweep
 
 
 def assert_valid_declaration(model: Model):

@@ -3,7 +3,7 @@ import numpy as np
 import pytest
 
 from bearing_sweep.models.registry import CONVERGED
-from bearing_sweep import run, spec
+from bearing_sweep import compute, spec
 from bearing_sweep.spec import SpecError
 
 GOOD = """
@@ -62,8 +62,8 @@ def test_mistakes_in_ball_definitions_are_one_line(old, new, words):
 
 def test_the_dataset_labels_dofs_and_stores_a_symmetric_matrix_in_si(tmp_path):
     sweep = spec.parse(GOOD, "def.toml")
-    run.run_sweep(sweep, tmp_path / "out.nc", run.Executor(workers=0), progress=False)
-    data = run.store.open_result(tmp_path / "out.nc")
+    compute.run_sweep(sweep, tmp_path / "out.nc", compute.Executor(workers=0), progress=False)
+    data = compute.store.open_result(tmp_path / "out.nc")
     assert list(data.dof.values) == ["axial", "radial_y", "radial_z", "tilt_y", "tilt_z"]
     # One unit system (SI), so that the matrix can go as it is into a rotor-dynamics code:
     # dFx/d(phi_y) in N/rad, dMy/d(delta_x) in N*m/m = N.
@@ -96,12 +96,12 @@ def test_the_dataset_labels_dofs_and_stores_a_symmetric_matrix_in_si(tmp_path):
 def test_chunking_does_not_change_the_numbers(tmp_path):
     text = GOOD.replace('["0 N", "1500 N", "3000 N"]', '{start = "0 N", stop = "3000 N", num = 7}')
     sweep = spec.parse(text, "def.toml")
-    one = run.run_sweep(sweep, tmp_path / "one.nc", run.Executor(workers=0), progress=False)
-    many = run.run_sweep(sweep, tmp_path / "many.nc", run.Executor(workers=0), chunk_size=2,
+    one = compute.run_sweep(sweep, tmp_path / "one.nc", compute.Executor(workers=0), progress=False)
+    many = compute.run_sweep(sweep, tmp_path / "many.nc", compute.Executor(workers=0), chunk_size=2,
                          progress=False)
     assert one.points == many.points == 21
-    first = run.store.open_result(tmp_path / "one.nc")
-    second = run.store.open_result(tmp_path / "many.nc")
+    first = compute.store.open_result(tmp_path / "one.nc")
+    second = compute.store.open_result(tmp_path / "many.nc")
     for name in ("stiffness_matrix", "ball_load", "displacement"):
         np.testing.assert_array_equal(first[name].values, second[name].values)
 

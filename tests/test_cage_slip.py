@@ -7,7 +7,7 @@ import bearing_sweep.models.cage_slip as steady_module
 from bearing_sweep.models.cage_slip import cage_slip, cage_torque_residual, cage_windage, kinematic_cage_speed
 from bearing_sweep.models.lubrication import TractionCurve, walther_viscosity
 from bearing_sweep.models.registry import CONVERGED, NO_ROOT_IN_RANGE, NOT_CONVERGED, OUT_OF_VALIDITY
-from bearing_sweep import run, spec, store
+from bearing_sweep import compute, spec, store
 
 MM, RPM = 1e-3, 2 * np.pi / 60
 #: The test bearing of paper 002, Table 2 (outer raceway from di + 2D + Pd).
@@ -78,8 +78,8 @@ def test_chunking_does_not_change_the_numbers(tmp_path):
             'radial_load = { start = "200 N", stop = "1000 N", num = 5 }\n'
             'speed = ["6000 rpm", "12000 rpm"]\n')
     sweep = spec.parse(text)
-    run.run_sweep(sweep, tmp_path / "one.nc", run.Executor(workers=0), progress=False)
-    run.run_sweep(sweep, tmp_path / "many.nc", run.Executor(workers=0), chunk_size=3,
+    compute.run_sweep(sweep, tmp_path / "one.nc", compute.Executor(workers=0), progress=False)
+    compute.run_sweep(sweep, tmp_path / "many.nc", compute.Executor(workers=0), chunk_size=3,
                   progress=False)
     one, many = store.open_result(tmp_path / "one.nc"), store.open_result(tmp_path / "many.nc")
     for name in ("cage_slip", "roller_slip", "cage_speed"):
@@ -203,7 +203,7 @@ def test_the_load_distributions_status_reaches_the_point(monkeypatch, upstream):
 
 def test_the_run_summary_counts_the_points_with_several_equilibria(tmp_path):
     from bearing_sweep import spec
-    from bearing_sweep.run import Executor, run_sweep
+    from bearing_sweep.compute import Executor, run_sweep
 
     text = """
     [sweep]

@@ -9,7 +9,7 @@ import pytest
 
 from bearing_sweep.models.registry import all_models
 from bearing_sweep import spec, store, units
-from bearing_sweep.run import Executor, run_sweep
+from bearing_sweep.compute import Executor, run_sweep
 from bearing_sweep.testing import assert_same_numbers
 
 DEFINITIONS = Path(__file__).parent / "data" / "every_model"

@@ -2,7 +2,8 @@
 import numpy as np
 
 from bearing_sweep import spec
-from bearing_sweep.grid import Grid, coordinates, fixed_inputs
+from bearing_sweep.grid import Grid
+from bearing_sweep.labels import coordinates, fixed_inputs
 
 TEXT = """
 [sweep]

@@ -30,8 +30,8 @@ def no_computing(monkeypatch):
     def computed(*args, **kwargs):
         raise AssertionError("computing started before the output was checked")
 
-    monkeypatch.setattr("bearing_sweep.run.OutputLock", computed)
-    monkeypatch.setattr("bearing_sweep.run.evaluate_chunk", computed)
+    monkeypatch.setattr("bearing_sweep.compute.OutputLock", computed)
+    monkeypatch.setattr("bearing_sweep.compute.evaluate_chunk", computed)
 
 
 def refused(tmp_path, capsys, output, definition=None):

@@ -5,7 +5,7 @@ import pytest
 import bearing_sweep.models.registry as registry
 from bearing_sweep.models.registry import Input, Model, Output
 from bearing_sweep import spec, store
-from bearing_sweep.run import Executor, run_sweep
+from bearing_sweep.compute import Executor, run_sweep
 from bearing_sweep.spec import SpecError
 
 

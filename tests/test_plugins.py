@@ -19,9 +19,8 @@ import numpy as np
 import pytest
 
 import bearing_sweep.models.registry as registry
-from bearing_sweep import spec, store
+from bearing_sweep import store
 from bearing_sweep.models.registry import Input, Model, Output
-from bearing_sweep.run import Executor, run_sweep
 from bearing_sweep.testing import assert_chunking_invariant, assert_valid_declaration
 
 ROOT = Path(__file__).resolve().parents[1]
@@ -176,13 +175,15 @@ def test_the_readme_example_installs_with_pip(tmp_path):
     assert described.stdout.startswith("spring_stack (version 1): Identical springs")
 
 
-def test_the_readme_example_sweeps_through_run_sweep(site, discover, tmp_path):
-    # The Python side through the engine's own steps; to become bearing_sweep.run(...) once
-    # the package's API function exists.
+def test_the_readme_example_sweeps_through_the_python_api(site, discover, tmp_path):
+    import bearing_sweep
+
     discover(site)
-    sweep = spec.parse(readme_example()["springs.toml"], "springs.toml")
-    run_sweep(sweep, tmp_path / "springs.nc", Executor(workers=0), progress=False)
-    check_springs_result(store.open_result(tmp_path / "springs.nc"))
+    check_springs_result(bearing_sweep.run(readme_example()["springs.toml"], workers=0,
+                                           progress=False))
+    with bearing_sweep.run(readme_example()["springs.toml"], output=tmp_path / "springs.nc",
+                           workers=0, progress=False) as written:
+        check_springs_result(written.load())
 
 
 def test_the_testing_helpers_pass_the_readme_example(site, discover, tmp_path):

@@ -23,6 +23,18 @@ def test_worked_example(tmp_path):
     assert done.returncode == 0, done.stderr
 
 
+def test_python_api_example(tmp_path):
+    definition = blocks("toml")[0]
+    api = next(block for block in blocks("python") if "import bearing_sweep" in block)
+    (tmp_path / "example.toml").write_text(definition)
+    done = subprocess.run([sys.executable, "-c", api], cwd=tmp_path, capture_output=True,
+                          text=True, timeout=300)
+    assert done.returncode == 0, done.stderr
+    assert "N/mm" in done.stdout and "'crb_radial'" in done.stdout
+    assert (tmp_path / "results" / "by_speed.nc").is_file()
+    assert not (tmp_path / "results" / "example.nc").exists()  # in memory: no file
+
+
 def test_the_documented_error_line_is_the_real_one(tmp_path):
     definition = blocks("toml")[0].replace("crown =", "crwn =")
     (tmp_path / "example.toml").write_text(definition)

@@ -13,7 +13,7 @@ import pytest
 
 from bearing_sweep import cli, spec, store
 from bearing_sweep.parts import OutputBusy, OutputLock, Parts, UnreadablePart
-from bearing_sweep.run import Executor, run_sweep
+from bearing_sweep.compute import Executor, run_sweep
 
 # About 40 chunks of 0.1 s each in one process: long enough to be killed part-way.
 SLOW = """
@@ -149,7 +149,7 @@ def test_an_output_that_cannot_be_a_file_is_one_line(tmp_path, capsys, monkeypat
     def computed(*args):
         raise AssertionError("computed before the output was refused")
 
-    monkeypatch.setattr("bearing_sweep.run.evaluate_chunk", computed)
+    monkeypatch.setattr("bearing_sweep.compute.evaluate_chunk", computed)
     code = cli.main(["run", str(definition), "-o", str(occupied), "--workers", "0"])
     err = capsys.readouterr().err
     assert code == 2 and len(err.strip().splitlines()) == 1 and "Traceback" not in err

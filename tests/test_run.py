@@ -6,7 +6,7 @@ import xarray as xr
 import bearing_sweep.models.registry as registry
 from bearing_sweep.models.registry import MODEL_ERROR
 from bearing_sweep import spec, store
-from bearing_sweep.run import Executor, Summary, run_sweep
+from bearing_sweep.compute import Executor, Summary, run_sweep
 
 TEXT = """
 [sweep]
@@ -137,12 +137,12 @@ class Clock:
 def test_progress_appears_only_after_a_moment(monkeypatch):
     import io
 
-    import bearing_sweep.run as run
+    import bearing_sweep.compute as compute
 
     clock = Clock()
-    monkeypatch.setattr(run.time, "monotonic", clock)
+    monkeypatch.setattr(compute.time, "monotonic", clock)
     stream = io.StringIO()
-    bar = run.Progress(100, "crb_radial", stream=stream)
+    bar = compute.Progress(100, "crb_radial", stream=stream)
     bar.advance(10)
     assert stream.getvalue() == ""  # a quick run shows nothing
     clock.now = 2.0
@@ -237,7 +237,7 @@ def test_writing_a_result_closes_its_file_and_leaves_the_others(tmp_path):
 
 def test_each_chunk_reports_the_versions_it_was_computed_with():
     from bearing_sweep.grid import Grid
-    from bearing_sweep.run import evaluate_chunk
+    from bearing_sweep.compute import evaluate_chunk
 
     grid = Grid.from_sweep(spec.parse(TEXT))
     result = evaluate_chunk(grid, 0, 5)
@@ -247,9 +247,9 @@ def test_each_chunk_reports_the_versions_it_was_computed_with():
 
 def test_chunks_of_another_version_are_refused_and_the_others_kept(tmp_path, capsys,
                                                                   monkeypatch):
-    from bearing_sweep import cli, run
+    from bearing_sweep import cli, compute
 
-    original = run.evaluate_chunk
+    original = compute.evaluate_chunk
 
     def elsewhere(grid, start, stop):  # as a worker with another installation would answer
         result = original(grid, start, stop)
@@ -257,7 +257,7 @@ def test_chunks_of_another_version_are_refused_and_the_others_kept(tmp_path, cap
             result["versions"] = dict(result["versions"], package="0.0.1")
         return result
 
-    monkeypatch.setattr(run, "evaluate_chunk", elsewhere)
+    monkeypatch.setattr(compute, "evaluate_chunk", elsewhere)
     definition = tmp_path / "inv.toml"
     definition.write_text(TEXT)
     output = tmp_path / "out.nc"

@@ -1,6 +1,7 @@
-"""Map a model over a grid in chunks: in this process, on a LocalCluster or on a scheduler."""
+"""Compute a sweep in chunks: in this process, on a LocalCluster or on a dask cluster."""
 from __future__ import annotations
 
+import contextlib
 import logging
 import math
 import signal
@@ -12,10 +13,11 @@ from dataclasses import dataclass, field
 
 import numpy as np
 
-from .models.registry import MODEL_ERROR, VALUES_KEPT, get_model
+from .models.registry import MODEL_ERROR, VALUES_KEPT
 from . import store, units
-from .grid import Grid, stored_unit
-from .parts import OutputLock, Parts, check_output
+from .grid import Grid
+from .labels import stored_unit
+from .parts import HeldChunks, OutputLock, Parts, check_output
 from .spec import SpecError, Sweep
 
 #: Below this estimated single-core time [s] a sweep runs in-process: starting a cluster
@@ -48,7 +50,7 @@ def evaluate_chunk(grid: Grid, start: int, stop: int) -> dict:
     once per group. An exception in the model marks that group's points with
     ``model_error`` and records its message; it does not stop the sweep.
     """
-    model = get_model(grid.model_name)
+    model = grid.model
     count = stop - start
     varying, axis_index = grid.inputs(start, stop)
     outputs = {o.name: np.full((count,) + tuple(grid.dim_sizes[d] for d in o.dims), np.nan)
@@ -118,6 +120,7 @@ class Summary:
     scheduler: str
     errors: list = field(default_factory=list)
     noted: dict = field(default_factory=dict)  # what the model counts, e.g. several equilibria
+    dataset: object = None  # the result (an xarray.Dataset) of a sweep run without a file
 
     def text(self) -> str:
         counts = ", ".join(f"{n} {name}" for name, n in self.status_counts.items() if n)
@@ -186,15 +189,18 @@ def dask_setup(worker):
 class Executor:
     """Where chunks are computed. A cluster is started only when a sweep is worth it.
 
-    ``scheduler`` connects to a running dask.distributed scheduler; ``workers=0`` computes
-    in-process; ``workers=N`` uses a LocalCluster of N single-threaded processes; by default
-    a sweep worth it gets a LocalCluster of two, and a small one runs in-process. A cluster
-    is started on first need and kept for later sweeps.
+    ``client`` is an existing ``dask.distributed.Client`` to compute on (left open: it is the
+    caller's); ``scheduler`` connects to a running dask.distributed scheduler; ``workers=0``
+    computes in-process; ``workers=N`` uses a LocalCluster of N single-threaded processes; by
+    default a sweep worth it gets a LocalCluster of two, and a small one runs in-process. A
+    cluster is started on first need and kept for later sweeps.
     """
 
-    def __init__(self, workers: int | None = None, scheduler: str | None = None):
+    def __init__(self, workers: int | None = None, scheduler: str | None = None,
+                 client=None):
         self.workers, self.scheduler = workers, scheduler
-        self.client = None
+        self.client = client
+        self.given = client is not None  # the caller's: used, never closed
         self.cluster = None
 
     def __enter__(self):
@@ -204,6 +210,8 @@ class Executor:
         self.close()
 
     def close(self):
+        if self.given:
+            return
         if self.client is not None:
             self.client.close()
         if self.cluster is not None:
@@ -211,11 +219,11 @@ class Executor:
         self.client = self.cluster = None
 
     def parallel(self, grid: Grid) -> bool:
-        if self.scheduler:
+        if self.scheduler or self.given:
             return True
         if self.workers is not None:  # asked for: 0 in-process, N a local cluster of N
             return self.workers > 0
-        cost = grid.size * get_model(grid.model_name).seconds_per_point
+        cost = grid.size * grid.model.seconds_per_point
         return cost > IN_PROCESS_SECONDS
 
     def worker_count(self) -> int:
@@ -257,6 +265,9 @@ class Executor:
             return "in-process"
         if self.scheduler:
             return f"dask scheduler {self.scheduler} ({self.worker_count()} workers)"
+        if self.given:
+            return (f"dask client of {self.client.scheduler.address} "
+                    f"({self.worker_count()} workers)")
         return f"dask LocalCluster ({self.worker_count()} single-threaded worker processes)"
 
     def map(self, grid: Grid, chunks, parallel: bool):
@@ -318,7 +329,7 @@ class Progress:
 
 def choose_chunk_size(grid: Grid, workers: int) -> int:
     """Eight chunks per worker to balance uneven points, each at most ``CHUNK_SECONDS``."""
-    cost = get_model(grid.model_name).seconds_per_point
+    cost = grid.model.seconds_per_point
     largest = max(1, int(CHUNK_SECONDS / cost))
     return max(1, min(largest, math.ceil(grid.size / (8 * workers))))
 
@@ -328,43 +339,46 @@ def _check_versions(found: dict, expected: dict, executor: Executor, parts: Part
     would mix two sets of numbers under one provenance."""
     if found == expected:
         return
-    kept = len(list(parts.folder.glob("chunk-*.npz")))
     where = f"dask scheduler {executor.scheduler}" if executor.scheduler else "the cluster"
+    kept = "" if parts.folder is None else (
+        f" ({len(list(parts.folder.glob('chunk-*.npz')))} chunks computed so far are kept in "
+        f"{parts.folder})")
     raise WorkerMismatch(
         f"a worker of {where} runs bearing-sweep {found['package']} (model version "
         f"{found['model']}) where this run has bearing-sweep {expected['package']} (model version "
-        f"{expected['model']}): install the same on every worker ({kept} chunks computed so far "
-        f"are kept in {parts.folder})")
+        f"{expected['model']}): install the same on every worker{kept}")
 
 
-def run_sweep(sweep: Sweep, output, executor: Executor | None = None,
+def run_sweep(sweep: Sweep, output=None, executor: Executor | None = None,
               chunk_size: int | None = None, progress: bool = True, fresh: bool = False,
               log=None) -> Summary:
-    """Compute ``sweep`` and write its netCDF file atomically at ``output``.
+    """Compute ``sweep`` and write its netCDF file atomically at ``output``, or, when
+    ``output`` is None, return its dataset in :attr:`Summary.dataset` without a file.
 
     Finished chunks are kept as part files beside ``output`` until the file is written, so a
     run after an interruption computes only what is missing (``fresh`` discards them). The
     file is assembled one chunk at a time: memory is bounded by the chunk size. ``log``
     receives messages for the user (resuming, discarding).
     """
-    check_output(output, sweep.path)
+    if output is not None:
+        check_output(output, sweep.path)
     own = executor is None
     executor = executor or Executor()
     log = log or (lambda message: None)
     began = time.monotonic()
     try:
-        with OutputLock(output):
+        with OutputLock(output) if output is not None else contextlib.nullcontext():
             grid = Grid.from_sweep(sweep)
-            model = get_model(grid.model_name)
+            model = grid.model
             expected = versions(model)
             parallel = executor.parallel(grid)
             if parallel:
                 executor.connect()
             size = chunk_size or choose_chunk_size(
                 grid, executor.worker_count() if parallel else 1)
-            parts = Parts(output, {"definition_sha256": sweep.sha256,
-                                   "model_version": model.version, "points": grid.size,
-                                   "package_version": expected["package"]})
+            parts = HeldChunks() if output is None else Parts(output, {
+                "definition_sha256": sweep.sha256, "model_version": model.version,
+                "points": grid.size, "package_version": expected["package"]})
             size = parts.open(size, fresh, log)
             chunks = grid.chunks(size)
             done = parts.finished()
@@ -379,12 +393,17 @@ def run_sweep(sweep: Sweep, output, executor: Executor | None = None,
             finally:
                 bar.close()
             scheduler = executor.describe(parallel)
-            check_output(output, sweep.path)  # nothing has taken its place meanwhile
-            counts, errors, noted = store.assemble(sweep, grid, parts, chunks, output,
-                                                   scheduler)
+            counts, errors, noted = store.tally(grid, parts, chunks)
+            dataset = None
+            if output is None:
+                dataset = store.gather(sweep, grid, parts, chunks, scheduler, errors)
+            else:
+                check_output(output, sweep.path)  # nothing has taken its place meanwhile
+                store.assemble(sweep, grid, parts, chunks, output, scheduler, errors)
             parts.remove()
-        return Summary(model.name, grid.size, counts, time.monotonic() - began, str(output),
-                       scheduler, errors, noted)
+        return Summary(model.name, grid.size, counts, time.monotonic() - began,
+                       "(in memory)" if output is None else str(output), scheduler, errors, noted,
+                       dataset)
     finally:
         if own:
             executor.close()

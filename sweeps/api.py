@@ -1,0 +1,131 @@
+"""The Python API: run and check sweep definitions, and read the models' declarations as data.
+
+The same engine as the command line: ``run(definition)`` gives the dataset that
+``bearing-sweep run`` writes, and every mistake is a :class:`~bearing_sweep.spec.SpecError`
+whose message is the line the command prints after ``error:``.
+"""
+from __future__ import annotations
+
+import os
+import sys
+
+import xarray as xr
+
+from .models.registry import REQUIRED, STATUS_DESCRIPTIONS, all_models
+from . import spec
+from .compute import Executor, run_sweep
+from .spec import SpecError, Sweep
+
+
+def run(definition, *, output=None, client=None, workers=None, progress=True) -> xr.Dataset:
+    """Compute a sweep and return its labelled dataset.
+
+    Parameters
+    ----------
+    definition : str, os.PathLike or dict
+        TOML text (a string with a line break), the path of a TOML file, or a dict of the
+        same structure with units in strings (``{"sweep": {"model": "crb_radial"},
+        "axes": {"radial_load": ["2 kN", "4 kN"]}}``).
+    output : str or os.PathLike, optional
+        A netCDF file to write, atomically and resumably, as ``bearing-sweep run -o`` does;
+        the dataset is then returned opened from it (lazily: close it, or use ``with``).
+        Without it, nothing is written and the dataset is returned in memory.
+    client : dask.distributed.Client, optional
+        An existing client to compute the chunks on; it is left open.
+    workers : int, optional
+        Without ``client``: a local dask cluster of this many single-threaded processes, 0 to
+        compute in this process (default: two, or in this process for a small sweep).
+    progress : bool
+        A progress bar and a closing summary on stderr.
+
+    Returns
+    -------
+    xarray.Dataset
+        The sweep's axes as dimensions, every output and the ``status`` of every point, with
+        units and provenance: the same variables, values and attributes as the CLI's file.
+
+    Raises
+    ------
+    SpecError
+        A mistake in the definition or the arguments, found before any computing; nothing
+        is written.
+    """
+    sweep = _sweep(definition)
+    if workers is not None and (isinstance(workers, bool) or not isinstance(workers, int)
+                                or workers < 0):
+        raise SpecError(f"workers={workers!r}: expected 0 (in this process) or more workers")
+    if workers is not None and client is not None:
+        raise SpecError("workers and client exclude each other: the client's cluster has its "
+                        "own workers")
+    note = (lambda message: print(message, file=sys.stderr)) if progress else None
+    with Executor(workers, client=client) as executor:
+        summary = run_sweep(sweep, output, executor, progress=progress, log=note)
+    if progress:
+        print(summary.text(), file=sys.stderr)
+    if output is None:
+        return summary.dataset
+    return xr.open_dataset(output, engine="netcdf4")
+
+
+def check(definition) -> None:
+    """Validate a definition (as :func:`run` takes it) without computing anything.
+
+    Raises :class:`SpecError` with the one line ``bearing-sweep run`` would print.
+    """
+    _sweep(definition)
+
+
+def list_models() -> list[dict]:
+    """The registered models, one dict each: ``name``, ``summary``, ``reference``,
+    ``version`` (a table's rows: ``pandas.DataFrame(list_models())``, for one)."""
+    return [{"name": m.name, "summary": m.summary, "reference": m.reference,
+             "version": m.version} for m in all_models().values()]
+
+
+def describe(name: str) -> dict:
+    """One model's declaration as data, what ``bearing-sweep describe`` prints.
+
+    Returns
+    -------
+    dict
+        ``name``, ``version``, ``summary``, ``reference``, ``function`` (the import path of
+        the model's function, for direct use on arrays in SI units), ``inputs`` and
+        ``outputs`` (lists of dicts: ``name``, ``unit``, ``meaning``, ``dims``; an input also
+        ``kind``, ``default``, ``required``, ``minimum``, ``maximum``, ``range`` and
+        ``choices``; ``default`` is None for a required input and for one the model derives
+        when it is not given), ``validity``, ``conditions`` and ``statuses``.
+
+    Raises
+    ------
+    SpecError
+        No model has that name (the message names the closest).
+    """
+    model = spec.find_model(name)
+    function = model.function
+    return {
+        "name": model.name, "version": model.version, "summary": model.summary,
+        "reference": model.reference, "function": f"{function.__module__}.{function.__qualname__}",
+        "inputs": [{"name": i.name, "unit": i.unit, "meaning": i.meaning, "dims": i.dims,
+                    "kind": i.kind, "default": None if i.required else (
+                        list(i.default) if i.kind == "subset" else i.default),
+                    "required": i.default is REQUIRED, "minimum": i.minimum,
+                    "maximum": i.maximum, "range": i.range_text(), "choices": i.choices}
+                   for i in model.inputs],
+        "outputs": [{"name": o.name, "unit": o.unit, "meaning": o.meaning, "dims": o.dims}
+                    for o in model.outputs],
+        "validity": model.validity,
+        "conditions": [c.message for c in model.constraints],
+        "statuses": dict(STATUS_DESCRIPTIONS),
+    }
+
+
+def _sweep(definition) -> Sweep:
+    """The validated sweep of a definition given as text, a path or a dict."""
+    if isinstance(definition, dict):
+        return spec.from_dict(definition)
+    if isinstance(definition, str) and "\n" in definition:
+        return spec.parse(definition)
+    if isinstance(definition, (str, os.PathLike)):
+        return spec.load(definition)
+    raise SpecError(f"a definition is TOML text, a path or a dict, not "
+                    f"{type(definition).__name__}")

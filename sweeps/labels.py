@@ -1,0 +1,207 @@
+"""CF labelling of a sweep's dataset: every coordinate, input and output with its units
+(UDUNITS), ``long_name`` and ``comment``; the status flags; the global attributes.
+
+Inputs are stored in the unit the model declares for them (the same in every file of a model,
+so that files combine safely), outputs in their customary units, and a unit UDUNITS cannot
+write (a fractional power) in SI, named in the ``comment``.
+"""
+from __future__ import annotations
+
+from datetime import datetime, timezone
+
+import numpy as np
+import xarray as xr
+
+from .models.registry import STATUS_DESCRIPTIONS, STATUS_MEANINGS
+from . import units
+from .grid import Grid
+from .spec import Sweep, Value
+
+CONVENTIONS = "CF-1.10"
+
+
+def labelled_dataset(sweep: Sweep, grid: Grid, outputs: dict, status: np.ndarray,
+                     provenance: dict, errors=()) -> xr.Dataset:
+    """The labelled dataset of a finished sweep (outputs flat over points, as computed).
+
+    ``provenance`` says how it was made: ``scheduler``, ``package_version`` and
+    ``git_commit`` (None outside a checkout).
+    """
+    model = grid.model
+    data_vars = {}
+    for spec in model.outputs:
+        values = outputs[spec.name].reshape(grid.shape + outputs[spec.name].shape[1:])
+        attrs = described(spec.short, spec.meaning, None if spec.entry_units else spec.unit)
+        attrs["coverage_content_type"] = "modelResult"
+        if spec.entry_units:
+            # CF has one unit per variable: entries of different kinds carry theirs in a
+            # companion (strings need no units), and the variable no units attribute.
+            attrs["ancillary_variables"] = f"{spec.name}_units"
+            attrs["comment"] = attrs.get("comment", spec.short) + (
+                f"; each entry in its own unit, given by {spec.name}_units")
+            data_vars[f"{spec.name}_units"] = (spec.dims, np.array(spec.entry_units), {
+                "long_name": f"unit of each entry of {spec.name}"})
+        data_vars[spec.name] = (grid.dims + spec.dims, values, attrs)
+    data_vars["status"] = (grid.dims, status.reshape(grid.shape), {
+        "long_name": "solver status of the grid point",
+        "flag_values": np.arange(len(STATUS_MEANINGS), dtype=np.int8),
+        "flag_meanings": " ".join(STATUS_MEANINGS),
+        "comment": "; ".join(f"{name}: {text}" for name, text in STATUS_DESCRIPTIONS.items()),
+        "coverage_content_type": "qualityInformation",
+    })
+    data_vars.update(fixed_inputs(sweep))
+    coords = coordinates(sweep)
+    for dim in {d for o in model.outputs for d in o.dims}:
+        coords[dim] = dimension_coordinate(model, grid, sweep, dim)
+    attrs = {
+        "Conventions": CONVENTIONS,
+        "title": sweep.title,
+        "source": f"bearing-sweep {provenance['package_version']}, model {model.name} "
+                  f"version {model.version}",
+        "history": f"{datetime.now(timezone.utc).isoformat(timespec='seconds')} "
+                   f"bearing-sweep run {sweep.path}",
+        "references": model.reference,
+        "model": model.name,
+        "model_version": model.version,
+        "package_version": provenance["package_version"],
+        "definition": sweep.text,
+        "definition_file": str(sweep.path),
+        "definition_sha256": sweep.sha256,
+        "scheduler": provenance["scheduler"],
+    }
+    if sweep.bearing:
+        attrs["bearing"] = sweep.bearing
+    if provenance.get("git_commit"):
+        attrs["git_commit"] = provenance["git_commit"]
+    if errors:
+        attrs["model_errors"] = "\n".join(sorted(set(errors)))
+    attrs["fixed_inputs"] = " ".join(n for n, v in sweep.fixed.items() if v is not None)
+    dataset = xr.Dataset(data_vars, coords, attrs)
+    for name in list(dataset.coords) + attrs["fixed_inputs"].split():
+        dataset[name].encoding["_FillValue"] = None  # CF: no fill values on coordinates
+    return dataset
+
+
+def dimension_coordinate(model, grid: Grid, sweep: Sweep, dim: str) -> tuple:
+    """The coordinate of an output dimension: labels, values the inputs fix (a time, an
+    angle), or numbers from 1."""
+    size = grid.dim_sizes[dim]
+    labels = model.dim_sizes[dim]
+    if not (isinstance(labels, str) or callable(labels)):
+        return (dim,), np.array(labels), {"long_name": dim.replace("_", " ")}
+    numbered = {"long_name": f"{dim} number", "units": "1"}
+    coordinate = model.dim_coordinates.get(dim)
+    if coordinate is None:
+        return (dim,), np.arange(1, size + 1), numbered
+    single = {name: sweep.fixed[name].si for name in coordinate.inputs
+              if sweep.fixed.get(name) is not None}
+    if len(single) < len(coordinate.inputs):
+        return (dim,), np.arange(1, size + 1), numbered | {
+            "comment": f"{coordinate.meaning} varies along the grid here: see the outputs"}
+    values = units.from_si(coordinate.values(size, **single), coordinate.unit)
+    return (dim,), values, described(coordinate.meaning, coordinate.meaning, coordinate.unit)
+
+
+def coordinates(sweep: Sweep) -> dict:
+    """xarray coordinates of the grid, each input in the unit the model declares for it.
+
+    Returns ``{name: (dims, values, attrs)}``: one dimension coordinate per axis (a zipped
+    axis' labels) and a coordinate along its axis for each zipped parameter. Every file of a
+    model stores an input in the same unit, so files combine safely; the unit the user wrote
+    is kept in the attribute ``written_units``.
+    """
+    coords = {}
+    for axis in sweep.axes:
+        if axis.labels is None:
+            name, values = next(iter(axis.values.items()))
+            coords[name] = ((name,), declared_values(sweep, name, values),
+                            input_attrs(sweep, name, values[0].unit))
+            continue
+        labels = np.array(axis.labels)
+        coords[axis.name] = ((axis.name,), labels, {"long_name": axis.name.replace("_", " "),
+                                                    "comment": "labels of a zipped axis"}
+                             | ({"units": "1"} if labels.dtype.kind in "iu" else {}))
+        for name, values in axis.values.items():
+            extra = sweep.model.input(name).dims if any(np.ndim(v.shown) for v in values) else ()
+            coords[name] = ((axis.name,) + extra, declared_values(sweep, name, values),
+                            input_attrs(sweep, name, values[0].unit))
+    return coords
+
+
+def fixed_inputs(sweep: Sweep) -> dict:
+    """The inputs not on an axis, as variables ``{name: (dims, value, attrs)}`` in their
+    declared units: kept in the file, but not as scalar coordinates (xarray would print them
+    all in every plot's title)."""
+    variables = {}
+    for name, value in sweep.fixed.items():
+        if value is None:
+            continue
+        attrs = input_attrs(sweep, name, value.unit)
+        attrs["origin"] = sweep.origin.get(name, "")
+        dims = sweep.model.input(name).dims if np.ndim(value.shown) else ()
+        variables[name] = (dims, declared_values(sweep, name, [value])[0], attrs)
+    return variables
+
+
+def declared_values(sweep: Sweep, name: str, values: list[Value]) -> np.ndarray:
+    """The values of input ``name`` in its declared unit, stacked (points first)."""
+    spec = sweep.model.input(name)
+    first = values[0].shown
+    if isinstance(first, str):
+        return np.array([v.shown for v in values])
+    target = stored_unit(spec.unit)
+    declared = units.parse_unit(target) if spec.kind == "quantity" else None
+    shown = []
+    for value in values:
+        magnitude = np.asarray(value.shown, dtype=float)
+        if declared is not None and value.unit != target:
+            # One conversion from what was written, tidied to 15 digits so that "4 kN" is
+            # stored as 4000 N, not 4000.0000000000005.
+            magnitude = _tidy(units.convert(magnitude, units.parse_unit(value.unit), declared))
+        shown.append(magnitude)
+    size = max(np.size(a) for a in shown)
+    if any(a.ndim for a in shown):  # a single value on a zipped axis of patterns: repeat it
+        shown = [np.broadcast_to(a, (size,)) for a in shown]
+    stacked = np.stack(shown)
+    return stacked.astype(np.int64) if spec.kind == "count" else stacked
+
+
+def input_attrs(sweep: Sweep, name: str, written: str) -> dict:
+    """``long_name``, UDUNITS ``units`` and the unit the user wrote, of input ``name``."""
+    spec = sweep.model.input(name)
+    if spec.kind in ("choice", "subset"):
+        return described(spec.short, spec.meaning, None) | {
+            "accepted_values": " ".join(spec.choices)}
+    attrs = described(spec.short, spec.meaning, spec.unit)
+    if written and written not in ("1", spec.unit):
+        attrs["written_units"] = written
+    return attrs
+
+
+def stored_unit(unit: str) -> str:
+    """The unit values are stored in: the declared one, or SI where UDUNITS cannot express
+    the declared one (a fractional power: "N/mm^1.5" would read as 5000 N/m)."""
+    return unit if units.cf_units(unit or "1") is not None else units.si_text(unit)
+
+
+def described(label: str, meaning: str, unit: str | None) -> dict:
+    """``long_name``, ``units`` (UDUNITS) and ``comment`` of a variable; a unit UDUNITS
+    cannot express is named in the comment instead (with the values in SI)."""
+    attrs = {"long_name": label}
+    comment = meaning if meaning != label else ""
+    if unit is not None:
+        cf = units.cf_units(unit or "1")
+        if cf is not None:
+            attrs["units"] = cf
+        else:
+            comment += (". " if comment else "") + (
+                f"Units: {units.si_text(unit)} (SI); UDUNITS has no fractional powers, so "
+                "there is no units attribute")
+    if comment:
+        attrs["comment"] = comment
+    return attrs
+
+
+def _tidy(values) -> np.ndarray:
+    values = np.asarray(values, dtype=float)
+    return np.array([float(f"{v:.15g}") for v in values.ravel()]).reshape(values.shape)
