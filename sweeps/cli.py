@@ -145,8 +145,19 @@ def _schema(model: str | None, output: Path | None):
         return
     if output.suffix != ".json" or (output.exists() and not output.is_file()):
         raise SpecError(f"{output}: a schema is written to a .json file")
+    if output.exists() and not _our_schema(output):
+        raise SpecError(f"{output}: exists and is not a schema written by bearing-sweep; "
+                        "refusing to replace it (remove it or choose another path)")
     output.write_text(text)
     print(f"wrote {output}", file=sys.stderr)
+
+
+def _our_schema(path: Path) -> bool:
+    try:
+        found = json.loads(path.read_text(encoding="utf-8"))
+    except (OSError, UnicodeDecodeError, ValueError):
+        return False
+    return isinstance(found, dict) and str(found.get("$id", "")).startswith("bearing-sweep")
 
 
 def main(argv=None) -> int:

@@ -91,6 +91,9 @@ def test_cli_writes_the_schema(tmp_path):
                           capture_output=True, text=True, timeout=120)
     assert done.returncode == 0, done.stderr
     assert len(json.loads(out.read_text())["oneOf"]) == len(all_models())
+    done = subprocess.run([sys.executable, "-m", "bearing_sweep", "schema", "trb_rib", "-o", out],
+                          capture_output=True, text=True, timeout=120)  # ours: replaced
+    assert done.returncode == 0 and "oneOf" not in json.loads(out.read_text())
 
 
 def test_cli_refuses_an_unknown_model_in_one_line(tmp_path):
@@ -103,3 +106,8 @@ def test_cli_refuses_an_unknown_model_in_one_line(tmp_path):
     done = subprocess.run([sys.executable, "-m", "bearing_sweep", "schema", "-o", definition],
                           capture_output=True, text=True, timeout=120)
     assert done.returncode == 2 and definition.read_text() == "[sweep]\n"
+    other = tmp_path / "package.json"
+    other.write_text('{"name": "x"}')
+    done = subprocess.run([sys.executable, "-m", "bearing_sweep", "schema", "-o", other],
+                          capture_output=True, text=True, timeout=120)
+    assert done.returncode == 2 and other.read_text() == '{"name": "x"}'
