@@ -1,13 +1,15 @@
-"""Command line: ``bearing-sweep run | study | report | models | describe | presets``."""
+"""Command line: ``bearing-sweep run | study | report | models | describe | presets | schema |
+plot``."""
 from __future__ import annotations
 
 import argparse
+import json
 import sys
 from pathlib import Path
 
 from .models.catalogue import PRESETS
 from .models.registry import STATUS_DESCRIPTIONS, all_models
-from . import spec, study
+from . import quicklook, schema, spec, study
 from .parts import check_output
 from .compute import Executor, WorkerMismatch, check_scheduler_address, run_sweep
 from .spec import SpecError
@@ -51,6 +53,20 @@ def _parser() -> argparse.ArgumentParser:
     describe.add_argument("model", help="a model's name (bearing-sweep models)")
     presets = commands.add_parser("presets", help="list the catalogue's bearings, or show one")
     presets.add_argument("name", nargs="?", help="a preset to show with its values")
+    schema_command = commands.add_parser("schema", help="write the JSON Schema of sweep "
+                                         "definitions, for editors that complete and check TOML")
+    schema_command.add_argument("model", nargs="?",
+                                help="one model's definitions only (default: any model)")
+    schema_command.add_argument("-o", "--output", type=Path, metavar="FILE",
+                                help="write the schema to FILE (default: standard output)")
+    plot = commands.add_parser("plot", help="draw one output of a result against an axis")
+    plot.add_argument("result", type=Path, help="a netCDF file written by bearing-sweep run")
+    plot.add_argument("variable", nargs="?", help="the output to draw (default: the first)")
+    plot.add_argument("--x", metavar="AXIS",
+                      help="the axis along x (default: the sweep's first axis)")
+    plot.add_argument("-o", "--output", type=Path, metavar="FIGURE",
+                      help="the figure to write, .png, .pdf or .svg (default: RESULT.png "
+                           "beside the result)")
     for command in commands.choices.values():
         if command.prog.split()[-1] in ("study", "report"):
             command.add_argument("--studies", type=Path, default=None,
@@ -113,6 +129,33 @@ def _preset(name: str) -> str:
     return "\n".join(lines)
 
 
+def _schema(model: str | None, output: Path | None):
+    """Print the schema, or write it to ``output`` (never over a definition or a result)."""
+    models = all_models()
+    if model is not None and model not in models:
+        raise SpecError(f"unknown model {model!r}" + spec.suggestion(model, models)
+                        + f" (models: {', '.join(sorted(models))})")
+    text = json.dumps(schema.schema(model), indent=2) + "\n"
+    if output is None:
+        sys.stdout.write(text)
+        return
+    if output.suffix != ".json" or (output.exists() and not output.is_file()):
+        raise SpecError(f"{output}: a schema is written to a .json file")
+    if output.exists() and not _our_schema(output):
+        raise SpecError(f"{output}: exists and is not a schema written by bearing-sweep; "
+                        "refusing to replace it (remove it or choose another path)")
+    output.write_text(text)
+    print(f"wrote {output}", file=sys.stderr)
+
+
+def _our_schema(path: Path) -> bool:
+    try:
+        found = json.loads(path.read_text(encoding="utf-8"))
+    except (OSError, UnicodeDecodeError, ValueError):
+        return False
+    return isinstance(found, dict) and str(found.get("$id", "")).startswith("bearing-sweep")
+
+
 def main(argv=None) -> int:
     args = _parser().parse_args(argv)
     try:
@@ -127,6 +170,15 @@ def main(argv=None) -> int:
                     print(f"{preset.name} ({', '.join(preset.models)}): {preset.source}")
             else:
                 print(_preset(args.name))
+        elif args.command == "schema":
+            _schema(args.model, args.output)
+        elif args.command == "plot":
+            if not args.result.is_file():
+                raise SpecError(f"{args.result}: no such result file")
+            output = args.output or args.result.with_suffix(".png")
+            quicklook.check_figure_path(output, args.result)
+            quicklook.plot(args.result, args.variable, x=args.x, output=output)
+            print(f"wrote {output}")
         elif args.command == "run":
             _check_cluster_options(args)
             if args.chunk_size is not None and args.chunk_size < 1:

@@ -19,9 +19,14 @@ def result(results: Path, name: str) -> xr.Dataset:
     return open_result(Path(results) / f"{name}.nc")
 
 
-def label(variable: xr.DataArray) -> str:
-    """Axis label: the variable's name and units."""
-    return f"{variable.name.replace('_', ' ')} [{variable.attrs['units']}]"
+def label(variable: xr.DataArray, long: bool = False) -> str:
+    """Axis label: the variable's name and units; ``long``: its ``long_name`` instead of its
+    name, no unit for a number, "SI" for a variable stored without ``units``."""
+    if not long:
+        return f"{variable.name.replace('_', ' ')} [{variable.attrs['units']}]"
+    name = variable.attrs.get("long_name", variable.name.replace("_", " "))
+    unit = variable.attrs.get("units", "1" if variable.dtype.kind in "OUS" else "SI")
+    return name if unit == "1" else f"{name} [{unit}]"
 
 
 def family(axis, x, y, over: str, label: str, plot: str = "plot", **settings):
