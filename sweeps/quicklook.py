@@ -113,7 +113,10 @@ def plot(result, variable: str | None = None, *, x: str | None = None, output=No
                 axis.set_ylabel(label(values, long=True) + (
                     f"\nmean; band: least to largest over {', '.join(distributed)}"
                     if distributed else ""))
-    fixed = [n for n in data.attrs.get("fixed_inputs", "").split() if n in data]
+    # What the user chose (a preset, [fixed]) is the figure's condition; the model's defaults
+    # are many (30 for cage_slip) and named once, in the file.
+    fixed = [n for n in data.attrs.get("fixed_inputs", "").split()
+             if n in data and data[n].attrs.get("origin") != "default"]
     held_text = ", ".join([_value_text(_shown(data[d]), 0) + " (first of "
                            f"{data.sizes[d]})" for d in held] + thinned)
     width = int(14 * figure.get_figwidth())  # characters of the title's font across the figure

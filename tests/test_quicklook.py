@@ -63,6 +63,8 @@ def test_two_axes_a_line_per_value_labels_and_conditions(results, tmp_path):
                                data["radial_displacement"].isel(clearance=1).values)
     title = figure._suptitle.get_text()
     assert "paper000-D" in title and "speed = 6000 rpm" in title and "crown = 4 um" in title
+    assert "pitch diameter = 65 mm" in title  # from the preset
+    assert "slices" not in title and data.slices.attrs["origin"] == "default"  # not chosen
     assert (tmp_path / "f.png").read_bytes().startswith(b"\x89PNG")
 
 
