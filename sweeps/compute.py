@@ -206,7 +206,11 @@ class Executor:
     def __enter__(self):
         return self
 
-    def __exit__(self, *exc):
+    def __exit__(self, kind, error, trace):
+        if kind is KeyboardInterrupt:
+            # Closing a cluster in the middle of its work makes dask log heartbeats that fail,
+            # with their tracebacks: the interruption is one line, said by the command.
+            logging.getLogger("distributed").setLevel(logging.CRITICAL)
         self.close()
 
     def close(self):
@@ -253,10 +257,11 @@ class Executor:
                                       "distributed.admin.system-monitor.interval": "2s",
                                       "distributed.worker.memory.monitor-interval": "1s"}):
                     # The preload runs this module's dask_setup in every worker process,
-                    # restarted ones too.
+                    # restarted ones too. The cluster's own logs are not for the user: what
+                    # goes wrong reaches the summary or the command's one line of error.
                     self.cluster = LocalCluster(n_workers=self.workers or 2, threads_per_worker=1,
                                                 processes=True, dashboard_address=":0",
-                                                silence_logs=logging.ERROR, preload=[__name__])
+                                                silence_logs=logging.CRITICAL, preload=[__name__])
                 self.client = Client(self.cluster, set_as_default=False)
         return self.client
 
