@@ -8,9 +8,9 @@ import sys
 from pathlib import Path
 
 from .models.catalogue import PRESETS
-from .models.registry import STATUS_DESCRIPTIONS, all_models
-from . import quicklook, schema, spec, study
-from .parts import check_output
+from .models.registry import all_models
+from . import api, quicklook, schema, spec, study
+from .parts import check_output, write_durably
 from .compute import Executor, WorkerMismatch, check_scheduler_address, run_sweep
 from .spec import SpecError
 
@@ -92,26 +92,25 @@ def _note(message: str):
 
 
 def _describe(name: str) -> str:
-    model = spec.find_model(name)
-    lines = [f"{model.name} (version {model.version}): {model.summary}",
-             f"Reference: {model.reference}", "", "Inputs:"]
-    for i in model.inputs:
-        shown = list(i.default) if i.kind == "subset" else i.default
-        default = "required" if i.required else (
-            "derived" if i.default is None else f"default {shown}")
-        unit = f" [{i.unit}]" if i.unit not in ("", "1") else ""
-        dims = f" per {', '.join(i.dims)}" if i.dims else ""
-        lines.append(f"  {i.name}{unit}{dims}: {i.meaning}; {default}; {i.range_text()}")
+    """The text of the declaration :func:`bearing_sweep.describe` gives as data."""
+    model = api.describe(name)
+    lines = [f"{model['name']} (version {model['version']}): {model['summary']}",
+             f"Reference: {model['reference']}", "", "Inputs:"]
+    for i in model["inputs"]:
+        default = "required" if i["required"] else (
+            "derived" if i["default"] is None else f"default {i['default']}")
+        unit = f" [{i['unit']}]" if i["unit"] not in ("", "1") else ""
+        dims = f" per {', '.join(i['dims'])}" if i["dims"] else ""
+        lines.append(f"  {i['name']}{unit}{dims}: {i['meaning']}; {default}; {i['range']}")
     lines += ["", "Outputs:"]
-    for o in model.outputs:
-        dims = f" (dims: {', '.join(o.dims)})" if o.dims else ""
-        lines.append(f"  {o.name} [{o.unit}]{dims}: {o.meaning}")
+    for o in model["outputs"]:
+        dims = f" (dims: {', '.join(o['dims'])})" if o["dims"] else ""
+        lines.append(f"  {o['name']} [{o['unit']}]{dims}: {o['meaning']}")
     lines.append("  status: per point, one of:")
-    lines += [f"    {name}: {text}" for name, text in STATUS_DESCRIPTIONS.items()]
-    if model.validity:
-        lines.append(f"Validity (out_of_validity beyond): {model.validity}")
-    for c in model.constraints:
-        lines.append(f"Condition: {c.message}")
+    lines += [f"    {status}: {text}" for status, text in model["statuses"].items()]
+    if model["validity"]:
+        lines.append(f"Validity (out_of_validity beyond): {model['validity']}")
+    lines += [f"Condition: {condition}" for condition in model["conditions"]]
     return "\n".join(lines)
 
 
@@ -131,10 +130,8 @@ def _preset(name: str) -> str:
 
 def _schema(model: str | None, output: Path | None):
     """Print the schema, or write it to ``output`` (never over a definition or a result)."""
-    models = all_models()
-    if model is not None and model not in models:
-        raise SpecError(f"unknown model {model!r}" + spec.suggestion(model, models)
-                        + f" (models: {', '.join(sorted(models))})")
+    if model is not None:
+        spec.find_model(model)  # an unknown name is the one line every command gives
     text = json.dumps(schema.schema(model), indent=2) + "\n"
     if output is None:
         sys.stdout.write(text)
@@ -144,7 +141,7 @@ def _schema(model: str | None, output: Path | None):
     if output.exists() and not _our_schema(output):
         raise SpecError(f"{output}: exists and is not a schema written by bearing-sweep; "
                         "refusing to replace it (remove it or choose another path)")
-    output.write_text(text)
+    write_durably(output, lambda handle: handle.write(text.encode()))
     print(f"wrote {output}", file=sys.stderr)
 
 

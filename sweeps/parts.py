@@ -150,7 +150,7 @@ class Parts:
                 return int(found["chunk_size"])
         self.folder.mkdir(parents=True)
         text = json.dumps({**self.key, "chunk_size": chunk_size}).encode()
-        _write_durably(manifest, lambda handle: handle.write(text))
+        write_durably(manifest, lambda handle: handle.write(text))
         return chunk_size
 
     def _remove_unreadable(self, log) -> int:
@@ -184,7 +184,7 @@ class Parts:
         arrays = {f"output_{name}": values for name, values in result["outputs"].items()}
         arrays["status"] = result["status"]
         arrays["errors"] = np.array(result["errors"], dtype=str)
-        _write_durably(self.path(start, stop), lambda handle: np.savez(handle, **arrays))
+        write_durably(self.path(start, stop), lambda handle: np.savez(handle, **arrays))
 
     def load(self, start: int, stop: int) -> dict:
         path = self.path(start, stop)
@@ -279,7 +279,7 @@ def _unreadable(path: Path, points: int) -> str | None:
     return None
 
 
-def _write_durably(path: Path, write):
+def write_durably(path: Path, write):
     """Write ``path`` atomically: ``write(handle)`` fills a temporary file beside it."""
     with written_atomically(path) as temporary, open(temporary, "wb") as handle:
         write(handle)

@@ -9,15 +9,15 @@ to the largest entry. The inputs the sweep held fixed are the figure's condition
 """
 from __future__ import annotations
 
-import difflib
 from pathlib import Path
 
 import numpy as np
 import xarray as xr
 from matplotlib.lines import Line2D
 
+from .parts import write_durably
 from .plotting import conditions, in_unit, label, plt
-from .spec import SpecError
+from .spec import SpecError, suggestion
 from .store import open_result
 
 #: Figure formats ``plot`` writes, with the first bytes of such a file: only a figure is ever
@@ -218,9 +218,8 @@ def _open(path) -> xr.Dataset:
 
 def _choose(name: str, options: list, what: str) -> str:
     if name not in options:
-        close = difflib.get_close_matches(name, options, n=1, cutoff=0.6)
-        raise SpecError(f"unknown {what} {name!r}" + (f"; did you mean {close[0]!r}?" if close
-                        else "") + f" ({what} names: {', '.join(options)})")
+        raise SpecError(f"unknown {what} {name!r}" + suggestion(name, options)
+                        + f" ({what} names: {', '.join(options)})")
     return name
 
 
@@ -250,7 +249,5 @@ def check_figure_path(output, result=None) -> Path:
 
 def _write(figure, output: Path):
     """Write ``figure`` to ``output`` atomically (a finished file replaces the old one)."""
-    from .parts import _write_durably
-
-    _write_durably(output, lambda handle: figure.savefig(
+    write_durably(output, lambda handle: figure.savefig(
         handle, format=output.suffix[1:].lower(), dpi=110))
