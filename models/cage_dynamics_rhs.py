@@ -16,6 +16,8 @@ from __future__ import annotations
 import numpy as np
 from numba import njit
 
+from .contact_laws import traction_coefficient
+
 (OMEGA_I, RADIAL_LOAD, R_INNER, R_OUTER, R_ROLLER, R_PITCH, CONTACT, HALF_PLAY, M_ROLLER,
  J_ROLLER, POCKET_FILM, END_FILM, WINDAGE, MU_POCKET, M_RING, C_RING, M_CAGE, J_CAGE,
  ECCENTRICITY, HALF_POCKET, K_POCKET, C_POCKET, GRAVITY, CAGE_DRAG, TRACTION_A, TRACTION_B,
@@ -26,11 +28,9 @@ EXPONENT = 10.0 / 9.0
 
 @njit(cache=True)
 def traction(sliding, p):
-    """Gupta's traction coefficient, odd in the sliding speed."""
-    speed = abs(sliding)
-    value = (p[TRACTION_A] + p[TRACTION_B] * speed) * np.exp(-p[TRACTION_C] * speed) \
-        + p[TRACTION_D]
-    return value if sliding >= 0.0 else -value
+    """Gupta's traction coefficient with the curve packed in ``p``."""
+    return traction_coefficient(sliding, p[TRACTION_A], p[TRACTION_B], p[TRACTION_C],
+                                p[TRACTION_D])
 
 
 @njit(cache=True)

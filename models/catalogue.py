@@ -115,7 +115,7 @@ _PRESETS = (
                 "7820 kg/m^3", "youngs_modulus": "207 GPa", "poisson_ratio": 0.28,
                 "end_film_thickness": "0.015 mm"},
         source="Paper 002, Tables 2-3 (the test bearing of Fig. 17)",
-        also=("cage_dynamics",),
+        also=("cage_dynamics", "cage_dynamics_6dof"),
         notes="Table 2 is inconsistent: 44 + 2 x 10 + 0.02 = 64.02 mm, not its 63.82 mm outer "
               "raceway (which would be 0.18 mm of interference). The inner raceway, roller and "
               "clearance are kept; the outer raceway follows from them. The cage width is not "

@@ -1,0 +1,550 @@
+"""Spatial transient model of a cylindrical roller bearing with circular pockets: rollers and
+cage with six degrees of freedom, conformal pocket, end-face and rib contacts, cage mass
+eccentricity and ring misalignment (paper 002, sections 1 and 3).
+
+Started from the steady state of :func:`models.cage_slip.cage_slip` and the quasi-static ring
+position of :func:`models.cylindrical.crb_radial`, the equations of
+:mod:`models.cage_dynamics_6dof_rhs` are integrated by an adaptive Dormand-Prince 5(4) method
+(``integrator="adaptive"``) or by the paper's fixed-step fourth-order Runge-Kutta method
+(``integrator="rk4"``, ``rk4_step`` 1e-7 s).
+"""
+from __future__ import annotations
+
+import numpy as np
+
+from . import cage_dynamics_6dof_rhs as rhs
+from .cage_dynamics import GRAVITY, _samples, _samples_fit
+from .cage_dynamics_rhs import roller_loads
+from .cage_slip import MODELS as STEADY_MODELS
+from .cage_slip import bearing_terms, cage_slip, cage_windage
+from .contact import palmgren_constant
+from .contact_laws import qin_damping_coefficient, winkler_modulus
+from .cylindrical import crb_radial
+from .profiles import slice_centres
+from .registry import (CONVERGED, NOT_CONVERGED, Constraint, DimCoordinate, Input, Model,
+                       Output)
+
+_SETTLED = 0.5  # the settled part: the last half of the run
+INTEGRATORS = ("adaptive", "rk4")
+_MAX_STEPS = 50_000_000
+_SLIP_SMOOTHING = 1e-3  # [m/s] Coulomb friction ramps up over this sliding speed
+# The steady start's end film covers a quarter of the end faces (cage_slip's default).
+_START_END_FILL = 0.25
+# cage_slip's inputs this model shares; its pocket and end films come from the elements here.
+STEADY_INPUTS = tuple(i.name for i in STEADY_MODELS[0].inputs if i.name not in (
+    "orbit_points", "pocket_wrap_angle", "pocket_film_fill", "end_film_thickness",
+    "end_film_fill"))
+
+
+def cage_dynamics_6dof(radial_load, speed, roller_count, inner_raceway_diameter, roller_diameter,
+                       roller_length, effective_length, clearance, cage_inner_diameter,
+                       cage_outer_diameter, cage_width, roller_density=7820.0,
+                       oil_temperature=298.15, viscosity_40=26e-6, viscosity_100=5.4e-6,
+                       oil_density=1000.0, pressure_viscosity=1.1e-8, youngs_modulus=207e9,
+                       poisson_ratio=0.28, traction_peak=0.05, traction_peak_speed=2.0,
+                       traction_limit=0.036, oil_fraction=0.05, drag_coefficient=1.0,
+                       pocket_clearance=1e-4, pocket_friction=0.1, end_film_thickness=1.5e-5,
+                       pocket_axial_clearance=1.5e-5, rib_height=2e-3, end_chamfer=5e-4,
+                       cage_density=8600.0, cage_youngs_modulus=106e9, cage_poisson_ratio=0.32,
+                       winkler_depth=1e-3, restitution=0.8, impact_speed=0.1,
+                       film_breakdown=1e-6, cage_eccentricity=0.0, cage_axial_eccentricity=0.0,
+                       misalignment_x=0.0, misalignment_y=0.0, inner_ring_mass=0.1,
+                       damping_ratio=0.1, duration=0.05, output_interval=1e-4, slices=10,
+                       arc_axial_points=6, arc_angle_points=8, face_rings=4, face_angles=12,
+                       relative_tolerance=1e-5, integrator="adaptive", rk4_step=1e-7,
+                       branch="high_slip"):
+    """Cage and roller motion in space and time.
+
+    Parameters
+    ----------
+    radial_load ... pocket_friction, branch
+        As :func:`models.cage_slip.cage_slip`; ``pocket_friction`` is the Coulomb coefficient
+        of every dry element (eq. 2, 0.1 in the paper).
+    end_film_thickness : array_like
+        Axial play of a roller between the inner ring's ribs (Table 2: 0.015 mm) [m].
+    pocket_axial_clearance : array_like
+        Axial play of a roller between its pocket's end faces (Table 2: 0.015 mm) [m].
+    rib_height, end_chamfer : array_like
+        Rib height above the inner raceway and the roller end's chamfer (the end face is a
+        disc of radius ``D/2 - end_chamfer``) [m]; not in the paper.
+    cage_density, cage_youngs_modulus, cage_poisson_ratio : array_like
+        The cage's material (Table 3, brass: 8600 kg/m^3, 106 GPa, 0.32) [kg/m^3], [Pa], [-].
+    winkler_depth : array_like
+        Depth ``H`` of the elastic layer of eq. 1 [m] (not in the paper).
+    restitution, impact_speed : array_like
+        Qin's damping of eq. 1: coefficient of restitution ``e`` [-] and the approach speed
+        it refers to [m/s] (not in the paper).
+    film_breakdown : array_like
+        Smallest film the short-bearing and shear films use [m]: below it the surfaces'
+        roughness carries the load (the dry state begins at contact, eq. 9).
+    cage_eccentricity, cage_axial_eccentricity : array_like
+        Radial ``e_r`` (along ``x_b``, through pocket 1) and axial ``e_a`` offsets of the
+        cage's mass centre from its geometric centre [m] (section 1.5.2).
+    misalignment_x, misalignment_y : array_like
+        Inner ring turned about X, then about Y [rad].
+    inner_ring_mass, damping_ratio : array_like
+        The inner ring's mass [kg] and the damping ratio of its radial motion [-].
+    duration, output_interval : float
+        Bearing time simulated and the interval of the returned samples [s].
+    slices, arc_axial_points, arc_angle_points, face_rings, face_angles : int
+        Slices of each raceway contact; the Winkler elements of a pocket arc (axial x
+        angular, on each of the two arcs) and of a roller end face (rings of equal area x
+        angles).
+    relative_tolerance : float
+        Of the adaptive integrator (the absolute ones follow from it: see
+        :func:`_absolute_tolerances`).
+    integrator : {"adaptive", "rk4"}
+        Dormand-Prince 5(4) with step control, or the paper's fixed-step fourth-order
+        Runge-Kutta method at ``rk4_step`` [s].
+
+    Returns
+    -------
+    dict of numpy.ndarray
+        Over time ``(N, samples)``: ``cage_slip`` [-] (eq. 27), ``cage_x``, ``cage_y``,
+        ``cage_z`` (geometric centre) [m], ``whirl_speed`` (its speed, eq. 28's ``v``)
+        [m/s], ``sample_time`` [s]; ``(N, samples, Z)``: ``roller_slip`` [-],
+        ``roller_skew`` (axis turned about the radial direction), ``roller_tilt`` (about the
+        tangential direction) [rad]. Settled half: ``mean_cage_slip``, ``mean_roller_slip``
+        [-], ``whirl_deviation_ratio`` (eq. 28) [-], ``rms_roller_skew``,
+        ``rms_roller_tilt`` [rad]; per pocket ``pocket_arc_force`` ``(N, Z, axial, angle)``
+        (largest dry force of each arc element) [N]; ``pocket_end_clearance`` and
+        ``rib_clearance`` ``(N, Z, side, ring, angle)`` (smallest gap of each end-face element;
+        negative: pressed in; NaN where the face has no counterpart) [m]; contact events
+        (dry contacts begun between samples, all rollers) ``pocket_arc_events``,
+        ``pocket_end_events``, ``rib_events``; ``integration_steps``; ``status``.
+
+    References
+    ----------
+    .. [1] Paper 002, sections 1.3-1.5 (eqs. 1-26), eqs. 27-28, section 3.
+    """
+    given = dict(locals())
+    integer = ("roller_count", "slices", "arc_axial_points", "arc_angle_points", "face_rings",
+               "face_angles")
+    text = ("integrator", "branch")
+    numeric = [k for k in given if k not in integer + text]
+    for k, v in zip(numeric, np.broadcast_arrays(*(np.atleast_1d(np.asarray(
+            given[k], dtype=float)) for k in numeric))):
+        given[k] = v
+    if integrator not in INTEGRATORS:
+        raise ValueError(f"integrator must be one of {INTEGRATORS}, not {integrator!r}")
+    points = given["radial_load"].size
+    samples = int(np.floor(np.max(given["duration"] / given["output_interval"]) + 1e-9)) + 1
+    sizes = {"roller": roller_count, "axial": arc_axial_points, "angle": 2 * arc_angle_points,
+             "side": 2, "ring": face_rings, "face": face_angles}
+    outputs = _empty(points, samples, sizes)
+    for point in range(points):
+        one = {k: (given[k][point] if k in numeric else given[k]) for k in given}
+        status, result = _run(one)
+        outputs["status"][point] = status
+        for name, value in (result or {}).items():
+            target = outputs[name]
+            if np.ndim(value):
+                target[(point,) + tuple(slice(0, n) for n in np.shape(value))] = value
+            else:
+                target[point] = value
+    return outputs
+
+
+def _empty(points, samples, sizes):
+    def nan(*shape):
+        return np.full((points,) + shape, np.nan)
+
+    z = sizes["roller"]
+    face = (z, 2, sizes["ring"], sizes["face"])
+    return {
+        **{name: nan(samples) for name in ("cage_slip", "cage_x", "cage_y", "cage_z",
+                                            "whirl_speed", "sample_time")},
+        **{name: nan(samples, z) for name in ("roller_slip", "roller_skew", "roller_tilt")},
+        **{name: nan() for name in ("mean_cage_slip", "mean_roller_slip",
+                                    "whirl_deviation_ratio", "rms_roller_skew",
+                                    "rms_roller_tilt", "pocket_arc_events", "pocket_end_events",
+                                    "rib_events", "integration_steps")},
+        "pocket_arc_force": nan(z, sizes["axial"], sizes["angle"]),
+        "pocket_end_clearance": nan(*face), "rib_clearance": nan(*face),
+        "status": np.full(points, NOT_CONVERGED, dtype=np.int8),
+    }
+
+
+def geometry(terms, one):
+    """The elements: slice positions along the roller [m], the pocket arcs' angles from the
+    pocket's radial axis [rad] and axial positions [m], the end faces' ring radii [m] and
+    angles [rad] and element areas [m^2]; and the arcs' element area and wrapped angle."""
+    radius, length = terms["radius"], one["roller_length"]
+    slice_z = slice_centres(int(one["slices"])) * 0.5 * terms["contact_length"]
+    pocket_radius = radius + 0.5 * terms["pocket_clearance"]
+    # The arcs lie where the cage is: between its bore and outside diameter.
+    low = np.clip((0.5 * terms["cage_in"] - terms["pitch_radius"]) / pocket_radius, -1, 1)
+    high = np.clip((0.5 * terms["cage_out"] - terms["pitch_radius"]) / pocket_radius, -1, 1)
+    first, last = np.arccos(high), np.arccos(low)
+    n = int(one["arc_angle_points"])
+    step = (last - first) / n
+    one_arc = first + (np.arange(n) + 0.5) * step
+    arc_theta = np.concatenate([-one_arc[::-1], one_arc])
+    m = int(one["arc_axial_points"])
+    arc_z = ((np.arange(m) + 0.5) / m - 0.5) * length
+    face_radius = radius - one["end_chamfer"]
+    rings, angles = int(one["face_rings"]), int(one["face_angles"])
+    face_r = face_radius * np.sqrt((np.arange(rings) + 0.5) / rings)  # rings of equal area
+    face_phi = 2 * np.pi * (np.arange(angles) + 0.5) / angles
+    face_area = np.full(rings, np.pi * face_radius**2 / (rings * angles))
+    arc_area = pocket_radius * step * length / m
+    return (slice_z, arc_theta, arc_z, face_r, face_phi, face_area), arc_area, 2 * (last - first)
+
+
+def parameters(one, terms, arc_area, start_cage_speed, ring_stiffness, cage_mass):
+    """The packed parameter array of :mod:`models.cage_dynamics_6dof_rhs`."""
+    p = np.zeros(rhs.PARAMETERS)
+    p[rhs.OMEGA_I], p[rhs.LOAD] = terms["omega_i"], terms["load"]
+    p[rhs.R_INNER], p[rhs.R_OUTER] = terms["r_i"], terms["r_o"]
+    p[rhs.RADIUS], p[rhs.LENGTH], p[rhs.PITCH] = (terms["radius"], one["roller_length"],
+                                                  terms["pitch_radius"])
+    mass, radius, length = terms["mass"], terms["radius"], one["roller_length"]
+    p[rhs.M_ROLLER], p[rhs.J_AXIAL] = mass, 0.5 * mass * radius**2
+    p[rhs.J_TRANSVERSE] = mass * (3 * radius**2 + length**2) / 12
+    p[rhs.K_SLICE] = palmgren_constant(terms["contact_length"]) / one["slices"]
+    p[rhs.HUNT] = qin_damping_coefficient(one["restitution"], one["impact_speed"])
+    p[rhs.BED_POCKET] = winkler_modulus(one["cage_youngs_modulus"], one["cage_poisson_ratio"],
+                                        one["winkler_depth"])
+    p[rhs.BED_RIB] = winkler_modulus(terms["modulus"], terms["poisson"], one["winkler_depth"])
+    p[rhs.MU_DRY], p[rhs.VISCOSITY] = terms["mu_pocket"], terms["viscosity"]
+    p[rhs.FILM_FLOOR] = one["film_breakdown"]
+    p[rhs.POCKET_RADIUS] = radius + 0.5 * terms["pocket_clearance"]
+    p[rhs.POCKET_PLAY], p[rhs.RIB_PLAY] = (one["pocket_axial_clearance"],
+                                           one["end_film_thickness"])
+    p[rhs.RIB_RADIUS] = terms["r_i"] + one["rib_height"]
+    p[rhs.CAGE_IN], p[rhs.CAGE_OUT] = 0.5 * terms["cage_in"], 0.5 * terms["cage_out"]
+    p[rhs.WINDAGE] = terms["windage"]
+    drag = cage_windage(start_cage_speed, terms["cage_out"], terms["width"],
+                        terms["effective_density"], terms["kinematic_viscosity"])
+    p[rhs.CAGE_DRAG] = drag / start_cage_speed**1.5  # laminar disc: moment ~ omega^1.5
+    p[rhs.M_RING] = one["inner_ring_mass"]
+    p[rhs.C_RING] = 2 * one["damping_ratio"] * np.sqrt(ring_stiffness * one["inner_ring_mass"])
+    p[rhs.M_CAGE] = cage_mass
+    outer, inner, width = 0.5 * terms["cage_out"], 0.5 * terms["cage_in"], terms["width"]
+    p[rhs.J_CAGE_Z] = cage_mass * (outer**2 + inner**2) / 2
+    p[rhs.J_CAGE_X] = cage_mass * (3 * (outer**2 + inner**2) + width**2) / 12
+    p[rhs.ECC_RADIAL], p[rhs.ECC_AXIAL] = (one["cage_eccentricity"],
+                                           one["cage_axial_eccentricity"])
+    p[rhs.GRAVITY] = GRAVITY
+    p[rhs.MISALIGN_X], p[rhs.MISALIGN_Y] = one["misalignment_x"], one["misalignment_y"]
+    curve = terms["traction"]
+    p[rhs.TRACTION_A:rhs.TRACTION_D + 1] = (curve.a[0], curve.b[0], curve.c[0], curve.d[0])
+    p[rhs.RACEWAYS] = p[rhs.POCKETS] = p[rhs.ENDS] = p[rhs.DRAG] = 1.0
+    p[rhs.SLIP_SMOOTHING], p[rhs.ARC_AREA] = _SLIP_SMOOTHING, arc_area
+    return p
+
+
+def setup(one):
+    """Everything one point needs to integrate: parameters, elements, the steady start, the
+    sample times and the kinematic speeds; or its status when the steady model has no start."""
+    count = int(one["roller_count"])
+    steady_inputs = {k: one[k] for k in STEADY_INPUTS if k != "roller_count"}
+    terms = {k: (v[0] if isinstance(v, np.ndarray) else v) for k, v in bearing_terms(
+        **{k: v for k, v in steady_inputs.items() if k != "branch"}, roller_count=count,
+        pocket_wrap_angle=1.0, pocket_film_fill=1.0,
+        end_film_thickness=one["end_film_thickness"], end_film_fill=_START_END_FILL,
+        ).items()}
+    elements, arc_area, wrapped = geometry(terms, one)
+    # The steady start with this model's pocket film: a centred roller's Couette couple over
+    # the wrapped arcs at a film of half the pocket clearance, cage_slip's M_p with
+    # theta_w = 2 x the wrapped angle.
+    steady = cage_slip(**dict(steady_inputs, roller_count=count), pocket_wrap_angle=2 * wrapped,
+                       pocket_film_fill=1.0, end_film_thickness=one["end_film_thickness"],
+                       end_film_fill=_START_END_FILL, orbit_points=20 * count)
+    if steady["status"][0] != CONVERGED:
+        return steady["status"][0], None
+    omega_c = steady["cage_speed"][0]
+    ring = crb_radial(terms["load"], count, 2 * terms["pitch_radius"], terms["diameter"],
+                      terms["contact_length"], clearance=terms["play"], slices=1,
+                      speed=terms["omega_i"],
+                      roller_density=terms["mass"] / (np.pi * terms["radius"]**2
+                                                      * terms["contact_length"]))
+    pocket_share = count * (terms["diameter"] + terms["pocket_clearance"]) / (
+        2 * np.pi * terms["pitch_radius"])
+    cage_mass = one["cage_density"] * np.pi / 4 * (terms["cage_out"]**2 - terms["cage_in"]**2) \
+        * terms["width"] * (1 - pocket_share)
+    p = parameters(one, terms, arc_area, omega_c, np.ravel(ring["radial_stiffness"])[0],
+                   cage_mass)
+    state = start(count, p, palmgren_constant(terms["contact_length"]), steady,
+                  np.ravel(ring["radial_displacement"])[0], omega_c, terms["spin_kin"])
+    times = np.arange(int(np.floor(one["duration"] / one["output_interval"] + 1e-9)) + 1) \
+        * one["output_interval"]
+    return CONVERGED, dict(p=p, elements=elements, state=state, times=times, count=count,
+                           omega_kin=terms["omega_kin"], spin_kin=terms["spin_kin"])
+
+
+def start(count, p, whole, steady, drop, omega_c, kinematic_spin):
+    """The steady state in space: ring dropped along the load, each roller at its orbit
+    position (roller 1 on the load line, at -90 deg) pressed by its quasi-static contact
+    loads (``whole``: the roller's Palmgren constant), spinning as the steady model says, axes
+    parallel; the cage centred, turning at the
+    steady cage speed, pocket 1 at roller 1."""
+    state = np.zeros(rhs.state_size(count))
+    state[1] = -drop
+    orbit = steady["orbit_angle"][0]
+    spin = (1 - steady["roller_slip"][0]) * kinematic_spin
+    half_play = 0.5 * (p[rhs.R_OUTER] - p[rhs.R_INNER] - 2 * p[rhs.RADIUS])
+    for j in range(count):
+        position = 2 * np.pi * j / count
+        angle = position - np.pi / 2
+        approach = drop * np.sin(-angle) - half_play  # ring moved by (0, -drop)
+        centrifugal = p[rhs.M_ROLLER] * p[rhs.PITCH] * omega_c**2
+        _, outer = roller_loads(approach, centrifugal, whole)
+        rho = p[rhs.R_OUTER] - p[rhs.RADIUS] + (outer / whole) ** 0.9
+        k = rhs.RING + rhs.ROLLER_SIZE * j
+        state[k:k + 3] = rho * np.cos(angle), rho * np.sin(angle), 0.0
+        state[k + 3:k + 6] = -rho * omega_c * np.sin(angle), rho * omega_c * np.cos(angle), 0.0
+        state[k + 6:k + 9] = 0.0, 0.0, 1.0
+        state[k + 11] = omega_c - np.interp(position, orbit, spin, period=2 * np.pi)
+    c = rhs.RING + rhs.ROLLER_SIZE * count
+    phi = -np.pi / 2
+    eccentric = p[rhs.ECC_RADIAL] * np.array([np.cos(phi), np.sin(phi)])
+    state[c:c + 3] = eccentric[0], eccentric[1], p[rhs.ECC_AXIAL]
+    state[c + 3:c + 5] = -omega_c * eccentric[1], omega_c * eccentric[0]
+    state[c + 6:c + 10] = np.cos(phi / 2), 0.0, 0.0, np.sin(phi / 2)
+    state[c + 12] = omega_c
+    return state
+
+
+
+def _absolute_tolerances(count, relative):
+    """Absolute tolerances from the relative one: positions to ``1e-3 x relative`` m (10 nm at
+    1e-5), speeds to ``10 x relative`` m/s, axes to ``1e-3 x relative``, angular speeds to
+    ``10 x relative`` rad/s per mm of radius (1 rad/s at 1e-5 for a 10 mm roller)."""
+    atol = np.empty(rhs.state_size(count))
+    atol[0:2], atol[2:4] = 1e-3 * relative, 10 * relative
+    for j in range(count):
+        k = rhs.RING + rhs.ROLLER_SIZE * j
+        atol[k:k + 3], atol[k + 3:k + 6] = 1e-3 * relative, 10 * relative
+        atol[k + 6:k + 9], atol[k + 9:k + 12] = 1e-3 * relative, 1e5 * relative
+    c = rhs.RING + rhs.ROLLER_SIZE * count
+    atol[c:c + 3], atol[c + 3:c + 6] = 1e-3 * relative, 10 * relative
+    atol[c + 6:c + 10], atol[c + 10:c + 13] = 1e-3 * relative, 1e4 * relative
+    return atol
+
+
+def integrate(run, one):
+    """Integrate a :func:`setup`; returns the integrator's samples, element extremes, events,
+    steps and success."""
+    count, times = run["count"], run["times"]
+    elements = tuple(np.ascontiguousarray(e, dtype=float) for e in run["elements"])
+    rings, angles = elements[3].size, elements[4].size
+    record = (np.zeros((count, elements[1].size, elements[2].size)),
+              np.zeros((count, 2, rings, angles)), np.zeros((count, 2, rings, angles)),
+              np.zeros((count, 3)))
+    settled_from = _SETTLED * times[-1]
+    if one["integrator"] == "rk4":
+        return rhs.integrate_fixed(run["state"], times, run["p"], count, elements, record,
+                                   settled_from, float(one["rk4_step"]))
+    tolerance = float(one["relative_tolerance"])
+    return rhs.integrate(run["state"], times, run["p"], count, elements, record, settled_from,
+                         tolerance, _absolute_tolerances(count, tolerance), _MAX_STEPS)
+
+
+def _run(one):
+    status, run = setup(one)
+    if run is None:
+        return status, None
+    samples, arc, end, rib, events, steps, reached = integrate(run, one)
+    if not reached:
+        return NOT_CONVERGED, {"integration_steps": float(steps)}
+    return CONVERGED, dict(results(samples, run), pocket_arc_force=arc.transpose(0, 2, 1),
+                           pocket_end_clearance=end, rib_clearance=rib,
+                           pocket_arc_events=events[0], pocket_end_events=events[1],
+                           rib_events=events[2], integration_steps=float(steps))
+
+
+def results(samples, run):
+    """The outputs over time and their settled statistics from the sampled states."""
+    count, times, p = run["count"], run["times"], run["p"]
+    c = rhs.RING + rhs.ROLLER_SIZE * count
+    settled = times >= _SETTLED * times[-1]
+    turns = [rhs.rotation(q) for q in samples[:, c + 6:c + 10]]
+    axes_z = np.array([t[:, 2] for t in turns])
+    cage_rate = np.einsum("sij,sj->si", np.array(turns), samples[:, c + 10:c + 13])
+    slip = 1 - np.einsum("si,si->s", cage_rate, axes_z) / run["omega_kin"]
+    offset = np.array([t[:, 0] * p[rhs.ECC_RADIAL] + t[:, 2] * p[rhs.ECC_AXIAL] for t in turns])
+    centre = samples[:, c:c + 3] - offset
+    centre_speed = samples[:, c + 3:c + 6] - np.cross(cage_rate, offset)
+    speed = np.hypot(centre_speed[:, 0], centre_speed[:, 1])
+    rollers = samples[:, rhs.RING:c].reshape(times.size, count, rhs.ROLLER_SIZE)
+    position, velocity = rollers[..., 0:3], rollers[..., 3:6]
+    axis, omega = rollers[..., 6:9], rollers[..., 9:12]
+    rho2 = position[..., 0]**2 + position[..., 1]**2
+    orbit_rate = (position[..., 0] * velocity[..., 1] - position[..., 1] * velocity[..., 0]) \
+        / rho2
+    spin = orbit_rate * axis[..., 2] - np.einsum("stk,stk->st", omega, axis)
+    roller_slip = 1 - spin / run["spin_kin"]
+    radial = position[..., :2] / np.sqrt(rho2)[..., None]
+    along_radius = axis[..., 0] * radial[..., 0] + axis[..., 1] * radial[..., 1]
+    along_tangent = -axis[..., 0] * radial[..., 1] + axis[..., 1] * radial[..., 0]
+    skew = np.arctan2(along_tangent, axis[..., 2])
+    tilt = np.arctan2(along_radius, axis[..., 2])
+    quiet = speed[settled]
+    return {
+        "cage_slip": slip, "cage_x": centre[:, 0], "cage_y": centre[:, 1],
+        "cage_z": centre[:, 2], "whirl_speed": speed, "sample_time": times,
+        "roller_slip": roller_slip, "roller_skew": skew, "roller_tilt": tilt,
+        "mean_cage_slip": slip[settled].mean(),
+        "mean_roller_slip": roller_slip[settled].mean(),
+        "whirl_deviation_ratio": quiet.std(ddof=1) / quiet.mean(),
+        "rms_roller_skew": np.sqrt(np.mean(skew[settled] ** 2)),
+        "rms_roller_tilt": np.sqrt(np.mean(tilt[settled] ** 2)),
+    }
+
+
+def _sample_times(size, output_interval):
+    return np.arange(size) * output_interval
+
+
+def _arc_angles(values) -> int:
+    return 2 * int(np.max(values["arc_angle_points"]))
+
+
+def _face_fits(roller_diameter, end_chamfer):
+    return end_chamfer < 0.5 * roller_diameter
+
+
+def _rib_below_cage(inner_raceway_diameter, rib_height, cage_inner_diameter):
+    return inner_raceway_diameter + 2 * rib_height < cage_inner_diameter
+
+
+def _rk4_steps_fit(duration, rk4_step):
+    return duration / rk4_step <= 1e9
+
+
+def _skewed(rms_roller_skew):
+    return rms_roller_skew > np.radians(0.05)
+
+
+_PLANAR = {i.name: i for i in STEADY_MODELS[0].inputs}
+MODELS = [Model(
+    name="cage_dynamics_6dof",
+    function=cage_dynamics_6dof,
+    summary="Cylindrical roller bearing with circular pockets in space and time: rollers and "
+            "cage with six degrees of freedom, Winkler pocket, end-face and rib contacts, cage "
+            "mass eccentricity and ring misalignment (paper 002's own model).",
+    reference="Paper 002, sections 1.3-1.5 (eqs. 1-26), eqs. 27-28, section 3",
+    version="1",
+    inputs=tuple(_PLANAR[name] for name in STEADY_INPUTS if name != "branch") + (
+        Input("end_film_thickness", "mm", "axial play of a roller between the ribs (Table 2: "
+              "0.015)", default=0.015, minimum=0.0, exclusive_minimum=True,
+              label="rib axial clearance"),
+        Input("pocket_axial_clearance", "mm", "axial play of a roller between its pocket's "
+              "end faces (Table 2: 0.015)", default=0.015, minimum=0.0,
+              exclusive_minimum=True),
+        Input("rib_height", "mm", "inner-ring rib height above the raceway (not stated)",
+              default=2.0, minimum=0.0, exclusive_minimum=True),
+        Input("end_chamfer", "mm", "roller end chamfer: the end face is a disc of radius "
+              "D/2 - chamfer (not stated)", default=0.5, minimum=0.0),
+        Input("cage_density", "kg/m^3", "cage density (brass: 8600)", default=8600.0,
+              minimum=0.0, exclusive_minimum=True),
+        Input("cage_youngs_modulus", "GPa", "cage Young's modulus (brass: 106)", default=106.0,
+              minimum=0.0, exclusive_minimum=True),
+        Input("cage_poisson_ratio", "1", "cage Poisson's ratio (brass: 0.32)", default=0.32,
+              minimum=0.0, maximum=0.49),
+        Input("winkler_depth", "mm", "depth H of the Winkler layer of eq. 1 (not stated)",
+              default=1.0, minimum=0.0, exclusive_minimum=True),
+        Input("restitution", "1", "coefficient of restitution e of Qin's damping (eq. 1; "
+              "not stated)", default=0.8, minimum=0.0, exclusive_minimum=True, maximum=1.0),
+        Input("impact_speed", "m/s", "approach speed v- at which e holds (Qin's damping; "
+              "not stated)", default=0.1, minimum=0.0, exclusive_minimum=True),
+        Input("film_breakdown", "um", "smallest film the pocket and end films use",
+              default=1.0, minimum=0.0, exclusive_minimum=True),
+        Input("cage_eccentricity", "mm", "radial distance e_r of the cage's mass centre from "
+              "its geometric centre", default=0.0, minimum=0.0,
+              label="radial cage mass eccentricity"),
+        Input("cage_axial_eccentricity", "mm", "axial distance e_a of the cage's mass centre "
+              "from its geometric centre", default=0.0,
+              label="axial cage mass eccentricity"),
+        Input("misalignment_x", "deg", "inner ring turned about X (horizontal, across the "
+              "load)", default=0.0, minimum=-5.0, maximum=5.0),
+        Input("misalignment_y", "deg", "inner ring turned about Y (along the load)",
+              default=0.0, minimum=-5.0, maximum=5.0),
+        Input("inner_ring_mass", "kg", "inner ring mass", default=0.1, minimum=0.0,
+              exclusive_minimum=True),
+        Input("damping_ratio", "1", "damping ratio of the inner ring's radial motion",
+              default=0.1, minimum=0.0, maximum=2.0),
+        Input("duration", "s", "bearing time simulated", default=0.05, minimum=0.0,
+              exclusive_minimum=True, maximum=10.0),
+        Input("output_interval", "s", "interval of the returned samples", default=1e-4,
+              minimum=0.0, exclusive_minimum=True),
+        Input("slices", "1", "slices of each raceway contact", default=10, kind="count",
+              minimum=1, maximum=200),
+        Input("arc_axial_points", "1", "Winkler elements along a pocket arc", default=6,
+              kind="count", minimum=1, maximum=100),
+        Input("arc_angle_points", "1", "Winkler elements around each of a pocket's two arcs",
+              default=8, kind="count", minimum=1, maximum=100),
+        Input("face_rings", "1", "rings of equal area of a roller end face's elements",
+              default=4, kind="count", minimum=1, maximum=50),
+        Input("face_angles", "1", "angles of a roller end face's elements", default=12,
+              kind="count", minimum=3, maximum=360),
+        Input("relative_tolerance", "1", "relative tolerance of the adaptive integrator",
+              default=1e-5, minimum=1e-12, maximum=1e-2),
+        Input("integrator", "1", "adaptive (Dormand-Prince 5(4)) or rk4 (the paper's fixed "
+              "step)", default="adaptive", kind="choice", choices=INTEGRATORS),
+        Input("rk4_step", "s", "step of the rk4 integrator (the paper: 1e-7 s)", default=1e-7,
+              minimum=0.0, exclusive_minimum=True),
+        _PLANAR["branch"],
+    ),
+    outputs=(
+        Output("cage_slip", "percent", "cage slip 1 - omega_c / omega_c,kin (eq. 27)",
+               dims=("elapsed_time",), label="cage slip"),
+        Output("cage_x", "um", "cage geometric centre, horizontal", dims=("elapsed_time",),
+               label="cage centre x"),
+        Output("cage_y", "um", "cage geometric centre, vertical (load and gravity along -y)",
+               dims=("elapsed_time",), label="cage centre y"),
+        Output("cage_z", "um", "cage geometric centre, axial", dims=("elapsed_time",),
+               label="cage centre z"),
+        Output("whirl_speed", "mm/s", "speed of the cage's geometric centre (eq. 28's v)",
+               dims=("elapsed_time",)),
+        Output("sample_time", "ms", "bearing time of each sample", dims=("elapsed_time",)),
+        Output("roller_slip", "percent", "roller spin slip against kinematic spin",
+               dims=("elapsed_time", "roller")),
+        Output("roller_skew", "deg", "roller axis turned about the radial direction",
+               dims=("elapsed_time", "roller")),
+        Output("roller_tilt", "deg", "roller axis turned about the tangential direction",
+               dims=("elapsed_time", "roller")),
+        Output("mean_cage_slip", "percent", "cage slip over the settled second half",
+               label="mean cage slip"),
+        Output("mean_roller_slip", "percent", "roller slip over the settled half and all "
+               "rollers", label="mean roller slip"),
+        Output("whirl_deviation_ratio", "1", "standard deviation over mean of the cage "
+               "centre's speed, settled half (eq. 28)", label="whirl speed deviation ratio"),
+        Output("rms_roller_skew", "deg", "root mean square roller skew, settled half",
+               counted=("points with rms skew above 0.05 deg", _skewed)),
+        Output("rms_roller_tilt", "deg", "root mean square roller tilt, settled half"),
+        Output("pocket_arc_force", "N", "largest dry contact force of each pocket-arc "
+               "element over the settled samples", dims=("roller", "arc_axial", "arc_angle")),
+        Output("pocket_end_clearance", "um", "smallest gap of each roller end-face element "
+               "to its pocket's end face over the settled samples (negative: dry contact)",
+               dims=("roller", "end", "face_ring", "face_angle")),
+        Output("rib_clearance", "um", "smallest gap of each roller end-face element to the "
+               "rib over the settled samples (negative: dry contact)",
+               dims=("roller", "end", "face_ring", "face_angle")),
+        Output("pocket_arc_events", "1", "dry pocket-arc contacts begun between settled "
+               "samples, all rollers"),
+        Output("pocket_end_events", "1", "dry pocket end-face contacts begun between settled "
+               "samples, all rollers"),
+        Output("rib_events", "1", "dry rib contacts begun between settled samples, all "
+               "rollers"),
+        Output("integration_steps", "1", "steps of the integrator"),
+    ),
+    dim_sizes={"elapsed_time": _samples, "roller": "roller_count",
+               "arc_axial": "arc_axial_points", "arc_angle": _arc_angles, "end": ("left", "right"),
+               "face_ring": "face_rings", "face_angle": "face_angles"},
+    dim_coordinates={"elapsed_time": DimCoordinate(
+        ("output_interval",), _sample_times, "ms", "time since the steady start")},
+    constraints=STEADY_MODELS[0].constraints + (
+        Constraint(("roller_diameter", "end_chamfer"), _face_fits,
+                   "end_chamfer must be less than the roller's radius"),
+        Constraint(("inner_raceway_diameter", "rib_height", "cage_inner_diameter"),
+                   _rib_below_cage, "the rib must stay below the cage's bore"),
+        Constraint(("duration", "output_interval"), _samples_fit,
+                   "output_interval must not exceed duration, and at most 1e5 samples"),
+        Constraint(("duration", "rk4_step"), _rk4_steps_fit,
+                   "duration / rk4_step must not exceed 1e9 steps"),
+    ),
+    seconds_per_point=60.0,
+    points_per_call=1,
+)]

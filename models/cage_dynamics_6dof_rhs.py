@@ -1,0 +1,516 @@
+"""Right-hand side of the spatial transient model of a cylindrical roller bearing with circular
+pockets (paper 002, sections 1.3-1.5), compiled, and its integrators.
+
+Frames and state, all in the inertial frame ``O-XYZ`` (Z the outer ring's axis, Y up: load
+and gravity along -Y):
+
+- inner ring: centre ``x, y`` and velocity (its attitude, axial position and speed given);
+- roller ``j``: centre, velocity, axis unit vector ``a`` and angular velocity ``omega`` (a
+  roller is a rigid cylinder, symmetric about ``a``: its angle about ``a`` never enters);
+- cage: mass centre ``S``, velocity, attitude quaternion ``q`` (body frame: ``x_b`` through
+  pocket 1, ``z_b`` its axis) and angular velocity in the body frame ``Omega``; its geometric
+  centre is ``O_b = S - e_r x_b - e_a z_b``.
+
+Contacts (each element force acts on both bodies, at one point):
+
+- roller-raceway: slices along the roller, each with its own approach from the roller's
+  position and attitude (eqs. 18-21), Palmgren load with Hunt-Crossley damping, Gupta
+  traction against the slice's sliding velocity (skew makes it axial);
+- roller-pocket arc: a Winkler bed of elements over both arcs (eqs. 1, 2, 8, 9) when any
+  element is pressed in, otherwise a short-bearing film per element (eq. 3's role);
+- roller end - pocket end face and roller end - inner-ring rib: Winkler elements over the
+  roller's end faces (eqs. 1, 2, 10-17), dry when pressed in, otherwise oil shear (eq. 7);
+- roller windage (eq. 22), cage windage about its axis, gravity.
+"""
+from __future__ import annotations
+
+import numpy as np
+from numba import njit
+
+from .contact_laws import (damped_spring, palmgren_slice, regularised_direction,
+                           short_bearing_pressure, traction_coefficient)
+
+(OMEGA_I, LOAD, R_INNER, R_OUTER, RADIUS, LENGTH, PITCH, M_ROLLER, J_AXIAL, J_TRANSVERSE,
+ K_SLICE, HUNT, BED_POCKET, BED_RIB, MU_DRY, VISCOSITY, FILM_FLOOR, POCKET_RADIUS,
+ POCKET_PLAY, RIB_PLAY, RIB_RADIUS, CAGE_IN, CAGE_OUT, WINDAGE, CAGE_DRAG, M_RING, C_RING,
+ M_CAGE, J_CAGE_X, J_CAGE_Z, ECC_RADIAL, ECC_AXIAL, GRAVITY, MISALIGN_X, MISALIGN_Y,
+ TRACTION_A, TRACTION_B, TRACTION_C, TRACTION_D, RACEWAYS, POCKETS, ENDS, DRAG,
+ SLIP_SMOOTHING, ARC_AREA) = range(45)
+PARAMETERS = 45
+RING, ROLLER_SIZE, CAGE_SIZE = 4, 12, 13
+
+
+def state_size(count):
+    return RING + ROLLER_SIZE * count + CAGE_SIZE
+
+
+# Vectors are tuples of three floats: they live in registers, where small arrays would be
+# allocated on the heap millions of times per run.
+@njit(cache=True)
+def _add(a, b):
+    return (a[0] + b[0], a[1] + b[1], a[2] + b[2])
+
+
+@njit(cache=True)
+def _sub(a, b):
+    return (a[0] - b[0], a[1] - b[1], a[2] - b[2])
+
+
+@njit(cache=True)
+def _mul(k, a):
+    return (k * a[0], k * a[1], k * a[2])
+
+
+@njit(cache=True)
+def _cross(a, b):
+    return (a[1] * b[2] - a[2] * b[1], a[2] * b[0] - a[0] * b[2], a[0] * b[1] - a[1] * b[0])
+
+
+@njit(cache=True)
+def _dot(a, b):
+    return a[0] * b[0] + a[1] * b[1] + a[2] * b[2]
+
+
+@njit(cache=True)
+def _vector(array, start):
+    return (array[start], array[start + 1], array[start + 2])
+
+
+@njit(cache=True)
+def _tangential(v, normal):
+    """``v`` less its component along the unit ``normal``, and that part's length."""
+    t = _sub(v, _mul(_dot(v, normal), normal))
+    return t, np.sqrt(_dot(t, t))
+
+
+@njit(cache=True)
+def rotation(q):
+    """Rotation matrix (body to inertial) of a quaternion ``(w, x, y, z)``, normalised."""
+    w, x, y, z = q[0], q[1], q[2], q[3]
+    n = np.sqrt(w * w + x * x + y * y + z * z)
+    w, x, y, z = w / n, x / n, y / n, z / n
+    return np.array([[1 - 2 * (y * y + z * z), 2 * (x * y - w * z), 2 * (x * z + w * y)],
+                     [2 * (x * y + w * z), 1 - 2 * (x * x + z * z), 2 * (y * z - w * x)],
+                     [2 * (x * z - w * y), 2 * (y * z + w * x), 1 - 2 * (x * x + y * y)]])
+
+
+@njit(cache=True)
+def ring_axis(p):
+    """The inner ring's axis: ``e_z`` turned about X by ``misalignment_x``, then about Y."""
+    ax, ay = p[MISALIGN_X], p[MISALIGN_Y]
+    return (np.sin(ay), -np.sin(ax) * np.cos(ay), np.cos(ax) * np.cos(ay))
+
+
+@njit(cache=True)
+def derivatives(state, p, count, slice_z, arc_theta, arc_z, face_r, face_phi, face_area,
+                arc_force, end_gap, rib_gap, dry, observe):
+    """Time derivative of ``state``. With ``observe`` the element values of this state are
+    written to ``arc_force`` (dry force per pocket-arc element) [N], ``end_gap`` and
+    ``rib_gap`` (gap per end-face element, NaN where the face has no counterpart) [m] and
+    ``dry`` (roller x {arc, pocket end, rib}: 1 where in dry contact)."""
+    out = np.zeros_like(state)
+    g = p[GRAVITY]
+    radius, length = p[RADIUS], p[LENGTH]
+    zero = (0.0, 0.0, 0.0)
+    # Inner ring
+    ring_centre = (state[0], state[1], 0.0)
+    ring_velocity = (state[2], state[3], 0.0)
+    z_ring = ring_axis(p)
+    ring_spin = _mul(p[OMEGA_I], z_ring)
+    ring_force = (0.0, -p[LOAD] * p[RACEWAYS] - p[M_RING] * g, 0.0)
+    # Cage
+    c0 = RING + ROLLER_SIZE * count
+    mass_centre = _vector(state, c0)
+    cage_velocity = _vector(state, c0 + 3)
+    turn = rotation(state[c0 + 6:c0 + 10])
+    body_rate = _vector(state, c0 + 10)
+    x_b = (turn[0, 0], turn[1, 0], turn[2, 0])
+    y_b = (turn[0, 1], turn[1, 1], turn[2, 1])
+    z_b = (turn[0, 2], turn[1, 2], turn[2, 2])
+    cage_rate = _add(_add(_mul(body_rate[0], x_b), _mul(body_rate[1], y_b)),
+                     _mul(body_rate[2], z_b))  # inertial angular velocity
+    cage_centre = _sub(mass_centre, _add(_mul(p[ECC_RADIAL], x_b), _mul(p[ECC_AXIAL], z_b)))
+    cage_force = (0.0, -p[M_CAGE] * g, 0.0)
+    cage_moment = zero  # about the mass centre, inertial frame
+    n_arc, n_axial = arc_theta.size, arc_z.size
+    gaps = np.empty((n_arc, n_axial))
+    alongs = np.empty((n_arc, n_axial))
+    arc_cos, arc_sin = np.cos(arc_theta), np.sin(arc_theta)
+    face_cos, face_sin = np.cos(face_phi), np.sin(face_phi)
+    rim_low, rim_high = p[CAGE_IN] ** 2, p[CAGE_OUT] ** 2  # squared radii of the faces
+    rib_low, rib_high = p[R_INNER] ** 2, p[RIB_RADIUS] ** 2
+    for j in range(count):
+        k = RING + ROLLER_SIZE * j
+        centre = _vector(state, k)
+        velocity = _vector(state, k + 3)
+        axis = _vector(state, k + 6)
+        axis = _mul(1.0 / np.sqrt(_dot(axis, axis)), axis)
+        omega = _vector(state, k + 9)
+        force = (0.0, -p[M_ROLLER] * g, 0.0)
+        moment = zero
+        # -- roller-raceway slices (eqs. 18-21)
+        if p[RACEWAYS] > 0.0:
+            for z in slice_z:
+                middle = _add(centre, _mul(z, axis))
+                for inner in (True, False):
+                    if inner:
+                        d = _sub(middle, ring_centre)
+                        radial = _sub(d, _mul(_dot(d, z_ring), z_ring))
+                        rho = np.sqrt(_dot(radial, radial))
+                        normal = _mul(1.0 / rho, radial)  # from the ring's axis to the roller
+                        approach = p[R_INNER] + radius - rho
+                    else:
+                        rho = np.sqrt(middle[0] ** 2 + middle[1] ** 2)
+                        normal = (-middle[0] / rho, -middle[1] / rho, 0.0)  # towards the axis
+                        approach = rho + radius - p[R_OUTER]
+                    if approach <= 0.0:
+                        continue
+                    point = _sub(middle, _mul(radius, normal))
+                    relative = _add(velocity, _cross(omega, _sub(point, centre)))
+                    if inner:
+                        relative = _sub(relative, _add(ring_velocity, _cross(
+                            ring_spin, _sub(point, ring_centre))))
+                    rate = -_dot(relative, normal)  # approach speed
+                    load = palmgren_slice(p[K_SLICE], approach)
+                    push = damped_spring(load / approach, approach, rate, p[HUNT])
+                    sliding, speed = _tangential(relative, normal)
+                    on_roller = _mul(push, normal)
+                    if speed > 0.0:
+                        mu = traction_coefficient(speed, p[TRACTION_A], p[TRACTION_B],
+                                                  p[TRACTION_C], p[TRACTION_D])
+                        on_roller = _sub(on_roller, _mul(mu * push / speed, sliding))
+                    force = _add(force, on_roller)
+                    moment = _add(moment, _cross(_sub(point, centre), on_roller))
+                    if inner:
+                        ring_force = _sub(ring_force, on_roller)
+        # -- pocket j
+        angle = 2.0 * np.pi * j / count
+        x_c = _add(_mul(np.cos(angle), x_b), _mul(np.sin(angle), y_b))
+        y_c = _add(_mul(-np.sin(angle), x_b), _mul(np.cos(angle), y_b))
+        pocket = _add(cage_centre, _mul(p[PITCH], x_c))
+        if p[POCKETS] > 0.0:
+            pressed = False
+            to_pocket = _sub(pocket, centre)
+            for m in range(n_arc):
+                wall = _add(to_pocket, _mul(p[POCKET_RADIUS], _add(_mul(arc_cos[m], x_c),
+                                                                   _mul(arc_sin[m], y_c))))
+                for n in range(n_axial):
+                    arm = _add(wall, _mul(arc_z[n], z_b))  # roller centre to the element
+                    along = _dot(arm, axis)
+                    alongs[m, n] = along
+                    if abs(along) > 0.5 * length:
+                        gaps[m, n] = np.inf  # beyond the roller's end
+                        continue
+                    gaps[m, n] = np.sqrt(_dot(arm, arm) - along * along) - radius
+                    if gaps[m, n] < 0.0:
+                        pressed = True
+            spin = _dot(_sub(omega, cage_rate), z_b)  # roller relative to the cage
+            for m in range(n_arc):
+                cos_m, sin_m = arc_cos[m], arc_sin[m]
+                u = _add(_mul(cos_m, x_c), _mul(sin_m, y_c))
+                u_prime = _sub(_mul(cos_m, y_c), _mul(sin_m, x_c))
+                for n in range(n_axial):
+                    if observe:
+                        arc_force[j, m, n] = 0.0
+                    h = gaps[m, n]
+                    if h == np.inf or (pressed and h >= 0.0):
+                        continue
+                    element = _add(pocket, _add(_mul(p[POCKET_RADIUS], u),
+                                                _mul(arc_z[n], z_b)))
+                    along = alongs[m, n]
+                    foot = _add(centre, _mul(along, axis))
+                    normal = _mul(1.0 / (h + radius), _sub(element, foot))  # axis to wall
+                    roller_at_foot = _add(velocity, _cross(omega, _sub(foot, centre)))
+                    cage_at_element = _add(cage_velocity, _cross(
+                        cage_rate, _sub(element, mass_centre)))
+                    closing = _dot(_sub(roller_at_foot, cage_at_element), normal)
+                    if pressed:
+                        push = damped_spring(p[BED_POCKET] * p[ARC_AREA], -h, closing,
+                                             p[HUNT])
+                        surface = _add(velocity, _cross(omega, _sub(_add(
+                            foot, _mul(radius, normal)), centre)))
+                        sliding, speed = _tangential(_sub(surface, cage_at_element), normal)
+                        on_roller = _mul(-push, normal)
+                        if speed > 0.0:
+                            on_roller = _sub(on_roller, _mul(
+                                p[MU_DRY] * push * regularised_direction(
+                                    speed, p[SLIP_SMOOTHING]) / speed, sliding))
+                        if observe:
+                            arc_force[j, m, n] = push
+                    else:
+                        film = max(h, p[FILM_FLOOR])
+                        offset = _sub(foot, pocket)
+                        slope = _dot(offset, x_c) * sin_m - _dot(offset, y_c) * cos_m
+                        pressure = short_bearing_pressure(p[VISCOSITY], spin * slope, -closing,
+                                                          film, along, length)
+                        shear = p[VISCOSITY] * spin * radius / film
+                        on_roller = _mul(-p[ARC_AREA], _add(_mul(pressure, normal),
+                                                            _mul(shear, u_prime)))
+                    force = _add(force, on_roller)
+                    moment = _add(moment, _cross(_sub(element, centre), on_roller))
+                    cage_force = _sub(cage_force, on_roller)
+                    cage_moment = _sub(cage_moment, _cross(_sub(element, mass_centre),
+                                                           on_roller))
+            if observe:
+                dry[j, 0] = 1.0 if pressed else 0.0
+        # -- roller ends: pocket end faces and ribs (eqs. 10-17)
+        if p[ENDS] > 0.0:
+            radial = (centre[0], centre[1], 0.0)
+            first, size = _tangential(radial, axis)
+            first = _mul(1.0 / size, first)
+            second = _cross(axis, first)
+            for side in range(2):
+                sign = -1.0 if side == 0 else 1.0
+                end = _add(centre, _mul(sign * 0.5 * length, axis))
+                for r in range(face_r.size):
+                    for s in range(face_phi.size):
+                        element = _add(end, _mul(face_r[r], _add(
+                            _mul(face_cos[s], first), _mul(face_sin[s], second))))
+                        arm = _sub(element, centre)
+                        material = _add(velocity, _cross(omega, arm))
+                        area = face_area[r]
+                        if observe:
+                            end_gap[j, side, r, s] = np.nan
+                            rib_gap[j, side, r, s] = np.nan
+                        # pocket end face: the cage rim between its bore and outside diameter
+                        from_cage = _sub(element, cage_centre)
+                        reach2 = _dot(from_cage, from_cage) - _dot(from_cage, z_b) ** 2
+                        if rim_low <= reach2 <= rim_high:
+                            h = 0.5 * (length + p[POCKET_PLAY]) - sign * _dot(
+                                _sub(element, pocket), z_b)
+                            lever = _sub(element, mass_centre)
+                            other = _add(cage_velocity, _cross(cage_rate, lever))
+                            on_roller = _face_force(h, _mul(-sign, z_b), _sub(material, other),
+                                                    area, p[BED_POCKET], p)
+                            force = _add(force, on_roller)
+                            moment = _add(moment, _cross(arm, on_roller))
+                            cage_force = _sub(cage_force, on_roller)
+                            cage_moment = _sub(cage_moment, _cross(lever, on_roller))
+                            if observe:
+                                end_gap[j, side, r, s] = h
+                                if h < 0.0:
+                                    dry[j, 1] = 1.0
+                        # rib: the inner ring's face between its raceway and the rib's rim
+                        from_ring = _sub(element, ring_centre)
+                        reach2 = _dot(from_ring, from_ring) - _dot(from_ring, z_ring) ** 2
+                        if rib_low <= reach2 <= rib_high:
+                            h = 0.5 * (length + p[RIB_PLAY]) - sign * _dot(from_ring, z_ring)
+                            other = _add(ring_velocity, _cross(ring_spin, from_ring))
+                            on_roller = _face_force(h, _mul(-sign, z_ring),
+                                                    _sub(material, other), area, p[BED_RIB], p)
+                            force = _add(force, on_roller)
+                            moment = _add(moment, _cross(arm, on_roller))
+                            ring_force = _sub(ring_force, on_roller)
+                            if observe:
+                                rib_gap[j, side, r, s] = h
+                                if h < 0.0:
+                                    dry[j, 2] = 1.0
+        # -- windage on the roller's orbit (eq. 22)
+        if p[DRAG] > 0.0:
+            rho2 = centre[0] ** 2 + centre[1] ** 2
+            orbit_rate = (centre[0] * velocity[1] - centre[1] * velocity[0]) / rho2
+            drag = p[WINDAGE] * orbit_rate * abs(orbit_rate) / np.sqrt(rho2)
+            force = _add(force, (drag * centre[1], -drag * centre[0], 0.0))
+        # -- Newton-Euler for the roller, symmetric about its axis
+        acceleration = _symmetric_top(omega, axis, moment, p[J_AXIAL], p[J_TRANSVERSE])
+        axis_rate = _cross(omega, axis)
+        for i in range(3):
+            out[k + i] = velocity[i]
+            out[k + 3 + i] = force[i] / p[M_ROLLER]
+            out[k + 6 + i] = axis_rate[i]
+            out[k + 9 + i] = acceleration[i]
+    # Inner ring: free in X and Y
+    out[0], out[1] = state[2], state[3]
+    out[2] = (ring_force[0] - p[C_RING] * state[2]) / p[M_RING]
+    out[3] = (ring_force[1] - p[C_RING] * state[3]) / p[M_RING]
+    # Cage: Newton for the mass centre, Euler in the body frame
+    if p[DRAG] > 0.0:
+        rate = _dot(cage_rate, z_b)
+        cage_moment = _sub(cage_moment, _mul(p[CAGE_DRAG] * rate * np.sqrt(abs(rate)), z_b))
+    for i in range(3):
+        out[c0 + i] = cage_velocity[i]
+        out[c0 + 3 + i] = cage_force[i] / p[M_CAGE]
+    w, x, y, z = state[c0 + 6], state[c0 + 7], state[c0 + 8], state[c0 + 9]
+    a, b, c = body_rate
+    out[c0 + 6] = -0.5 * (x * a + y * b + z * c)
+    out[c0 + 7] = 0.5 * (w * a + y * c - z * b)
+    out[c0 + 8] = 0.5 * (w * b + z * a - x * c)
+    out[c0 + 9] = 0.5 * (w * c + x * b - y * a)
+    body_moment = (_dot(x_b, cage_moment), _dot(y_b, cage_moment), _dot(z_b, cage_moment))
+    jx, jz = p[J_CAGE_X], p[J_CAGE_Z]
+    out[c0 + 10] = (body_moment[0] - (jz - jx) * b * c) / jx
+    out[c0 + 11] = (body_moment[1] - (jx - jz) * a * c) / jx
+    out[c0 + 12] = body_moment[2] / jz
+    return out
+
+
+@njit(cache=True)
+def _face_force(gap, normal, sliding, area, bed, p):
+    """Force on the roller of one end-face element [N]: the Winkler bed and Coulomb friction
+    when pressed in (eqs. 1, 2), the oil's shear ``eta v A / h`` otherwise (eq. 7). ``normal``
+    points from the face into the roller; ``sliding`` is the roller's velocity less the
+    face's at the element."""
+    tangential, speed = _tangential(sliding, normal)
+    if gap < 0.0:
+        push = damped_spring(bed * area, -gap, -_dot(sliding, normal), p[HUNT])
+        force = _mul(push, normal)
+        if speed > 0.0:
+            force = _sub(force, _mul(p[MU_DRY] * push * regularised_direction(
+                speed, p[SLIP_SMOOTHING]) / speed, tangential))
+        return force
+    return _mul(-p[VISCOSITY] * area / max(gap, p[FILM_FLOOR]), tangential)
+
+
+@njit(cache=True)
+def _symmetric_top(omega, axis, moment, j_axial, j_transverse):
+    """Angular acceleration of a rigid body symmetric about ``axis`` (inertial frame): the
+    spin ``s = omega . a`` obeys ``J_a s' = M . a``, the transverse momentum
+    ``J_t (omega - s a)`` takes the rest of ``M`` (Euler's equations for a symmetric top)."""
+    spin = _dot(omega, axis)
+    spin_rate = _dot(moment, axis) / j_axial
+    axis_rate = _cross(omega, axis)
+    transverse = _sub(_sub(moment, _mul(j_axial * spin_rate, axis)),
+                      _mul(j_axial * spin, axis_rate))
+    return _add(_mul(1.0 / j_transverse, transverse),
+                _add(_mul(spin_rate, axis), _mul(spin, axis_rate)))
+
+
+# Dormand-Prince 5(4) tableau
+_C = np.array([0.0, 1 / 5, 3 / 10, 4 / 5, 8 / 9, 1.0, 1.0])
+_A = np.array([
+    [0.0, 0.0, 0.0, 0.0, 0.0, 0.0],
+    [1 / 5, 0.0, 0.0, 0.0, 0.0, 0.0],
+    [3 / 40, 9 / 40, 0.0, 0.0, 0.0, 0.0],
+    [44 / 45, -56 / 15, 32 / 9, 0.0, 0.0, 0.0],
+    [19372 / 6561, -25360 / 2187, 64448 / 6561, -212 / 729, 0.0, 0.0],
+    [9017 / 3168, -355 / 33, 46732 / 5247, 49 / 176, -5103 / 18656, 0.0],
+    [35 / 384, 0.0, 500 / 1113, 125 / 192, -2187 / 6784, 11 / 84]])
+_ERROR = np.array([71 / 57600, 0.0, -71 / 16695, 71 / 1920, -17253 / 339200, 22 / 525,
+                   -1 / 40])
+
+
+@njit(cache=True)
+def _normalise(state, count):
+    """Project the roller axes and the cage's quaternion back to unit length."""
+    for j in range(count):
+        k = RING + ROLLER_SIZE * j + 6
+        state[k:k + 3] /= np.sqrt(np.sum(state[k:k + 3] ** 2))
+    c = RING + ROLLER_SIZE * count + 6
+    state[c:c + 4] /= np.sqrt(np.sum(state[c:c + 4] ** 2))
+
+
+@njit(cache=True)
+def _observe(state, p, count, geometry, record, settled, arc_max, end_min, rib_min, last,
+             events):
+    """Element values of one sample: the largest arc force, the smallest end and rib gaps
+    over the settled samples, and the dry contacts that began since the last sample."""
+    slice_z, arc_theta, arc_z, face_r, face_phi, face_area = geometry
+    arc_force, end_gap, rib_gap, dry = record
+    dry[:, :] = 0.0
+    derivatives(state, p, count, slice_z, arc_theta, arc_z, face_r, face_phi, face_area,
+                arc_force, end_gap, rib_gap, dry, True)
+    if not settled:
+        last[:, :] = dry
+        return
+    np.maximum(arc_max, arc_force, arc_max)
+    np.fmin(end_min, end_gap, end_min)
+    np.fmin(rib_min, rib_gap, rib_min)
+    for j in range(count):
+        for kind in range(3):
+            if dry[j, kind] > 0.0 and last[j, kind] == 0.0:
+                events[kind] += 1
+    last[:, :] = dry
+
+
+@njit(cache=True)
+def integrate(state, times, p, count, geometry, record, settled_from, rtol, atol, max_steps):
+    """Dormand-Prince 5(4) with step-size control, each sample time hit by a step.
+
+    Returns the samples ``(times, state)``, the settled samples' element extremes (see
+    :func:`_observe`), the contact events, the steps taken and whether it reached the end.
+    """
+    slice_z, arc_theta, arc_z, face_r, face_phi, face_area = geometry
+    arc_force, end_gap, rib_gap, dry = record
+    samples = np.full((times.size, state.size), np.nan)
+    arc_max = np.zeros_like(arc_force)
+    end_min = np.full(end_gap.shape, np.nan)
+    rib_min = np.full(rib_gap.shape, np.nan)
+    last = np.zeros_like(dry)
+    events = np.zeros(3)
+    y = state.copy()
+    stages = np.empty((7, y.size))
+    stages[0] = derivatives(y, p, count, slice_z, arc_theta, arc_z, face_r, face_phi,
+                            face_area, arc_force, end_gap, rib_gap, dry, False)
+    t, h, steps = times[0], 1e-7, 0
+    samples[0] = y
+    _observe(y, p, count, geometry, record, t >= settled_from, arc_max, end_min, rib_min,
+             last, events)
+    for index in range(1, times.size):
+        while t < times[index]:
+            if steps >= max_steps or h < 1e-15:
+                return samples, arc_max, end_min, rib_min, events, steps, False
+            step = min(h, times[index] - t)
+            for s in range(1, 7):
+                trial = y.copy()
+                for r in range(s):
+                    if _A[s, r] != 0.0:
+                        trial += step * _A[s, r] * stages[r]
+                stages[s] = derivatives(trial, p, count, slice_z, arc_theta, arc_z, face_r,
+                                        face_phi, face_area, arc_force, end_gap, rib_gap, dry,
+                                        False)
+            # the 6th stage's argument is the 5th-order solution (first same as last)
+            error = np.zeros_like(y)
+            for s in range(7):
+                error += step * _ERROR[s] * stages[s]
+            scale = atol + rtol * np.maximum(np.abs(y), np.abs(trial))
+            norm = np.sqrt(np.mean((error / scale) ** 2))
+            steps += 1
+            if not np.isfinite(norm):
+                h = 0.1 * step
+                continue
+            if norm <= 1.0:
+                t = t + step if step < times[index] - t else times[index]
+                y = trial
+                _normalise(y, count)
+                stages[0] = stages[6]
+            h = step * min(5.0, max(0.2, 0.9 * norm ** -0.2)) if norm > 0.0 else 5.0 * step
+        samples[index] = y
+        _observe(y, p, count, geometry, record, t >= settled_from, arc_max, end_min,
+                 rib_min, last, events)
+    return samples, arc_max, end_min, rib_min, events, steps, True
+
+
+@njit(cache=True)
+def integrate_fixed(state, times, p, count, geometry, record, settled_from, step):
+    """The classical fourth-order Runge-Kutta method at a fixed ``step`` (paper 002's
+    method, 1e-7 s); the same samples and extremes as :func:`integrate`."""
+    slice_z, arc_theta, arc_z, face_r, face_phi, face_area = geometry
+    arc_force, end_gap, rib_gap, dry = record
+    samples = np.full((times.size, state.size), np.nan)
+    arc_max = np.zeros_like(arc_force)
+    end_min = np.full(end_gap.shape, np.nan)
+    rib_min = np.full(rib_gap.shape, np.nan)
+    last = np.zeros_like(dry)
+    events = np.zeros(3)
+    y = state.copy()
+    samples[0] = y
+    _observe(y, p, count, geometry, record, times[0] >= settled_from, arc_max, end_min,
+             rib_min, last, events)
+    steps = 0
+    for index in range(1, times.size):
+        count_steps = max(1, int(np.round((times[index] - times[index - 1]) / step)))
+        h = (times[index] - times[index - 1]) / count_steps
+        for _ in range(count_steps):
+            k1 = derivatives(y, p, count, *geometry, *record, False)
+            k2 = derivatives(y + 0.5 * h * k1, p, count, *geometry, *record, False)
+            k3 = derivatives(y + 0.5 * h * k2, p, count, *geometry, *record, False)
+            k4 = derivatives(y + h * k3, p, count, *geometry, *record, False)
+            y = y + h / 6.0 * (k1 + 2.0 * k2 + 2.0 * k3 + k4)
+            _normalise(y, count)
+            steps += 1
+        if not np.all(np.isfinite(y)):
+            return samples, arc_max, end_min, rib_min, events, steps, False
+        samples[index] = y
+        _observe(y, p, count, geometry, record, times[index] >= settled_from, arc_max,
+                 end_min, rib_min, last, events)
+    return samples, arc_max, end_min, rib_min, events, steps, True
