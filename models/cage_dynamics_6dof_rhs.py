@@ -423,6 +423,15 @@ def _observe(state, p, count, geometry, record, settled, arc_max, end_min, rib_m
 
 
 @njit(cache=True)
+def _accumulators(times, state, record):
+    """The samples and the element extremes of a run, before its first sample."""
+    arc_force, end_gap, rib_gap, dry = record
+    return (np.full((times.size, state.size), np.nan), np.zeros_like(arc_force),
+            np.full(end_gap.shape, np.nan), np.full(rib_gap.shape, np.nan),
+            np.zeros_like(dry), np.zeros(3))
+
+
+@njit(cache=True)
 def integrate(state, times, p, count, geometry, record, settled_from, rtol, atol, max_steps):
     """Dormand-Prince 5(4) with step-size control, each sample time hit by a step.
 
@@ -431,12 +440,7 @@ def integrate(state, times, p, count, geometry, record, settled_from, rtol, atol
     """
     slice_z, arc_theta, arc_z, face_r, face_phi, face_area = geometry
     arc_force, end_gap, rib_gap, dry = record
-    samples = np.full((times.size, state.size), np.nan)
-    arc_max = np.zeros_like(arc_force)
-    end_min = np.full(end_gap.shape, np.nan)
-    rib_min = np.full(rib_gap.shape, np.nan)
-    last = np.zeros_like(dry)
-    events = np.zeros(3)
+    samples, arc_max, end_min, rib_min, last, events = _accumulators(times, state, record)
     y = state.copy()
     stages = np.empty((7, y.size))
     stages[0] = derivatives(y, p, count, slice_z, arc_theta, arc_z, face_r, face_phi,
@@ -484,14 +488,7 @@ def integrate(state, times, p, count, geometry, record, settled_from, rtol, atol
 def integrate_fixed(state, times, p, count, geometry, record, settled_from, step):
     """The classical fourth-order Runge-Kutta method at a fixed ``step`` (paper 002's
     method, 1e-7 s); the same samples and extremes as :func:`integrate`."""
-    slice_z, arc_theta, arc_z, face_r, face_phi, face_area = geometry
-    arc_force, end_gap, rib_gap, dry = record
-    samples = np.full((times.size, state.size), np.nan)
-    arc_max = np.zeros_like(arc_force)
-    end_min = np.full(end_gap.shape, np.nan)
-    rib_min = np.full(rib_gap.shape, np.nan)
-    last = np.zeros_like(dry)
-    events = np.zeros(3)
+    samples, arc_max, end_min, rib_min, last, events = _accumulators(times, state, record)
     y = state.copy()
     samples[0] = y
     _observe(y, p, count, geometry, record, times[0] >= settled_from, arc_max, end_min,
