@@ -7,6 +7,7 @@ from pathlib import Path
 
 import matplotlib.pyplot as plt
 import numpy as np
+from matplotlib.colors import TwoSlopeNorm
 
 from bearing_sweep.plotting import at, conditions, in_unit, label, result, save
 
@@ -187,17 +188,24 @@ def _face_map(run, variable: str, figures: Path, file: str, case: str):
     rings, angles = gap.face_ring.size, gap.face_angle.size
     ring_edges = radius * np.sqrt(np.arange(rings + 1) / rings)
     angle_edges = 2 * np.pi * np.arange(angles + 1) / angles
-    limit = float(np.nanmax(np.abs(gap))) if np.isfinite(gap).any() else 1.0
-    figure, axes = plt.subplots(1, 2, figsize=(9, 4.4), subplot_kw={"projection": "polar"})
+    # Red below zero (dry contact) and blue above, each side on its own scale: a contact of
+    # tenths of a micrometre stays visible beside gaps of micrometres.
+    low, high = (float(f(gap)) if np.isfinite(gap).any() else 0.0 for f in (np.nanmin,
+                                                                              np.nanmax))
+    scale = TwoSlopeNorm(vcenter=0.0, vmin=min(low, -1e-3), vmax=max(high, 1e-3))
+    figure, axes = plt.subplots(1, 2, figsize=(10, 4.6), subplot_kw={"projection": "polar"},
+                                gridspec_kw={"wspace": 0.45})
     for axis, end in zip(axes, gap.end.values):
         one = gap.sel(end=end).transpose("face_ring", "face_angle")
         image = axis.pcolormesh(angle_edges, ring_edges, np.ma.masked_invalid(one.values),
-                                cmap="RdBu", vmin=-limit, vmax=limit)
+                                cmap="RdBu", norm=scale)
         axis.set_title(f"{end} end (smallest {float(one.min()):.3g} um)", fontsize=9)
         axis.set_yticks(ring_edges[1:])
         axis.set_yticklabels([f"{r:.1f} mm" for r in ring_edges[1:]], fontsize=6)
         axis.tick_params(axis="x", labelsize=7)
-    figure.colorbar(image, ax=axes, label=f"{variable.replace('_', ' ')} [um]", shrink=0.8)
+    ticks = [scale.vmin, scale.vmin / 2, 0.0, scale.vmax / 2, scale.vmax]
+    figure.colorbar(image, ax=axes, label=f"{variable.replace('_', ' ')} [um]", shrink=0.8,
+                    ticks=ticks, format="%.2g")
     figure.suptitle(_title(run, f"{case}; smallest over rollers and the settled half"),
                     fontsize=9)
     figure.savefig(Path(figures) / file, dpi=110)  # tight_layout does not suit polar axes
