@@ -432,11 +432,12 @@ MODELS = [Model(
               label="rib axial clearance"),
         Input("pocket_axial_clearance", "mm", "axial play of a roller between its pocket's "
               "end faces (Table 2: 0.015)", default=0.015, minimum=0.0,
-              exclusive_minimum=True),
+              exclusive_minimum=True, label="pocket axial play"),
         Input("rib_height", "mm", "inner-ring rib height above the raceway (not stated)",
               default=2.0, minimum=0.0, exclusive_minimum=True),
         Input("end_chamfer", "mm", "roller end chamfer: the end face is a disc of radius "
-              "D/2 - chamfer (not stated)", default=0.5, minimum=0.0),
+              "D/2 - chamfer (not stated)", default=0.5, minimum=0.0,
+              label="roller end chamfer"),
         Input("cage_density", "kg/m^3", "cage density (brass: 8600)", default=8600.0,
               minimum=0.0, exclusive_minimum=True),
         Input("cage_youngs_modulus", "GPa", "cage Young's modulus (brass: 106)", default=106.0,
@@ -474,9 +475,10 @@ MODELS = [Model(
         Input("arc_axial_points", "1", "Winkler elements along a pocket arc", default=6,
               kind="count", minimum=1, maximum=100),
         Input("arc_angle_points", "1", "Winkler elements around each of a pocket's two arcs",
-              default=8, kind="count", minimum=1, maximum=100),
+              default=8, kind="count", minimum=1, maximum=100,
+              label="pocket-arc elements around each arc"),
         Input("face_rings", "1", "rings of equal area of a roller end face's elements",
-              default=4, kind="count", minimum=1, maximum=50),
+              default=4, kind="count", minimum=1, maximum=50, label="end-face element rings"),
         Input("face_angles", "1", "angles of a roller end face's elements", default=12,
               kind="count", minimum=3, maximum=360),
         Input("relative_tolerance", "1", "relative tolerance of the adaptive integrator",
@@ -504,7 +506,7 @@ MODELS = [Model(
         Output("roller_skew", "deg", "roller axis turned about the radial direction",
                dims=("elapsed_time", "roller")),
         Output("roller_tilt", "deg", "roller axis turned about the tangential direction",
-               dims=("elapsed_time", "roller")),
+               dims=("elapsed_time", "roller"), label="roller tilt"),
         Output("mean_cage_slip", "percent", "cage slip over the settled second half",
                label="mean cage slip"),
         Output("mean_roller_slip", "percent", "roller slip over the settled half and all "
@@ -515,17 +517,19 @@ MODELS = [Model(
                counted=("points with rms skew above 0.05 deg", _skewed)),
         Output("rms_roller_tilt", "deg", "root mean square roller tilt, settled half"),
         Output("pocket_arc_force", "N", "largest dry contact force of each pocket-arc "
-               "element over the settled samples", dims=("roller", "arc_axial", "arc_angle")),
+               "element over the settled samples", dims=("roller", "arc_axial", "arc_angle"),
+               label="largest dry pocket-arc force"),
         Output("pocket_end_clearance", "um", "smallest gap of each roller end-face element "
                "to its pocket's end face over the settled samples (negative: dry contact)",
-               dims=("roller", "end", "face_ring", "face_angle")),
+               dims=("roller", "end", "face_ring", "face_angle"),
+               label="smallest pocket end-face gap"),
         Output("rib_clearance", "um", "smallest gap of each roller end-face element to the "
                "rib over the settled samples (negative: dry contact)",
-               dims=("roller", "end", "face_ring", "face_angle")),
+               dims=("roller", "end", "face_ring", "face_angle"), label="smallest rib gap"),
         Output("pocket_arc_events", "1", "dry pocket-arc contacts begun between settled "
-               "samples, all rollers"),
+               "samples, all rollers", label="dry pocket-arc contacts"),
         Output("pocket_end_events", "1", "dry pocket end-face contacts begun between settled "
-               "samples, all rollers"),
+               "samples, all rollers", label="dry pocket end-face contacts"),
         Output("rib_events", "1", "dry rib contacts begun between settled samples, all "
                "rollers"),
         Output("integration_steps", "1", "steps of the integrator"),

@@ -1,4 +1,5 @@
 """The papers' studies regenerate every figure and stated number from their netCDF files."""
+import re
 import subprocess
 import sys
 from pathlib import Path
@@ -7,6 +8,7 @@ import numpy as np
 import pytest
 import xarray as xr
 
+import bearing_sweep
 from bearing_sweep import units
 from bearing_sweep.plotting import at, conditions, in_unit
 from bearing_sweep.store import open_result
@@ -80,6 +82,84 @@ def test_a_study_selects_by_quantity_not_by_stored_numbers(name, tmp_path):
     (tmp_path / "redrawn").mkdir()
     module.draw(tmp_path / "other", tmp_path / "redrawn")
     assert sorted(p.name for p in (tmp_path / "redrawn").iterdir()) == sorted(module.FIGURES)
+
+
+@pytest.fixture(scope="module")
+def short_3d_results(tmp_path_factory):
+    """The cage_dynamics_3d study's own sweeps cut to 2 ms with coarse elements: the model's
+    real output for its figure script, in seconds (its full sweeps take minutes; the model's
+    first compile in a fresh checkout about 30 s)."""
+    folder = tmp_path_factory.mktemp("cage_dynamics_3d")
+    coarse = ('duration = "2 ms"\noutput_interval = "0.1 ms"\nslices = 4\narc_axial_points = 2\n'
+              'arc_angle_points = 2\nface_rings = 2\nface_angles = 6')
+    for definition in find_studies(STUDIES)["cage_dynamics_3d"].definitions:
+        text = re.sub(r"^output_interval = .*\n", "", definition.read_text(), flags=re.M)
+        short, replaced = re.subn(r"^duration = .*$", coarse, text, flags=re.M)
+        assert replaced == 1, definition
+        path = folder / definition.name
+        path.write_text(short)
+        bearing_sweep.run(path, output=folder / f"{definition.stem}.nc", workers=0,
+                          progress=False).close()
+    return folder
+
+
+def test_the_3d_study_draws_every_figure_and_computes_every_claim(short_3d_results,
+                                                                    tmp_path):
+    study = find_studies(STUDIES)["cage_dynamics_3d"]
+    module = study.figures_module()
+    module.draw(short_3d_results, tmp_path)
+    assert sorted(p.name for p in tmp_path.iterdir()) == sorted(module.FIGURES)
+    assert all((tmp_path / name).stat().st_size > 10_000 for name in module.FIGURES)
+    ours = module.ours(short_3d_results)
+    # Only a claim that says when it is "not computed" may be missing (a share of dry
+    # elements where none is dry, as in 2 ms).
+    undefined = {claim["id"] for claim in study.claims()
+                 if "not computed when" in claim["assumptions"]}
+    assert 0 < len(undefined) < len(study.claims())
+    assert {claim["id"] for claim in study.claims()} - set(ours) <= undefined
+    assert set(ours) <= {claim["id"] for claim in study.claims()}
+
+
+def test_the_3d_study_selects_by_quantity_not_by_stored_numbers(short_3d_results, tmp_path):
+    module = find_studies(STUDIES)["cage_dynamics_3d"].figures_module()
+    assert _store_in_other_units(short_3d_results, tmp_path / "other") > 0
+    assert module.ours(tmp_path / "other") == pytest.approx(module.ours(short_3d_results),
+                                                            rel=1e-9, nan_ok=True)
+
+
+def _face(rows):
+    """An end-face map of both ends (the same on each), rings x angles, NaN: no counterpart."""
+    values = np.array(rows, dtype=float)
+    return xr.DataArray(np.stack([values, values]), dims=("end", "face_ring", "face_angle"),
+                        coords={"end": ["left", "right"]})
+
+
+def test_edge_elements_are_on_the_outer_ring_or_beside_a_missing_one():
+    module = find_studies(STUDIES)["cage_dynamics_3d"].figures_module()
+    gap = _face([[1, 1, 1, 1, 1, 1], [1, 1, 1, 1, 1, 1], [1, 1, np.nan, 1, 1, 1],
+                 [1, 1, 1, 1, 1, 1]]).sel(end="left")
+    expected = np.zeros((4, 6), dtype=bool)
+    expected[3] = True  # the outermost ring
+    expected[2, [1, 3]] = True  # beside the missing element, round the face
+    expected[[1, 3], 2] = True  # beside it, across the rings
+    assert (module._edge(gap) == expected).all()
+
+
+def test_edge_share_counts_the_dry_elements_at_the_edge():
+    module = find_studies(STUDIES)["cage_dynamics_3d"].figures_module()
+    # dry: one inner element (ring 1) and one on the outer ring, on each end
+    gap = _face([[-1, 1, 1, 1], [1, 1, 1, 1], [1, 1, -1, 1]])
+    assert module._edge_share(gap) == 0.5
+    assert module._edge_share(_face([[1, 1, 1], [1, 1, 1]])) is None
+
+
+def test_two_sided_is_the_larger_of_the_two_ends_smallest_gaps():
+    module = find_studies(STUDIES)["cage_dynamics_3d"].figures_module()
+    gap = _face([[-0.3, 0.2], [0.5, np.nan]])
+    gap.loc[{"end": "right"}] = [[0.1, 0.2], [0.4, np.nan]]
+    assert module._two_sided(gap) == pytest.approx(0.1)  # only the left end touches
+    # left (-0.3, 0.2, 0.5) against right (0.1, 0.2, 0.4): Pearson's r by hand
+    assert module._alike(gap) == pytest.approx(0.11667 / np.sqrt(0.32667 * 0.04667), abs=1e-4)
 
 
 def _loads(values_in_n):

@@ -1,0 +1,309 @@
+"""Paper 002's Figs. 18-33 from the spatial model ``cage_dynamics_6dof``: cage whirl, cage and
+roller slip, roller skew and tilt, and the pocket, end-face and rib contacts, with cage mass
+eccentricity (section 3.1) and ring misalignment (section 3.2), from the netCDF results only.
+Results are selected by quantity (``at``) and shown in the units chosen here (``in_unit``),
+whatever units the files store them in."""
+from pathlib import Path
+
+import matplotlib.pyplot as plt
+import numpy as np
+from matplotlib.colors import TwoSlopeNorm
+
+from bearing_sweep.plotting import at, conditions, in_unit, label, result, save
+
+#: The paper's eccentricity cases (e_r, e_a), in the order of its legends.
+CASES = (("0 mm", "0 mm"), ("2 mm", "0 mm"), ("0 mm", "2 mm"), ("2 mm", "2 mm"))
+MISALIGNED = {"about_x": "1 deg about X", "about_y": "1 deg about Y"}
+ROLLER = 1  # the roller whose histories are drawn (on the load line at the start)
+_SETTLED = 0.5  # the model's settled part: the last half of each run
+
+_TIME = "elapsed time since the steady start"
+FIGURES = {
+    "fig18_whirl_eccentricity.png": "Fig. 18: path of the cage's geometric centre over the "
+                                    "settled half for the four cage mass eccentricities "
+                                    "(e_r, e_a); sigma_b: eq. 28's speed deviation ratio.",
+    "fig19_cage_slip_eccentricity.png": "Fig. 19: cage slip against time for the four "
+                                        "eccentricities.",
+    "fig20_roller_slip_eccentricity.png": f"Fig. 20: spin slip of roller {ROLLER} against "
+                                          "time for the four eccentricities.",
+    "fig21_skew_eccentricity.png": f"Fig. 21: skew of roller {ROLLER} (its axis turned about "
+                                   "the radial direction) against time.",
+    "fig22_tilt_eccentricity.png": f"Fig. 22: tilt of roller {ROLLER} (its axis turned about "
+                                   "the tangential direction) against time.",
+    "fig23_arc_force_eccentricity.png": "Fig. 23: largest dry force of each pocket-arc "
+                                        "element over the settled half, in the pocket with "
+                                        "the largest force, for the four eccentricities "
+                                        "(arc elements 1 and 16: the arcs' edges at the cage "
+                                        "bore, 8 and 9: at its outside diameter).",
+    "fig24_end_clearance_eccentricity.png": "Fig. 24: smallest gap between the roller end "
+                                            "faces and their pockets' end faces over the "
+                                            "settled half and all rollers, e_r = e_a = 2 mm "
+                                            "(negative: dry contact; blank: no cage face "
+                                            "there). The face seen along the roller's axis, "
+                                            "0 deg radially outwards.",
+    "fig25_rib_clearance_eccentricity.png": "Fig. 25: smallest gap between the roller end "
+                                            "faces and the inner ring's ribs, same run and "
+                                            "view (blank: above the rib).",
+    "fig26_whirl_misalignment.png": "Fig. 26: path of the cage's geometric centre over the "
+                                    "settled half, aligned and with the inner ring turned "
+                                    "1 deg about X and about Y.",
+    "fig27_cage_slip_misalignment.png": "Fig. 27: cage slip against time, misaligned and "
+                                        "aligned.",
+    "fig28_roller_slip_misalignment.png": f"Fig. 28: spin slip of roller {ROLLER} against "
+                                          "time, misaligned and aligned.",
+    "fig29_skew_misalignment.png": f"Fig. 29: skew of roller {ROLLER} against time, "
+                                   "misaligned and aligned.",
+    "fig30_tilt_misalignment.png": f"Fig. 30: tilt of roller {ROLLER} against time, "
+                                   "misaligned and aligned.",
+    "fig31_arc_force_misalignment.png": "Fig. 31: largest dry force of each pocket-arc "
+                                        "element, 1 deg about X, in the pocket with the "
+                                        "largest force.",
+    "fig32_end_clearance_misalignment.png": "Fig. 32: smallest gap between the roller end "
+                                            "faces and their pockets' end faces, 1 deg about "
+                                            "X, all rollers.",
+    "fig33_rib_clearance_misalignment.png": "Fig. 33: smallest gap between the roller end "
+                                            "faces and the ribs, 1 deg about X, all rollers.",
+}
+
+
+def _eccentricity(results):
+    """The eccentricity runs as ``{(e_r, e_a): one run}`` and the whole dataset."""
+    data = result(results, "eccentricity")
+    return {case: at(data, cage_eccentricity=case[0], cage_axial_eccentricity=case[1])
+            for case in CASES}, data
+
+
+def _misalignment(results):
+    """The aligned run and the two misaligned ones, as ``{name: one run}``."""
+    aligned = at(result(results, "eccentricity"), cage_eccentricity="0 mm",
+                 cage_axial_eccentricity="0 mm")
+    data = result(results, "misalignment")
+    return {"aligned": aligned, **{name: data.sel(misalignment=name) for name in MISALIGNED}}
+
+
+def _name(case) -> str:
+    if isinstance(case, tuple):
+        return f"e_r = {case[0]}, e_a = {case[1]}"
+    return MISALIGNED.get(case, case)
+
+
+def _settled(run):
+    return (run.elapsed_time >= _SETTLED * run.elapsed_time.max()).values
+
+
+def _title(data, what: str) -> str:
+    return conditions(data, "radial_load", "speed", width=None) + "; " + what
+
+
+def draw(results: Path, figures: Path):
+    results, figures = Path(results), Path(figures)
+    runs, data = _eccentricity(results)
+    _orbits(runs, data, figures, "fig18_whirl_eccentricity.png")
+    _histories(runs, data, figures, "eccentricity", "cage mass eccentricity")
+    _arc_maps({c: runs[c] for c in CASES}, data, figures, "fig23_arc_force_eccentricity.png")
+    combined = runs[("2 mm", "2 mm")]
+    _face_map(combined, "pocket_end_clearance", figures,
+              "fig24_end_clearance_eccentricity.png", _name(("2 mm", "2 mm")))
+    _face_map(combined, "rib_clearance", figures, "fig25_rib_clearance_eccentricity.png",
+              _name(("2 mm", "2 mm")))
+    turned = _misalignment(results)
+    _orbits(turned, data, figures, "fig26_whirl_misalignment.png")
+    _histories(turned, data, figures, "misalignment", "inner ring")
+    _arc_maps({"about_x": turned["about_x"]}, data, figures,
+              "fig31_arc_force_misalignment.png")
+    _face_map(turned["about_x"], "pocket_end_clearance", figures,
+              "fig32_end_clearance_misalignment.png", MISALIGNED["about_x"])
+    _face_map(turned["about_x"], "rib_clearance", figures,
+              "fig33_rib_clearance_misalignment.png", MISALIGNED["about_x"])
+
+
+def _orbits(runs: dict, data, figures: Path, file: str):
+    """One panel per run: the geometric centre's path over the settled half, in um."""
+    figure, axes = plt.subplots(1, len(runs), figsize=(3.6 * len(runs), 3.9))
+    for axis, (case, run) in zip(axes, runs.items()):
+        keep = _settled(run)
+        x, y = in_unit(run.cage_x, "um"), in_unit(run.cage_y, "um")
+        axis.plot(x.values[keep], y.values[keep], lw=0.5)
+        axis.set(xlabel=label(x), ylabel=label(y),
+                 title=f"{_name(case)}\nsigma_b = {float(run.whirl_deviation_ratio):.3f}")
+        axis.title.set_fontsize(9)
+        axis.set_aspect("equal", adjustable="datalim")
+        axis.grid(alpha=0.3)
+    figure.suptitle(_title(data, "geometric centre of the cage, settled half"), fontsize=9)
+    save(figure, figures, file)
+
+
+def _histories(runs: dict, data, figures: Path, suffix: str, legend: str):
+    """Figs. 19-22 (or 27-30): cage slip, and roller slip, skew and tilt of one roller."""
+    numbers = {"eccentricity": (19, 20, 21, 22), "misalignment": (27, 28, 29, 30)}[suffix]
+    shown = (("cage_slip", "%", "cage_slip", "cage slip"),
+             ("roller_slip", "%", "roller_slip", f"roller {ROLLER}: spin slip"),
+             ("roller_skew", "deg", "skew", f"roller {ROLLER}: skew"),
+             ("roller_tilt", "deg", "tilt", f"roller {ROLLER}: tilt"))
+    for number, (variable, unit, name, what) in zip(numbers, shown):
+        figure, axis = plt.subplots(figsize=(7, 3.9))
+        for case, run in runs.items():
+            values = run[variable]
+            if "roller" in values.dims:
+                values = values.sel(roller=ROLLER)
+            values = in_unit(values, unit)
+            time = in_unit(run.elapsed_time, "ms")
+            axis.plot(time, values, lw=0.6, label=_name(case))
+        axis.set(xlabel=f"{_TIME} [ms]", ylabel=f"{what} [{unit}]")
+        axis.legend(fontsize=7, title=legend, title_fontsize=7)
+        axis.grid(alpha=0.3)
+        axis.set_title(_title(data, what), fontsize=9)
+        save(figure, figures, f"fig{number}_{name}_{suffix}.png")
+
+
+def _arc_maps(runs: dict, data, figures: Path, file: str):
+    """Per run: the pocket whose arc saw the largest dry force, its elements' largest forces
+    over arc elements (across the arcs) x axial elements."""
+    figure, axes = plt.subplots(1, len(runs), figsize=(3.8 * len(runs) + 1, 3.6),
+                                squeeze=False)
+    for axis, (case, run) in zip(axes[0], runs.items()):
+        force = in_unit(run.pocket_arc_force, "N")
+        peak = force.max(["arc_axial", "arc_angle"])
+        pocket = int(peak.idxmax("roller"))
+        one = force.sel(roller=pocket).transpose("arc_axial", "arc_angle")
+        image = axis.pcolormesh(one.arc_angle, one.arc_axial, one, shading="nearest",
+                                cmap="magma_r", vmin=0, vmax=max(float(one.max()), 1.0))
+        figure.colorbar(image, ax=axis, label="largest dry force [N]")
+        contact = "" if float(one.max()) > 0 else "\n(no dry arc contact)"
+        axis.set(xlabel="arc element (across both arcs)", ylabel="axial element",
+                 title=f"{_name(case)}, pocket {pocket}{contact}")
+        axis.title.set_fontsize(9)
+    figure.suptitle(_title(data, "pocket arcs, settled half"), fontsize=9)
+    save(figure, figures, file)
+
+
+def _face_map(run, variable: str, figures: Path, file: str, case: str):
+    """Polar maps of an end-face clearance, smallest over the rollers, left and right end.
+
+    The model's face elements are rings of equal area (edges at ``R sqrt(i / n)``, ``R`` the
+    face radius ``D/2 - end chamfer``) times equal angles from the radial direction."""
+    gap = in_unit(run[variable], "um").min("roller")
+    radius = float(in_unit(run.roller_diameter, "mm")) / 2 - float(in_unit(run.end_chamfer,
+                                                                           "mm"))
+    rings, angles = gap.face_ring.size, gap.face_angle.size
+    ring_edges = radius * np.sqrt(np.arange(rings + 1) / rings)
+    angle_edges = 2 * np.pi * np.arange(angles + 1) / angles
+    # Red below zero (dry contact) and blue above, each side on its own scale: a contact of
+    # tenths of a micrometre stays visible beside gaps of micrometres.
+    low, high = (float(f(gap)) if np.isfinite(gap).any() else 0.0 for f in (np.nanmin,
+                                                                              np.nanmax))
+    scale = TwoSlopeNorm(vcenter=0.0, vmin=min(low, -1e-3), vmax=max(high, 1e-3))
+    figure, axes = plt.subplots(1, 2, figsize=(10, 4.6), subplot_kw={"projection": "polar"},
+                                gridspec_kw={"wspace": 0.45})
+    for axis, end in zip(axes, gap.end.values):
+        one = gap.sel(end=end).transpose("face_ring", "face_angle")
+        image = axis.pcolormesh(angle_edges, ring_edges, np.ma.masked_invalid(one.values),
+                                cmap="RdBu", norm=scale)
+        axis.set_title(f"{end} end (smallest {float(one.min()):.3g} um)", fontsize=9)
+        axis.set_yticks(ring_edges[1:])
+        axis.set_yticklabels([f"{r:.1f} mm" for r in ring_edges[1:]], fontsize=6)
+        axis.tick_params(axis="x", labelsize=7)
+    ticks = [scale.vmin, scale.vmin / 2, 0.0, scale.vmax / 2, scale.vmax]
+    figure.colorbar(image, ax=axes, label=f"{variable.replace('_', ' ')} [um]", shrink=0.8,
+                    ticks=ticks, format="%.2g")
+    figure.suptitle(_title(run, f"{case}; smallest over rollers and the settled half"),
+                    fontsize=9)
+    figure.savefig(Path(figures) / file, dpi=110)  # tight_layout does not suit polar axes
+    plt.close(figure)
+
+
+# -- the stated conclusions, as numbers
+
+def _edge(gap) -> np.ndarray:
+    """Elements at the edge of a face's contact zone (the elements that have a counterpart):
+    on the face's outermost ring, or beside an element without one (NaN), in angle (round
+    the face) or in ring."""
+    values = gap.transpose("face_ring", "face_angle").values
+    present = np.isfinite(values)
+    padded = np.pad(~present, ((1, 1), (0, 0)), constant_values=False)
+    padded[-1, :] = True  # beyond the outermost ring: the face's rim
+    beside = (np.roll(~present, 1, axis=1) | np.roll(~present, -1, axis=1)
+              | padded[:-2] | padded[2:])
+    return present & beside
+
+
+def _edge_share(gap) -> float | None:
+    """Share of the dry (negative-gap) elements of both ends that lie at the edge of the
+    contact zone; None where nothing is dry."""
+    dry = edge = 0
+    for end in gap.end.values:
+        one = gap.sel(end=end)
+        negative = (one < 0).transpose("face_ring", "face_angle").values
+        dry += int(negative.sum())
+        edge += int((negative & _edge(one)).sum())
+    return edge / dry if dry else None
+
+
+def _two_sided(gap) -> float:
+    """The larger of the two ends' smallest gaps: negative when both ends touch dry."""
+    return float(gap.min(["face_ring", "face_angle"]).max("end"))
+
+
+def _alike(gap) -> float:
+    """Correlation of the left and right ends' maps over the elements both have."""
+    left = gap.sel(end="left").transpose("face_ring", "face_angle").values.ravel()
+    right = gap.sel(end="right").transpose("face_ring", "face_angle").values.ravel()
+    both = np.isfinite(left) & np.isfinite(right)
+    return float(np.corrcoef(left[both], right[both])[0, 1])
+
+
+def _ratio(top, bottom) -> float | None:
+    """``top / bottom``; None where both are zero (nothing to compare)."""
+    top, bottom = float(top), float(bottom)
+    if bottom == 0:
+        return None if top == 0 else float("inf")
+    return top / bottom
+
+
+def ours(results: Path) -> dict:
+    results = Path(results)
+    runs, _ = _eccentricity(results)
+    free, radial, axial = runs[("0 mm", "0 mm")], runs[("2 mm", "0 mm")], runs[("0 mm",
+                                                                                "2 mm")]
+    combined = runs[("2 mm", "2 mm")]
+    turned = _misalignment(results)
+
+    def value(run, name, unit):
+        return float(in_unit(run[name], unit))
+
+    def change(run, base, name):  # ratio of a settled statistic, unit-free
+        return value(run, name, "1") / value(base, name, "1")
+
+    values = {"slip_800_12000_3d": value(free, "mean_cage_slip", "%")}
+    for case, run in (("radial", radial), ("axial", axial)):
+        values[f"whirl_{case}"] = change(run, free, "whirl_deviation_ratio")
+        for name in ("mean_cage_slip", "mean_roller_slip", "rms_roller_skew",
+                     "rms_roller_tilt"):
+            values[f"{name}_{case}"] = change(run, free, name)
+    values["whirl_radial"] = 1 / values["whirl_radial"]  # steadier: aligned over eccentric
+    values["arc_contacts_radial"] = value(radial, "pocket_arc_events", "1")
+    values["arc_force_radial_over_axial"] = _ratio(radial.pocket_arc_force.max(),
+                                                   axial.pocket_arc_force.max())
+    for name in ("pocket_end_clearance", "rib_clearance"):
+        gap = in_unit(combined[name], "um").min("roller")
+        values[f"{name}_one_sided"] = _two_sided(gap)
+        values[f"{name}_edge_combined"] = _edge_share(gap)
+
+    aligned = turned["aligned"]
+    for axis in ("x", "y"):
+        run = turned[f"about_{axis}"]
+        values[f"whirl_misaligned_{axis}"] = change(run, aligned, "whirl_deviation_ratio")
+        for name in ("mean_cage_slip", "mean_roller_slip", "rms_roller_skew",
+                     "rms_roller_tilt"):
+            values[f"{name}_misaligned_{axis}"] = change(run, aligned, name)
+    x, y = turned["about_x"], turned["about_y"]
+    for name in ("whirl_deviation_ratio", "mean_cage_slip", "mean_roller_slip",
+                 "rms_roller_skew", "rms_roller_tilt"):
+        values[f"{name}_x_over_y"] = change(x, y, name)
+    values["arc_contacts_misaligned_x"] = value(x, "pocket_arc_events", "1")
+    for name in ("pocket_end_clearance", "rib_clearance"):
+        gap = in_unit(x[name], "um").min("roller")
+        values[f"{name}_both_sides_x"] = _two_sided(gap)
+        values[f"{name}_edge_x"] = _edge_share(gap)
+        values[f"{name}_alike_x"] = _alike(gap)
+    return {key: v for key, v in values.items() if v is not None}
