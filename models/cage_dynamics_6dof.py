@@ -43,7 +43,8 @@ def cage_dynamics_6dof(radial_load, speed, roller_count, inner_raceway_diameter,
                        oil_density=1000.0, pressure_viscosity=1.1e-8, youngs_modulus=207e9,
                        poisson_ratio=0.28, traction_peak=0.05, traction_peak_speed=2.0,
                        traction_limit=0.036, oil_fraction=0.05, drag_coefficient=1.0,
-                       pocket_clearance=1e-4, pocket_friction=0.1, end_film_thickness=1.5e-5,
+                       pocket_clearance=1e-4, pocket_friction=0.1, pocket_film_fill=1.0,
+                       end_film_thickness=1.5e-5,
                        pocket_axial_clearance=1.5e-5, rib_height=2e-3, end_chamfer=5e-4,
                        cage_density=8600.0, cage_youngs_modulus=106e9, cage_poisson_ratio=0.32,
                        winkler_depth=1e-3, restitution=0.8, impact_speed=0.1,
@@ -60,6 +61,9 @@ def cage_dynamics_6dof(radial_load, speed, roller_count, inner_raceway_diameter,
     radial_load ... pocket_friction, branch
         As :func:`models.cage_slip.cage_slip`; ``pocket_friction`` is the Coulomb coefficient
         of every dry element (eq. 2, 0.1 in the paper).
+    pocket_film_fill : array_like
+        Share of the pocket arcs under oil [-] (flooded: 1): scales the film's pressure and
+        shear.
     end_film_thickness : array_like
         Axial play of a roller between the inner ring's ribs (Table 2: 0.015 mm) [m].
     pocket_axial_clearance : array_like
@@ -101,11 +105,14 @@ def cage_dynamics_6dof(radial_load, speed, roller_count, inner_raceway_diameter,
     -------
     dict of numpy.ndarray
         Over time ``(N, samples)``: ``cage_slip`` [-] (eq. 27), ``cage_x``, ``cage_y``,
-        ``cage_z`` (geometric centre) [m], ``whirl_speed`` (its speed, eq. 28's ``v``)
-        [m/s], ``sample_time`` [s]; ``(N, samples, Z)``: ``roller_slip`` [-],
+        ``cage_z`` (geometric centre) [m], ``whirl_speed`` (the mass centre's speed in the
+        radial plane, eq. 28's ``v`` as the paper's Fig. 18 caption reads) [m/s],
+        ``sample_time`` [s]; ``(N, samples, Z)``: ``roller_slip`` [-],
         ``roller_skew`` (axis turned about the radial direction), ``roller_tilt`` (about the
         tangential direction) [rad]. Settled half: ``mean_cage_slip``, ``mean_roller_slip``
-        [-], ``whirl_deviation_ratio`` (eq. 28) [-], ``rms_roller_skew``,
+        [-], ``whirl_deviation_ratio`` (eq. 28 of the mass centre's speed) and
+        ``centre_whirl_deviation_ratio`` (of the geometric centre's, as the paper's text
+        reads) [-], ``rms_roller_skew``,
         ``rms_roller_tilt`` [rad]; per pocket ``pocket_arc_force`` ``(N, Z, axial, angle)``
         (largest dry force of each arc element) [N]; ``pocket_end_clearance`` and
         ``rib_clearance`` ``(N, Z, side, ring, angle)`` (smallest gap of each end-face element;
@@ -156,7 +163,8 @@ def _empty(points, samples, sizes):
                                             "whirl_speed", "sample_time")},
         **{name: nan(samples, z) for name in ("roller_slip", "roller_skew", "roller_tilt")},
         **{name: nan() for name in ("mean_cage_slip", "mean_roller_slip",
-                                    "whirl_deviation_ratio", "rms_roller_skew",
+                                    "whirl_deviation_ratio", "centre_whirl_deviation_ratio",
+                                    "rms_roller_skew",
                                     "rms_roller_tilt", "pocket_arc_events", "pocket_end_events",
                                     "rib_events", "integration_steps")},
         "pocket_arc_force": nan(z, sizes["axial"], sizes["angle"]),
@@ -231,6 +239,7 @@ def parameters(one, terms, arc_area, start_cage_speed, ring_stiffness, cage_mass
     p[rhs.TRACTION_A:rhs.TRACTION_D + 1] = (curve.a[0], curve.b[0], curve.c[0], curve.d[0])
     p[rhs.RACEWAYS] = p[rhs.POCKETS] = p[rhs.ENDS] = p[rhs.DRAG] = 1.0
     p[rhs.SLIP_SMOOTHING], p[rhs.ARC_AREA] = _SLIP_SMOOTHING, arc_area
+    p[rhs.FILM_FILL] = one["pocket_film_fill"]
     return p
 
 
@@ -249,7 +258,8 @@ def setup(one):
     # the wrapped arcs at a film of half the pocket clearance, cage_slip's M_p with
     # theta_w = 2 x the wrapped angle.
     steady = cage_slip(**dict(steady_inputs, roller_count=count), pocket_wrap_angle=2 * wrapped,
-                       pocket_film_fill=1.0, end_film_thickness=one["end_film_thickness"],
+                       pocket_film_fill=one["pocket_film_fill"],
+                       end_film_thickness=one["end_film_thickness"],
                        end_film_fill=_START_END_FILL, orbit_points=20 * count)
     if steady["status"][0] != CONVERGED:
         return steady["status"][0], None
@@ -365,8 +375,9 @@ def results(samples, run):
     slip = 1 - np.einsum("si,si->s", cage_rate, axes_z) / run["omega_kin"]
     offset = np.array([t[:, 0] * p[rhs.ECC_RADIAL] + t[:, 2] * p[rhs.ECC_AXIAL] for t in turns])
     centre = samples[:, c:c + 3] - offset
-    centre_speed = samples[:, c + 3:c + 6] - np.cross(cage_rate, offset)
-    speed = np.hypot(centre_speed[:, 0], centre_speed[:, 1])
+    centre_velocity = samples[:, c + 3:c + 6] - np.cross(cage_rate, offset)
+    centre_speed = np.hypot(centre_velocity[:, 0], centre_velocity[:, 1])
+    speed = np.hypot(samples[:, c + 3], samples[:, c + 4])  # the mass centre's
     rollers = samples[:, rhs.RING:c].reshape(times.size, count, rhs.ROLLER_SIZE)
     position, velocity = rollers[..., 0:3], rollers[..., 3:6]
     axis, omega = rollers[..., 6:9], rollers[..., 9:12]
@@ -380,17 +391,22 @@ def results(samples, run):
     along_tangent = -axis[..., 0] * radial[..., 1] + axis[..., 1] * radial[..., 0]
     skew = np.arctan2(along_tangent, axis[..., 2])
     tilt = np.arctan2(along_radius, axis[..., 2])
-    quiet = speed[settled]
     return {
         "cage_slip": slip, "cage_x": centre[:, 0], "cage_y": centre[:, 1],
         "cage_z": centre[:, 2], "whirl_speed": speed, "sample_time": times,
         "roller_slip": roller_slip, "roller_skew": skew, "roller_tilt": tilt,
         "mean_cage_slip": slip[settled].mean(),
         "mean_roller_slip": roller_slip[settled].mean(),
-        "whirl_deviation_ratio": quiet.std(ddof=1) / quiet.mean(),
+        "whirl_deviation_ratio": _deviation_ratio(speed[settled]),
+        "centre_whirl_deviation_ratio": _deviation_ratio(centre_speed[settled]),
         "rms_roller_skew": np.sqrt(np.mean(skew[settled] ** 2)),
         "rms_roller_tilt": np.sqrt(np.mean(tilt[settled] ** 2)),
     }
+
+
+def _deviation_ratio(speed):
+    """Standard deviation over mean of a speed's samples (eq. 28)."""
+    return speed.std(ddof=1) / speed.mean()
 
 
 def _sample_times(size, output_interval):
@@ -427,6 +443,7 @@ MODELS = [Model(
     reference="Paper 002, sections 1.3-1.5 (eqs. 1-26), eqs. 27-28, section 3",
     version="1",
     inputs=tuple(_PLANAR[name] for name in STEADY_INPUTS if name != "branch") + (
+        _PLANAR["pocket_film_fill"],
         Input("end_film_thickness", "mm", "axial play of a roller between the ribs (Table 2: "
               "0.015)", default=0.015, minimum=0.0, exclusive_minimum=True,
               label="rib axial clearance"),
@@ -498,8 +515,9 @@ MODELS = [Model(
                dims=("elapsed_time",), label="cage centre y"),
         Output("cage_z", "um", "cage geometric centre, axial", dims=("elapsed_time",),
                label="cage centre z"),
-        Output("whirl_speed", "mm/s", "speed of the cage's geometric centre (eq. 28's v)",
-               dims=("elapsed_time",)),
+        Output("whirl_speed", "mm/s", "speed of the cage's mass centre in the radial plane "
+               "(eq. 28's v, as the caption of the paper's Fig. 18 reads)",
+               dims=("elapsed_time",), label="cage mass centre speed"),
         Output("sample_time", "ms", "bearing time of each sample", dims=("elapsed_time",)),
         Output("roller_slip", "percent", "roller spin slip against kinematic spin",
                dims=("elapsed_time", "roller")),
@@ -511,8 +529,12 @@ MODELS = [Model(
                label="mean cage slip"),
         Output("mean_roller_slip", "percent", "roller slip over the settled half and all "
                "rollers", label="mean roller slip"),
-        Output("whirl_deviation_ratio", "1", "standard deviation over mean of the cage "
-               "centre's speed, settled half (eq. 28)", label="whirl speed deviation ratio"),
+        Output("whirl_deviation_ratio", "1", "standard deviation over mean of the cage's mass "
+               "centre's speed, settled half (eq. 28, as the planar cage_dynamics)",
+               label="whirl speed deviation ratio"),
+        Output("centre_whirl_deviation_ratio", "1", "standard deviation over mean of the "
+               "cage's geometric centre's speed, settled half (eq. 28 as the paper's text "
+               "reads it)", label="centre whirl deviation ratio"),
         Output("rms_roller_skew", "deg", "root mean square roller skew, settled half",
                counted=("points with rms skew above 0.05 deg", _skewed)),
         Output("rms_roller_tilt", "deg", "root mean square roller tilt, settled half"),

@@ -35,8 +35,8 @@ from .contact_laws import (damped_spring, palmgren_slice, regularised_direction,
  POCKET_PLAY, RIB_PLAY, RIB_RADIUS, CAGE_IN, CAGE_OUT, WINDAGE, CAGE_DRAG, M_RING, C_RING,
  M_CAGE, J_CAGE_X, J_CAGE_Z, ECC_RADIAL, ECC_AXIAL, GRAVITY, MISALIGN_X, MISALIGN_Y,
  TRACTION_A, TRACTION_B, TRACTION_C, TRACTION_D, RACEWAYS, POCKETS, ENDS, DRAG,
- SLIP_SMOOTHING, ARC_AREA) = range(45)
-PARAMETERS = 45
+ SLIP_SMOOTHING, ARC_AREA, FILM_FILL) = range(46)
+PARAMETERS = 46
 RING, ROLLER_SIZE, CAGE_SIZE = 4, 12, 13
 
 
@@ -244,7 +244,7 @@ def derivatives(state, p, count, slice_z, arc_theta, arc_z, face_r, face_phi, fa
                         pressure = short_bearing_pressure(p[VISCOSITY], spin * slope, -closing,
                                                           film, along, length)
                         shear = p[VISCOSITY] * spin * radius / film
-                        on_roller = _mul(-p[ARC_AREA], _add(_mul(pressure, normal),
+                        on_roller = _mul(-p[ARC_AREA] * p[FILM_FILL], _add(_mul(pressure, normal),
                                                             _mul(shear, u_prime)))
                     force = _add(force, on_roller)
                     moment = _add(moment, _cross(_sub(element, centre), on_roller))
