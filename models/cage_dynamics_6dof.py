@@ -51,7 +51,7 @@ def cage_dynamics_6dof(radial_load, speed, roller_count, inner_raceway_diameter,
                        film_breakdown=1e-6, cage_eccentricity=0.0, cage_axial_eccentricity=0.0,
                        misalignment_x=0.0, misalignment_y=0.0, inner_ring_mass=0.1,
                        damping_ratio=0.1, duration=0.05, output_interval=1e-4, slices=10,
-                       arc_axial_points=6, arc_angle_points=8, face_rings=4, face_angles=12,
+                       arc_axial_points=6, arc_angle_points=8, face_rings=5, face_angles=12,
                        relative_tolerance=1e-5, integrator="adaptive", rk4_step=1e-7,
                        branch="high_slip"):
     """Cage and roller motion in space and time.
@@ -93,10 +93,14 @@ def cage_dynamics_6dof(radial_load, speed, roller_count, inner_raceway_diameter,
     slices, arc_axial_points, arc_angle_points, face_rings, face_angles : int
         Slices of each raceway contact; the Winkler elements of a pocket arc (axial x
         angular, on each of the two arcs) and of a roller end face (rings of equal area x
-        angles).
+        angles). The defaults give the mean slip within 1.5 % of 8 x 24 end-face elements
+        (the end faces converge slowest; 4 x 12 lies 5 % off).
     relative_tolerance : float
         Of the adaptive integrator (the absolute ones follow from it: see
-        :func:`_absolute_tolerances`).
+        :func:`_absolute_tolerances`). At the default 1e-5 the mean slip over 10 ms at 800 N,
+        12000 r/min lies 1 % from its value at 1e-7 (converged: 5e-8 gives the same to 5
+        digits), at 80 % of the cost; the steps are mostly held by the stability of the stiff
+        pocket films, not by the tolerance.
     integrator : {"adaptive", "rk4"}
         Dormand-Prince 5(4) with step control, or the paper's fixed-step fourth-order
         Runge-Kutta method at ``rk4_step`` [s].
@@ -495,7 +499,7 @@ MODELS = [Model(
               default=8, kind="count", minimum=1, maximum=100,
               label="pocket-arc elements around each arc"),
         Input("face_rings", "1", "rings of equal area of a roller end face's elements",
-              default=4, kind="count", minimum=1, maximum=50, label="end-face element rings"),
+              default=5, kind="count", minimum=1, maximum=50, label="end-face element rings"),
         Input("face_angles", "1", "angles of a roller end face's elements", default=12,
               kind="count", minimum=3, maximum=360),
         Input("relative_tolerance", "1", "relative tolerance of the adaptive integrator",
