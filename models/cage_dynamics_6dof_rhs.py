@@ -104,10 +104,12 @@ def ring_axis(p):
 @njit(cache=True)
 def derivatives(state, p, count, slice_z, arc_theta, arc_z, face_r, face_phi, face_area,
                 arc_force, end_gap, rib_gap, dry, observe):
-    """Time derivative of ``state``. With ``observe`` the element values of this state are
-    written to ``arc_force`` (dry force per pocket-arc element) [N], ``end_gap`` and
+    """Time derivative of ``state``. With ``observe`` nonzero the element values of this
+    state are written to ``arc_force`` (dry force per pocket-arc element) [N], ``end_gap`` and
     ``rib_gap`` (gap per end-face element, NaN where the face has no counterpart) [m] and
-    ``dry`` (roller x {arc, pocket end, rib}: 1 where in dry contact)."""
+    ``dry`` (roller x {arc, pocket end, rib}: 1 where in dry contact). ``observe`` is a
+    number, 0.0 or 1.0: numba compiles a literal True or False as a type of its own, which
+    would compile this large function three times instead of once."""
     out = np.zeros_like(state)
     g = p[GRAVITY]
     radius, length = p[RADIUS], p[LENGTH]
@@ -210,7 +212,7 @@ def derivatives(state, p, count, slice_z, arc_theta, arc_z, face_r, face_phi, fa
                 u = _add(_mul(cos_m, x_c), _mul(sin_m, y_c))
                 u_prime = _sub(_mul(cos_m, y_c), _mul(sin_m, x_c))
                 for n in range(n_axial):
-                    if observe:
+                    if observe != 0.0:
                         arc_force[j, m, n] = 0.0
                     h = gaps[m, n]
                     if h == np.inf or (pressed and h >= 0.0):
@@ -235,7 +237,7 @@ def derivatives(state, p, count, slice_z, arc_theta, arc_z, face_r, face_phi, fa
                             on_roller = _sub(on_roller, _mul(
                                 p[MU_DRY] * push * regularised_direction(
                                     speed, p[SLIP_SMOOTHING]) / speed, sliding))
-                        if observe:
+                        if observe != 0.0:
                             arc_force[j, m, n] = push
                     else:
                         film = max(h, p[FILM_FLOOR])
@@ -251,7 +253,7 @@ def derivatives(state, p, count, slice_z, arc_theta, arc_z, face_r, face_phi, fa
                     cage_force = _sub(cage_force, on_roller)
                     cage_moment = _sub(cage_moment, _cross(_sub(element, mass_centre),
                                                            on_roller))
-            if observe:
+            if observe != 0.0:
                 dry[j, 0] = 1.0 if pressed else 0.0
         # -- roller ends: pocket end faces and ribs (eqs. 10-17)
         if p[ENDS] > 0.0:
@@ -269,7 +271,7 @@ def derivatives(state, p, count, slice_z, arc_theta, arc_z, face_r, face_phi, fa
                         arm = _sub(element, centre)
                         material = _add(velocity, _cross(omega, arm))
                         area = face_area[r]
-                        if observe:
+                        if observe != 0.0:
                             end_gap[j, side, r, s] = np.nan
                             rib_gap[j, side, r, s] = np.nan
                         # pocket end face: the cage rim between its bore and outside diameter
@@ -286,7 +288,7 @@ def derivatives(state, p, count, slice_z, arc_theta, arc_z, face_r, face_phi, fa
                             moment = _add(moment, _cross(arm, on_roller))
                             cage_force = _sub(cage_force, on_roller)
                             cage_moment = _sub(cage_moment, _cross(lever, on_roller))
-                            if observe:
+                            if observe != 0.0:
                                 end_gap[j, side, r, s] = h
                                 if h < 0.0:
                                     dry[j, 1] = 1.0
@@ -301,7 +303,7 @@ def derivatives(state, p, count, slice_z, arc_theta, arc_z, face_r, face_phi, fa
                             force = _add(force, on_roller)
                             moment = _add(moment, _cross(arm, on_roller))
                             ring_force = _sub(ring_force, on_roller)
-                            if observe:
+                            if observe != 0.0:
                                 rib_gap[j, side, r, s] = h
                                 if h < 0.0:
                                     dry[j, 2] = 1.0
@@ -408,7 +410,7 @@ def _observe(state, p, count, geometry, record, settled, arc_max, end_min, rib_m
     arc_force, end_gap, rib_gap, dry = record
     dry[:, :] = 0.0
     derivatives(state, p, count, slice_z, arc_theta, arc_z, face_r, face_phi, face_area,
-                arc_force, end_gap, rib_gap, dry, True)
+                arc_force, end_gap, rib_gap, dry, 1.0)
     if not settled:
         last[:, :] = dry
         return
@@ -448,7 +450,7 @@ def integrate(state, times, p, count, geometry, record, settled_from, rtol, atol
     y = state.copy()
     stages = np.empty((7, y.size))
     stages[0] = derivatives(y, p, count, slice_z, arc_theta, arc_z, face_r, face_phi,
-                            face_area, arc_force, end_gap, rib_gap, dry, False)
+                            face_area, arc_force, end_gap, rib_gap, dry, 0.0)
     t, h, steps, last_norm = times[0], 1e-7, 0, 1e-4
     samples[0] = y
     _observe(y, p, count, geometry, record, t >= settled_from, arc_max, end_min, rib_min,
@@ -465,7 +467,7 @@ def integrate(state, times, p, count, geometry, record, settled_from, rtol, atol
                         trial += step * _A[s, r] * stages[r]
                 stages[s] = derivatives(trial, p, count, slice_z, arc_theta, arc_z, face_r,
                                         face_phi, face_area, arc_force, end_gap, rib_gap, dry,
-                                        False)
+                                        0.0)
             # the 6th stage's argument is the 5th-order solution (first same as last)
             error = np.zeros_like(y)
             for s in range(7):
@@ -506,10 +508,10 @@ def integrate_fixed(state, times, p, count, geometry, record, settled_from, step
         count_steps = max(1, int(np.round((times[index] - times[index - 1]) / step)))
         h = (times[index] - times[index - 1]) / count_steps
         for _ in range(count_steps):
-            k1 = derivatives(y, p, count, *geometry, *record, False)
-            k2 = derivatives(y + 0.5 * h * k1, p, count, *geometry, *record, False)
-            k3 = derivatives(y + 0.5 * h * k2, p, count, *geometry, *record, False)
-            k4 = derivatives(y + h * k3, p, count, *geometry, *record, False)
+            k1 = derivatives(y, p, count, *geometry, *record, 0.0)
+            k2 = derivatives(y + 0.5 * h * k1, p, count, *geometry, *record, 0.0)
+            k3 = derivatives(y + 0.5 * h * k2, p, count, *geometry, *record, 0.0)
+            k4 = derivatives(y + h * k3, p, count, *geometry, *record, 0.0)
             y = y + h / 6.0 * (k1 + 2.0 * k2 + 2.0 * k3 + k4)
             _normalise(y, count)
             steps += 1

@@ -60,7 +60,7 @@ def records(count, geometry):
 
 
 def rate(state, p, count, geometry):
-    return rhs.derivatives(state, p, count, *geometry, *records(count, geometry), False)
+    return rhs.derivatives(state, p, count, *geometry, *records(count, geometry), 0.0)
 
 
 def run_free(state, p, count, geometry, duration, tolerance):
