@@ -434,7 +434,8 @@ def _rk4_steps_fit(duration, rk4_step):
 
 
 def _skewed(rms_roller_skew):
-    return rms_roller_skew > np.radians(0.05)
+    # The summary counts from the stored values, in the declared unit (deg), not in SI.
+    return rms_roller_skew > 0.05
 
 
 _PLANAR = {i.name: i for i in STEADY_MODELS[0].inputs}

@@ -149,7 +149,8 @@ class Output:
     #: not given.
     label: str = ""
     #: ``(text, where)``: the run's summary counts the points where ``where(values)`` is true
-    #: ("points with two stable equilibria").
+    #: ("points with two stable equilibria"); ``values`` are in the declared ``unit``, as
+    #: stored, not in SI.
     counted: tuple = ()
 
     @property

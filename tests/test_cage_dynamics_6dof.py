@@ -496,3 +496,10 @@ def test_the_spatial_model_does_not_depend_on_the_chunking(tmp_path):
         radial_load = ["400 N", "800 N"]
         arc_angle_points = [4, 8]
         """, tmp_path)
+
+
+def test_the_summary_counts_skew_above_0_05_deg_from_the_stored_degrees():
+    """The run's summary counts from the stored values, which are in degrees: 0.016 deg (the
+    aligned bearing's settled rms skew) is not above 0.05 deg."""
+    assert model._skewed(np.array([0.016, 0.049, 0.06, 0.67])).tolist() == [False, False,
+                                                                             True, True]

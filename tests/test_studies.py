@@ -162,6 +162,40 @@ def test_two_sided_is_the_larger_of_the_two_ends_smallest_gaps():
     assert module._alike(gap) == pytest.approx(0.11667 / np.sqrt(0.32667 * 0.04667), abs=1e-4)
 
 
+
+def test_the_outer_edge_is_the_quarter_of_each_arc_nearest_the_outside_diameter():
+    module = find_studies(STUDIES)["cage_dynamics_3d"].figures_module()
+    # 8 elements per arc, ordered -theta_2 .. -theta_1, theta_1 .. theta_2: the outer edge is
+    # elements 6-7 of the first arc and 0-1 of the second (indices 6, 7, 8, 9 of 16).
+    assert np.flatnonzero(module._outer_edge(16)).tolist() == [6, 7, 8, 9]
+    assert np.flatnonzero(module._outer_edge(4)).tolist() == [1, 2]  # at least one per arc
+
+
+def _arc_forces(per_pocket):
+    """Largest arc-element forces [N], pockets x axial x angle elements."""
+    return xr.DataArray(np.array(per_pocket, dtype=float),
+                        dims=("roller", "arc_axial", "arc_angle"))
+
+
+def test_outer_share_and_evenness_of_the_arc_forces():
+    module = find_studies(STUDIES)["cage_dynamics_3d"].figures_module()
+    # 2 elements per arc (4 across): outer edge at indices 1 and 2
+    force = _arc_forces([[[0, 3, 1, 0], [0, 0, 0, 0]], [[2, 0, 0, 0], [0, 2, 0, 0]]])
+    assert module._outer_share(force) == pytest.approx((3 + 1 + 2) / 8)
+    assert module._evenness(force) == pytest.approx((4 / 8) / 3)  # pocket 0, peak 3
+    nothing = _arc_forces(np.zeros((2, 2, 4)))
+    assert module._outer_share(nothing) is None and module._evenness(nothing) is None
+
+
+def test_every_whirl_claim_is_stated_for_both_centres():
+    """sigma_b of the mass centre (the paper's caption) and of the geometric centre (its
+    text): each whirl claim of the flooded film has its twin ending in _centre."""
+    ids = {claim["id"] for claim in find_studies(STUDIES)["cage_dynamics_3d"].claims()}
+    mass = {i for i in ids if i.startswith("whirl") and not i.endswith(("_centre",
+                                                                        "_thin_film"))}
+    assert len(mass) == 5
+    assert {f"{i}_centre" for i in mass} <= ids
+
 def _loads(values_in_n):
     coordinate = xr.DataArray(np.asarray(values_in_n, dtype=float), dims="radial_load",
                               name="radial_load", attrs={"units": "N", "long_name": "load"})

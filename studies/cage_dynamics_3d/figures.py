@@ -1,6 +1,8 @@
 """Paper 002's Figs. 18-33 from the spatial model ``cage_dynamics_6dof``: cage whirl, cage and
 roller slip, roller skew and tilt, and the pocket, end-face and rib contacts, with cage mass
-eccentricity (section 3.1) and ring misalignment (section 3.2), from the netCDF results only.
+eccentricity (section 3.1) and ring misalignment (section 3.2), from the netCDF results only;
+section 3.1's cases again with a thin pocket film (``eccentricity_thin_film``), under which the
+pocket arcs can touch dry.
 Results are selected by quantity (``at``) and shown in the units chosen here (``in_unit``),
 whatever units the files store them in."""
 from pathlib import Path
@@ -16,12 +18,15 @@ CASES = (("0 mm", "0 mm"), ("2 mm", "0 mm"), ("0 mm", "2 mm"), ("2 mm", "2 mm"))
 MISALIGNED = {"about_x": "1 deg about X", "about_y": "1 deg about Y"}
 ROLLER = 1  # the roller whose histories are drawn (on the load line at the start)
 _SETTLED = 0.5  # the model's settled part: the last half of each run
+_OUTER_EDGE = 0.25  # the share of each pocket arc nearest the cage's outside diameter
 
 _TIME = "elapsed time since the steady start"
 FIGURES = {
     "fig18_whirl_eccentricity.png": "Fig. 18: path of the cage's geometric centre over the "
                                     "settled half for the four cage mass eccentricities "
-                                    "(e_r, e_a); sigma_b: eq. 28's speed deviation ratio.",
+                                    "(e_r, e_a); sigma_b: eq. 28's speed deviation ratio, of "
+                                    "the mass centre's speed (mass, as the paper's caption) "
+                                    "and of the geometric centre's (geom., as its text).",
     "fig19_cage_slip_eccentricity.png": "Fig. 19: cage slip against time for the four "
                                         "eccentricities.",
     "fig20_roller_slip_eccentricity.png": f"Fig. 20: spin slip of roller {ROLLER} against "
@@ -46,7 +51,9 @@ FIGURES = {
                                             "view (blank: above the rib).",
     "fig26_whirl_misalignment.png": "Fig. 26: path of the cage's geometric centre over the "
                                     "settled half, aligned and with the inner ring turned "
-                                    "1 deg about X and about Y.",
+                                    "1 deg about X and about Y; sigma_b of the mass centre "
+                                    "(mass) and of the geometric centre (geom.), as in "
+                                    "Fig. 18.",
     "fig27_cage_slip_misalignment.png": "Fig. 27: cage slip against time, misaligned and "
                                         "aligned.",
     "fig28_roller_slip_misalignment.png": f"Fig. 28: spin slip of roller {ROLLER} against "
@@ -63,12 +70,21 @@ FIGURES = {
                                             "X, all rollers.",
     "fig33_rib_clearance_misalignment.png": "Fig. 33: smallest gap between the roller end "
                                             "faces and the ribs, 1 deg about X, all rollers.",
+    "fig23_arc_force_thin_film.png": "Fig. 23 with a thin pocket film (5 % of the arcs under "
+                                     "oil): largest dry force of each pocket-arc element over "
+                                     "the settled half, in the pocket with the largest force, "
+                                     "for the four eccentricities (elements as in Fig. 23).",
+    "thin_film_summary.png": "Flooded pocket film against a thin one (5 % of the arcs under "
+                             "oil) for the four eccentricities: settled mean cage slip and "
+                             "roller slip, sigma_b of the mass centre and of the geometric "
+                             "centre, and the dry pocket-arc contacts begun in the settled "
+                             "half.",
 }
 
 
-def _eccentricity(results):
-    """The eccentricity runs as ``{(e_r, e_a): one run}`` and the whole dataset."""
-    data = result(results, "eccentricity")
+def _eccentricity(results, sweep: str = "eccentricity"):
+    """The runs of an eccentricity sweep as ``{(e_r, e_a): one run}``, and its whole dataset."""
+    data = result(results, sweep)
     return {case: at(data, cage_eccentricity=case[0], cage_axial_eccentricity=case[1])
             for case in CASES}, data
 
@@ -91,6 +107,12 @@ def _settled(run):
     return (run.elapsed_time >= _SETTLED * run.elapsed_time.max()).values
 
 
+def _film(data) -> str:
+    """The pocket film of a sweep, from its stored fill share."""
+    share = float(in_unit(data.pocket_film_fill, "1"))
+    return "flooded pocket film" if share == 1 else f"{share:.0%} of the pocket arcs under oil"
+
+
 def _title(data, what: str) -> str:
     return conditions(data, "radial_load", "speed", width=None) + "; " + what
 
@@ -100,7 +122,7 @@ def draw(results: Path, figures: Path):
     runs, data = _eccentricity(results)
     _orbits(runs, data, figures, "fig18_whirl_eccentricity.png")
     _histories(runs, data, figures, "eccentricity", "cage mass eccentricity")
-    _arc_maps({c: runs[c] for c in CASES}, data, figures, "fig23_arc_force_eccentricity.png")
+    _arc_maps(runs, data, figures, "fig23_arc_force_eccentricity.png")
     combined = runs[("2 mm", "2 mm")]
     _face_map(combined, "pocket_end_clearance", figures,
               "fig24_end_clearance_eccentricity.png", _name(("2 mm", "2 mm")))
@@ -115,6 +137,9 @@ def draw(results: Path, figures: Path):
               "fig32_end_clearance_misalignment.png", MISALIGNED["about_x"])
     _face_map(turned["about_x"], "rib_clearance", figures,
               "fig33_rib_clearance_misalignment.png", MISALIGNED["about_x"])
+    thin, thin_data = _eccentricity(results, "eccentricity_thin_film")
+    _arc_maps(thin, thin_data, figures, "fig23_arc_force_thin_film.png")
+    _film_summary(runs, thin, thin_data, figures, "thin_film_summary.png")
 
 
 def _orbits(runs: dict, data, figures: Path, file: str):
@@ -125,7 +150,8 @@ def _orbits(runs: dict, data, figures: Path, file: str):
         x, y = in_unit(run.cage_x, "um"), in_unit(run.cage_y, "um")
         axis.plot(x.values[keep], y.values[keep], lw=0.5)
         axis.set(xlabel=label(x), ylabel=label(y),
-                 title=f"{_name(case)}\nsigma_b = {float(run.whirl_deviation_ratio):.3f}")
+                 title=f"{_name(case)}\nsigma_b = {float(run.whirl_deviation_ratio):.3f} "
+                       f"(mass), {float(run.centre_whirl_deviation_ratio):.3f} (geom.)")
         axis.title.set_fontsize(9)
         axis.set_aspect("equal", adjustable="datalim")
         axis.grid(alpha=0.3)
@@ -170,10 +196,39 @@ def _arc_maps(runs: dict, data, figures: Path, file: str):
                                 cmap="magma_r", vmin=0, vmax=max(float(one.max()), 1.0))
         figure.colorbar(image, ax=axis, label="largest dry force [N]")
         contact = "" if float(one.max()) > 0 else "\n(no dry arc contact)"
-        axis.set(xlabel="arc element (across both arcs)", ylabel="axial element",
+        half = one.arc_angle.size // 2  # the arcs' outer edges meet in the middle
+        axis.set(xlabel=f"arc element across both arcs\n({half}, {half + 1}: at the cage's "
+                        "outside diameter)", ylabel="axial element",
                  title=f"{_name(case)}, pocket {pocket}{contact}")
         axis.title.set_fontsize(9)
-    figure.suptitle(_title(data, "pocket arcs, settled half"), fontsize=9)
+    figure.suptitle(_title(data, f"pocket arcs, settled half; {_film(data)}"), fontsize=9)
+    save(figure, figures, file)
+
+
+#: The bars of the flooded-against-thin-film summary: output, unit, panel title.
+_SUMMARY = (("mean_cage_slip", "%", "mean cage slip [%]"),
+            ("mean_roller_slip", "%", "mean roller slip [%]"),
+            ("whirl_deviation_ratio", "1", "sigma_b, mass centre"),
+            ("centre_whirl_deviation_ratio", "1", "sigma_b, geometric centre"),
+            ("pocket_arc_events", "1", "dry pocket-arc contacts begun"))
+
+
+def _film_summary(flooded: dict, thin: dict, data, figures: Path, file: str):
+    """Grouped bars: each eccentricity case's settled numbers, flooded beside thin film."""
+    figure, axes = plt.subplots(1, len(_SUMMARY), figsize=(3.3 * len(_SUMMARY), 3.8))
+    place, width = np.arange(len(CASES)), 0.38
+    for axis, (name, unit, what) in zip(axes, _SUMMARY):
+        for shift, (film, runs) in zip((-width / 2, width / 2),
+                                       (("flooded", flooded), ("thin film", thin))):
+            axis.bar(place + shift, [float(in_unit(runs[c][name], unit)) for c in CASES],
+                     width, label=film)
+        axis.set_xticks(place, [f"{c[0].split()[0]}, {c[1].split()[0]}" for c in CASES],
+                        fontsize=7)
+        axis.set(xlabel="e_r, e_a [mm]", title=what)
+        axis.title.set_fontsize(9)
+        axis.grid(alpha=0.3, axis="y")
+    axes[0].legend(fontsize=7)
+    figure.suptitle(_title(data, f"settled half; thin film: {_film(data)}"), fontsize=9)
     save(figure, figures, file)
 
 
@@ -252,12 +307,54 @@ def _alike(gap) -> float:
     return float(np.corrcoef(left[both], right[both])[0, 1])
 
 
+def _outer_edge(arc_angles: int) -> np.ndarray:
+    """Which arc elements (of ``arc_angles`` across a pocket's two arcs) form the arcs' outer
+    edge: the quarter of each arc nearest the cage's outside diameter, at least one element.
+    The model orders the elements by their angle theta from the pocket's radial axis,
+    -theta_2 .. -theta_1 then theta_1 .. theta_2 in equal steps, and the smaller |theta| the
+    nearer an element lies to the outside diameter."""
+    per_arc = arc_angles // 2
+    from_outside = np.concatenate([np.arange(per_arc)[::-1], np.arange(per_arc)])
+    return from_outside < max(1, round(_OUTER_EDGE * per_arc))
+
+
+def _outer_share(force) -> float | None:
+    """Share of the arc elements' largest dry forces (summed over all pockets) carried by the
+    arcs' outer edge (8 elements per arc: the outer 2, so an even spread gives 0.25). None
+    where no arc touched dry."""
+    total = float(force.sum())
+    if total == 0:
+        return None
+    outer = np.flatnonzero(_outer_edge(force.sizes["arc_angle"]))
+    return float(force.isel(arc_angle=outer).sum()) / total
+
+
+def _evenness(force) -> float | None:
+    """How evenly the pocket with the largest dry arc force carries it: the mean of its arc
+    elements' largest forces over their peak (1: all alike; one element of n: 1 / n). None
+    where no arc touched dry."""
+    peak = force.max(["arc_axial", "arc_angle"])
+    if float(peak.max()) == 0:
+        return None
+    pocket = force.isel(roller=int(peak.argmax("roller")))
+    return float(pocket.mean() / pocket.max())
+
+
 def _ratio(top, bottom) -> float | None:
     """``top / bottom``; None where both are zero (nothing to compare)."""
     top, bottom = float(top), float(bottom)
     if bottom == 0:
         return None if top == 0 else float("inf")
     return top / bottom
+
+
+def _value(run, name: str, unit: str) -> float:
+    return float(in_unit(run[name], unit))
+
+
+def _change(run, base, name: str) -> float:
+    """Ratio of a settled statistic of ``run`` to that of ``base``, unit-free."""
+    return _value(run, name, "1") / _value(base, name, "1")
 
 
 def ours(results: Path) -> dict:
@@ -268,20 +365,16 @@ def ours(results: Path) -> dict:
     combined = runs[("2 mm", "2 mm")]
     turned = _misalignment(results)
 
-    def value(run, name, unit):
-        return float(in_unit(run[name], unit))
-
-    def change(run, base, name):  # ratio of a settled statistic, unit-free
-        return value(run, name, "1") / value(base, name, "1")
-
-    values = {"slip_800_12000_3d": value(free, "mean_cage_slip", "%")}
+    values = {"slip_800_12000_3d": _value(free, "mean_cage_slip", "%")}
     for case, run in (("radial", radial), ("axial", axial)):
-        values[f"whirl_{case}"] = change(run, free, "whirl_deviation_ratio")
+        values[f"whirl_{case}"] = _change(run, free, "whirl_deviation_ratio")
+        values[f"whirl_{case}_centre"] = _change(run, free, "centre_whirl_deviation_ratio")
         for name in ("mean_cage_slip", "mean_roller_slip", "rms_roller_skew",
                      "rms_roller_tilt"):
-            values[f"{name}_{case}"] = change(run, free, name)
-    values["whirl_radial"] = 1 / values["whirl_radial"]  # steadier: aligned over eccentric
-    values["arc_contacts_radial"] = value(radial, "pocket_arc_events", "1")
+            values[f"{name}_{case}"] = _change(run, free, name)
+    for name in ("whirl_radial", "whirl_radial_centre"):  # steadier: centred over eccentric
+        values[name] = 1 / values[name]
+    values["arc_contacts_radial"] = _value(radial, "pocket_arc_events", "1")
     values["arc_force_radial_over_axial"] = _ratio(radial.pocket_arc_force.max(),
                                                    axial.pocket_arc_force.max())
     for name in ("pocket_end_clearance", "rib_clearance"):
@@ -292,18 +385,41 @@ def ours(results: Path) -> dict:
     aligned = turned["aligned"]
     for axis in ("x", "y"):
         run = turned[f"about_{axis}"]
-        values[f"whirl_misaligned_{axis}"] = change(run, aligned, "whirl_deviation_ratio")
+        values[f"whirl_misaligned_{axis}"] = _change(run, aligned, "whirl_deviation_ratio")
+        values[f"whirl_misaligned_{axis}_centre"] = _change(run, aligned,
+                                                           "centre_whirl_deviation_ratio")
         for name in ("mean_cage_slip", "mean_roller_slip", "rms_roller_skew",
                      "rms_roller_tilt"):
-            values[f"{name}_misaligned_{axis}"] = change(run, aligned, name)
+            values[f"{name}_misaligned_{axis}"] = _change(run, aligned, name)
     x, y = turned["about_x"], turned["about_y"]
     for name in ("whirl_deviation_ratio", "mean_cage_slip", "mean_roller_slip",
                  "rms_roller_skew", "rms_roller_tilt"):
-        values[f"{name}_x_over_y"] = change(x, y, name)
-    values["arc_contacts_misaligned_x"] = value(x, "pocket_arc_events", "1")
+        values[f"{name}_x_over_y"] = _change(x, y, name)
+    values["whirl_deviation_ratio_x_over_y_centre"] = _change(x, y, "centre_whirl_deviation_ratio")
+    values["arc_contacts_misaligned_x"] = _value(x, "pocket_arc_events", "1")
     for name in ("pocket_end_clearance", "rib_clearance"):
         gap = in_unit(x[name], "um").min("roller")
         values[f"{name}_both_sides_x"] = _two_sided(gap)
         values[f"{name}_edge_x"] = _edge_share(gap)
         values[f"{name}_alike_x"] = _alike(gap)
+    values.update(_thin_film(results))
     return {key: v for key, v in values.items() if v is not None}
+
+
+def _thin_film(results: Path) -> dict:
+    """Section 3.1's claims on the pocket arcs, slip and whirl, with the thin pocket film."""
+    runs, _ = _eccentricity(results, "eccentricity_thin_film")
+    free, radial, axial = runs[("0 mm", "0 mm")], runs[("2 mm", "0 mm")], runs[("0 mm",
+                                                                                "2 mm")]
+    values = {}
+    for name in ("mean_cage_slip", "mean_roller_slip"):
+        values[f"{name}_radial_thin_film"] = _change(radial, free, name)
+    for name, output in (("whirl_radial", "whirl_deviation_ratio"),
+                         ("whirl_radial_centre", "centre_whirl_deviation_ratio")):
+        values[f"{name}_thin_film"] = _change(free, radial, output)  # centred over eccentric
+    values["arc_contacts_radial_thin_film"] = _value(radial, "pocket_arc_events", "1")
+    values["arc_force_radial_over_axial_thin_film"] = _ratio(radial.pocket_arc_force.max(),
+                                                             axial.pocket_arc_force.max())
+    values["arc_force_outer_edge_radial_thin_film"] = _outer_share(radial.pocket_arc_force)
+    values["arc_force_even_axial_thin_film"] = _evenness(axial.pocket_arc_force)
+    return values
