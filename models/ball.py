@@ -233,7 +233,7 @@ def ball_5dof(ball_count, ball_diameter, pitch_diameter, contact_angle,
               inner_curvature_ratio=0.52, outer_curvature_ratio=0.53, clearance=0.0,
               youngs_modulus=207e9, poisson_ratio=0.3, contact_constant=None, axial_load=0.0,
               radial_load=0.0, radial_load_z=0.0, moment_y=0.0, moment_z=0.0,
-              geometry="jones", fixed_dofs=""):
+              geometry="jones", fixed_dofs="", pressure_limit=MAX_CONTACT_PRESSURE):
     """Equilibrium and 5 x 5 stiffness matrix of a ball bearing's inner ring.
 
     Parameters
@@ -265,6 +265,9 @@ def ball_5dof(ball_count, ball_diameter, pitch_diameter, contact_angle,
         on the unloaded contact angle, paper 001 eq. 2-7 as printed.
     fixed_dofs : str or sequence of str
         Displacements held at zero (names from ``DOFS``; a string separates them by spaces).
+    pressure_limit : array_like
+        Contact pressure above which a point is ``out_of_validity`` [Pa] (default 4200 MPa,
+        ISO 76's reference stress for ball bearings of through-hardened steel).
 
     Returns
     -------
@@ -282,7 +285,7 @@ def ball_5dof(ball_count, ball_diameter, pitch_diameter, contact_angle,
         stiffness is singular under load (the load cannot be carried, or not by a unique
         displacement) or where the iteration ran the ring out of the bearing (farther than
         ``A``) without an equilibrium; out of validity (4, values kept) beyond the limits of
-        ``MODELS[0].validity``: ``p0`` above ``MAX_CONTACT_PRESSURE`` [4], an approach above
+        ``MODELS[0].validity``: ``p0`` above ``pressure_limit`` [4], an approach above
         ``MAX_APPROACH_PER_DIAMETER`` ``D`` [5], a displacement beyond ``A``, or a loaded
         ball's contact angle of the opposite sign to ``alpha_0 > 0``.
 
@@ -317,9 +320,9 @@ def ball_5dof(ball_count, ball_diameter, pitch_diameter, contact_angle,
         ball_diameter, pitch_diameter, contact_angle, inner_curvature_ratio,
         outer_curvature_ratio, clearance, youngs_modulus, poisson_ratio, axial_load,
         radial_load, radial_load_z, moment_y, moment_z,
-        np.nan if contact_constant is None else contact_constant)))
+        np.nan if contact_constant is None else contact_constant, pressure_limit)))
     (diameter, pitch, angle, inner_ratio, outer_ratio, clearance, modulus, poisson,
-     *loads, given) = arrays
+     *loads, given, pressure_limit) = arrays
     inner, outer = raceway_contacts(diameter, pitch, angle, inner_ratio, outer_ratio, modulus,
                                     poisson)
     hertz_ok = (inner["status"] == CONVERGED) & (outer["status"] == CONVERGED)
@@ -353,7 +356,7 @@ def ball_5dof(ball_count, ball_diameter, pitch_diameter, contact_angle,
     unit_pressure = np.maximum(inner["max_pressure"], outer["max_pressure"])
     pressure = unit_pressure[:, None] * np.cbrt(ball_load)
     crossed = (angle[:, None] > 0) & (ball_load > 0) & (contact_angle < 0)
-    outside = ((pressure.max(axis=-1) > MAX_CONTACT_PRESSURE)
+    outside = ((pressure.max(axis=-1) > pressure_limit)
                | (approach.max(axis=-1) > MAX_APPROACH_PER_DIAMETER * diameter)
                | left_bearing | crossed.any(axis=-1))
     status = combine_status(status, np.where(outside, OUT_OF_VALIDITY, CONVERGED))
@@ -371,6 +374,7 @@ def ball_5dof(ball_count, ball_diameter, pitch_diameter, contact_angle,
         "ball_contact_angle": contact_angle,
         "loaded_balls": np.count_nonzero(approach > 0, axis=-1).astype(float),
         "max_contact_pressure": pressure,
+        "largest_contact_pressure": pressure.max(axis=-1),
         "hertz_contact_constant": hertz_constant,
     }
     outputs["status"] = status.astype(np.int8)
@@ -461,7 +465,7 @@ MODELS = [Model(
     summary="Ball bearing under axial, radial and moment loads: 5-DOF equilibrium of the inner "
             "ring, ball loads and contact angles, and the full 5 x 5 stiffness matrix.",
     reference="Paper 001, eq. 1-10; Jones (1960); Harris & Kotzalas, Rolling Bearing Analysis",
-    version="2",
+    version="3",
     inputs=(
         Input("ball_count", "1", "number of balls Z", kind="count", minimum=3, maximum=1000),
         Input("ball_diameter", "mm", "ball diameter D", minimum=0.0, exclusive_minimum=True),
@@ -492,6 +496,9 @@ MODELS = [Model(
               "paper eq. 2-7 as printed", default="jones", kind="choice", choices=GEOMETRIES),
         Input("fixed_dofs", "", "displacements held at zero", default=(), kind="subset",
               choices=DOFS),
+        Input("pressure_limit", "MPa", "contact pressure above which a point is out of "
+              "validity (ISO 76: 4200 for ball bearings of through-hardened steel)",
+              default=4200.0, minimum=0.0, exclusive_minimum=True),
     ),
     outputs=(
         Output("displacement", "m, rad", "displacement of the inner ring", dims=("dof",),
@@ -513,6 +520,8 @@ MODELS = [Model(
         Output("max_contact_pressure", "MPa", "maximum Hertz contact pressure p0 = 3Q/(2 pi a "
                "b) of each ball, the larger of its inner and outer contact", dims=("ball",),
                label="maximum contact pressure"),
+        Output("largest_contact_pressure", "MPa", "largest maximum contact pressure of all "
+               "balls", label="largest contact pressure"),
         # In SI: UDUNITS reads no fractional power of a prefixed unit such as mm^1.5.
         Output("hertz_contact_constant", "N/m^1.5", "load-deflection constant K that Hertz "
                "theory gives for the curvature ratios (eq. 4-5, series law corrected); "
@@ -543,7 +552,8 @@ MODELS = [Model(
     ),
     seconds_per_point=3e-5,
     points_per_call=500,
-    validity="max_contact_pressure above 4200 MPa (ISO 76:2006: the contact stress of the "
+    validity="max_contact_pressure above pressure_limit (default 4200 MPa, ISO 76:2006: the "
+             "contact stress of the "
              "static load rating of ball bearings, where raceways deform permanently by about "
              "1e-4 D; elastic Hertz theory no longer holds); a ball's approach (both contacts) "
              "above 1 % of the ball diameter D (Hertz theory needs contacts small against the "

@@ -221,7 +221,7 @@ def crb_radial(radial_load, roller_count, pitch_diameter, roller_diameter, effec
                clearance=0.0, crown=0.0, crown_profile="logarithmic", slices=60,
                slice_law="uniform", outer_contact="crowned", speed=0.0, roller_density=7850.0,
                contact_constant=None, cage_position=0.0, perturbation=1e-6,
-               youngs_modulus=207e9, poisson_ratio=0.3):
+               youngs_modulus=207e9, poisson_ratio=0.3, pressure_limit=ROLLER_PRESSURE_LIMIT):
     """Load distribution and radial stiffness of a cylindrical roller bearing.
 
     Solves the inner ring's radial displacement under a radial load, with crowned rollers
@@ -267,6 +267,9 @@ def crb_radial(radial_load, roller_count, pitch_diameter, roller_diameter, effec
     youngs_modulus, poisson_ratio : array_like
         ``E`` [Pa] and ``nu`` [-] of rollers and rings. They enter the contact pressure only;
         the load-deflection constant is ``contact_constant`` (Palmgren's is for steel).
+    pressure_limit : array_like
+        Contact pressure above which a point is ``out_of_validity`` [Pa] (default 4000 MPa,
+        ISO 76's reference stress for roller bearings of through-hardened steel).
 
     Returns
     -------
@@ -293,7 +296,7 @@ def crb_radial(radial_load, roller_count, pitch_diameter, roller_diameter, effec
     half-space solution of the slices' interaction).
 
     Validity: a solved point is ``out_of_validity`` (values kept) where a roller's maximum
-    contact pressure exceeds ``ROLLER_PRESSURE_LIMIT`` (4000 MPa, the reference stress of
+    contact pressure exceeds ``pressure_limit`` (default 4000 MPa, the reference stress of
     ISO 76's static load rating for roller bearings: beyond it the permanent deformation
     exceeds 1e-4 of the roller diameter and the elastic contact laws fail), or a roller's
     approach (both contacts) exceeds ``APPROACH_LIMIT`` (2 %) of the roller diameter, where
@@ -315,10 +318,10 @@ def crb_radial(radial_load, roller_count, pitch_diameter, roller_diameter, effec
     arrays = np.broadcast_arrays(*(np.asarray(a, dtype=float) for a in (
         radial_load, pitch_diameter, roller_diameter, effective_length, clearance, crown,
         speed, roller_density, contact_constant, cage_position, perturbation,
-        effective_modulus(youngs_modulus, poisson_ratio))))
+        effective_modulus(youngs_modulus, poisson_ratio), pressure_limit)))
     shape = arrays[0].shape
     (load, pitch, diameter, length, clearance, crown, speed, density, constant,
-     cage_position, perturbation, modulus) = (a.ravel() for a in arrays)
+     cage_position, perturbation, modulus, pressure_limit) = (a.ravel() for a in arrays)
     azimuth = cage_position[:, None] + 2.0 * np.pi * np.arange(roller_count) / roller_count
     gap_shape, gap_count = distinct_slices(slices, crown_profile)
     if outer_contact not in OUTER_CONTACTS:
@@ -336,7 +339,8 @@ def crb_radial(radial_load, roller_count, pitch_diameter, roller_diameter, effec
         line_contact_pressure(inner_load, inner_curvature[:, None], modulus[:, None]),
         line_contact_pressure(outer_load, outer_curvature[:, None], modulus[:, None]))
     outputs["max_contact_pressure"] = pressure  # NaN where the point failed
-    beyond = ((pressure > ROLLER_PRESSURE_LIMIT) | (inner + outer > APPROACH_LIMIT
+    outputs["largest_contact_pressure"] = pressure.max(axis=-1)
+    beyond = ((pressure > pressure_limit[:, None]) | (inner + outer > APPROACH_LIMIT
                                                     * diameter[:, None])).any(axis=-1)
     outputs["status"] = np.where((outputs["status"] == CONVERGED) & beyond, OUT_OF_VALIDITY,
                                  outputs["status"]).astype(np.int8)
@@ -419,7 +423,7 @@ MODELS = [Model(
     summary="Cylindrical roller bearing under radial load: load distribution and radial stiffness "
             "with crowned rollers (slices), centrifugal force and clearance.",
     reference="Paper 000, Radial stiffness analysis of cylindrical roller bearing, eq. 1-16",
-    version="2",
+    version="3",
     inputs=(
         Input("radial_load", "N", "radial load Fr on the inner ring", minimum=0.0),
         Input("roller_count", "1", "number of rollers Z", kind="count", minimum=3, maximum=1000),
@@ -455,6 +459,9 @@ MODELS = [Model(
               "only)", default=207.0, minimum=0.0, exclusive_minimum=True),
         Input("poisson_ratio", "1", "Poisson's ratio of rollers and rings (contact pressure "
               "only)", default=0.3, minimum=0.0, maximum=0.5),
+        Input("pressure_limit", "MPa", "contact pressure above which a point is out of "
+              "validity (ISO 76: 4000 for roller bearings of through-hardened steel)",
+              default=4000.0, minimum=0.0, exclusive_minimum=True),
     ),
     outputs=(
         Output("radial_displacement", "mm", "radial displacement of the inner ring"),
@@ -474,6 +481,8 @@ MODELS = [Model(
         Output("max_contact_pressure", "MPa", "largest Hertz line-contact pressure of each "
                "roller's slices, inner or outer raceway", dims=("roller",),
                label="maximum contact pressure"),
+        Output("largest_contact_pressure", "MPa", "largest maximum contact pressure of all "
+               "rollers", label="largest contact pressure"),
     ),
     dim_sizes={"roller": "roller_count"},
     constraints=(
@@ -490,7 +499,8 @@ MODELS = [Model(
     ),
     seconds_per_point=1e-4,
     points_per_call=500,
-    validity="a roller's maximum contact pressure above 4000 MPa (ISO 76's reference stress "
-             "for roller bearings) or its approach (both contacts) above 2 % of the roller "
-             "diameter; speed only through the pressure its centrifugal force causes",
+    validity="a roller's maximum contact pressure above pressure_limit (default 4000 MPa, "
+             "ISO 76's reference stress for roller bearings) or its approach (both contacts) "
+             "above 2 % of the roller diameter; speed only through the pressure its "
+             "centrifugal force causes",
 )]

@@ -75,7 +75,7 @@ def cone_curvature_sum(roller_mean_diameter, pitch_diameter, contact_angle):
 
 def trb_load(radial_load, axial_load, roller_count, effective_length, roller_mean_diameter,
              outer_contact_angle, contact_constant=None, pitch_diameter=None,
-             youngs_modulus=206e9, poisson_ratio=0.3):
+             youngs_modulus=206e9, poisson_ratio=0.3, pressure_limit=ROLLER_PRESSURE_LIMIT):
     """Displacements and roller loads of a tapered roller bearing under combined load.
 
     Parameters
@@ -94,6 +94,9 @@ def trb_load(radial_load, axial_load, roller_count, effective_length, roller_mea
         ``d_m`` [m], for the contact pressure only; None: the pressure is not computed (NaN).
     youngs_modulus, poisson_ratio : array_like
         Of rollers and rings [Pa], [-], for the contact pressure only.
+    pressure_limit : array_like
+        Contact pressure above which a point is ``out_of_validity`` [Pa] (default 4000 MPa,
+        ISO 76's reference stress for roller bearings of through-hardened steel).
 
     Returns
     -------
@@ -120,10 +123,11 @@ def trb_load(radial_load, axial_load, roller_count, effective_length, roller_mea
     ``inner_load``), 0.7 % less with paper 003's roller (``phi`` = 4 deg, ``Psi`` = 89 deg).
 
     Validity: a solved point is ``out_of_validity`` (values kept) where a roller's contact
-    pressure exceeds 4000 MPa (ISO 76's reference stress for roller bearings, beyond which
-    the permanent deformation exceeds 1e-4 of the roller diameter and the contact is no
-    longer elastic; checked only with ``pitch_diameter``), or its compression exceeds 2 % of
-    ``D_w``, where the fixed contact angle and azimuths of the model no longer hold.
+    pressure exceeds ``pressure_limit`` (default 4000 MPa, ISO 76's reference stress for roller
+    bearings, beyond which the permanent deformation exceeds 1e-4 of the roller diameter and
+    the contact is no longer elastic; checked only with ``pitch_diameter``), or its compression
+    exceeds 2 % of ``D_w``, where the fixed contact angle and azimuths of the model no longer
+    hold.
 
     References
     ----------
@@ -135,8 +139,8 @@ def trb_load(radial_load, axial_load, roller_count, effective_length, roller_mea
         radial_load, axial_load, effective_length, roller_mean_diameter, outer_contact_angle,
         np.nan if contact_constant is None else contact_constant,
         np.nan if pitch_diameter is None else pitch_diameter,
-        effective_modulus(youngs_modulus, poisson_ratio))))
-    radial, axial, length, diameter, angle, given, pitch, modulus = arrays
+        effective_modulus(youngs_modulus, poisson_ratio), pressure_limit)))
+    radial, axial, length, diameter, angle, given, pitch, modulus, pressure_limit = arrays
     constant = np.where(np.isnan(given), paper_contact_constant(length, diameter), given)
     azimuth = _roller_azimuths(roller_count)
     # The rows that turn (delta_r, delta_a) into each roller's compression, (N, Z, 2).
@@ -167,14 +171,15 @@ def trb_load(radial_load, axial_load, roller_count, effective_length, roller_mea
         roller_load / length[:, None],
         cone_curvature_sum(diameter, pitch, angle)[:, None], modulus[:, None])
     converged &= np.isfinite(displacement).all(axis=-1) & np.isfinite(roller_load).all(axis=-1)
-    beyond = ((pressure > ROLLER_PRESSURE_LIMIT)
+    beyond = ((pressure > pressure_limit[:, None])
               | (compression > APPROACH_LIMIT * diameter[:, None])).any(axis=-1)
     status = np.select([~carried, ~converged, beyond], [INFEASIBLE, NOT_CONVERGED,
                                                         OUT_OF_VALIDITY], CONVERGED)
     return {"radial_displacement": displacement[:, 0], "axial_displacement": displacement[:, 1],
             "roller_load": roller_load,
             "loaded_rollers": np.count_nonzero(compression > 0, axis=-1).astype(float),
-            "max_contact_pressure": pressure, "status": status.astype(np.int8)}
+            "max_contact_pressure": pressure, "largest_contact_pressure": pressure.max(axis=-1),
+            "status": status.astype(np.int8)}
 
 
 class RollerEnd:
@@ -474,13 +479,16 @@ MODELS = [
         summary="Tapered roller bearing under radial and axial load: radial and axial "
                 "displacement and the load of every roller.",
         reference=_REFERENCE + ", eq. 13-18",
-        version="2",
+        version="3",
         inputs=_LOAD_INPUTS + (
             _CONSTANT,
             Input("pitch_diameter", "mm", "pitch diameter dm at the middle of the rollers, for "
                   "the contact pressure only; default: no pressure (NaN)", default=None,
                   minimum=0.0, exclusive_minimum=True),
-            _MODULUS, _POISSON),
+            _MODULUS, _POISSON,
+            Input("pressure_limit", "MPa", "contact pressure above which a point is out of "
+                  "validity (ISO 76: 4000 for roller bearings of through-hardened steel)",
+                  default=4000.0, minimum=0.0, exclusive_minimum=True)),
         outputs=(
             Output("radial_displacement", "mm", "radial displacement delta_r of the inner ring",
                    label="radial displacement"),
@@ -493,6 +501,9 @@ MODELS = [
                    "on the cone (inner raceway, the more curved), its load Qe spread over l; "
                    "NaN without pitch_diameter", dims=("roller",),
                    label="maximum contact pressure"),
+            Output("largest_contact_pressure", "MPa", "largest maximum contact pressure of "
+                   "all rollers (NaN without pitch_diameter)",
+                   label="largest contact pressure"),
         ),
         dim_sizes={"roller": "roller_count"},
         constraints=(_CARRIED, Constraint(
@@ -500,9 +511,9 @@ MODELS = [
             "pitch_diameter must exceed roller_mean_diameter")),
         seconds_per_point=2e-5,
         points_per_call=2000,
-        validity="a roller's cone contact pressure above 4000 MPa (ISO 76's reference stress "
-                 "for roller bearings; checked when pitch_diameter is given) or its "
-                 "compression above 2 % of the mean roller diameter",
+        validity="a roller's cone contact pressure above pressure_limit (default 4000 MPa, "
+                 "ISO 76's reference stress for roller bearings; checked when pitch_diameter "
+                 "is given) or its compression above 2 % of the mean roller diameter",
     ),
     Model(
         name="trb_rib",

@@ -323,3 +323,16 @@ def test_a_fixed_angle_equilibrium_far_outside_the_bearing_is_out_of_validity():
                        radial_load=1000.0, geometry="fixed_angle", fixed_dofs="tilt_y tilt_z")
     assert result["displacement"][0, 0] > 0.05 * ACBB["ball_diameter"]
     assert result["status"][0] == OUT_OF_VALIDITY
+
+
+def test_the_pressure_limit_is_the_users_and_flags_without_changing_values():
+    # The largest pressure of a loaded bearing lies between two limits a user may state: the
+    # point is flagged under the lower one only, and its solution does not move.
+    bearing = dict(ball_count=12, ball_diameter=10 * MM, pitch_diameter=60 * MM,
+                   contact_angle=0.0, radial_load=3000.0, fixed_dofs="axial tilt_y tilt_z")
+    largest = ball_5dof(**bearing)["largest_contact_pressure"][0]
+    assert 1000e6 < largest < 4200e6
+    result = ball_5dof(**bearing, pressure_limit=np.array([4200e6, 1.01 * largest,
+                                                          0.99 * largest]))
+    assert result["status"].tolist() == [CONVERGED, CONVERGED, OUT_OF_VALIDITY]
+    assert np.ptp(result["ball_load"], axis=0).max() == 0.0

@@ -246,3 +246,18 @@ def test_an_unconverged_free_outer_approach_fails_the_point(monkeypatch):
     result = crb_radial(4000.0, crown=0.004 * MM, speed=8000 * RPM, **BEARING_D)
     assert result["status"] == NOT_CONVERGED
     assert np.isnan(result["radial_displacement"])
+
+
+def test_the_pressure_limit_is_the_users_and_flags_without_changing_values():
+    # Bearing D at 4 kN stays below ISO 76's 4000 MPa; a user's lower limit between its
+    # largest roller pressure and that flags the point and leaves its solution as it was.
+    from bearing_sweep.models.registry import OUT_OF_VALIDITY
+
+    reference = crb_radial(4000.0, crown=0.004 * MM, **BEARING_D)
+    largest = reference["largest_contact_pressure"]
+    assert largest == np.nanmax(reference["max_contact_pressure"])
+    assert 500e6 < largest < 4000e6
+    result = crb_radial(4000.0, crown=0.004 * MM, **BEARING_D,
+                        pressure_limit=np.array([1.01, 0.99]) * largest)
+    assert result["status"].tolist() == [CONVERGED, OUT_OF_VALIDITY]
+    assert np.ptp(result["radial_displacement"]) == 0.0

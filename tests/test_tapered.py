@@ -247,3 +247,13 @@ def test_the_limits_do_not_depend_on_the_other_points_in_the_batch():
                                       together["limit_rib_angle"][i])
     assert together["status"].tolist() == [NO_ROOT_IN_RANGE, CONVERGED, CONVERGED, CONVERGED,
                                            INFEASIBLE]
+
+
+def test_the_pressure_limit_is_the_users_and_flags_without_changing_values():
+    # Paper 003's load gives 1815 MPa on the most loaded roller (the test above): a case-
+    # hardened design limit of 1500 MPa flags it, 2000 MPa does not; the numbers stay.
+    limits = np.array([4000e6, 2000e6, 1500e6])
+    result = trb_load(40e3, 27e3, **BEARING, pitch_diameter=PITCH, pressure_limit=limits)
+    assert result["status"].tolist() == [CONVERGED, CONVERGED, OUT_OF_VALIDITY]
+    assert result["largest_contact_pressure"] == pytest.approx(1815e6, rel=2e-3)
+    assert np.ptp(result["roller_load"], axis=0).max() == 0.0
