@@ -498,7 +498,8 @@ MODELS = [Model(
               choices=DOFS),
         Input("pressure_limit", "MPa", "contact pressure above which a point is out of "
               "validity (ISO 76: 4200 for ball bearings of through-hardened steel)",
-              default=4200.0, minimum=0.0, exclusive_minimum=True),
+              default=4200.0, minimum=0.0, exclusive_minimum=True,
+              label="contact pressure limit"),
     ),
     outputs=(
         Output("displacement", "m, rad", "displacement of the inner ring", dims=("dof",),

@@ -461,7 +461,8 @@ MODELS = [Model(
               "only)", default=0.3, minimum=0.0, maximum=0.5),
         Input("pressure_limit", "MPa", "contact pressure above which a point is out of "
               "validity (ISO 76: 4000 for roller bearings of through-hardened steel)",
-              default=4000.0, minimum=0.0, exclusive_minimum=True),
+              default=4000.0, minimum=0.0, exclusive_minimum=True,
+              label="contact pressure limit"),
     ),
     outputs=(
         Output("radial_displacement", "mm", "radial displacement of the inner ring"),
