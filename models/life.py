@@ -456,7 +456,8 @@ def lamina_load_rating(contact_rating, laminae):
 
 
 def roller_reference_rating_life(inner_lamina_rating, outer_lamina_rating,
-                                 inner_lamina_equivalent_loads, outer_lamina_equivalent_loads):
+                                 inner_lamina_equivalent_loads, outer_lamina_equivalent_loads,
+                                 lamina_weights=None):
     """Basic reference rating life of a roller bearing summed over laminae.
 
     ``L10r = {sum_k [(q_ei,k / q_ci)^(9/2) + (q_ee,k / q_ce)^(9/2)]}^(-8/9)``: each lamina
@@ -468,6 +469,10 @@ def roller_reference_rating_life(inner_lamina_rating, outer_lamina_rating,
         ``q_ci``, ``q_ce`` [N] (:func:`lamina_load_rating`), one value per point.
     inner_lamina_equivalent_loads, outer_lamina_equivalent_loads : array_like
         ``q_ei,k``, ``q_ee,k`` of every lamina, ``(..., n_s)`` [N].
+    lamina_weights : array_like or None
+        Number of laminae each column stands for, ``(n_s,)`` [-] (a symmetric roller
+        stored as its distinct slices with their counts, as
+        :func:`models.contact.sliced_line_contact` does); None: one each.
 
     Returns
     -------
@@ -480,9 +485,10 @@ def roller_reference_rating_life(inner_lamina_rating, outer_lamina_rating,
     """
     inner_rating = np.asarray(inner_lamina_rating, dtype=float)[..., None]
     outer_rating = np.asarray(outer_lamina_rating, dtype=float)[..., None]
-    damage = np.sum((np.asarray(inner_lamina_equivalent_loads, dtype=float) / inner_rating) ** 4.5
-                    + (np.asarray(outer_lamina_equivalent_loads, dtype=float) / outer_rating)
-                    ** 4.5, axis=-1)
+    damage = ((np.asarray(inner_lamina_equivalent_loads, dtype=float) / inner_rating) ** 4.5
+              + (np.asarray(outer_lamina_equivalent_loads, dtype=float) / outer_rating) ** 4.5)
+    weights = 1.0 if lamina_weights is None else np.asarray(lamina_weights, dtype=float)
+    damage = np.sum(damage * weights, axis=-1)
     with np.errstate(divide="ignore"):
         return damage ** (-8.0 / 9.0)
 
@@ -490,7 +496,8 @@ def roller_reference_rating_life(inner_lamina_rating, outer_lamina_rating,
 def roller_bearing_reference_life(inner_lamina_loads, dynamic_load_rating, roller_diameter,
                                   pitch_diameter, contact_angle=0.0, outer_lamina_loads=None,
                                   rotating_ring="inner", rows=1,
-                                  reduction_factor=ROLLER_REDUCTION_FACTOR, stress_factor=1.0):
+                                  reduction_factor=ROLLER_REDUCTION_FACTOR, stress_factor=1.0,
+                                  lamina_weights=None):
     """ISO/TS 16281 basic reference rating life of a roller bearing from its lamina loads.
 
     Parameters
@@ -510,6 +517,10 @@ def roller_bearing_reference_life(inner_lamina_loads, dynamic_load_rating, rolle
         Factor on each lamina's load for a stress concentration the load distribution does
         not hold (ISO/TS 16281's factor ``f_k`` at the roller ends), ``(n_s,)`` or scalar
         [-]; 1: the lamina loads as given.
+    lamina_weights : array_like or None
+        Number of laminae each column of the lamina loads stands for, ``(n_s,)`` [-]
+        (distinct slices of a symmetric roller with their counts); None: one each. The
+        lamina count of the ratings is their sum.
 
     Returns
     -------
@@ -529,6 +540,8 @@ def roller_bearing_reference_life(inner_lamina_loads, dynamic_load_rating, rolle
     outer_lamina_loads = (inner_lamina_loads if outer_lamina_loads is None
                           else np.asarray(outer_lamina_loads, dtype=float) * stress_factor)
     roller_count, laminae = inner_lamina_loads.shape[-2:]
+    if lamina_weights is not None:
+        laminae = float(np.sum(lamina_weights))
     inner_exponent, outer_exponent = _ring_exponents("roller", rotating_ring)
     inner_rating, outer_rating = roller_contact_load_ratings(
         dynamic_load_rating, roller_count, roller_diameter, pitch_diameter, contact_angle, rows,
@@ -536,7 +549,7 @@ def roller_bearing_reference_life(inner_lamina_loads, dynamic_load_rating, rolle
     return roller_reference_rating_life(
         lamina_load_rating(inner_rating, laminae), lamina_load_rating(outer_rating, laminae),
         equivalent_element_load(inner_lamina_loads, inner_exponent, axis=-2),
-        equivalent_element_load(outer_lamina_loads, outer_exponent, axis=-2))
+        equivalent_element_load(outer_lamina_loads, outer_exponent, axis=-2), lamina_weights)
 
 
 def equivalent_reference_load(dynamic_load_rating, reference_life, kind="ball"):

@@ -149,6 +149,18 @@ def test_lamina_ratings_make_the_life_independent_of_the_slicing():
     assert sliced == pytest.approx(whole, rel=1e-12)
 
 
+def test_weighted_laminae_stand_for_their_copies():
+    # A symmetric roller kept as its distinct slices and their counts (as crb_radial's
+    # sliced contact stores it) lives as long as with every slice written out.
+    distinct = np.array([[120.0, 100.0, 60.0], [80.0, 70.0, 30.0], [0.0, 0.0, 0.0]])
+    counts = np.array([2, 4, 2])
+    expanded = np.repeat(distinct, counts, axis=1)
+    weighted = life.roller_bearing_reference_life(distinct, 20e3, 8e-3, 50e-3,
+                                                  lamina_weights=counts)
+    assert weighted == pytest.approx(
+        life.roller_bearing_reference_life(expanded, 20e3, 8e-3, 50e-3), rel=1e-12)
+
+
 def test_rotating_ring_takes_the_cubic_mean():
     # ISO/TS 16281 eq. (25)-(28): the rotating ring averages the ball loads to the power 3,
     # the stationary one to 10/3; an outer ring rotating swaps them.
