@@ -18,6 +18,7 @@ import numpy as np
 
 from .contact import POINT_CONTACT_EXPONENT, hertz_point
 from .geometry import elements_fit
+from .life import ball_bearing_reference_life
 from .registry import (CONVERGED, INFEASIBLE, NOT_CONVERGED, OUT_OF_VALIDITY, Constraint,
                              Input, Model, Output, combine_status)
 from .solvers import solve_equilibrium
@@ -233,7 +234,8 @@ def ball_5dof(ball_count, ball_diameter, pitch_diameter, contact_angle,
               inner_curvature_ratio=0.52, outer_curvature_ratio=0.53, clearance=0.0,
               youngs_modulus=207e9, poisson_ratio=0.3, contact_constant=None, axial_load=0.0,
               radial_load=0.0, radial_load_z=0.0, moment_y=0.0, moment_z=0.0,
-              geometry="jones", fixed_dofs="", pressure_limit=MAX_CONTACT_PRESSURE):
+              geometry="jones", fixed_dofs="", pressure_limit=MAX_CONTACT_PRESSURE,
+              dynamic_load_rating=None):
     """Equilibrium and 5 x 5 stiffness matrix of a ball bearing's inner ring.
 
     Parameters
@@ -268,6 +270,9 @@ def ball_5dof(ball_count, ball_diameter, pitch_diameter, contact_angle,
     pressure_limit : array_like
         Contact pressure above which a point is ``out_of_validity`` [Pa] (default 4200 MPa,
         ISO 76's reference stress for ball bearings of through-hardened steel).
+    dynamic_load_rating : array_like or None
+        The bearing's basic dynamic load rating ``C_r`` [N], for the reference rating life;
+        None: no life (NaN).
 
     Returns
     -------
@@ -279,8 +284,11 @@ def ball_5dof(ball_count, ball_diameter, pitch_diameter, contact_angle,
         ``K_44`` [N m/rad] (eq. 10, the diagonal); ``ball_load`` ``(N, Z)`` [N];
         ``ball_contact_angle`` ``(N, Z)`` [rad]; ``loaded_balls``; ``max_contact_pressure``
         ``(N, Z)`` [Pa], the larger Hertz ``p0 = 3Q/(2 pi a b)`` of each ball's two contacts
-        (exact ellipse, raceway curvatures at ``alpha_0`` as for the Hertz constant [3]);
-        ``hertz_contact_constant`` [N/m^1.5] (whether or not ``contact_constant`` replaces
+        (exact ellipse, raceway curvatures at ``alpha_0`` as for the Hertz constant [3]),
+        ``largest_contact_pressure`` over the balls [Pa]; ``reference_rating_life``
+        (ISO/TS 16281's L10r, inner ring rotating, from the ball loads; :mod:`models.life`)
+        [rad: 10^6 revolutions of 2 pi]; ``hertz_contact_constant`` [N/m^1.5] (whether or
+        not ``contact_constant`` replaces
         it); ``status``: not converged (1); infeasible (2) where the free displacements'
         stiffness is singular under load (the load cannot be carried, or not by a unique
         displacement) or where the iteration ran the ring out of the bearing (farther than
@@ -320,9 +328,10 @@ def ball_5dof(ball_count, ball_diameter, pitch_diameter, contact_angle,
         ball_diameter, pitch_diameter, contact_angle, inner_curvature_ratio,
         outer_curvature_ratio, clearance, youngs_modulus, poisson_ratio, axial_load,
         radial_load, radial_load_z, moment_y, moment_z,
-        np.nan if contact_constant is None else contact_constant, pressure_limit)))
+        np.nan if contact_constant is None else contact_constant, pressure_limit,
+        np.nan if dynamic_load_rating is None else dynamic_load_rating)))
     (diameter, pitch, angle, inner_ratio, outer_ratio, clearance, modulus, poisson,
-     *loads, given, pressure_limit) = arrays
+     *loads, given, pressure_limit, rating) = arrays
     inner, outer = raceway_contacts(diameter, pitch, angle, inner_ratio, outer_ratio, modulus,
                                     poisson)
     hertz_ok = (inner["status"] == CONVERGED) & (outer["status"] == CONVERGED)
@@ -375,10 +384,21 @@ def ball_5dof(ball_count, ball_diameter, pitch_diameter, contact_angle,
         "loaded_balls": np.count_nonzero(approach > 0, axis=-1).astype(float),
         "max_contact_pressure": pressure,
         "largest_contact_pressure": pressure.max(axis=-1),
+        "reference_rating_life": _reference_life(ball_load, rating, diameter, pitch, angle,
+                                                 inner_ratio, outer_ratio),
         "hertz_contact_constant": hertz_constant,
     }
     outputs["status"] = status.astype(np.int8)
     return outputs
+
+
+def _reference_life(ball_load, rating, diameter, pitch, angle, inner_ratio, outer_ratio):
+    """ISO/TS 16281's L10r of the inner ring rotating under the ball loads, in SI [rad]
+    (10^6 revolutions of 2 pi each); infinite without load, NaN without a rating."""
+    with np.errstate(divide="ignore", invalid="ignore"):
+        millions = ball_bearing_reference_life(ball_load, rating, diameter, pitch, angle,
+                                               inner_ratio, outer_ratio)
+    return millions * 2e6 * np.pi
 
 
 def _equilibrium(rings: _Rings, load, free, ball_count):
@@ -500,6 +520,9 @@ MODELS = [Model(
               "validity (ISO 76: 4200 for ball bearings of through-hardened steel)",
               default=4200.0, minimum=0.0, exclusive_minimum=True,
               label="contact pressure limit"),
+        Input("dynamic_load_rating", "N", "basic dynamic load rating Cr of the bearing, for "
+              "the reference rating life; default: no life (NaN)", default=None,
+              minimum=0.0, exclusive_minimum=True, label="dynamic load rating"),
     ),
     outputs=(
         Output("displacement", "m, rad", "displacement of the inner ring", dims=("dof",),
@@ -523,6 +546,9 @@ MODELS = [Model(
                label="maximum contact pressure"),
         Output("largest_contact_pressure", "MPa", "largest maximum contact pressure of all "
                "balls", label="largest contact pressure"),
+        Output("reference_rating_life", "Mturn", "basic reference rating life L10r, ISO/TS "
+               "16281, inner ring rotating (millions of revolutions; NaN without "
+               "dynamic_load_rating)", label="reference rating life"),
         # In SI: UDUNITS reads no fractional power of a prefixed unit such as mm^1.5.
         Output("hertz_contact_constant", "N/m^1.5", "load-deflection constant K that Hertz "
                "theory gives for the curvature ratios (eq. 4-5, series law corrected); "
