@@ -298,11 +298,11 @@ def start(count, p, whole, steady, drop, omega_c, kinematic_spin):
     orbit = steady["orbit_angle"][0]
     spin = (1 - steady["roller_slip"][0]) * kinematic_spin
     half_play = 0.5 * (p[rhs.R_OUTER] - p[rhs.R_INNER] - 2 * p[rhs.RADIUS])
+    centrifugal = p[rhs.M_ROLLER] * p[rhs.PITCH] * omega_c**2
     for j in range(count):
         position = 2 * np.pi * j / count
         angle = position - np.pi / 2
         approach = drop * np.sin(-angle) - half_play  # ring moved by (0, -drop)
-        centrifugal = p[rhs.M_ROLLER] * p[rhs.PITCH] * omega_c**2
         _, outer = roller_loads(approach, centrifugal, whole)
         rho = p[rhs.R_OUTER] - p[rhs.RADIUS] + (outer / whole) ** 0.9
         k = rhs.RING + rhs.ROLLER_SIZE * j
@@ -373,11 +373,10 @@ def results(samples, run):
     count, times, p = run["count"], run["times"], run["p"]
     c = rhs.RING + rhs.ROLLER_SIZE * count
     settled = times >= _SETTLED * times[-1]
-    turns = [rhs.rotation(q) for q in samples[:, c + 6:c + 10]]
-    axes_z = np.array([t[:, 2] for t in turns])
-    cage_rate = np.einsum("sij,sj->si", np.array(turns), samples[:, c + 10:c + 13])
-    slip = 1 - np.einsum("si,si->s", cage_rate, axes_z) / run["omega_kin"]
-    offset = np.array([t[:, 0] * p[rhs.ECC_RADIAL] + t[:, 2] * p[rhs.ECC_AXIAL] for t in turns])
+    turns = np.array([rhs.rotation(q) for q in samples[:, c + 6:c + 10]])  # body axes
+    cage_rate = np.einsum("sij,sj->si", turns, samples[:, c + 10:c + 13])
+    slip = 1 - np.einsum("si,si->s", cage_rate, turns[:, :, 2]) / run["omega_kin"]
+    offset = turns[:, :, 0] * p[rhs.ECC_RADIAL] + turns[:, :, 2] * p[rhs.ECC_AXIAL]
     centre = samples[:, c:c + 3] - offset
     centre_velocity = samples[:, c + 3:c + 6] - np.cross(cage_rate, offset)
     centre_speed = np.hypot(centre_velocity[:, 0], centre_velocity[:, 1])
