@@ -90,6 +90,33 @@ def sliced_line_contact(approach, gaps, counts, contact_constant, slice_law="uni
     return scale * load_sum, scale * n * slope_sum
 
 
+def slice_loads(approach, gaps, counts, contact_constant, slice_law="uniform"):
+    """Load of each distinct slice of a sliced line contact [N].
+
+    Parameters
+    ----------
+    approach, gaps, counts, contact_constant, slice_law
+        As :func:`sliced_line_contact`.
+
+    Returns
+    -------
+    numpy.ndarray
+        ``q_lambda = K/k (delta - c_lambda)^n`` ('uniform'; ``K/k_j`` with ``k_j`` loaded
+        slices for 'paper'), shape ``S + (m,)``; each of the ``counts[lambda]`` slices of a
+        gap carries it, so ``(q * counts).sum(-1)`` is :func:`sliced_line_contact`'s load.
+        These are the laminae of ISO/TS 16281, 5.3.
+    """
+    penetration = np.maximum(approach[..., None] - gaps, 0.0)
+    if slice_law == "uniform":
+        divisor = counts.sum()
+    elif slice_law == "paper":
+        divisor = np.einsum("...m,m->...", (penetration > 0.0).astype(float), counts)
+        divisor = np.where(divisor > 0.0, divisor, 1.0)[..., None]
+    else:
+        raise ValueError(f"unknown slice law {slice_law!r}; expected one of {SLICE_LAWS}")
+    return np.asarray(contact_constant)[..., None] / divisor * penetration**LINE_CONTACT_EXPONENT
+
+
 def largest_slice_line_load(approach, gaps, counts, contact_constant, effective_length,
                             slice_law="uniform"):
     """Load per unit length of the most loaded slice of a sliced line contact [N/m].
@@ -104,21 +131,12 @@ def largest_slice_line_load(approach, gaps, counts, contact_constant, effective_
     Returns
     -------
     numpy.ndarray
-        ``w = q_max / (l / k)``: the slice with the smallest gap carries
-        ``q_max = K/k (delta - c_min)^n`` ('uniform'; ``K/k_j`` with ``k_j`` loaded slices for
-        'paper') on its length ``l/k``, so ``w = K/l (delta - c_min)^n`` ('uniform'). Shape
-        ``S``; zero where no slice touches.
+        ``w = q_max / (l / k)`` with ``q_max`` the largest of :func:`slice_loads` (the slice
+        with the smallest gap); ``w = K/l (delta - c_min)^n`` ('uniform'). Shape ``S``; zero
+        where no slice touches.
     """
-    n = LINE_CONTACT_EXPONENT
-    deepest = np.maximum(approach - gaps.min(axis=-1), 0.0)
-    if slice_law == "uniform":
-        share = 1.0
-    elif slice_law == "paper":
-        loaded = np.einsum("...m,m->...", (approach[..., None] > gaps).astype(float), counts)
-        share = counts.sum() / np.where(loaded > 0.0, loaded, 1.0)
-    else:
-        raise ValueError(f"unknown slice law {slice_law!r}; expected one of {SLICE_LAWS}")
-    return share * contact_constant / effective_length * deepest**n
+    loads = slice_loads(approach, gaps, counts, contact_constant, slice_law)
+    return loads.max(axis=-1) * counts.sum() / effective_length
 
 
 def line_contact_pressure(line_load, curvature_sum, modulus):

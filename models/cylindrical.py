@@ -7,10 +7,15 @@ from __future__ import annotations
 
 import numpy as np
 
+from .bearing_life import (DEFAULT_CONTAMINATION_FACTOR, LIFE_INPUTS, life_outputs,
+                           rating_lives)
 from .contact import (APPROACH_LIMIT, LINE_CONTACT_EXPONENT, ROLLER_PRESSURE_LIMIT,
                             SLICE_LAWS, effective_modulus, largest_slice_line_load,
-                            line_contact_pressure, palmgren_constant, sliced_line_contact)
+                            line_contact_pressure, palmgren_constant, slice_loads,
+                            sliced_line_contact)
 from .geometry import elements_fit
+from .life import roller_bearing_reference_life
+from .lubrication import CELSIUS
 from .profiles import PROFILES, distinct_slices
 from .registry import (CONVERGED, NOT_CONVERGED, OUT_OF_VALIDITY, Constraint, Input,
                              Model, Output)
@@ -133,6 +138,18 @@ class _RollerSet:
                                             length)
         return inner, outer
 
+    def lamina_loads(self, inner_approach, outer_approach):
+        """Load of every distinct slice of both contacts [N], ``(P, Z, m)`` each; the
+        slices of a gap number ``gap_count``. The straight outer contact of ``'paper'`` is
+        cut into as many equal slices."""
+        constant = self.constant[:, None]
+        gaps = self.crown[:, None, None] * self.gap_shape
+        inner = slice_loads(inner_approach, gaps, self.gap_count, constant, self.slice_law)
+        if self.outer_contact == "paper":
+            gaps = np.zeros_like(gaps)
+        return inner, slice_loads(outer_approach, gaps, self.gap_count, constant,
+                                  self.slice_law)
+
     def _free_outer_approach(self):
         """Outer-contact approach of a roller held by its centrifugal force alone [m], and
         whether it was found."""
@@ -221,8 +238,12 @@ def crb_radial(radial_load, roller_count, pitch_diameter, roller_diameter, effec
                clearance=0.0, crown=0.0, crown_profile="logarithmic", slices=60,
                slice_law="uniform", outer_contact="crowned", speed=0.0, roller_density=7850.0,
                contact_constant=None, cage_position=0.0, perturbation=1e-6,
-               youngs_modulus=207e9, poisson_ratio=0.3, pressure_limit=ROLLER_PRESSURE_LIMIT):
-    """Load distribution and radial stiffness of a cylindrical roller bearing.
+               youngs_modulus=207e9, poisson_ratio=0.3, pressure_limit=ROLLER_PRESSURE_LIMIT,
+               dynamic_load_rating=None, fatigue_load_limit=None,
+               contamination_factor=DEFAULT_CONTAMINATION_FACTOR,
+               oil_temperature=70.0 + CELSIUS, viscosity_40=None, viscosity_100=None):
+    """Load distribution, radial stiffness, contact pressure and rating life of a
+    cylindrical roller bearing.
 
     Solves the inner ring's radial displacement under a radial load, with crowned rollers
     cut into slices, centrifugal force and clearance, and the radial stiffness by implicit
@@ -270,6 +291,13 @@ def crb_radial(radial_load, roller_count, pitch_diameter, roller_diameter, effec
     pressure_limit : array_like
         Contact pressure above which a point is ``out_of_validity`` [Pa] (default 4000 MPa,
         ISO 76's reference stress for roller bearings of through-hardened steel).
+    dynamic_load_rating, fatigue_load_limit : array_like or None
+        ``C_r``, ``C_u`` [N]; None: no life (no modified life) (NaN).
+    contamination_factor : array_like
+        ``e_C`` [-] (ISO 281 Table 13).
+    oil_temperature, viscosity_40, viscosity_100 : array_like or None
+        Oil temperature [K] and kinematic viscosities at 40 and 100 deg C [m^2/s]; None: no
+        modified life.
 
     Returns
     -------
@@ -278,7 +306,8 @@ def crb_radial(radial_load, roller_count, pitch_diameter, roller_diameter, effec
         ``(F_r(delta_r + Delta) - F_r) / Delta`` [N/m], ``loaded_rollers`` [-],
         ``centrifugal_force`` [N], ``roller_load`` (inner contact, ``(..., Z)``) [N],
         ``inner_contact_deflection`` (``(..., Z)``, negative: gap) [m],
-        ``max_contact_pressure`` (``(..., Z)``) [Pa], ``status``.
+        ``max_contact_pressure`` (``(..., Z)``) [Pa], ``largest_contact_pressure`` [Pa], the
+        lives of :func:`models.bearing_life.rating_lives` [rad, s], ``status``.
         Points that did not converge (a NaN anywhere included) are NaN with ``status`` = 1;
         points outside the validity below keep their values with ``status`` =
         ``OUT_OF_VALIDITY``.
@@ -294,6 +323,13 @@ def crb_radial(radial_load, roller_count, pitch_diameter, roller_diameter, effec
     slices of a straight roller carry equal loads, so the model shows no edge stress (the
     real one has pressure peaks at its ends, which would need the roller's tilt and a
     half-space solution of the slices' interaction).
+
+    Life: the inner ring rotates under a stationary radial load. ISO/TS 16281's reference
+    life is formed from the laminae, the model's slices (5.3): every slice's inner and outer
+    contact load enters with the inner ring's exponent 4 and the outer ring's 9/2 over the
+    rollers, the outer loads including the centrifugal force; so crown and clearance enter
+    the life through the slice loads. ISO 281's equivalent load is ``P = F_r`` (cylindrical
+    roller bearings without axial load, 7.2).
 
     Validity: a solved point is ``out_of_validity`` (values kept) where a roller's maximum
     contact pressure exceeds ``pressure_limit`` (default 4000 MPa, the reference stress of
@@ -311,17 +347,21 @@ def crb_radial(radial_load, roller_count, pitch_diameter, roller_diameter, effec
     .. [2] K. L. Johnson, Contact Mechanics, Cambridge University Press (1985), eq. 4.45.
     .. [3] ISO 76:2006, Rolling bearings - Static load ratings, 3.1 (4000 MPa for roller
        bearings).
+    .. [4] ISO/TS 16281:2008, 5.3; ISO 281:2007, 7 and 9.3.
     """
     roller_count, slices = int(roller_count), int(slices)
     if contact_constant is None:
         contact_constant = palmgren_constant(effective_length)
-    arrays = np.broadcast_arrays(*(np.asarray(a, dtype=float) for a in (
+    life = (dynamic_load_rating, fatigue_load_limit, contamination_factor, oil_temperature,
+            viscosity_40, viscosity_100)
+    arrays = np.broadcast_arrays(*(np.asarray(np.nan if a is None else a, dtype=float) for a in (
         radial_load, pitch_diameter, roller_diameter, effective_length, clearance, crown,
         speed, roller_density, contact_constant, cage_position, perturbation,
-        effective_modulus(youngs_modulus, poisson_ratio), pressure_limit)))
+        effective_modulus(youngs_modulus, poisson_ratio), pressure_limit) + life))
     shape = arrays[0].shape
     (load, pitch, diameter, length, clearance, crown, speed, density, constant,
-     cage_position, perturbation, modulus, pressure_limit) = (a.ravel() for a in arrays)
+     cage_position, perturbation, modulus, pressure_limit) = (a.ravel() for a in arrays[:13])
+    life = [a.ravel() for a in arrays[13:]]
     azimuth = cage_position[:, None] + 2.0 * np.pi * np.arange(roller_count) / roller_count
     gap_shape, gap_count = distinct_slices(slices, crown_profile)
     if outer_contact not in OUTER_CONTACTS:
@@ -340,6 +380,12 @@ def crb_radial(radial_load, roller_count, pitch_diameter, roller_diameter, effec
         line_contact_pressure(outer_load, outer_curvature[:, None], modulus[:, None]))
     outputs["max_contact_pressure"] = pressure  # NaN where the point failed
     outputs["largest_contact_pressure"] = pressure.max(axis=-1)
+    inner_laminae, outer_laminae = rollers.lamina_loads(inner, outer)
+    with np.errstate(divide="ignore", invalid="ignore"):
+        reference_life = roller_bearing_reference_life(
+            inner_laminae, life[0], diameter, pitch, outer_lamina_loads=outer_laminae,
+            lamina_weights=gap_count)
+    outputs.update(rating_lives(reference_life, load, "roller", speed, pitch, *life))
     beyond = ((pressure > pressure_limit[:, None]) | (inner + outer > APPROACH_LIMIT
                                                     * diameter[:, None])).any(axis=-1)
     outputs["status"] = np.where((outputs["status"] == CONVERGED) & beyond, OUT_OF_VALIDITY,
@@ -423,7 +469,7 @@ MODELS = [Model(
     summary="Cylindrical roller bearing under radial load: load distribution and radial stiffness "
             "with crowned rollers (slices), centrifugal force and clearance.",
     reference="Paper 000, Radial stiffness analysis of cylindrical roller bearing, eq. 1-16",
-    version="3",
+    version="4",
     inputs=(
         Input("radial_load", "N", "radial load Fr on the inner ring", minimum=0.0),
         Input("roller_count", "1", "number of rollers Z", kind="count", minimum=3, maximum=1000),
@@ -463,7 +509,7 @@ MODELS = [Model(
               "validity (ISO 76: 4000 for roller bearings of through-hardened steel)",
               default=4000.0, minimum=0.0, exclusive_minimum=True,
               label="contact pressure limit"),
-    ),
+    ) + LIFE_INPUTS,
     outputs=(
         Output("radial_displacement", "mm", "radial displacement of the inner ring"),
         Output("radial_stiffness", "N/mm", "radial stiffness dFr/d(delta_r), implicit "
@@ -484,7 +530,8 @@ MODELS = [Model(
                label="maximum contact pressure"),
         Output("largest_contact_pressure", "MPa", "largest maximum contact pressure of all "
                "rollers", label="largest contact pressure"),
-    ),
+    ) + life_outputs("slice loads of both raceways (laminae), inner ring rotating",
+                     "P = Fr (ISO 281 7.2, no axial load)"),
     dim_sizes={"roller": "roller_count"},
     constraints=(
         Constraint(("crown", "roller_diameter"), lambda crown, roller_diameter:
