@@ -178,12 +178,12 @@ class _RollerSet:
                                             length)
         return inner, outer
 
-    def lamina_loads(self, inner_approach, outer_approach):
-        """Load of every distinct slice of both contacts [N], ``(P, Z, m)`` each; the
-        slices of a gap number ``gap_count``. The straight outer contact of ``'paper'`` is
-        cut into as many equal slices."""
-        constant = self.constant[:, None]
-        gaps = self.all_gaps()
+    def lamina_loads(self, inner_approach, outer_approach, points):
+        """Load of every distinct slice of both contacts of the bearings ``points`` [N],
+        ``(p, Z, m)`` each; the slices of a gap number ``gap_count``. The straight outer
+        contact of ``'paper'`` is cut into as many equal slices."""
+        constant = self.constant[points, None]
+        gaps = self.all_gaps()[points]
         inner = slice_loads(inner_approach, gaps, self.gap_count, constant, self.slice_law)
         if self.outer_contact == "paper":
             gaps = np.zeros_like(gaps[:, :1])
@@ -433,11 +433,14 @@ def crb_radial(radial_load, roller_count, pitch_diameter, roller_diameter, effec
         line_contact_pressure(outer_load, outer_curvature[:, None], modulus[:, None]))
     outputs["max_contact_pressure"] = pressure  # NaN where the point failed
     outputs["largest_contact_pressure"] = pressure.max(axis=-1)
-    inner_laminae, outer_laminae = rollers.lamina_loads(inner, outer)
-    with np.errstate(divide="ignore", invalid="ignore"):
-        reference_life = roller_bearing_reference_life(
-            inner_laminae, life[0], diameter, pitch, outer_lamina_loads=outer_laminae,
-            lamina_weights=rollers.gap_count)
+    reference_life = np.full(load.size, np.nan)
+    rated = np.flatnonzero(np.isfinite(life[0]))  # the laminae cost as much as the solution
+    if rated.size:
+        inner_laminae, outer_laminae = rollers.lamina_loads(inner[rated], outer[rated], rated)
+        with np.errstate(divide="ignore", invalid="ignore"):
+            reference_life[rated] = roller_bearing_reference_life(
+                inner_laminae, life[0][rated], diameter[rated], pitch[rated],
+                outer_lamina_loads=outer_laminae, lamina_weights=rollers.gap_count)
     outputs.update(rating_lives(reference_life, load, "roller", speed, pitch, *life))
     beyond = ((pressure > pressure_limit[:, None]) | (inner + outer > APPROACH_LIMIT
                                                     * diameter[:, None])).any(axis=-1)
