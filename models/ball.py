@@ -520,8 +520,10 @@ MODELS = [Model(
     name="ball_5dof",
     function=ball_5dof,
     summary="Ball bearing under axial, radial and moment loads: 5-DOF equilibrium of the inner "
-            "ring, ball loads and contact angles, and the full 5 x 5 stiffness matrix.",
-    reference="Paper 001, eq. 1-10; Jones (1960); Harris & Kotzalas, Rolling Bearing Analysis",
+            "ring, ball loads and contact angles, the full 5 x 5 stiffness matrix, contact "
+            "pressures and rating lives (ISO/TS 16281, ISO 281).",
+    reference="Paper 001, eq. 1-10; Jones (1960); Harris & Kotzalas, Rolling Bearing Analysis; "
+              "ISO/TS 16281:2008; ISO 281:2007",
     version="4",
     inputs=(
         Input("ball_count", "1", "number of balls Z", kind="count", minimum=3, maximum=1000),
