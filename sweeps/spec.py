@@ -411,9 +411,10 @@ class _Parser:
             low <= spec.minimum if spec.exclusive_minimum else low < spec.minimum)
         above = spec.maximum is not None and high > spec.maximum
         if below or above:
-            reach = f"{low if below else high:g}" + ("" if spec.unit in ("", "1")
-                                                     else f" {spec.unit}")
-            self.fail(key, f"a {name} distribution reaches {reach}, outside the valid range of "
+            end = low if below else high
+            reach = (f"has no {'lower' if below else 'upper'} bound" if np.isinf(end) else
+                     f"reaches {end:g}" + ("" if spec.unit in ("", "1") else f" {spec.unit}"))
+            self.fail(key, f"a {name} distribution {reach}, outside the valid range of "
                       f"{spec.name} ({spec.range_text()}); keep it within the range (a "
                       "truncated_normal with low and high, or a bounded distribution)")
         return distribution
