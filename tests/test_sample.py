@@ -307,3 +307,24 @@ def test_the_schema_accepts_a_sample_table_and_refuses_an_unknown_distribution()
     assert list(validator.iter_errors(document)) == []
     document["sample"]["radial_load"]["distribution"] = "lognormal"
     assert list(validator.iter_errors(document))
+
+
+def test_the_figure_helpers_draw_indices_and_distributions(ishigami_model, tmp_path):
+    from bearing_sweep.plotting import histogram, plt, sobol_bars
+
+    data = bearing_sweep.run("""
+[sweep]
+model = "ishigami"
+[sample]
+n = 32
+method = "saltelli"
+x1 = { distribution = "uniform", low = -3, high = 3 }
+x2 = { distribution = "uniform", low = -3, high = 3 }
+x3 = { distribution = "uniform", low = -3, high = 3 }
+""", workers=0, progress=False)
+    figure, (left, right) = plt.subplots(1, 2)
+    sobol_bars(left, bearing_sweep.analyze(data), "y")
+    histogram(right, data, "x1")
+    assert len(left.patches) == 6  # first-order and total bars of three inputs
+    assert sum(p.get_height() for p in right.patches) == 64  # A and B only
+    plt.close(figure)
