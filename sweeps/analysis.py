@@ -86,7 +86,8 @@ def analyze(data: xr.Dataset, where: str = "the dataset") -> xr.Dataset:
                  f"{data.attrs.get('title', 'a sampled sweep')}",
         "source": data.attrs.get("source", "bearing-sweep"),
         "history": f"{datetime.now(timezone.utc).isoformat(timespec='seconds')} "
-                   f"bearing-sweep analyze {where}",
+                   + (f"bearing-sweep analyze {where}" if where != "the dataset"
+                      else "bearing_sweep.analyze(dataset)"),
         **{key: data.attrs[key] for key in ("model", "model_version", "definition_sha256",
                                             "sample_method", "sample_size", "sample_seed",
                                             "sample_inputs") if key in data.attrs},
