@@ -66,6 +66,11 @@ def analyze(data: xr.Dataset, where: str = "the dataset") -> xr.Dataset:
     independent = data.isel(sample=slice(0, 2 * int(data.attrs["sample_size"]))) if saltelli \
         else data
     variables = {name: _statistics(independent[name]) for name in outputs}
+    for name in outputs:  # entries of different units name theirs in a companion variable
+        companion = data[name].attrs.get("ancillary_variables")
+        if companion in data:
+            variables[name].attrs["ancillary_variables"] = companion
+            variables[companion] = data[companion]
     held = _kept(independent["status"])
     variables["valid_samples"] = held.sum("sample").astype(np.int64).assign_attrs(
         long_name="samples whose values hold", units="1",
