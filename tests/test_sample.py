@@ -15,6 +15,7 @@ from bearing_sweep.compute import Executor, run_sweep
 from bearing_sweep.models.registry import Input, Model, Output
 from bearing_sweep.schema import schema
 from bearing_sweep.testing import assert_chunking_invariant, assert_same_numbers
+from test_conventions import assert_cf_labelled
 
 HEAD = '[sweep]\nmodel = "crb_radial"\nbearing = "paper000-D"\n'
 
@@ -164,6 +165,12 @@ def test_the_file_holds_the_samples_their_units_and_the_design(tmp_path):
         block = data.saltelli_block
         assert block.attrs["flag_meanings"] == "A B AB_radial_load AB_clearance"
         np.testing.assert_array_equal(block.values, np.repeat([0, 1, 2, 3], 8))
+        assert_cf_labelled(data)
+        analyzed = bearing_sweep.analyze(data)
+    assert_cf_labelled(analyzed)
+    assert analyzed.radial_stiffness.attrs["units"] == "N/mm"
+    assert analyzed.first_order.dims == ("output", "input", "slices")
+    assert list(analyzed.input.values) == ["radial_load", "clearance"]
 
 
 def test_the_same_seed_gives_the_same_dataset_whatever_the_chunks_and_workers(tmp_path):
