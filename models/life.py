@@ -98,6 +98,36 @@ def life_duration(life, speed):
         return np.asarray(life, dtype=float) * 1e6 * 2.0 * np.pi / np.abs(speed)
 
 
+def tapered_equivalent_load(radial_load, axial_load, contact_angle):
+    """ISO 281 dynamic equivalent radial load of a single-row tapered roller bearing.
+
+    ``P = F_r`` for ``F_a / F_r <= e``, else ``P = 0.4 F_r + 0.4 cot(alpha) F_a``, with
+    ``e = 1.5 tan(alpha)``.
+
+    Parameters
+    ----------
+    radial_load, axial_load : array_like
+        ``F_r``, ``F_a`` [N] (the axial load's magnitude counts).
+    contact_angle : array_like
+        Nominal contact angle ``alpha`` [rad] (the cup's).
+
+    Returns
+    -------
+    numpy.ndarray
+        ``P`` [N].
+
+    References
+    ----------
+    .. [1] ISO 281:2007, 7.2, Table 8 (radial roller bearings with ``alpha != 0``, single
+       row: ``X = 0.4``, ``Y = 0.4 cot(alpha)``, ``e = 1.5 tan(alpha)``).
+    """
+    radial = np.abs(np.asarray(radial_load, dtype=float))
+    axial = np.abs(np.asarray(axial_load, dtype=float))
+    tangent = np.tan(contact_angle)
+    return np.where(axial <= 1.5 * tangent * radial, radial,
+                    0.4 * radial + 0.4 / tangent * axial)
+
+
 def reference_viscosity(speed, pitch_diameter):
     """Reference kinematic viscosity ``nu_1`` for adequate lubrication (ISO 281).
 

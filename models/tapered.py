@@ -17,8 +17,12 @@ from __future__ import annotations
 
 import numpy as np
 
+from .bearing_life import (DEFAULT_CONTAMINATION_FACTOR, LIFE_INPUTS, SPEED_INPUT,
+                           life_outputs, rating_lives)
 from .contact import (APPROACH_LIMIT, ROLLER_PRESSURE_LIMIT, effective_modulus,
                             hertz_point, line_contact_pressure)
+from .life import roller_bearing_reference_life, tapered_equivalent_load
+from .lubrication import CELSIUS
 from .registry import (CONVERGED, INFEASIBLE, NO_ROOT_IN_RANGE, NOT_CONVERGED,
                              OUT_OF_VALIDITY, Constraint, Input, Model, Output, combine_status)
 from .solvers import solve_equilibrium, solve_increasing
@@ -75,8 +79,12 @@ def cone_curvature_sum(roller_mean_diameter, pitch_diameter, contact_angle):
 
 def trb_load(radial_load, axial_load, roller_count, effective_length, roller_mean_diameter,
              outer_contact_angle, contact_constant=None, pitch_diameter=None,
-             youngs_modulus=206e9, poisson_ratio=0.3, pressure_limit=ROLLER_PRESSURE_LIMIT):
-    """Displacements and roller loads of a tapered roller bearing under combined load.
+             youngs_modulus=206e9, poisson_ratio=0.3, pressure_limit=ROLLER_PRESSURE_LIMIT,
+             speed=0.0, dynamic_load_rating=None, fatigue_load_limit=None,
+             contamination_factor=DEFAULT_CONTAMINATION_FACTOR, oil_temperature=70.0 + CELSIUS,
+             viscosity_40=None, viscosity_100=None):
+    """Displacements, roller loads, contact pressure and rating life of a tapered roller
+    bearing under combined load.
 
     Parameters
     ----------
@@ -97,13 +105,20 @@ def trb_load(radial_load, axial_load, roller_count, effective_length, roller_mea
     pressure_limit : array_like
         Contact pressure above which a point is ``out_of_validity`` [Pa] (default 4000 MPa,
         ISO 76's reference stress for roller bearings of through-hardened steel).
+    speed : array_like
+        Inner-ring speed [rad/s], for the lives in hours and the viscosity ratio only.
+    dynamic_load_rating, fatigue_load_limit, contamination_factor, oil_temperature,
+    viscosity_40, viscosity_100 : array_like or None
+        ``C_r``, ``C_u`` [N], ``e_C`` [-], oil temperature [K], kinematic viscosities at 40
+        and 100 deg C [m^2/s]; None: no life (no modified life), NaN.
 
     Returns
     -------
     dict of numpy.ndarray
         ``radial_displacement`` ``delta_r``, ``axial_displacement`` ``delta_a`` [m],
         ``roller_load`` ``(N, Z)`` [N] (eq. 18 with its exponent 1.11), ``loaded_rollers``,
-        ``max_contact_pressure`` ``(N, Z)`` [Pa], ``status``: infeasible where
+        ``max_contact_pressure`` ``(N, Z)`` [Pa], the lives of
+        :func:`models.bearing_life.rating_lives` [rad, s], ``status``: infeasible where
         ``F_r tan(alpha) > F_a`` (the rollers cannot carry the radial load without pulling)
         or ``F_a = 0``; not converged where the equilibrium was not found (or an input is
         NaN); out of validity as below.
@@ -122,6 +137,13 @@ def trb_load(radial_load, axial_load, roller_count, effective_length, roller_mea
     The real cone carries ``Q (cos 2 phi + sin 2 phi cot Psi)`` (``trb_rib``'s
     ``inner_load``), 0.7 % less with paper 003's roller (``phi`` = 4 deg, ``Psi`` = 89 deg).
 
+    Life (inner ring rotating, loads stationary; needs ``pitch_diameter``): ISO/TS 16281's
+    reference life of line contacts with each roller one lamina carrying ``Q`` on both
+    raceways (the model has no crown or tilt, so the load is even along the roller, and the
+    standard's laminae would all carry ``Q / n_s``, which gives the same life); the ratings
+    at the cup's contact angle. ISO 281's equivalent load is
+    :func:`models.life.tapered_equivalent_load`.
+
     Validity: a solved point is ``out_of_validity`` (values kept) where a roller's contact
     pressure exceeds ``pressure_limit`` (default 4000 MPa, ISO 76's reference stress for roller
     bearings, beyond which the permanent deformation exceeds 1e-4 of the roller diameter and
@@ -134,13 +156,16 @@ def trb_load(radial_load, axial_load, roller_count, effective_length, roller_mea
     .. [1] Paper 003, eq. 13-18 and Table 2.
     .. [2] K. L. Johnson, Contact Mechanics, Cambridge University Press (1985), eq. 4.45.
     .. [3] ISO 76:2006, Rolling bearings - Static load ratings, 3.1.
+    .. [4] ISO/TS 16281:2008, 5.3; ISO 281:2007, 7 and 9.3.
     """
-    arrays = np.broadcast_arrays(*(np.atleast_1d(np.asarray(a, dtype=float)) for a in (
-        radial_load, axial_load, effective_length, roller_mean_diameter, outer_contact_angle,
-        np.nan if contact_constant is None else contact_constant,
-        np.nan if pitch_diameter is None else pitch_diameter,
-        effective_modulus(youngs_modulus, poisson_ratio), pressure_limit)))
-    radial, axial, length, diameter, angle, given, pitch, modulus, pressure_limit = arrays
+    arrays = np.broadcast_arrays(*(np.atleast_1d(np.asarray(
+        np.nan if a is None else a, dtype=float)) for a in (
+            radial_load, axial_load, effective_length, roller_mean_diameter, outer_contact_angle,
+            contact_constant, pitch_diameter, effective_modulus(youngs_modulus, poisson_ratio),
+            pressure_limit, speed, dynamic_load_rating, fatigue_load_limit,
+            contamination_factor, oil_temperature, viscosity_40, viscosity_100)))
+    radial, axial, length, diameter, angle, given, pitch, modulus, pressure_limit = arrays[:9]
+    speed, life = arrays[9], arrays[10:]
     constant = np.where(np.isnan(given), paper_contact_constant(length, diameter), given)
     azimuth = _roller_azimuths(roller_count)
     # The rows that turn (delta_r, delta_a) into each roller's compression, (N, Z, 2).
@@ -175,10 +200,16 @@ def trb_load(radial_load, axial_load, roller_count, effective_length, roller_mea
               | (compression > APPROACH_LIMIT * diameter[:, None])).any(axis=-1)
     status = np.select([~carried, ~converged, beyond], [INFEASIBLE, NOT_CONVERGED,
                                                         OUT_OF_VALIDITY], CONVERGED)
+    with np.errstate(divide="ignore", invalid="ignore"):
+        reference_life = roller_bearing_reference_life(
+            np.where(carried & converged, 1.0, np.nan)[:, None, None] * roller_load[..., None],
+            life[0], diameter, pitch, angle)
     return {"radial_displacement": displacement[:, 0], "axial_displacement": displacement[:, 1],
             "roller_load": roller_load,
             "loaded_rollers": np.count_nonzero(compression > 0, axis=-1).astype(float),
             "max_contact_pressure": pressure, "largest_contact_pressure": pressure.max(axis=-1),
+            **rating_lives(reference_life, tapered_equivalent_load(radial, axial, angle),
+                           "roller", speed, pitch, *life),
             "status": status.astype(np.int8)}
 
 
@@ -479,7 +510,7 @@ MODELS = [
         summary="Tapered roller bearing under radial and axial load: radial and axial "
                 "displacement and the load of every roller.",
         reference=_REFERENCE + ", eq. 13-18",
-        version="3",
+        version="4",
         inputs=_LOAD_INPUTS + (
             _CONSTANT,
             Input("pitch_diameter", "mm", "pitch diameter dm at the middle of the rollers, for "
@@ -489,7 +520,8 @@ MODELS = [
             Input("pressure_limit", "MPa", "contact pressure above which a point is out of "
                   "validity (ISO 76: 4000 for roller bearings of through-hardened steel)",
                   default=4000.0, minimum=0.0, exclusive_minimum=True,
-                  label="contact pressure limit")),
+                  label="contact pressure limit"),
+            SPEED_INPUT) + LIFE_INPUTS,
         outputs=(
             Output("radial_displacement", "mm", "radial displacement delta_r of the inner ring",
                    label="radial displacement"),
@@ -505,7 +537,9 @@ MODELS = [
             Output("largest_contact_pressure", "MPa", "largest maximum contact pressure of "
                    "all rollers (NaN without pitch_diameter)",
                    label="largest contact pressure"),
-        ),
+        ) + life_outputs("roller loads (one lamina each), inner ring rotating; NaN without "
+                         "pitch_diameter", "ISO 281 Table 8, P = Fr for Fa/Fr <= 1.5 tan(alpha), "
+                         "else 0.4 Fr + 0.4 cot(alpha) Fa"),
         dim_sizes={"roller": "roller_count"},
         constraints=(_CARRIED, Constraint(
             ("pitch_diameter", "roller_mean_diameter"), _cone_beneath,
