@@ -96,12 +96,19 @@ _PRESETS = (
     Preset(
         name="paper003-table1",
         model="trb_load",
-        values={**_PAPER003_LOADING, "pitch_diameter": "79.537 mm"},
+        values={**_PAPER003_LOADING, "pitch_diameter": "79.537 mm",
+                "dynamic_load_rating": "127.6 kN"},
         source="Paper 003, Table 1 (single-row tapered roller bearing of a vehicle reducer)",
         notes="Roller length 21.5 mm is taken as the effective length l of eq. 14; the "
               "contact constant is eq. 14's default. The pitch diameter (for the contact "
-              "pressure only) is not stated: 79.537 mm is the one trb_rib derives from the "
-              "rib diameter of paper003-table1-rib.",
+              "pressure and the life) is not stated: 79.537 mm is the one trb_rib derives from "
+              "the rib diameter of paper003-table1-rib. The paper states no dynamic load "
+              "rating: an assumption, Cr = 127.6 kN from the geometry by ISO 281:2007 eq. (9), "
+              "Cr = bm fc (i Lwe cos a)^(7/9) Z^(3/4) Dwe^(29/27) = 1.1 x 88.3 x "
+              "(21.5 cos 28 deg)^(7/9) x 16^(3/4) x 13.71^(29/27) (N, mm), with bm = 1.1 "
+              "(Table 1, tapered roller bearings), the cup angle for a, the mean roller "
+              "diameter for Dwe and fc = 88.3 interpolated in Table 7 at Dwe cos a / Dpw = "
+              "0.152.",
     ),
     Preset(
         name="paper003-table1-rib",
