@@ -131,12 +131,22 @@ def largest_slice_line_load(approach, gaps, counts, contact_constant, effective_
     Returns
     -------
     numpy.ndarray
-        ``w = q_max / (l / k)`` with ``q_max`` the largest of :func:`slice_loads` (the slice
-        with the smallest gap); ``w = K/l (delta - c_min)^n`` ('uniform'). Shape ``S``; zero
-        where no slice touches.
+        ``w = q_max / (l / k)``: the slice with the smallest gap carries the largest of
+        :func:`slice_loads`, ``q_max = K/k (delta - c_min)^n`` ('uniform'; ``K/k_j`` with
+        ``k_j`` loaded slices for 'paper') on its length ``l/k``, so
+        ``w = K/l (delta - c_min)^n`` ('uniform'). Shape ``S``; zero where no slice touches.
+        Only the smallest gap is raised to the power: a point's other slices cost nothing.
     """
-    loads = slice_loads(approach, gaps, counts, contact_constant, slice_law)
-    return loads.max(axis=-1) * counts.sum() / effective_length
+    n = LINE_CONTACT_EXPONENT
+    deepest = np.maximum(approach - gaps.min(axis=-1), 0.0)
+    if slice_law == "uniform":
+        share = 1.0
+    elif slice_law == "paper":
+        loaded = np.einsum("...m,m->...", (approach[..., None] > gaps).astype(float), counts)
+        share = counts.sum() / np.where(loaded > 0.0, loaded, 1.0)
+    else:
+        raise ValueError(f"unknown slice law {slice_law!r}; expected one of {SLICE_LAWS}")
+    return share * contact_constant / effective_length * deepest**n
 
 
 def line_contact_pressure(line_load, curvature_sum, modulus):

@@ -16,7 +16,7 @@ from .contact import (APPROACH_LIMIT, LINE_CONTACT_EXPONENT, ROLLER_PRESSURE_LIM
 from .geometry import elements_fit
 from .life import roller_bearing_reference_life
 from .lubrication import CELSIUS
-from .profiles import PROFILES, distinct_slices
+from .profiles import PROFILES, crown_shape, distinct_slices, slice_centres
 from .registry import (CONVERGED, NOT_CONVERGED, OUT_OF_VALIDITY, Constraint, Input,
                              Model, Output)
 from .solvers import solve_increasing
@@ -84,16 +84,56 @@ class _RollerSet:
     """The rollers of ``P`` bearings (one per grid point): geometry and contact laws."""
 
     def __init__(self, cos_azimuth, half_clearance, crown, constant, centrifugal,
-                 gap_shape, gap_count, slice_law, outer_contact):
+                 slices, crown_profile, slice_law, outer_contact, tilt=None):
         self.cos = cos_azimuth  # (P, Z)
         self.half_clearance, self.crown = half_clearance, crown  # (P,)
         self.constant, self.centrifugal = constant, centrifugal  # (P,)
-        self.gap_shape, self.gap_count = gap_shape, gap_count  # (m,)
+        # tilt: (P, Z) gap change from the middle to the end of each roller's contacts.
+        self.tilt = tilt if tilt is not None and np.any(tilt != 0.0) else None
+        # Approaches are counted at each roller's slice with the smallest gap, so that every
+        # gap is >= 0 and a roller touches when its approach does; a tilted roller's deepest
+        # slice lies towards an end, 2 * floor nearer the raceways than its middle.
+        self.floor = 0.0  # (P, Z): smallest gap of each roller's slices
+        if self.tilt is None:  # a symmetric roller: its distinct slices with their counts
+            self.gap_shape, self.gap_count = distinct_slices(slices, crown_profile)  # (m,)
+        else:
+            self.gap_shape, self.gap_count = crown_shape(slices, crown_profile), np.ones(slices)
+            self.slice_position = slice_centres(slices)
+            self.floor = np.zeros(self.tilt.shape)
+            self.floor = self.all_gaps().min(axis=-1)
         self.slice_law, self.outer_contact = slice_law, outer_contact
         self.free_outer_approach, self.free_outer_converged = self._free_outer_approach()
 
-    def contacts(self, inner_approach, outer_approach, points):
-        """Inner load, outer load and the load the outer contact is balanced against.
+    def gaps(self, points, rollers=None):
+        """Gap of every slice of the rollers ``rollers`` of the bearings ``points`` [m],
+        ``points.shape + (m,)`` (index arrays broadcast); ``rollers=None``: the roller's own
+        crown only, as for a roller that touches the outer ring alone."""
+        gaps = self.crown[points][..., None] * self.gap_shape
+        if self.tilt is None or rollers is None:
+            return gaps
+        return (gaps - self.tilt[points, rollers][..., None] * self.slice_position
+                - np.asarray(self.floor)[points, rollers][..., None])
+
+    def all_gaps(self):
+        """:meth:`gaps` of every roller of every bearing, ``(P, Z or 1, m)``."""
+        points, rollers = np.arange(self.crown.size)[:, None], np.arange(self.cos.shape[1])
+        return self.gaps(points, rollers)
+
+    @property
+    def largest_gap(self):
+        """Largest slice gap of each bearing [m], ``(P,)``."""
+        tilt = 0.0 if self.tilt is None else 2.0 * np.abs(self.tilt).max(axis=-1)
+        return self.crown * self.gap_shape.max() + tilt
+
+    def total_approach(self, displacement, points):
+        """Approach of both contacts of every roller together at its deepest slice [m],
+        ``(p, Z)`` (eq. 1)."""
+        total = displacement[:, None] * self.cos[points] - self.half_clearance[points, None]
+        return total if self.tilt is None else total - 2.0 * self.floor[points]
+
+    def contacts(self, inner_approach, outer_approach, points, rollers=None):
+        """Inner load, outer load and the load the outer contact is balanced against, of the
+        rollers ``rollers`` (None: untilted) of the bearings ``points``.
 
         Returns ``(Qi, dQi, Qo, dQo, Qt, dQt)`` [N, N/m]: the roller's force balance is
         ``Qo(outer) = Qt(inner) + Fc``. With ``outer_contact='crowned'`` both contacts are the
@@ -102,7 +142,7 @@ class _RollerSet:
         ``Qt = K delta_i^n`` rather than the crowned ``Qi`` of eq. 9.
         """
         constant = self.constant[points]
-        gaps = self.crown[points, None] * self.gap_shape
+        gaps = self.gaps(points, rollers)
         inner = sliced_line_contact(inner_approach, gaps, self.gap_count, constant, self.slice_law)
         if self.outer_contact == "crowned":
             outer = sliced_line_contact(outer_approach, gaps, self.gap_count, constant,
@@ -118,7 +158,7 @@ class _RollerSet:
         ``inner_deflection`` is :meth:`loads`' (negative: a gap). A roller the ring does not
         reach presses on the outer raceway with its centrifugal force alone.
         """
-        total = displacement[:, None] * self.cos - self.half_clearance[:, None]
+        total = self.total_approach(displacement, np.arange(displacement.size))
         free = self.free_outer_approach[:, None]
         loaded = total - free > 0.0
         return np.maximum(inner_deflection, 0.0), np.where(loaded, total - inner_deflection,
@@ -127,7 +167,7 @@ class _RollerSet:
     def largest_line_loads(self, inner_approach, outer_approach, length):
         """Load per unit length of the most loaded slice of each contact [N/m], ``(P, Z)``."""
         constant, length = self.constant[:, None], length[:, None]
-        gaps = self.crown[:, None, None] * self.gap_shape
+        gaps = self.all_gaps()
         inner = largest_slice_line_load(inner_approach, gaps, self.gap_count, constant, length,
                                         self.slice_law)
         if self.outer_contact == "crowned":
@@ -138,15 +178,15 @@ class _RollerSet:
                                             length)
         return inner, outer
 
-    def lamina_loads(self, inner_approach, outer_approach):
-        """Load of every distinct slice of both contacts [N], ``(P, Z, m)`` each; the
-        slices of a gap number ``gap_count``. The straight outer contact of ``'paper'`` is
-        cut into as many equal slices."""
-        constant = self.constant[:, None]
-        gaps = self.crown[:, None, None] * self.gap_shape
+    def lamina_loads(self, inner_approach, outer_approach, points):
+        """Load of every distinct slice of both contacts of the bearings ``points`` [N],
+        ``(p, Z, m)`` each; the slices of a gap number ``gap_count``. The straight outer
+        contact of ``'paper'`` is cut into as many equal slices."""
+        constant = self.constant[points, None]
+        gaps = self.all_gaps()[points]
         inner = slice_loads(inner_approach, gaps, self.gap_count, constant, self.slice_law)
         if self.outer_contact == "paper":
-            gaps = np.zeros_like(gaps)
+            gaps = np.zeros_like(gaps[:, :1])
         return inner, slice_loads(outer_approach, gaps, self.gap_count, constant,
                                   self.slice_law)
 
@@ -162,7 +202,7 @@ class _RollerSet:
         spinning = np.flatnonzero(self.centrifugal > 0.0)
         if spinning.size:
             # Every slice is in contact beyond the largest gap, so Qo >= K (delta - gap)^n.
-            upper = self.crown[spinning] * self.gap_shape.max() + plain[spinning]
+            upper = self.crown[spinning] * self.gap_shape.max() + plain[spinning]  # untilted
 
             def residual(outer, index):
                 points = spinning[index]
@@ -196,17 +236,18 @@ class _RollerSet:
         converged : numpy.ndarray of bool
             Every roller's force balance converged, ``(p,)``.
         """
-        # Approach of roller j's two contacts together (eq. 1).
-        total = displacement[:, None] * self.cos[points] - self.half_clearance[points, None]
+        total = self.total_approach(displacement, points)
         available = total - self.free_outer_approach[points, None]
         loaded = available > 0.0
         owner = np.broadcast_to(points[:, None], loaded.shape)[loaded]
+        roller = np.broadcast_to(np.arange(loaded.shape[1]), loaded.shape)[loaded]
         entry_total, entry_available = total[loaded], available[loaded]
         cache = {}
 
         def residual(inner, index):
             # Roller force balance Qo(total - inner) = Qt(inner) + Fc (eq. 2, 6).
-            result = self.contacts(inner, entry_total[index] - inner, owner[index])
+            result = self.contacts(inner, entry_total[index] - inner, owner[index],
+                                   roller[index])
             for name, value in zip(("qi", "ki", "qo", "ko", "qt", "kt"), result):
                 cache.setdefault(name, np.empty(entry_total.size))[index] = value
             return result[4] + self.centrifugal[owner[index]] - result[2], result[5] + result[3]
@@ -237,7 +278,7 @@ class _RollerSet:
 def crb_radial(radial_load, roller_count, pitch_diameter, roller_diameter, effective_length,
                clearance=0.0, crown=0.0, crown_profile="logarithmic", slices=60,
                slice_law="uniform", outer_contact="crowned", speed=0.0, roller_density=7850.0,
-               contact_constant=None, cage_position=0.0, perturbation=1e-6,
+               contact_constant=None, cage_position=0.0, misalignment=0.0, perturbation=1e-6,
                youngs_modulus=207e9, poisson_ratio=0.3, pressure_limit=ROLLER_PRESSURE_LIMIT,
                dynamic_load_rating=None, fatigue_load_limit=None,
                contamination_factor=DEFAULT_CONTAMINATION_FACTOR,
@@ -283,6 +324,14 @@ def crb_radial(radial_load, roller_count, pitch_diameter, roller_diameter, effec
     cage_position : array_like
         Azimuth of roller 1 from the load direction [rad]; roller ``j`` sits at
         ``cage_position + 2 pi (j - 1) / Z``.
+    misalignment : array_like
+        Tilt of the inner ring against the outer ring about the axis across the load
+        direction [rad] (a shaft's slope). Each roller is free to tilt and takes half of it,
+        so both its contacts see a gap ``c_lambda - (theta / 2) cos(phi_j) x_lambda l / 2``
+        that grows linearly along it (exact without centrifugal force, where both contacts
+        carry the same load; the roller's moment balance is not solved with it). The ring's
+        moment is not balanced: the misalignment is imposed, as a shaft imposes it. Needs
+        ``outer_contact='crowned'``.
     perturbation : array_like
         Displacement step ``Delta`` of the forward-difference stiffness [m] (section 2.3).
     youngs_modulus, poisson_ratio : array_like
@@ -356,19 +405,23 @@ def crb_radial(radial_load, roller_count, pitch_diameter, roller_diameter, effec
             viscosity_40, viscosity_100)
     arrays = np.broadcast_arrays(*(np.asarray(np.nan if a is None else a, dtype=float) for a in (
         radial_load, pitch_diameter, roller_diameter, effective_length, clearance, crown,
-        speed, roller_density, contact_constant, cage_position, perturbation,
+        speed, roller_density, contact_constant, cage_position, misalignment, perturbation,
         effective_modulus(youngs_modulus, poisson_ratio), pressure_limit) + life))
     shape = arrays[0].shape
-    (load, pitch, diameter, length, clearance, crown, speed, density, constant,
-     cage_position, perturbation, modulus, pressure_limit) = (a.ravel() for a in arrays[:13])
-    life = [a.ravel() for a in arrays[13:]]
+    (load, pitch, diameter, length, clearance, crown, speed, density, constant, cage_position,
+     misalignment, perturbation, modulus, pressure_limit) = (a.ravel() for a in arrays[:14])
+    life = [a.ravel() for a in arrays[14:]]
     azimuth = cage_position[:, None] + 2.0 * np.pi * np.arange(roller_count) / roller_count
-    gap_shape, gap_count = distinct_slices(slices, crown_profile)
     if outer_contact not in OUTER_CONTACTS:
         raise ValueError(f"unknown outer_contact {outer_contact!r}; expected {OUTER_CONTACTS}")
+    if outer_contact == "paper" and np.any(misalignment != 0.0):
+        raise ValueError("misalignment needs outer_contact 'crowned' (the paper's straight "
+                         "outer contact has no tilt)")
+    tilt = np.where((misalignment == 0.0)[:, None], 0.0,
+                    0.25 * (misalignment * length)[:, None] * np.cos(azimuth))
     rollers = _RollerSet(np.cos(azimuth), 0.5 * clearance, crown, constant,
-                         centrifugal_force(diameter, length, pitch, speed, density), gap_shape,
-                         gap_count, slice_law, outer_contact)
+                         centrifugal_force(diameter, length, pitch, speed, density), slices,
+                         crown_profile, slice_law, outer_contact, tilt)
     outputs = _solve(rollers, load, perturbation)
     inner, outer = rollers.approaches(outputs["radial_displacement"],
                                       outputs["inner_contact_deflection"])
@@ -380,11 +433,14 @@ def crb_radial(radial_load, roller_count, pitch_diameter, roller_diameter, effec
         line_contact_pressure(outer_load, outer_curvature[:, None], modulus[:, None]))
     outputs["max_contact_pressure"] = pressure  # NaN where the point failed
     outputs["largest_contact_pressure"] = pressure.max(axis=-1)
-    inner_laminae, outer_laminae = rollers.lamina_loads(inner, outer)
-    with np.errstate(divide="ignore", invalid="ignore"):
-        reference_life = roller_bearing_reference_life(
-            inner_laminae, life[0], diameter, pitch, outer_lamina_loads=outer_laminae,
-            lamina_weights=gap_count)
+    reference_life = np.full(load.size, np.nan)
+    rated = np.flatnonzero(np.isfinite(life[0]))  # the laminae cost as much as the solution
+    if rated.size:
+        inner_laminae, outer_laminae = rollers.lamina_loads(inner[rated], outer[rated], rated)
+        with np.errstate(divide="ignore", invalid="ignore"):
+            reference_life[rated] = roller_bearing_reference_life(
+                inner_laminae, life[0][rated], diameter[rated], pitch[rated],
+                outer_lamina_loads=outer_laminae, lamina_weights=rollers.gap_count)
     outputs.update(rating_lives(reference_life, load, "roller", speed, pitch, *life))
     beyond = ((pressure > pressure_limit[:, None]) | (inner + outer > APPROACH_LIMIT
                                                     * diameter[:, None])).any(axis=-1)
@@ -396,7 +452,7 @@ def crb_radial(radial_load, roller_count, pitch_diameter, roller_diameter, effec
 def _solve(rollers, load, perturbation):
     """Solve a flat batch of bearings; see :func:`crb_radial`."""
     cos_azimuth, half_clearance, crown = rollers.cos, rollers.half_clearance, rollers.crown
-    constant, centrifugal, gap_shape = rollers.constant, rollers.centrifugal, rollers.gap_shape
+    constant, centrifugal = rollers.constant, rollers.centrifugal
     count, n = load.size, LINE_CONTACT_EXPONENT
     everyone = np.arange(count)
     share = np.full(cos_azimuth.shape, 0.5)
@@ -406,7 +462,7 @@ def _solve(rollers, load, perturbation):
     # the load push back, so there the bound is checked and doubled until it holds.
     cos_max = cos_azimuth.max(axis=-1)
     lower = np.maximum(half_clearance, 0.0)
-    reach = (half_clearance + 2.0 * crown * gap_shape.max()
+    reach = (half_clearance + 2.0 * rollers.largest_gap
              + 2.0 * ((load / cos_max + centrifugal) / constant) ** (1.0 / n))
     upper = np.maximum(1.001 * reach / cos_max, lower) + 1e-12
     preloaded = np.flatnonzero(half_clearance < 0.0)
@@ -498,6 +554,9 @@ MODELS = [Model(
         Input("cage_position", "deg", "azimuth of roller 1 from the load direction",
               default=0.0, minimum=-360.0, maximum=360.0,
               label="azimuth of roller 1"),
+        Input("misalignment", "mrad", "tilt of the inner ring against the outer ring across "
+              "the load direction; each roller takes half", default=0.0, minimum=-20.0,
+              maximum=20.0, label="misalignment"),
         Input("perturbation", "mm", "displacement step of the forward-difference stiffness "
               "(section 2.3)", default=0.001, minimum=0.0, exclusive_minimum=True,
               label="perturbation step"),
@@ -536,6 +595,10 @@ MODELS = [Model(
     constraints=(
         Constraint(("crown", "roller_diameter"), lambda crown, roller_diameter:
                    crown < roller_diameter / 2, "the crown must be smaller than the roller radius"),
+        Constraint(("misalignment", "outer_contact"), lambda misalignment, outer_contact:
+                   (misalignment == 0) | (outer_contact != "paper"),
+                   "misalignment needs outer_contact 'crowned' (the paper's straight outer "
+                   "contact has no tilt)"),
         Constraint(("clearance", "roller_diameter"), lambda clearance, roller_diameter:
                    np.abs(clearance) < roller_diameter,
                    "the clearance must be smaller than the roller diameter"),

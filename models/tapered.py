@@ -201,16 +201,20 @@ def trb_load(radial_load, axial_load, roller_count, effective_length, roller_mea
     status = np.select([~carried, ~converged, beyond], [INFEASIBLE, NOT_CONVERGED,
                                                         OUT_OF_VALIDITY], CONVERGED)
     with np.errstate(divide="ignore", invalid="ignore"):
-        reference_life = roller_bearing_reference_life(
-            np.where(carried & converged, 1.0, np.nan)[:, None, None] * roller_load[..., None],
-            life[0], diameter, pitch, angle)
-    return {"radial_displacement": displacement[:, 0], "axial_displacement": displacement[:, 1],
-            "roller_load": roller_load,
-            "loaded_rollers": np.count_nonzero(compression > 0, axis=-1).astype(float),
-            "max_contact_pressure": pressure, "largest_contact_pressure": pressure.max(axis=-1),
-            **rating_lives(reference_life, tapered_equivalent_load(radial, axial, angle),
-                           "roller", speed, pitch, *life),
-            "status": status.astype(np.int8)}
+        reference_life = roller_bearing_reference_life(roller_load[..., None], life[0],
+                                                       diameter, pitch, angle)
+    outputs = {"radial_displacement": displacement[:, 0],
+               "axial_displacement": displacement[:, 1], "roller_load": roller_load,
+               "loaded_rollers": np.count_nonzero(compression > 0, axis=-1).astype(float),
+               "max_contact_pressure": pressure,
+               "largest_contact_pressure": pressure.max(axis=-1),
+               **rating_lives(reference_life, tapered_equivalent_load(radial, axial, angle),
+                              "roller", speed, pitch, *life)}
+    # A point without a solution has no values: NaN, not the iteration's last guess.
+    solved = carried & converged
+    outputs = {name: np.where(solved.reshape((-1,) + (1,) * (value.ndim - 1)), value, np.nan)
+               for name, value in outputs.items()}
+    return {**outputs, "status": status.astype(np.int8)}
 
 
 class RollerEnd:

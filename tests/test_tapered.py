@@ -257,3 +257,14 @@ def test_the_pressure_limit_is_the_users_and_flags_without_changing_values():
     assert result["status"].tolist() == [CONVERGED, CONVERGED, OUT_OF_VALIDITY]
     assert result["largest_contact_pressure"] == pytest.approx(1815e6, rel=2e-3)
     assert np.ptp(result["roller_load"], axis=0).max() == 0.0
+
+
+def test_a_point_without_a_solution_has_no_values():
+    # F_r tan(alpha) > F_a: the rollers would have to pull. The status says infeasible and
+    # every output is NaN (not the equilibrium iteration's last guess).
+    result = trb_load(40e3, 5e3, 16, 21.5e-3, 13.71e-3, np.radians(28.0),
+                      pitch_diameter=79.537e-3, dynamic_load_rating=127e3)
+    assert result["status"][0] == INFEASIBLE
+    for name, value in result.items():
+        if name != "status":
+            assert np.isnan(value).all(), name
