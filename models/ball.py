@@ -16,9 +16,12 @@ import functools
 
 import numpy as np
 
+from .bearing_life import (DEFAULT_CONTAMINATION_FACTOR, LIFE_INPUTS, SPEED_INPUT,
+                           life_outputs, rating_lives)
 from .contact import POINT_CONTACT_EXPONENT, hertz_point
 from .geometry import elements_fit
-from .life import ball_bearing_reference_life
+from .life import ball_bearing_reference_life, radial_ball_equivalent_load
+from .lubrication import CELSIUS
 from .registry import (CONVERGED, INFEASIBLE, NOT_CONVERGED, OUT_OF_VALIDITY, Constraint,
                              Input, Model, Output, combine_status)
 from .solvers import solve_equilibrium
@@ -235,8 +238,11 @@ def ball_5dof(ball_count, ball_diameter, pitch_diameter, contact_angle,
               youngs_modulus=207e9, poisson_ratio=0.3, contact_constant=None, axial_load=0.0,
               radial_load=0.0, radial_load_z=0.0, moment_y=0.0, moment_z=0.0,
               geometry="jones", fixed_dofs="", pressure_limit=MAX_CONTACT_PRESSURE,
-              dynamic_load_rating=None):
-    """Equilibrium and 5 x 5 stiffness matrix of a ball bearing's inner ring.
+              speed=0.0, dynamic_load_rating=None, fatigue_load_limit=None,
+              contamination_factor=DEFAULT_CONTAMINATION_FACTOR,
+              oil_temperature=70.0 + CELSIUS, viscosity_40=None, viscosity_100=None):
+    """Equilibrium, 5 x 5 stiffness matrix, contact pressures and rating life of a ball
+    bearing's inner ring.
 
     Parameters
     ----------
@@ -270,9 +276,17 @@ def ball_5dof(ball_count, ball_diameter, pitch_diameter, contact_angle,
     pressure_limit : array_like
         Contact pressure above which a point is ``out_of_validity`` [Pa] (default 4200 MPa,
         ISO 76's reference stress for ball bearings of through-hardened steel).
-    dynamic_load_rating : array_like or None
-        The bearing's basic dynamic load rating ``C_r`` [N], for the reference rating life;
-        None: no life (NaN).
+    speed : array_like
+        Speed of the inner ring [rad/s], for the lives in hours and the viscosity ratio only
+        (the load distribution is static).
+    dynamic_load_rating, fatigue_load_limit : array_like or None
+        The bearing's basic dynamic load rating ``C_r`` and fatigue load limit ``C_u`` [N];
+        None: no life (no modified life) (NaN).
+    contamination_factor : array_like
+        ``e_C`` [-] (ISO 281 Table 13).
+    oil_temperature, viscosity_40, viscosity_100 : array_like or None
+        Oil temperature [K] and kinematic viscosities at 40 and 100 deg C [m^2/s]; None: no
+        modified life.
 
     Returns
     -------
@@ -285,11 +299,11 @@ def ball_5dof(ball_count, ball_diameter, pitch_diameter, contact_angle,
         ``ball_contact_angle`` ``(N, Z)`` [rad]; ``loaded_balls``; ``max_contact_pressure``
         ``(N, Z)`` [Pa], the larger Hertz ``p0 = 3Q/(2 pi a b)`` of each ball's two contacts
         (exact ellipse, raceway curvatures at ``alpha_0`` as for the Hertz constant [3]),
-        ``largest_contact_pressure`` over the balls [Pa]; ``reference_rating_life``
-        (ISO/TS 16281's L10r, inner ring rotating, from the ball loads; :mod:`models.life`)
-        [rad: 10^6 revolutions of 2 pi]; ``hertz_contact_constant`` [N/m^1.5] (whether or
-        not ``contact_constant`` replaces
-        it); ``status``: not converged (1); infeasible (2) where the free displacements'
+        ``largest_contact_pressure`` over the balls [Pa]; the lives of
+        :func:`models.bearing_life.rating_lives` (Notes) [rad: 10^6 revolutions of 2 pi; s],
+        ``equivalent_dynamic_load`` [N], ``viscosity_ratio``, ``life_modification_factor``
+        [-]; ``hertz_contact_constant`` [N/m^1.5] (whether or not ``contact_constant``
+        replaces it); ``status``: not converged (1); infeasible (2) where the free displacements'
         stiffness is singular under load (the load cannot be carried, or not by a unique
         displacement) or where the iteration ran the ring out of the bearing (farther than
         ``A``) without an equilibrium; out of validity (4, values kept) beyond the limits of
@@ -299,6 +313,19 @@ def ball_5dof(ball_count, ball_diameter, pitch_diameter, contact_angle,
 
     Notes
     -----
+    Life: the inner ring rotates, the outer ring and the load stand still. ISO/TS 16281's
+    reference life ``L10r`` is formed from every ball's load (one load for both contacts:
+    no centrifugal force), with the inner ring's exponent 3 and the outer ring's 10/3 over
+    the balls, the contact ratings from ``C_r``, the groove curvatures and ``alpha_0`` [6];
+    so clearance, moments and the contact angles that follow the load enter it through the
+    ball loads. ISO 281's equivalent load is ``P = X F_r + Y F_a`` with ``F_r`` the radial
+    load's magnitude in the y-z plane and ``F_a = |F_x|``
+    (:func:`models.life.radial_ball_equivalent_load`): ``P = F_r`` without axial load, the
+    factors of Table 3 for ``20 <= alpha_0 <= 45`` deg; NaN under a moment, or with an
+    axial load below 20 deg (deep-groove bearings: ``e`` and ``Y`` need the static load
+    rating) [7]. The modified lives take ``a_ISO`` with the viscosity ratio of the oil at
+    its temperature (:func:`models.bearing_life.rating_lives`).
+
     In the fixed-angle geometry a ball's approach is ``(dx + R(phi_y sin psi - phi_z cos
     psi)) sin(alpha_0) + (dy cos psi + dz sin psi) cos(alpha_0)``: ``dz = -R tan(alpha_0)
     phi_y`` (and ``dy = R tan(alpha_0) phi_z``), a tilt about the apex of the contact cone,
@@ -318,20 +345,27 @@ def ball_5dof(ball_count, ball_diameter, pitch_diameter, contact_angle,
     .. [4] ISO 76:2006, Rolling bearings - Static load ratings, 3.1 (4200 MPa for ball
        bearings other than self-aligning ones).
     .. [5] K. L. Johnson, Contact Mechanics, Cambridge University Press, 1985, sec. 4.1.
+    .. [6] ISO/TS 16281:2008, Rolling bearings - Methods for calculating the modified
+       reference rating life for universally loaded bearings, 4.3.
+    .. [7] ISO 281:2007, Rolling bearings - Dynamic load ratings and rating life, 6.2 and
+       Table 3; 9.3 (a_ISO).
     """
     names = fixed_dofs.split() if isinstance(fixed_dofs, str) else list(fixed_dofs)
     unknown = [name for name in names if name not in DOFS]
     if unknown or geometry not in GEOMETRIES:
         raise ValueError(f"fixed_dofs must name {DOFS}, geometry one of {GEOMETRIES}")
     free = np.array([dof not in names for dof in DOFS])
-    arrays = np.broadcast_arrays(*(np.atleast_1d(np.asarray(a, dtype=float)) for a in (
+    life = (dynamic_load_rating, fatigue_load_limit, contamination_factor, oil_temperature,
+            viscosity_40, viscosity_100)
+    arrays = np.broadcast_arrays(*(np.atleast_1d(np.asarray(np.nan if a is None else a,
+                                                            dtype=float)) for a in (
         ball_diameter, pitch_diameter, contact_angle, inner_curvature_ratio,
         outer_curvature_ratio, clearance, youngs_modulus, poisson_ratio, axial_load,
-        radial_load, radial_load_z, moment_y, moment_z,
-        np.nan if contact_constant is None else contact_constant, pressure_limit,
-        np.nan if dynamic_load_rating is None else dynamic_load_rating)))
+        radial_load, radial_load_z, moment_y, moment_z, contact_constant, pressure_limit,
+        speed) + life))
     (diameter, pitch, angle, inner_ratio, outer_ratio, clearance, modulus, poisson,
-     *loads, given, pressure_limit, rating) = arrays
+     *loads, given, pressure_limit, speed) = arrays[:16]
+    life = arrays[16:]
     inner, outer = raceway_contacts(diameter, pitch, angle, inner_ratio, outer_ratio, modulus,
                                     poisson)
     hertz_ok = (inner["status"] == CONVERGED) & (outer["status"] == CONVERGED)
@@ -384,21 +418,24 @@ def ball_5dof(ball_count, ball_diameter, pitch_diameter, contact_angle,
         "loaded_balls": np.count_nonzero(approach > 0, axis=-1).astype(float),
         "max_contact_pressure": pressure,
         "largest_contact_pressure": pressure.max(axis=-1),
-        "reference_rating_life": _reference_life(ball_load, rating, diameter, pitch, angle,
-                                                 inner_ratio, outer_ratio),
         "hertz_contact_constant": hertz_constant,
     }
+    axial, radial, radial_z, moment_y, moment_z = loads
+    equivalent_load = radial_ball_equivalent_load(np.hypot(radial, radial_z), axial, angle,
+                                                  np.hypot(moment_y, moment_z))
+    outputs.update(rating_lives(
+        _reference_life(ball_load, life[0], diameter, pitch, angle, inner_ratio, outer_ratio),
+        equivalent_load, "ball", speed, pitch, *life))
     outputs["status"] = status.astype(np.int8)
     return outputs
 
 
 def _reference_life(ball_load, rating, diameter, pitch, angle, inner_ratio, outer_ratio):
-    """ISO/TS 16281's L10r of the inner ring rotating under the ball loads, in SI [rad]
-    (10^6 revolutions of 2 pi each); infinite without load, NaN without a rating."""
+    """ISO/TS 16281's L10r of the inner ring rotating under the ball loads [10^6
+    revolutions]; infinite without load, NaN without a rating."""
     with np.errstate(divide="ignore", invalid="ignore"):
-        millions = ball_bearing_reference_life(ball_load, rating, diameter, pitch, angle,
-                                               inner_ratio, outer_ratio)
-    return millions * 2e6 * np.pi
+        return ball_bearing_reference_life(ball_load, rating, diameter, pitch, angle,
+                                           inner_ratio, outer_ratio)
 
 
 def _equilibrium(rings: _Rings, load, free, ball_count):
@@ -483,9 +520,11 @@ MODELS = [Model(
     name="ball_5dof",
     function=ball_5dof,
     summary="Ball bearing under axial, radial and moment loads: 5-DOF equilibrium of the inner "
-            "ring, ball loads and contact angles, and the full 5 x 5 stiffness matrix.",
-    reference="Paper 001, eq. 1-10; Jones (1960); Harris & Kotzalas, Rolling Bearing Analysis",
-    version="3",
+            "ring, ball loads and contact angles, the full 5 x 5 stiffness matrix, contact "
+            "pressures and rating lives (ISO/TS 16281, ISO 281).",
+    reference="Paper 001, eq. 1-10; Jones (1960); Harris & Kotzalas, Rolling Bearing Analysis; "
+              "ISO/TS 16281:2008; ISO 281:2007",
+    version="4",
     inputs=(
         Input("ball_count", "1", "number of balls Z", kind="count", minimum=3, maximum=1000),
         Input("ball_diameter", "mm", "ball diameter D", minimum=0.0, exclusive_minimum=True),
@@ -520,10 +559,8 @@ MODELS = [Model(
               "validity (ISO 76: 4200 for ball bearings of through-hardened steel)",
               default=4200.0, minimum=0.0, exclusive_minimum=True,
               label="contact pressure limit"),
-        Input("dynamic_load_rating", "N", "basic dynamic load rating Cr of the bearing, for "
-              "the reference rating life; default: no life (NaN)", default=None,
-              minimum=0.0, exclusive_minimum=True, label="dynamic load rating"),
-    ),
+        SPEED_INPUT,
+    ) + LIFE_INPUTS,
     outputs=(
         Output("displacement", "m, rad", "displacement of the inner ring", dims=("dof",),
                entry_units=_DOF_UNITS,
@@ -546,15 +583,13 @@ MODELS = [Model(
                label="maximum contact pressure"),
         Output("largest_contact_pressure", "MPa", "largest maximum contact pressure of all "
                "balls", label="largest contact pressure"),
-        Output("reference_rating_life", "Mturn", "basic reference rating life L10r, ISO/TS "
-               "16281, inner ring rotating (millions of revolutions; NaN without "
-               "dynamic_load_rating)", label="reference rating life"),
         # In SI: UDUNITS reads no fractional power of a prefixed unit such as mm^1.5.
         Output("hertz_contact_constant", "N/m^1.5", "load-deflection constant K that Hertz "
                "theory gives for the curvature ratios (eq. 4-5, series law corrected); "
                "Q = K delta^1.5, K in N/m^1.5",
                label="Hertz load-deflection constant K"),
-    ),
+    ) + life_outputs("ball loads, inner ring rotating", "X Fr + Y Fa (ISO 281 6.2, Table 3; "
+                     "NaN under a moment, or with an axial load below 20 deg)"),
     dim_sizes={"ball": "ball_count", "dof": DOFS, "load_dof": DOFS},
     constraints=(
         Constraint(("ball_count", "pitch_diameter", "ball_diameter"), _fits,

@@ -254,3 +254,56 @@ def test_modified_lives_are_a_iso_times_the_basic_ones():
         expected, rel=1e-5)
     assert life.modified_rating_life(20e3, 2000.0, 1.5, 0.5, 800.0) == pytest.approx(
         expected, rel=1e-5)
+
+
+def test_the_equivalent_load_of_angular_contact_ball_bearings_follows_iso_281_table_3():
+    # ISO 281:2007 6.2 and Table 3, single-row angular contact ball bearings, F_a/F_r > e:
+    # 20 deg: e 0.57, X 0.43, Y 1.00; 25 deg: e 0.68, X 0.41, Y 0.87; 30 deg: e 0.80,
+    # X 0.39, Y 0.76; 40 deg: e 1.14, X 0.35, Y 0.57; 45 deg: e 1.34, X 0.33, Y 0.50.
+    radians = np.radians
+    cases = [
+        # 25 deg, F_a/F_r = 1 > 0.68: 0.41 * 1000 + 0.87 * 1000 = 1280 N.
+        (1000.0, 1000.0, 25.0, 1280.0),
+        # 25 deg, F_a/F_r = 0.5 <= 0.68: P = F_r.
+        (1000.0, 500.0, 25.0, 1000.0),
+        # 20 deg, F_a/F_r = 2 > 0.57: 0.43 * 1000 + 1.00 * 2000 = 2430 N.
+        (1000.0, 2000.0, 20.0, 2430.0),
+        # 45 deg, 2 > 1.34: 0.33 * 1000 + 0.50 * 2000 = 1330 N.
+        (1000.0, 2000.0, 45.0, 1330.0),
+        # 27.5 deg, halfway between 25 and 30 (linear interpolation): e = (0.68 + 0.80) / 2
+        # = 0.74, X = (0.41 + 0.39) / 2 = 0.40, Y = (0.87 + 0.76) / 2 = 0.815;
+        # F_a/F_r = 2: 0.40 * 1000 + 0.815 * 2000 = 2030 N.
+        (1000.0, 2000.0, 27.5, 2030.0),
+        # 27.5 deg, F_a/F_r = 0.72: below the interpolated e = 0.74 (above 25 deg's 0.68), P = F_r.
+        (1000.0, 720.0, 27.5, 1000.0),
+        # 40 deg, pure axial load (F_r = 0, F_a/F_r infinite), either direction:
+        # P = 0.57 * 1000 = 570 N.
+        (0.0, 1000.0, 40.0, 570.0),
+        (0.0, -1000.0, 40.0, 570.0),
+        # No load: P = 0.
+        (0.0, 0.0, 30.0, 0.0),
+        # Deep groove (0 deg) or 15 deg without axial load: P = F_r whatever e is.
+        (1000.0, 0.0, 0.0, 1000.0),
+        (800.0, 0.0, 15.0, 800.0),
+    ]
+    radial, axial, angle, expected = (np.array(column) for column in zip(*cases))
+    load = life.radial_ball_equivalent_load(radial, axial, radians(angle))
+    assert load == pytest.approx(expected, rel=1e-12)
+
+
+def test_the_equivalent_load_is_nan_where_iso_281_needs_more_than_the_loads():
+    radians = np.radians
+    # Below 20 deg with an axial load, e and Y depend on f0 Fa / C0r (static load rating);
+    # above 45 deg the bearing is a thrust bearing; a tilting moment is outside 6.2.
+    assert np.isnan(life.radial_ball_equivalent_load(1000.0, 100.0, 0.0))
+    assert np.isnan(life.radial_ball_equivalent_load(1000.0, 100.0, radians(15.0)))
+    assert np.isnan(life.radial_ball_equivalent_load(1000.0, 0.0, radians(50.0)))
+    assert np.isnan(life.radial_ball_equivalent_load(1000.0, 0.0, radians(25.0), 1.0))
+    # Vectorised: one call broadcasts loads against angles.
+    load = life.radial_ball_equivalent_load(np.array([[1000.0], [0.0]]), 1000.0,
+                                            radians([0.0, 25.0, 40.0]))
+    assert load.shape == (2, 3)
+    assert np.isnan(load[:, 0]).all()
+    # 25 deg: 1280 N as above; 40 deg, 1 <= 1.14: F_r; F_r = 0: 0.87 and 0.57 times 1000 N.
+    assert load[:, 1:] == pytest.approx(np.array([[1280.0, 1000.0], [870.0, 570.0]]),
+                                        rel=1e-12)
