@@ -18,8 +18,9 @@ FIGURES = {
                  "misaligned by 1 and 2 mrad. Aligned, the model's straight roller has no "
                  "edge stress and no crown is its best; misaligned, its ends load and a crown "
                  "of a few micrometres pays.",
-    "preload_71807ac.png": "71807AC (paper 001): L10r and the largest contact pressure "
-                           "against the axial load (preload) for several radial loads.",
+    "preload_71807ac.png": "71807AC (paper 001): L10r (solid), ISO 281 L10 (dashed) and the "
+                           "largest contact pressure against the axial load (preload) for "
+                           "several radial loads.",
     "tapered.png": "Tapered roller bearing of paper 003 at its radial load: L10r and ISO 281 "
                    "L10 (left) and the largest contact pressure with the loaded rollers "
                    "(right) against Fa/Fr, from just above Fr tan(alpha), below which the "
@@ -112,9 +113,15 @@ def _preload(results, figures):
     data = data.assign_coords(axial_load=in_unit(data.axial_load, "N"),
                               radial_load=in_unit(data.radial_load, "N"))
     figure, (left, right) = plt.subplots(1, 2, figsize=(10, 4.2))
-    family(left, data.axial_load, _life(data.reference_rating_life), "radial_load",
-           "Fr = {:g} N", plot="semilogy", xlabel=label(data.axial_load),
-           ylabel=f"reference rating life L10r [{_LIFE_UNIT}]", title="L10r")
+    for index, load in enumerate(data.radial_load.values):
+        point = data.sel(radial_load=load)
+        left.semilogy(point.axial_load, _life(point.reference_rating_life), "-",
+                      color=f"C{index}", label=f"Fr = {load:g} N")
+        left.semilogy(point.axial_load, _life(point.basic_rating_life), "--", color=f"C{index}")
+    left.set(xlabel=label(data.axial_load), ylabel=f"rating life [{_LIFE_UNIT}]",
+             title="L10r (solid), L10 (dashed)")
+    left.legend(fontsize=7)
+    left.grid(alpha=0.3)
     family(right, data.axial_load, in_unit(data.largest_contact_pressure, "MPa"),
            "radial_load", "Fr = {:g} N", xlabel=label(data.axial_load),
            ylabel="largest contact pressure [MPa]", title="Largest contact pressure")
