@@ -67,7 +67,7 @@ _PRESETS = (
         notes="Pitch diameter = (outer diameter 75 + bore 55) / 2. Roller length 10 mm is not a "
               "model input. Clearance, crown, speed and load are the study's axes. The paper "
               "states no dynamic load rating: an assumption, Cr = 48.4 kN from the geometry by "
-              "ISO 281:2007 eq. (9), Cr = bm fc (i Lwe cos a)^(7/9) Z^(3/4) Dwe^(29/27) = "
+              "ISO 281:2007, 7.1, Cr = bm fc (i Lwe cos a)^(7/9) Z^(3/4) Dwe^(29/27) = "
               "1.1 x 88.3 x 9.6^(7/9) x 14^(3/4) x 10^(29/27) (N, mm), with bm = 1.1 "
               "(Table 1, cylindrical roller bearings) and fc = 88.3 interpolated in Table 7 at "
               "Dwe cos a / Dpw = 10/65 = 0.154.",
@@ -88,10 +88,11 @@ _PRESETS = (
               "5.45e9 N/m^1.5 for these ratios (remove contact_constant to use it). Zero "
               "clearance: the axial preload of 1000 N is a load of the study. The paper "
               "states no dynamic load rating: an assumption, Cr = 4.15 kN from the table's "
-              "geometry by ISO 281:2007 eq. (2), Cr = bm fc (i cos a)^0.7 Z^(2/3) Dw^1.8 = "
-              "1.3 x 51.0 x cos(25 deg)^0.7 x 25^(2/3) x 3.14^1.8 (N, mm), with bm = 1.3 "
-              "(Table 1, angular contact groove ball bearings) and fc = 51.0 interpolated in "
-              "Table 2 at Dw cos a / Dpw = 0.0694.",
+              "geometry by ISO 281:2007, 5.1 (Dw <= 25.4 mm), "
+              "Cr = bm fc (i cos a)^0.7 Z^(2/3) Dw^1.8 = 1.3 x 51.0 x cos(25 deg)^0.7 x "
+              "25^(2/3) x 3.14^1.8 (N, mm), with bm = 1.3 (Table 1, angular contact groove "
+              "ball bearings) and fc = 51.0 interpolated in Table 2 at Dw cos a / Dpw = "
+              "0.0694.",
     ),
     Preset(
         name="paper003-table1",
@@ -103,7 +104,7 @@ _PRESETS = (
               "contact constant is eq. 14's default. The pitch diameter (for the contact "
               "pressure and the life) is not stated: 79.537 mm is the one trb_rib derives from "
               "the rib diameter of paper003-table1-rib. The paper states no dynamic load "
-              "rating: an assumption, Cr = 127.6 kN from the geometry by ISO 281:2007 eq. (9), "
+              "rating: an assumption, Cr = 127.6 kN from the geometry by ISO 281:2007, 7.1, "
               "Cr = bm fc (i Lwe cos a)^(7/9) Z^(3/4) Dwe^(29/27) = 1.1 x 88.3 x "
               "(21.5 cos 28 deg)^(7/9) x 16^(3/4) x 13.71^(29/27) (N, mm), with bm = 1.1 "
               "(Table 1, tapered roller bearings), the cup angle for a, the mean roller "
