@@ -1,12 +1,12 @@
 """Parametric studies of rolling bearings: definition -> grid -> dask map -> labelled dataset.
 
-The Python API (:mod:`bearing_sweep.api`): :func:`run`, :func:`check`, :func:`list_models`,
-:func:`describe`, and :func:`plot` (:mod:`bearing_sweep.quicklook`) for a quick look at a
+The Python API (:mod:`bearing_sweep.api`): :func:`run`, :func:`check`, :func:`analyze` (of
+a sampled result), :func:`list_models`, :func:`describe`, and :func:`plot` (:mod:`bearing_sweep.quicklook`) for a quick look at a
 result; every mistake in what is asked is a :class:`SpecError`. The model functions are in
 :mod:`bearing_sweep.models`.
 """
-from .api import check, describe, list_models, run
+from .api import analyze, check, describe, list_models, run
 from .quicklook import plot
 from .spec import SpecError
 
-__all__ = ["run", "check", "list_models", "describe", "plot", "SpecError"]
+__all__ = ["run", "check", "analyze", "list_models", "describe", "plot", "SpecError"]

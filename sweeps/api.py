@@ -12,9 +12,11 @@ import sys
 import xarray as xr
 
 from .models.registry import REQUIRED, STATUS_DESCRIPTIONS, all_models
-from . import spec
+from . import analysis, spec
 from .compute import Executor, run_sweep
+from .parts import check_output
 from .spec import SpecError, Sweep
+from .store import open_result, write_netcdf
 
 
 def run(definition, *, output=None, client=None, workers=None, progress=True) -> xr.Dataset:
@@ -73,6 +75,49 @@ def check(definition) -> None:
     Raises :class:`SpecError` with the one line ``bearing-sweep run`` would print.
     """
     _sweep(definition)
+
+
+def analyze(result, *, output=None) -> xr.Dataset:
+    """Summary statistics of a sampled result and, for a Saltelli design, its Sobol' indices.
+
+    Parameters
+    ----------
+    result : xarray.Dataset, str or os.PathLike
+        A result of a definition with a ``[sample]`` table, or its netCDF file.
+    output : str or os.PathLike, optional
+        A netCDF file to write the analysis to, atomically, as ``bearing-sweep analyze -o``.
+
+    Returns
+    -------
+    xarray.Dataset
+        Every output's ``mean``, ``std``, ``p5``, ``p50`` and ``p95`` over the samples (the
+        dimension ``statistic``), and for a Saltelli design ``first_order`` and
+        ``total_order`` with dimensions (``output``, ``input``, the result's other axes) and
+        their 95 % intervals; see :func:`bearing_sweep.analysis.analyze`.
+
+    Raises
+    ------
+    SpecError
+        Not a sampled result, no such file, or an output path that must not be written.
+    """
+    where = "the dataset"
+    if not isinstance(result, xr.Dataset):
+        where = str(result)
+        if not os.path.isfile(result):
+            raise SpecError(f"{result}: no such result file")
+        if output is not None and os.path.exists(output) and os.path.samefile(result, output):
+            raise SpecError(f"{output}: is the result itself; choose another output")
+        try:
+            result = open_result(result)
+        except (OSError, ValueError) as error:  # not netCDF, or not one xarray reads
+            raise SpecError(f"{where}: not a result of bearing-sweep run "
+                            f"({str(error).splitlines()[0]})") from None
+    if output is not None:
+        check_output(output)
+    analyzed = analysis.analyze(result, where)
+    if output is not None:
+        write_netcdf(analyzed, output)
+    return analyzed
 
 
 def list_models() -> list[dict]:

@@ -1,5 +1,5 @@
-"""Command line: ``bearing-sweep run | study | report | models | describe | presets | schema |
-plot``."""
+"""Command line: ``bearing-sweep run | analyze | study | report | models | describe | presets |
+schema | plot``."""
 from __future__ import annotations
 
 import argparse
@@ -40,6 +40,12 @@ def _parser() -> argparse.ArgumentParser:
     run.add_argument("--fresh", action="store_true",
                      help="ignore the finished chunks of an interrupted run and start over")
     cluster_options(run)
+
+    analyze = commands.add_parser("analyze", help="statistics and Sobol indices of a sampled "
+                                  "result")
+    analyze.add_argument("result", type=Path, help="a netCDF file of a sweep with [sample]")
+    analyze.add_argument("-o", "--output", type=Path, metavar="OUT",
+                         help="the netCDF file to write (default RESULT_analysis.nc beside it)")
 
     run_study = commands.add_parser("study", help="run a paper's sweeps (missing or stale) and "
                                     "draw its figures")
@@ -111,6 +117,33 @@ def _describe(name: str) -> str:
     if model["validity"]:
         lines.append(f"Validity (out_of_validity beyond): {model['validity']}")
     lines += [f"Condition: {condition}" for condition in model["conditions"]]
+    return "\n".join(lines)
+
+
+def _indices_table(analyzed) -> str:
+    """The Sobol' indices of a Saltelli design, an output a block, or the sample count."""
+    if "first_order" not in analyzed:
+        return f"statistics of {analyzed.attrs['sample_size']} samples of each output"
+    lines = ["first-order / total Sobol index [95 % interval] of each output:"]
+    for output in analyzed.output.values:
+        failed = int(analyzed.failed_evaluations.sel(output=output).sum())
+        if analyzed.first_order.sel(output=output).isnull().all():
+            lines.append(f"{output}: none ({failed} evaluations without a value)")
+            continue
+        if (analyzed[output].sel(statistic="std") == 0).all():
+            lines.append(f"{output}: none (the same value in every sample)")
+            continue
+        lines.append(f"{output}:" + (f" NaN where evaluations failed ({failed} in all)"
+                                     if failed else ""))
+        for name in analyzed.input.values:
+            one = analyzed.sel(output=output, input=name)
+            if one.first_order.size != 1:  # indices over other axes: see the file
+                lines.append(f"  {name}: {one.first_order.size} values over the other axes")
+                continue
+            low, high = one.first_order_interval.values
+            total_low, total_high = one.total_order_interval.values
+            lines.append(f"  {name}: {float(one.first_order):.3f} [{low:.3f}, {high:.3f}] / "
+                         f"{float(one.total_order):.3f} [{total_low:.3f}, {total_high:.3f}]")
     return "\n".join(lines)
 
 
@@ -186,6 +219,10 @@ def main(argv=None) -> int:
                 summary = run_sweep(sweep, output, executor, args.chunk_size, not args.quiet,
                                     args.fresh, _note)
             print(summary.text())
+        elif args.command == "analyze":
+            output = args.output or args.result.with_name(f"{args.result.stem}_analysis.nc")
+            print(_indices_table(api.analyze(args.result, output=output)))
+            print(f"wrote {output}")
         elif args.command == "study":
             _check_cluster_options(args)
             folder = args.studies or study.default_studies_folder()

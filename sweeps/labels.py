@@ -71,6 +71,10 @@ def labelled_dataset(sweep: Sweep, grid: Grid, outputs: dict, status: np.ndarray
     }
     if sweep.bearing:
         attrs["bearing"] = sweep.bearing
+    if sweep.sampling is not None:
+        attrs.update(sample_method=sweep.sampling.method, sample_size=sweep.sampling.n,
+                     sample_seed=sweep.sampling.seed,
+                     sample_inputs=" ".join(sweep.sampling.distributions))
     if provenance.get("git_commit"):
         attrs["git_commit"] = provenance["git_commit"]
     if errors:
@@ -118,14 +122,32 @@ def coordinates(sweep: Sweep) -> dict:
                             input_attrs(sweep, name, values[0].unit))
             continue
         labels = np.array(axis.labels)
+        sampling = sweep.sampling if axis.name == "sample" else None
+        comment = "labels of a zipped axis" if sampling is None else (
+            f"number of the sample in a {sampling.method} design of seed {sampling.seed}")
         coords[axis.name] = ((axis.name,), labels, {"long_name": axis.name.replace("_", " "),
-                                                    "comment": "labels of a zipped axis"}
+                                                    "comment": comment}
                              | ({"units": "1"} if labels.dtype.kind in "iu" else {}))
         for name, values in axis.values.items():
             extra = sweep.model.input(name).dims if any(np.ndim(v.shown) for v in values) else ()
-            coords[name] = ((axis.name,) + extra, declared_values(sweep, name, values),
-                            input_attrs(sweep, name, values[0].unit))
+            attrs = input_attrs(sweep, name, values[0].unit)
+            if sampling is not None:
+                attrs["distribution"] = sampling.distributions[name]
+            coords[name] = ((axis.name,) + extra, declared_values(sweep, name, values), attrs)
+        if sampling is not None and sampling.blocks:
+            coords["saltelli_block"] = saltelli_block(sampling)
     return coords
+
+
+def saltelli_block(sampling) -> tuple:
+    """The block of Saltelli's design each sample belongs to, as CF flags: A, B, then A
+    with one input's values taken from B, for each sampled input (``n`` samples each)."""
+    return (("sample",), np.repeat(np.arange(len(sampling.blocks), dtype=np.int8), sampling.n),
+            {"long_name": "block of the Saltelli design",
+             "flag_values": np.arange(len(sampling.blocks), dtype=np.int8),
+             "flag_meanings": " ".join(sampling.blocks),
+             "comment": "A and B: independent samples; AB_<input>: A with that input's values "
+                        "from B (Saltelli et al. 2010, doi:10.1016/j.cpc.2009.09.018)"})
 
 
 def fixed_inputs(sweep: Sweep) -> dict:

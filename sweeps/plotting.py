@@ -132,3 +132,33 @@ def conditions(data: xr.Dataset, *names: str, width: int | None = 80, preset: bo
         else:
             lines[-1] += (", " if lines[-1] else "") + part
     return "\n".join(lines)
+
+
+def sobol_bars(axis, analysis: xr.Dataset, output: str, **where):
+    """First-order and total Sobol' indices of ``output`` (a result of ``analyze``), a pair
+    of bars per sampled input with their confidence intervals as error bars; ``where``
+    selects a point of the result's other axes (``speed="5000 rpm"``, as :func:`at`)."""
+    one = at(analysis, **where).sel(output=output)
+    inputs = list(one.input.values)
+    place = np.arange(len(inputs))
+    for shift, name, text in ((-0.2, "first_order", "first order"),
+                              (0.2, "total_order", "total")):
+        values = one[name].transpose("input").values
+        low, high = one[f"{name}_interval"].transpose("bound", "input").values
+        axis.bar(place + shift, values, width=0.4, label=text,
+                 yerr=[values - low, high - values], capsize=3)
+    axis.set_xticks(place, [n.replace("_", " ") for n in inputs])
+    axis.set(ylabel=f"Sobol index of {output.replace('_', ' ')}")
+    axis.axhline(0.0, color="k", lw=0.5)
+    axis.legend(fontsize=7)
+
+
+def histogram(axis, data: xr.Dataset, name: str, bins: int = 30, **where):
+    """The distribution of ``name`` (an output or a sampled input) over the samples of a
+    sampled result, at the point of its other axes that ``where`` selects (as :func:`at`);
+    a Saltelli design's repeated AB blocks are left out."""
+    values = at(data, **where)[name]
+    if "saltelli_block" in values.coords:
+        values = values.where(values.saltelli_block < 2, drop=True)
+    axis.hist(values.values.ravel()[np.isfinite(values.values.ravel())], bins=bins)
+    axis.set(xlabel=label(values, long=True), ylabel="samples")

@@ -20,7 +20,7 @@ from dataclasses import replace
 
 from .models.catalogue import PRESETS
 from .models.registry import Input, Model, all_models
-from . import units
+from . import sample, units
 
 DRAFT = "http://json-schema.org/draft-07/schema#"
 
@@ -97,7 +97,39 @@ def _definition(model: Model) -> dict:
                           "description": "one value for each parameter held fixed"},
                 "axes": {"type": "object", "properties": axes, "additionalProperties": zipped,
                          "description": "each key a dimension of the grid, in order: a "
-                                        "parameter's values, or a table of zipped parameters"}}}
+                                        "parameter's values, or a table of zipped parameters"},
+                "sample": _sample(model)}}
+
+
+def _sample(model: Model) -> dict:
+    """The [sample] table: its settings, and a distribution for each sampled parameter."""
+    settings = {
+        "n": {"type": "integer", "minimum": 1, "description": "number of samples (Saltelli: "
+              "base samples; sobol and saltelli: a power of 2)"},
+        "method": {"enum": list(sample.METHODS), "description": "the design of the samples"},
+        "seed": {"type": "integer", "minimum": 0, "default": 0,
+                 "description": "the same seed draws the same samples"}}
+    return {"type": "object", "additionalProperties": False, "required": ["n", "method"],
+            "description": "parameters drawn from distributions into one dimension 'sample'",
+            "properties": {**settings, **{i.name: _distribution(i) for i in model.inputs
+                                          if not i.structural}}}
+
+
+def _distribution(spec: Input) -> dict:
+    """One sampled parameter: a distribution and its parameters, each with a unit."""
+    # Widths and deviations may be negative, and the engine checks the range of what a
+    # distribution reaches: no bounds here.
+    value = _one(replace(spec, dims=(), broadcast=False, minimum=None, maximum=None))
+    forms = []
+    for name, parameters in sample.DISTRIBUTIONS.items():
+        properties = {"distribution": {"enum": [name]}, **{p: value for p, _ in parameters}}
+        if name == "tolerance":
+            properties["distribution_within"] = {"enum": list(sample.WITHIN)}
+        forms.append({"type": "object", "additionalProperties": False,
+                      "required": ["distribution", *(p for p, _ in parameters)],
+                      "properties": properties})
+    per = f", each {spec.dims[0]}'s value drawn on its own" if spec.dims else ""
+    return {"anyOf": forms, "description": f"{describe(spec)}; drawn from a distribution{per}"}
 
 
 def describe(spec: Input) -> str:

@@ -16,11 +16,13 @@ import numpy as np
 
 from .models.catalogue import PRESETS
 from .models.registry import Input, Model, all_models
-from . import units
+from . import sample, units
 
 _RANGE_KEYS = {"start", "stop", "num", "step", "units"}
 _VALUES_KEYS = {"values", "units"}
-_RESERVED = {"status"}
+_RESERVED = {"status", "sample"}
+#: The keys of a [sample] table that are not sampled parameters.
+_SAMPLE_SETTINGS = ("n", "method", "seed")
 #: Most points in one sweep: beyond, the result files alone would fill a disk.
 MAX_POINTS = 10**9
 #: Most values on one axis (each is validated on its own before any computing).
@@ -58,6 +60,18 @@ class Axis:
         return len(next(iter(self.values.values())))
 
 
+@dataclass(frozen=True)
+class Sampling:
+    """How the ``sample`` axis was drawn, for the file's attributes and ``analyze``."""
+
+    method: str
+    n: int  # samples asked for; Saltelli's design holds n * (inputs + 2)
+    seed: int
+    distributions: dict  # sampled input -> its distribution in words, in the declared unit
+    #: Saltelli's design: the name of each block of ``n`` samples (A, B, AB_<input>...).
+    blocks: tuple[str, ...] | None = None
+
+
 @dataclass
 class Sweep:
     """A validated sweep definition."""
@@ -70,6 +84,7 @@ class Sweep:
     fixed: dict[str, Value | None]  # every input not on an axis; None: derived by the model
     axes: list[Axis]
     origin: dict[str, str] = field(default_factory=dict)  # where each fixed value came from
+    sampling: Sampling | None = None  # a [sample] table: its axis is the first of ``axes``
 
     @property
     def sha256(self) -> str:
@@ -186,10 +201,11 @@ class _Parser:
 
     # -- the whole definition -------------------------------------------------------------
     def sweep(self, document: dict, text: str) -> Sweep:
+        sections = ("sweep", "fixed", "axes", "sample")
         for key in document:
-            if key not in ("sweep", "fixed", "axes"):
-                self.fail(key, "unknown section" + suggestion(key, ("sweep", "fixed", "axes"))
-                          + " (accepted: [sweep], [fixed], [axes])")
+            if key not in sections:
+                self.fail(key, "unknown section" + suggestion(key, sections)
+                          + " (accepted: [sweep], [fixed], [axes], [sample])")
         head = self.table(document, "sweep", ("model", "bearing", "title"))
         name = head.get("model")
         if not isinstance(name, str):
@@ -214,11 +230,9 @@ class _Parser:
             self.claim(key, where, inputs, model)
             fixed[key], origin[key] = self.value(inputs[key], raw, where), "fixed"
         axes = [self.axis(key, raw, inputs, model) for key, raw in axes_raw.items()]
-        points = int(np.prod([len(axis) for axis in axes], dtype=np.float64))
-        if points > MAX_POINTS:
-            self.fail("axes", f"the grid has {points:.3g} points, too large for one sweep "
-                      f"(at most {MAX_POINTS:.0e}); split it into several definitions")
-        on_axes = {p for axis in axes for p in axis.values}
+        sample_raw = self.table(document, "sample", None)
+        sampled = self.sampled(sample_raw, inputs, model)
+        on_axes = {p for axis in axes for p in axis.values} | set(sampled)
         for key in on_axes:
             fixed.pop(key, None)
             origin.pop(key, None)
@@ -233,11 +247,20 @@ class _Parser:
             if spec.name not in fixed and spec.name not in on_axes:
                 fixed[spec.name] = None if spec.default is None else self.default(spec)
                 origin[spec.name] = "default"
+        sampling = None
+        if "sample" in document:
+            axis, sampling = self.sample_axis(sample_raw, sampled, model, fixed)
+            axes.insert(0, axis)  # every sample at every point of the other axes
+        points = int(np.prod([len(axis) for axis in axes], dtype=np.float64))
+        if points > MAX_POINTS:
+            self.fail("sample.n" if sampling and len(axes) == 1 else "axes",
+                      f"the grid has {points:.3g} points, too large for one sweep "
+                      f"(at most {MAX_POINTS:.0e}); split it into several definitions")
         # A definition from a file is named after it; one given as text or a dict is not.
         title = model.name if self.where.startswith("<") else \
             f"{model.name}: {Path(self.where).stem}"
         sweep = Sweep(self.where, text, model, str(head.get("title") or title), bearing, fixed,
-                      axes, origin)
+                      axes, origin, sampling)
         self.check_pattern_lengths(sweep)
         self.check_constraints(sweep)
         return sweep
@@ -271,6 +294,146 @@ class _Parser:
         unit = units.parse_unit(spec.unit)
         return Value(float(units.to_si(spec.default, unit)), spec.default, spec.unit)
 
+    # -- [sample] -------------------------------------------------------------------------
+    def sampled(self, table: dict, inputs: dict, model: Model) -> dict:
+        """The parameters a [sample] table draws, each claimed (given only once)."""
+        sampled = {}
+        for name, raw in table.items():
+            if name in _SAMPLE_SETTINGS:
+                continue
+            key = f"sample.{name}"
+            if name not in inputs:
+                self.fail(key, f"unknown key: neither a setting ({', '.join(_SAMPLE_SETTINGS)}) "
+                          f"nor a parameter of model {model.name}"
+                          + suggestion(name, list(_SAMPLE_SETTINGS) + list(inputs))
+                          + f" (`bearing-sweep describe {model.name}` lists them)")
+            self.claim(name, key, inputs, model)
+            spec = inputs[name]
+            if spec.structural:
+                self.fail(key, f"{name!r} is a {spec.kind} and cannot be sampled (only numbers "
+                          "and quantities can); vary it on an axis")
+            if not isinstance(raw, dict) or not isinstance(raw.get("distribution"), str):
+                self.fail(key, "expected a table naming its distribution, e.g. { distribution = "
+                          "\"uniform\", low = ..., high = ... } (distributions: "
+                          f"{', '.join(sample.DISTRIBUTIONS)})")
+            sampled[name] = raw
+        return sampled
+
+    def sample_axis(self, table: dict, sampled: dict, model: Model,
+                    fixed: dict) -> tuple[Axis, Sampling]:
+        """The ``sample`` axis: a zipped axis of the drawn values, numbered from 0."""
+        n = table.get("n")
+        if isinstance(n, bool) or not isinstance(n, int) or n < 1:
+            self.fail("sample.n", f"{'missing' if n is None else repr(n)}: expected the number "
+                      "of samples, a positive integer")
+        method = table.get("method")
+        if method not in sample.METHODS:
+            self.fail("sample.method", ("missing" if method is None else f"{method!r} is not "
+                      "accepted") + suggestion(str(method), sample.METHODS)
+                      + f" (methods: {', '.join(sample.METHODS)})")
+        seed = table.get("seed", 0)
+        if isinstance(seed, bool) or not isinstance(seed, int) or seed < 0:
+            self.fail("sample.seed", f"{seed!r}: expected an integer >= 0 (the same seed draws "
+                      "the same samples)")
+        if method in sample.POWER_OF_TWO and n & (n - 1):
+            below = 1 << (n.bit_length() - 1)
+            self.fail("sample.n", f"{n}: a {method} design needs a power of 2 (its balance "
+                      f"depends on it); take {below} or {2 * below}")
+        if not sampled:
+            self.fail("sample", "no parameter to sample: give at least one, e.g. radial_load = "
+                      "{ distribution = \"uniform\", low = \"1 kN\", high = \"8 kN\" }")
+        size = n * (len(sampled) + 2) if method == "saltelli" else n
+        if size > MAX_AXIS_VALUES:
+            self.fail("sample.n", f"{n}: the design would have {size} samples, more than "
+                      f"{MAX_AXIS_VALUES:.0e}")
+        distributions = {name: self.distribution(model.input(name), raw, f"sample.{name}")
+                         for name, raw in sampled.items()}
+        widths = [self.sampled_length(model, model.input(name), fixed) for name in sampled]
+        if method == "saltelli":
+            cube = sample.saltelli_blocks(n, widths, seed)
+        else:
+            cube = sample.unit_hypercube(method, n, sum(widths), seed)
+        values, column = {}, 0
+        for (name, distribution), width in zip(distributions.items(), widths):
+            spec = model.input(name)
+            drawn = distribution.frozen().ppf(cube[:, column:column + width])
+            column += width
+            if not spec.dims:
+                drawn = drawn[:, 0]
+            si = units.to_si(drawn, units.parse_unit(spec.unit))
+            values[name] = [Value(s if spec.dims else float(s), d if spec.dims else float(d),
+                                  spec.unit) for s, d in zip(si, drawn)]
+        blocks = tuple(sample.block_meanings(list(sampled))) if method == "saltelli" else None
+        sampling = Sampling(method, n, seed, {name: d.text(model.input(name).unit)
+                                              for name, d in distributions.items()}, blocks)
+        return Axis("sample", values, list(range(size))), sampling
+
+    def distribution(self, spec: Input, raw: dict, key: str) -> sample.Distribution:
+        """A sampled parameter's distribution, its parameters in the declared unit, checked
+        against the parameter's valid range."""
+        name = raw["distribution"]
+        if name not in sample.DISTRIBUTIONS:
+            self.fail(f"{key}.distribution", f"{name!r} is not accepted"
+                      + suggestion(name, sample.DISTRIBUTIONS)
+                      + f" (distributions: {', '.join(sample.DISTRIBUTIONS)})")
+        wanted = sample.DISTRIBUTIONS[name]
+        accepted = {"distribution"} | {p for p, _ in wanted} | (
+            {"distribution_within"} if name == "tolerance" else set())
+        for extra in raw:
+            if extra not in accepted:
+                self.fail(f"{key}.{extra}", f"not a parameter of a {name} distribution"
+                          + suggestion(extra, accepted)
+                          + f" (it takes {', '.join(p for p, _ in wanted)})")
+        missing = [p for p, _ in wanted if p not in raw]
+        if missing:
+            self.fail(key, f"a {name} distribution needs {', '.join(missing)} (it takes "
+                      f"{', '.join(p for p, _ in wanted)})")
+        within = raw.get("distribution_within", "uniform")
+        if within not in sample.WITHIN:
+            self.fail(f"{key}.distribution_within", f"{within!r} is not accepted (accepted: "
+                      f"{', '.join(repr(w) for w in sample.WITHIN)})")
+        scalar = replace(spec, dims=(), broadcast=False)
+        declared = units.parse_unit(spec.unit)
+        parameters = {}
+        for parameter, kind in wanted:
+            value = self.value(scalar, raw[parameter], f"{key}.{parameter}", check_range=False)
+            written = units.revolutions(units.parse_unit(value.unit), declared)
+            target = declared
+            if kind == "difference":  # a width: "2 K" or "2 delta_degC" on a degC parameter
+                written, target = units.as_difference(written), units.as_difference(declared)
+            parameters[parameter] = float(units.convert(value.shown, written, target))
+        distribution = sample.Distribution(name, parameters, within)
+        problem = distribution.problem()
+        if problem:
+            self.fail(key, f"{problem} ({distribution.text(spec.unit)})")
+        low, high = distribution.support()
+        below = spec.minimum is not None and (
+            low <= spec.minimum if spec.exclusive_minimum else low < spec.minimum)
+        above = spec.maximum is not None and high > spec.maximum
+        if below or above:
+            end = low if below else high
+            reach = (f"has no {'lower' if below else 'upper'} bound" if np.isinf(end) else
+                     f"reaches {end:g}" + ("" if spec.unit in ("", "1") else f" {spec.unit}"))
+            self.fail(key, f"a {name} distribution {reach}, outside the valid range of "
+                      f"{spec.name} ({spec.range_text()}); keep it within the range (a "
+                      "truncated_normal with low and high, or a bounded distribution)")
+        return distribution
+
+    def sampled_length(self, model: Model, spec: Input, fixed: dict) -> int:
+        """How many values one sample of ``spec`` draws: 1, or one per entry of a pattern
+        whose length a fixed count sets."""
+        if not spec.dims:
+            return 1
+        count = model.dim_sizes.get(spec.dims[0])
+        key = f"sample.{spec.name}"
+        if not isinstance(count, str) or count not in {i.name for i in model.inputs}:
+            self.fail(key, f"sampling of the pattern {spec.name!r} is not supported: no count "
+                      f"sets its length (one value per {spec.dims[0]})")
+        if fixed.get(count) is None:
+            self.fail(key, f"sampling the pattern {spec.name!r} needs {count!r} fixed (it sets "
+                      f"the pattern's length), not on an axis or sampled")
+        return int(fixed[count].si)
+
     # -- axes -----------------------------------------------------------------------------
     def axis(self, name: str, raw, inputs: dict, model: Model) -> Axis:
         key = f"axes.{name}"
@@ -291,7 +454,9 @@ class _Parser:
                       + f" (`bearing-sweep describe {model.name}` lists them)")
         taken = {o.name for o in model.outputs} | {d for o in model.outputs for d in o.dims}
         if name in taken | _RESERVED:
-            self.fail(key, f"the axis name {name!r} is taken by an output or its dimension")
+            self.fail(key, f"the axis name {name!r} is taken by an output or its dimension"
+                      if name in taken else f"the axis name {name!r} is reserved (for the "
+                      "status of each point and the [sample] axis)")
         values = {}
         for parameter, column in raw.items():
             if parameter == "labels":
@@ -606,7 +771,8 @@ class _Parser:
                     shown.append(f"{name} = {value.shown.split()}")
                     continue
                 shown.append(f"{name} = {_plain(value.shown)}{unit}")
-            section = "axes" if axis_of else "fixed"
+            section = ("sample" if "sample" in axis_of.values() else "axes") if axis_of \
+                else "fixed"
             raise SpecError(f"{self.where}: {section}: {constraint.message} "
                             f"({', '.join(shown)})")
 

@@ -70,3 +70,29 @@ def test_the_rating_life_example_runs_and_shows_the_clearance_optimum(tmp_path):
         # every load (Harris & Kotzalas, Rolling Bearing Analysis, ch. 7 and 11).
         best = result["reference_rating_life"].idxmax("clearance")
         assert ((best <= 0.0) & (best >= -0.015)).all(), best.values
+
+
+def test_the_sampling_example_runs_and_analyze_names_what_drives_the_stiffness(tmp_path):
+    import xarray as xr
+
+    definition = next(block for block in blocks("toml") if "[sample]" in block)
+    script = next(block for block in blocks("python") if "bearing_sweep.analyze" in block)
+    (tmp_path / "tolerances.toml").write_text(definition)
+    for command in (["run", "tolerances.toml"], ["analyze", "results/tolerances.nc"]):
+        done = subprocess.run([sys.executable, "-m", "bearing_sweep", *command], cwd=tmp_path,
+                              capture_output=True, text=True, timeout=300)
+        assert done.returncode == 0, done.stderr
+    assert "radial_stiffness:" in done.stdout
+    done = subprocess.run([sys.executable, "-c", "import matplotlib\nmatplotlib.use('Agg')\n"
+                           + script], cwd=tmp_path, capture_output=True, text=True, timeout=300)
+    assert done.returncode == 0, done.stderr
+    assert (tmp_path / "tolerances.png").is_file()
+    with xr.open_dataset(tmp_path / "results" / "tolerances_analysis.nc") as analysis:
+        total = analysis.total_order.sel(output="radial_stiffness")
+        # The load range moves the stiffness most (a line contact stiffens with load,
+        # Palmgren's k ~ Fr^0.1 per roller), the clearance next; a micrometre of crown
+        # tolerance hardly at all.
+        assert total.idxmax("input") == "radial_load"
+        assert float(total.sel(input="clearance")) > float(total.sel(input="crown"))
+        assert float(analysis.total_order_interval.sel(
+            output="radial_stiffness", input="crown", bound="high")) < 0.05

@@ -129,3 +129,95 @@ def test_tapered_lives_through_the_model():
     pulling = trb_load(40e3, 5e3, dynamic_load_rating=rating, **TAPERED)
     assert pulling["status"][0] == INFEASIBLE
     assert np.isnan(pulling["reference_rating_life"]).all()
+
+
+# Cross-check against a commercial tool's report: Romax DT 2021.0.0, report "RxD5C58.htm" of
+# the model "CRB_Testing.rnx" (a cylindrical roller bearing, 13 rollers, inner ring at
+# 50 r/min, misaligned), in the public repository
+# https://github.com/shiva01910/BearingLifeCalculation16281 (file RxD5C58.htm, commit
+# eb14c5e7). The report gives loads and lives but not the geometry; the inputs that are not
+# printed are read back from its own figures, as noted at each.
+ROMAX_LOAD = 15138.2  # [N] radial load, = P ("Equivalent dynamic bearing load")
+ROMAX_RATING = 32500.0  # [N] C_r = P / (P/C) = 15138.2 / 0.46579 = 32500.05
+ROMAX_ROLLERS = 13  # roller positions every 27.692 deg
+# gamma = D_we / d_m from the Hertz line contacts of the 0-deg roller's middle slice
+# (4.250 mm): p0 / b = E* sum(rho) / 2 on each raceway, and sum(rho) is 2 / (D (1 - gamma))
+# inner, 2 / (D (1 + gamma)) outer, so their ratio is (1 + gamma) / (1 - gamma).
+# Inner 2970.988069 MPa, 159.77 um; outer 2446.736777 MPa, 194.23 um.
+_RATIO = (2970.988069 / 159.77) / (2446.736777 / 194.23)
+ROMAX_GAMMA = (_RATIO - 1.0) / (_RATIO + 1.0)  # 0.192299
+
+
+def test_roller_contact_ratings_reproduce_romax():
+    # Romax's "Raceway dynamic load rating": Q_ci = 8165.4 N, Q_ce = 13681.3 N (whole
+    # roller). Both are reproduced with lambda nu = 0.83 divided out of the ratings (the
+    # default); kept in (reduction_factor=1) they would be 6777.3 N and 11355.5 N, 17 % low.
+    # Tolerance 2e-4: the report prints five figures (<= 6e-6); the half widths, printed to
+    # 0.01 um, leave gamma uncertain by 1.5e-4, which moves Q_ce by 7e-5 and Q_ci by 1e-5;
+    # C_r from the printed P/C by 1e-5.
+    inner, outer = life.roller_contact_load_ratings(ROMAX_RATING, ROMAX_ROLLERS, ROMAX_GAMMA,
+                                                    1.0)
+    assert inner == pytest.approx(8165.4, rel=2e-4)
+    assert outer == pytest.approx(13681.3, rel=2e-4)
+
+
+def test_reference_life_and_its_load_from_romax_roller_ratings_and_loads():
+    # Romax's whole-roller ratings and "Raceway dynamic equivalent load" Q_ei = 4331.1 N,
+    # Q_ee = 4523.2 N give its L10r = 11.430 (10^6 rev) by ISO/TS 16281 eq. (65) with one
+    # lamina per roller; P_ref = C_r / L10r^0.3 = 15648.4 N; L10rh = 3810.0123 h at
+    # 50 r/min. Tolerances: four five-figure inputs enter L10r to the 4th power (<= 1e-4
+    # together) and it is printed to 4.4e-5: 2e-4; P_ref takes 0.3 of that: 1e-4.
+    reference = life.roller_reference_rating_life(8165.4, 13681.3, [4331.1], [4523.2])
+    assert reference == pytest.approx(11.430, rel=2e-4)
+    assert life.equivalent_reference_load(ROMAX_RATING, 11.430, "roller") == pytest.approx(
+        15648.4, rel=1e-4)
+    assert life.life_duration(11.430, 50.0 * RPM) / 3600.0 == pytest.approx(3810.0123,
+                                                                          rel=1e-4)
+
+
+def test_iso281_lives_reproduce_romax():
+    # Romax's ISO 281 section: L10 = 12.765 (10^6 rev) from C/P; a_ISO = 0.21049 from
+    # kappa = 0.56941, e_C = 0.36808, C_u = 3400.0 N, P = 15138.2 N (roller bearing,
+    # 0.4 <= kappa < 1); L10m = 2.687. Tolerances: each printed input moves a_ISO by at most
+    # 8.5e-6 (2e-5 together) and it is printed to 2.4e-5: 1e-4; L10 1e-4 (C_r 1e-5 to the
+    # 10/3, printed to 4e-5); L10m printed to four figures: 3e-4.
+    assert life.basic_rating_life(ROMAX_RATING, ROMAX_LOAD, "roller") == pytest.approx(
+        12.765, rel=1e-4)
+    assert life.life_modification_factor(0.56941, 0.36808, 3400.0, ROMAX_LOAD,
+                                         "roller") == pytest.approx(0.21049, rel=1e-4)
+    assert life.modified_rating_life(ROMAX_RATING, ROMAX_LOAD, 0.56941, 0.36808, 3400.0,
+                                     "roller") == pytest.approx(2.687, rel=3e-4)
+
+
+def test_crb_radial_load_distribution_against_romax():
+    # Inputs read back from the report:
+    # - d_m from its nu_1 = 276.613 mm^2/s at 50 r/min, ISO 281 eq. (28):
+    #   d_m = (45000 n^-0.83 / nu_1)^2 = 40.030 mm; D_we = gamma d_m = 7.698 mm.
+    # - 35 slices with centres from 0.49057 to 8.009 mm: 0.22113 mm each, l = 7.7396 mm.
+    # - Crown: eq. 8's logarithmic shape with c_max = 16.58 um fits the report's "conjugate
+    #   contact profile" (9.11 um at the end slices, zero in the middle) within 0.06 um at
+    #   every slice (least squares).
+    # - Diametral clearance 32.7 um: each roller's two contacts share its approach, so the
+    #   printed contact deflection is (delta_r cos(psi) - P_d/2) / 2 with delta_r = 54.30 um;
+    #   18.95, 15.86, 7.27 and -34.55 um at 0, 27.7, 55.4 and 166.2 deg give P_d = 32.80,
+    #   32.72, 32.61, 32.76 um.
+    # - Misalignment 3.675 mrad (inner ring against outer, about the axis across the load);
+    #   the report's "raceway contact tilt" of the 0-deg roller, 1.837 mrad, is half of it,
+    #   as the model assumes.
+    # Romax: roller loads 5478.0, 4401.6, 1641.5 N at 0, +-27.7, +-55.4 deg, none beyond;
+    # delta_r = 54.30 um. Tolerances: the report does not state its load-deflection constant;
+    # its slice loads and deflections imply 1.2 % above Palmgren's (used here), which moves
+    # the 55-deg roller by 0.5 % and delta_r by 0.6 %; the least loaded roller is the most
+    # sensitive to the clearance read back (1.4 % per um). Hence 1 % for the two most loaded
+    # rollers, 2.5 % for the 55-deg one, 1.5 % for the displacement (found: +0.3, +0.1,
+    # -1.2, +0.7 %).
+    pitch = (45000.0 * 50.0**-0.83 / 276.613) ** 2 * MM
+    result = crb_radial(ROMAX_LOAD, ROMAX_ROLLERS, pitch, ROMAX_GAMMA * pitch,
+                        35 * 0.221130294 * MM, clearance=32.7e-6, crown=16.58e-6, slices=35,
+                        misalignment=3.675e-3)
+    assert result["status"] == CONVERGED
+    loads = result["roller_load"]
+    assert loads[[0, 1, 12]] == pytest.approx([5478.0, 4401.6, 4401.6], rel=1e-2)
+    assert loads[[2, 11]] == pytest.approx([1641.5, 1641.5], rel=2.5e-2)
+    assert np.all(loads[3:11] == 0.0)
+    assert result["radial_displacement"] == pytest.approx(54.30e-6, rel=1.5e-2)
