@@ -537,7 +537,25 @@ class _Parser:
             shown = start.shown + step_shown * np.arange(int(count))
         if spec.kind == "count":
             return [self.value(spec, float(x), f"{key}") for x in shown]
-        return [self.value(spec, float(x), f"{key}", start.unit) for x in shown]
+        if spec.dims:
+            return [self.value(spec, float(x), f"{key}", start.unit) for x in shown]
+        return self.range_values(spec, shown, key, start.unit)
+
+    def range_values(self, spec: Input, shown: np.ndarray, key: str, unit_text: str):
+        """The values of a scalar quantity's range, all in ``unit_text``: the first checked
+        by :meth:`value` (units and all), the rest converted and range-checked at once (a long
+        axis would otherwise cost a unit parse per value)."""
+        first = self.value(spec, float(shown[0]), key, unit_text)
+        declared = units.parse_unit(spec.unit)
+        unit = units.revolutions(units.parse_unit(unit_text), declared)
+        with np.errstate(over="ignore", invalid="ignore"):
+            si = units.to_si(shown, unit)
+        if not np.all(np.isfinite(si)):
+            self.fail(key, f"a value is too large to compute with (not finite in SI units); "
+                      f"{spec.name} must be {spec.range_text()}")
+        self.in_range(spec, units.convert(shown, unit, declared), spec.unit, key, list(shown))
+        return [first] + [Value(float(a), float(b), unit_text)
+                          for a, b in zip(si[1:], shown[1:])]
 
     def axis_size(self, count, key: str):
         """Refuse an axis too long to validate, from its arithmetic alone."""

@@ -217,3 +217,21 @@ def test_presets_and_models_suggest_the_close_name_and_a_preset_shows_its_values
     assert "did you mean 'crb_radial'?" in capsys.readouterr().err
     assert main(["study", "cage_slp", "--workers", "0"]) == 2
     assert "did you mean 'cage_slip'?" in capsys.readouterr().err
+
+
+def test_a_long_range_converts_at_once_exactly_as_value_by_value():
+    # A range's values are converted in one array operation (a 1e5-value axis used to cost a
+    # unit parse per value); each must be bitwise the value the one-by-one path gives, also
+    # for an offset unit (degC) and a rotational speed.
+    from bearing_sweep.spec import _Parser, parse
+
+    sweep = parse('[sweep]\nmodel = "cage_slip"\nbearing = "paper002-test"\n'
+                  '[fixed]\nradial_load = "800 N"\n'
+                  '[axes]\noil_temperature = { start = "-20 degC", stop = "120 degC", num = 57 }\n'
+                  'speed = { start = "100 rpm", stop = "20000 rpm", step = "137 rpm" }\n')
+    checker = _Parser("<test>")
+    for axis in sweep.axes:
+        declared = sweep.model.input(axis.name)
+        for value in axis.values[axis.name]:
+            one = checker.value(declared, value.shown, axis.name, value.unit)
+            assert one.si == value.si and one.shown == value.shown
