@@ -246,3 +246,13 @@ def test_conditions_wrap_between_inputs_only():
     text = conditions(_fixed_inputs(), "speed", "radial_load", "crown_profile", width=40)
     assert text.splitlines() == ["paper000-D: speed = 5000 rpm,", "radial load = 4 kN,",
                                  "crown profile = logarithmic"]
+
+
+def test_agreement_reads_each_comparison_and_counts_samples_one_by_one():
+    from bearing_sweep.study import agreement
+    within = {"paper": 4.1, "tolerance": 0.6}
+    assert agreement(within, [3.4, 3.6, 4.6, 4.8]).tolist() == [False, True, True, False]
+    assert agreement({**within, "comparison": "at_most"}, [4.8, 4.6]).tolist() == [False, True]
+    assert agreement({"paper": 1.0, "comparison": "at_least"}, [0.99, 1.0]).tolist() == [
+        False, True]
+    assert not agreement(within, float("nan"))
