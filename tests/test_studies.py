@@ -42,20 +42,43 @@ def _store_in_other_units(source: Path, target: Path) -> int:
     return converted
 
 
+@pytest.fixture(scope="module")
+def run_study(tmp_path_factory):
+    """``run_study(name)``: the folder holding ``results/`` and ``figures/`` of the study run
+    once for all the tests of this module (whole studies are the suite's longest runs)."""
+    runs = {}
+
+    def run(name: str) -> Path:
+        if name not in runs:
+            folder = tmp_path_factory.mktemp(name)
+            done = subprocess.run([sys.executable, "-m", "bearing_sweep", "study", name,
+                                   "--workers", "0", *_folders(folder)],
+                                  capture_output=True, text=True, timeout=300, cwd=folder)
+            assert done.returncode == 0, done.stderr
+            runs[name] = folder
+        return runs[name]
+
+    return run
+
+
+def _folders(folder: Path) -> list[str]:
+    return ["--studies", str(STUDIES), "--results", str(folder / "results"), "--figures",
+            str(folder / "figures")]
+
+
 @pytest.mark.parametrize("name", ["ball_stiffness", "tapered_rib", "runout", "cage_slip",
                                   "radial_stiffness"])
-def test_a_study_regenerates_its_figures_and_report(name, tmp_path):
+def test_a_study_regenerates_its_figures_and_report(name, run_study):
     study = find_studies(STUDIES)[name]
-    folders = ["--studies", STUDIES, "--results", tmp_path / "results", "--figures",
-               tmp_path / "figures"]
-    for command in (["study", name, "--workers", "0"], ["report"]):
-        done = subprocess.run([sys.executable, "-m", "bearing_sweep", *command, *map(str, folders)],
-                              capture_output=True, text=True, timeout=300, cwd=tmp_path)
-        assert done.returncode == 0, done.stderr
+    folder = run_study(name)
+    done = subprocess.run([sys.executable, "-m", "bearing_sweep", "report", *_folders(folder)],
+                          capture_output=True, text=True, timeout=300, cwd=folder)
+    assert done.returncode == 0, done.stderr
     for figure in study.figures_module().FIGURES:
-        assert (tmp_path / "figures" / name / figure).stat().st_size > 10_000
-    page = (tmp_path / "figures" / name / "README.md").read_text()
-    rows = [line for line in page.splitlines() if line.startswith("| ") and "---" not in line]
+        assert (folder / "figures" / name / figure).stat().st_size > 10_000
+    page = (folder / "figures" / name / "README.md").read_text()
+    table = page.split("## The paper's numbers beside ours")[1].split("## Figures")[0]
+    rows = [line for line in table.splitlines() if line.startswith("| ") and "---" not in line]
     assert len(rows) == len(study.claims()) + 1  # and the header
     # A claim says in its assumptions when it is "not recomputed" or "not recomputable".
     computed = [claim for claim in study.claims() if "paper" in claim and "not recomput"
@@ -65,16 +88,11 @@ def test_a_study_regenerates_its_figures_and_report(name, tmp_path):
 
 @pytest.mark.parametrize("name", ["ball_stiffness", "tapered_rib", "runout",
                                   "radial_stiffness"])
-def test_a_study_selects_by_quantity_not_by_stored_numbers(name, tmp_path):
+def test_a_study_selects_by_quantity_not_by_stored_numbers(name, run_study, tmp_path):
     """The same results with their inputs stored in other units give the same stated numbers
     and still draw: the figure scripts select by quantities and convert what they show."""
     study = find_studies(STUDIES)[name]
-    done = subprocess.run([sys.executable, "-m", "bearing_sweep", "study", name, "--workers", "0",
-                           "--studies", str(STUDIES), "--results", str(tmp_path / "results"),
-                           "--figures", str(tmp_path / "figures")],
-                          capture_output=True, text=True, timeout=300, cwd=tmp_path)
-    assert done.returncode == 0, done.stderr
-    stored = tmp_path / "results" / name
+    stored = run_study(name) / "results" / name
     assert _store_in_other_units(stored, tmp_path / "other") > 0
     module = study.figures_module()
     ours, in_other_units = module.ours(stored), module.ours(tmp_path / "other")
