@@ -382,7 +382,8 @@ def run_sweep(sweep: Sweep, output=None, executor: Executor | None = None,
             size = chunk_size or choose_chunk_size(
                 grid, executor.worker_count() if parallel else 1)
             parts = HeldChunks() if output is None else Parts(output, {
-                "definition_sha256": sweep.sha256, "model_version": model.version,
+                "definition_sha256": sweep.sha256, "values_sha256": grid.values_sha256,
+                "model_version": model.version,
                 "points": grid.size, "package_version": expected["package"]})
             size = parts.open(size, fresh, log)
             chunks = grid.chunks(size)

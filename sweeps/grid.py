@@ -6,6 +6,7 @@ the grid never holds per-point arrays for all points at once.
 """
 from __future__ import annotations
 
+import hashlib
 from dataclasses import dataclass
 
 import numpy as np
@@ -45,6 +46,20 @@ class Grid:
             dim_sizes[dim] = size if isinstance(size, int) else len(size)
         return cls(sweep.model, tuple(a.name for a in sweep.axes),
                    tuple(len(a) for a in sweep.axes), fixed, axis_values, dim_sizes)
+
+    @property
+    def values_sha256(self) -> str:
+        """Digest of every input value of the grid, fixed and along the axes (SI): parts
+        computed for other values (a sample drawn by another library version, say) are not
+        this grid's, even where the definition's text is the same."""
+        digest = hashlib.sha256()
+        for name, value in sorted(self.fixed.items()) + sorted(
+                (name, values) for name, (_, values) in self.axis_values.items()):
+            digest.update(name.encode())
+            array = np.asarray(value)
+            digest.update(array.tobytes() if array.dtype.kind in "biuf"
+                          else repr(array.tolist()).encode())
+        return digest.hexdigest()
 
     @property
     def size(self) -> int:

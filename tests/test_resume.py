@@ -320,3 +320,21 @@ def test_parts_of_another_package_version_are_discarded(tmp_path, capsys, monkey
     assert cli.main(arguments) == 0
     assert "the definition, model or package changed: discarding 4 finished chunks" in \
         capsys.readouterr().err
+
+
+def test_parts_of_other_input_values_are_not_resumed(tmp_path):
+    # The parts are keyed on the grid's values, not only on the definition's text: a sample
+    # drawn differently (another library version) or a preset that changed gives other
+    # values from the same text, and its parts must not be mixed in.
+    from bearing_sweep import spec
+    from bearing_sweep.grid import Grid
+
+    text = ('[sweep]\nmodel = "crb_radial"\nbearing = "paper000-D"\n'
+            '[axes]\nradial_load = ["1 kN", "2 kN"]\n')
+    grid = Grid.from_sweep(spec.parse(text))
+    same = Grid.from_sweep(spec.parse(text))
+    other = Grid.from_sweep(spec.parse(text.replace('"2 kN"', '"3 kN"')))
+    assert grid.values_sha256 == same.values_sha256 != other.values_sha256
+    moved = Grid.from_sweep(spec.parse(text))
+    moved.axis_values["radial_load"] = (0, moved.axis_values["radial_load"][1] * (1 + 1e-15))
+    assert moved.values_sha256 != grid.values_sha256

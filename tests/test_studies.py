@@ -67,7 +67,7 @@ def _folders(folder: Path) -> list[str]:
 
 
 @pytest.mark.parametrize("name", ["ball_stiffness", "tapered_rib", "runout", "cage_slip",
-                                  "radial_stiffness"])
+                                  "radial_stiffness", "life"])
 def test_a_study_regenerates_its_figures_and_report(name, run_study):
     study = find_studies(STUDIES)[name]
     folder = run_study(name)
@@ -77,17 +77,21 @@ def test_a_study_regenerates_its_figures_and_report(name, run_study):
     for figure in study.figures_module().FIGURES:
         assert (folder / "figures" / name / figure).stat().st_size > 10_000
     page = (folder / "figures" / name / "README.md").read_text()
-    table = page.split("## The paper's numbers beside ours")[1].split("## Figures")[0]
+    table = re.split(r"## (?:The paper's numbers|What is expected) beside ours", page)[1]
+    table = table.split("## Figures")[0]
     rows = [line for line in table.splitlines() if line.startswith("| ") and "---" not in line]
     assert len(rows) == len(study.claims()) + 1  # and the header
+    # A study beyond the papers sets its expected trends, not a paper's numbers, beside ours.
+    assert ("## What is expected beside ours" in page) == study.beyond_the_papers
+    assert ("## The paper's numbers beside ours" in page) != study.beyond_the_papers
     # A claim says in its assumptions when it is "not recomputed" or "not recomputable".
-    computed = [claim for claim in study.claims() if "paper" in claim and "not recomput"
-                not in claim.get("assumptions", "")]
+    computed = [claim for claim in study.claims() if ("paper" in claim or "expected" in claim)
+                and "not recomput" not in claim.get("assumptions", "")]
     assert page.count("not computed") == len(study.claims()) - len(computed)
 
 
 @pytest.mark.parametrize("name", ["ball_stiffness", "tapered_rib", "runout",
-                                  "radial_stiffness"])
+                                  "radial_stiffness", "life"])
 def test_a_study_selects_by_quantity_not_by_stored_numbers(name, run_study, tmp_path):
     """The same results with their inputs stored in other units give the same stated numbers
     and still draw: the figure scripts select by quantities and convert what they show."""
