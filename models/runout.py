@@ -26,6 +26,7 @@ from .registry import (CONVERGED, NOT_CONVERGED, Constraint, DimCoordinate, Inpu
                              Output)
 
 SPINS = ("absolute", "paper")
+ARRANGEMENTS = ("as_given", "alternating")
 _TIE = 1e-13  # [m]: lines this close count as meeting
 _ROUNDING = 1e-12  # [-]: a clearance this far below zero, relative to d_e, is zero
 
@@ -139,7 +140,8 @@ def crb_runout(inner_raceway_diameter, outer_raceway_diameter, roller_diameter, 
                inner_roundness_order=0.0, inner_roundness_amplitude=0.0,
                inner_roundness_phase=0.0, outer_roundness_order=0.0,
                outer_roundness_amplitude=0.0, outer_roundness_phase=0.0, revolutions=3,
-               steps_per_revolution=360, roller_spin="absolute", phase_seed=0, order_seed=0):
+               steps_per_revolution=360, roller_spin="absolute", phase_seed=0, order_seed=0,
+               roller_arrangement="as_given"):
     """Inner-ring runout of an unloaded cylindrical roller bearing turning slowly.
 
     Parameters
@@ -164,6 +166,11 @@ def crb_runout(inner_raceway_diameter, outer_raceway_diameter, roller_diameter, 
     order_seed : int
         0: the diameter errors in the order given; else shuffled by this seed (an assembly
         order).
+    roller_arrangement : {'as_given', 'alternating'}
+        ``'alternating'``: selective assembly, the rollers sorted by diameter error and put
+        in smallest, largest, second smallest, second largest... (Table 3 row 20), each
+        roller with its own roundness (order, amplitude, phase); applied after
+        ``order_seed``.
 
     Returns
     -------
@@ -203,6 +210,12 @@ def crb_runout(inner_raceway_diameter, outer_raceway_diameter, roller_diameter, 
     if phase_seed:
         drawn = np.random.default_rng(phase_seed).uniform(0.0, 2.0 * np.pi, roller_count)
         phase = np.broadcast_to(drawn, (points, roller_count))
+    if roller_arrangement == "alternating":
+        # The whole roller moves: its roundness goes with its diameter.
+        chosen = alternating_by_size(error)
+        error, order, amplitude, phase = (np.take_along_axis(a, chosen, axis=-1) for a in (
+            error, order, amplitude, phase))
+        order_index = np.take_along_axis(order_index, chosen, axis=-1)
     rotation = 2.0 * np.pi * np.arange(revolutions * steps_per_revolution) / steps_per_revolution
     azimuth, spin = roller_angles(rotation[None, :], roller_count, diameter[:, None],
                                   pitch[:, None], roller_spin)  # (N, S, Z), (N, S)
@@ -240,6 +253,18 @@ def crb_runout(inner_raceway_diameter, outer_raceway_diameter, roller_diameter, 
         "assembly_order": order_index + 1.0,
         "status": np.where(found, CONVERGED, NOT_CONVERGED).astype(np.int8),
     }
+
+
+def alternating_by_size(error):
+    """Which roller goes to each position, ``(N, Z)``: smallest, largest, second smallest,
+    second largest... of each row of diameter errors (paper 004, Table 3 row 20), ties in the
+    given order."""
+    ascending = np.argsort(error, axis=-1, kind="stable")
+    count = error.shape[-1]
+    positions = np.empty(count, dtype=int)
+    positions[0::2] = np.arange((count + 1) // 2)  # the smaller half, rising
+    positions[1::2] = count - 1 - np.arange(count // 2)  # the larger half, falling
+    return ascending[..., positions]
 
 
 def _fits(inner_raceway_diameter, outer_raceway_diameter, roller_diameter, roller_count):
@@ -283,7 +308,7 @@ MODELS = [Model(
             "roundness and size errors of rollers and raceways.",
     reference="Paper 004, Influence of geometric error of rollers on rotational accuracy of "
               "cylindrical roller bearings, eq. 1-6, section 1.4",
-    version="2",
+    version="3",
     inputs=(
         Input("inner_raceway_diameter", "mm", "inner raceway diameter di", minimum=0.0,
               exclusive_minimum=True),
@@ -310,6 +335,9 @@ MODELS = [Model(
         Input("order_seed", "1", "0: diameter errors in the order given; else shuffled by "
               "this seed", default=0, kind="count", minimum=0,
               label="order seed"),
+        Input("roller_arrangement", "", "as_given: rollers in the order given; alternating: "
+              "sorted by diameter error, smallest, largest, second smallest... (selective "
+              "assembly)", default="as_given", kind="choice", choices=ARRANGEMENTS),
     ),
     outputs=(
         Output("runout", "um", "largest minus smallest distance between the ring centres",

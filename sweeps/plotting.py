@@ -153,12 +153,16 @@ def sobol_bars(axis, analysis: xr.Dataset, output: str, **where):
     axis.legend(fontsize=7)
 
 
-def histogram(axis, data: xr.Dataset, name: str, bins: int = 30, **where):
+def histogram(axis, data: xr.Dataset, name: str, bins=30, style: dict | None = None,
+              **where):
     """The distribution of ``name`` (an output or a sampled input) over the samples of a
     sampled result, at the point of its other axes that ``where`` selects (as :func:`at`);
-    a Saltelli design's repeated AB blocks are left out."""
+    a Saltelli design's repeated AB blocks are left out. ``bins``: a count or the edges (the
+    same edges for histograms drawn over each other); ``style``: settings of ``axis.hist``
+    (``label``, ``alpha``, ``color``)."""
     values = at(data, **where)[name]
     if "saltelli_block" in values.coords:
         values = values.where(values.saltelli_block < 2, drop=True)
-    axis.hist(values.values.ravel()[np.isfinite(values.values.ravel())], bins=bins)
+    axis.hist(values.values.ravel()[np.isfinite(values.values.ravel())], bins=bins,
+              **(style or {}))
     axis.set(xlabel=label(values, long=True), ylabel="samples")

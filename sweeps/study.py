@@ -13,6 +13,7 @@ import tomllib
 from dataclasses import dataclass
 from pathlib import Path
 
+import numpy as np
 import xarray as xr
 
 from . import spec as spec_module
@@ -144,6 +145,21 @@ def write_report(studies: list[Study], results: Path, figures: Path) -> list[Pat
     return written
 
 
+def agreement(claim: dict, value):
+    """Whether ``value`` (a number, or an array of them: one per sample) agrees with the
+    stated number ``claim`` (a ``[[claim]]`` of claims.toml: its ``paper`` value, or for a
+    study beyond the papers its ``expected`` one) within its tolerance."""
+    paper = claim.get("paper", claim.get("expected"))
+    tolerance = claim.get("tolerance", 0.0)
+    value = np.asarray(value)
+    comparison = claim.get("comparison", "within")
+    if comparison == "at_most":
+        return value <= paper + tolerance
+    if comparison == "at_least":
+        return value >= paper - tolerance
+    return np.abs(value - paper) <= tolerance
+
+
 def _claim_rows(claims: list[dict], ours: dict, column: str = "paper"
                 ) -> tuple[list[str], int, int]:
     """Table rows, and how many claims agree and how many could be compared with the value in
@@ -161,9 +177,7 @@ def _claim_rows(claims: list[dict], ours: dict, column: str = "paper"
         else:
             tolerance = claim.get("tolerance", 0.0)
             comparison = claim.get("comparison", "within")
-            agrees = {"within": abs(value - paper) <= tolerance,
-                      "at_most": value <= paper + tolerance,
-                      "at_least": value >= paper - tolerance}[comparison]
+            agrees = bool(agreement(claim, value))
             agreeing += agrees
             comparable += 1
             shown = f"{value:.{digits}g} {unit}"

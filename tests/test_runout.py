@@ -164,3 +164,26 @@ def test_a_zero_clearance_written_in_mm_is_accepted():
     tight = text.replace("71.478 mm", "71.4779 mm")  # 0.1 um of interference: refused
     with pytest.raises(spec.SpecError, match="must not be negative"):
         spec.parse(tight)
+
+
+def test_selective_assembly_alternates_the_rollers_by_size_with_their_roundness():
+    # Paper 004, Table 3: row 20 is row 19's roller set put in smallest, largest, second
+    # smallest... order; each roller keeps its own roundness when moved.
+    row19 = np.arange(1, 15) * 0.1 * UM
+    row20 = np.array([0.1, 1.4, 0.2, 1.3, 0.3, 1.2, 0.4, 1.1, 0.5, 1, 0.6, 0.9, 0.7, 0.8]) * UM
+    amplitude = np.arange(1, 15) * 0.05 * UM  # roller j's oval, 0.05 j um: moves with it
+    phase = np.linspace(0.0, 3.0, 14)
+    settings = dict(roller_roundness_order=2, steps_per_revolution=180)
+    selected = crb_runout(**NU208, roller_diameter_error=row19, roller_arrangement="alternating",
+                          roller_roundness_amplitude=amplitude, roller_roundness_phase=phase,
+                          **settings)
+    moved = np.rint(row20 / (0.1 * UM)).astype(int) - 1  # which roller of row 19 sits where
+    by_hand = crb_runout(**NU208, roller_diameter_error=row20,
+                         roller_roundness_amplitude=amplitude[moved],
+                         roller_roundness_phase=phase[moved], **settings)
+    assert selected["assembly_order"][0] == pytest.approx(moved + 1)
+    assert selected["runout"][0] == by_hand["runout"][0]
+    as_given = crb_runout(**NU208, roller_diameter_error=row19,
+                          roller_roundness_amplitude=amplitude, roller_roundness_phase=phase,
+                          **settings)
+    assert as_given["runout"][0] != by_hand["runout"][0]

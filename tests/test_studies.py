@@ -43,41 +43,43 @@ def _store_in_other_units(source: Path, target: Path) -> int:
 
 
 @pytest.fixture(scope="module")
-def studied(tmp_path_factory):
-    """Run a study once for every test that reads its results (each study costs seconds to
-    a minute): ``studied(name)`` is the folder holding its results/ and figures/."""
-    done = {}
+def run_study(tmp_path_factory):
+    """``run_study(name)``: the folder holding ``results/`` and ``figures/`` of the study run
+    once for all the tests of this module (whole studies are the suite's longest runs)."""
+    runs = {}
 
-    def run(name):
-        if name not in done:
-            root = tmp_path_factory.mktemp(name)
-            finished = subprocess.run(
-                [sys.executable, "-m", "bearing_sweep", "study", name, "--workers", "0",
-                 *map(str, _folders(root))], capture_output=True, text=True, timeout=300,
-                cwd=root)
-            assert finished.returncode == 0, finished.stderr
-            done[name] = root
-        return done[name]
+    def run(name: str) -> Path:
+        if name not in runs:
+            folder = tmp_path_factory.mktemp(name)
+            done = subprocess.run([sys.executable, "-m", "bearing_sweep", "study", name,
+                                   "--workers", "0", *_folders(folder)],
+                                  capture_output=True, text=True, timeout=300, cwd=folder)
+            assert done.returncode == 0, done.stderr
+            runs[name] = folder
+        return runs[name]
+
     return run
 
 
-def _folders(root):
-    return ["--studies", STUDIES, "--results", root / "results", "--figures", root / "figures"]
+def _folders(folder: Path) -> list[str]:
+    return ["--studies", str(STUDIES), "--results", str(folder / "results"), "--figures",
+            str(folder / "figures")]
 
 
 @pytest.mark.parametrize("name", ["ball_stiffness", "tapered_rib", "runout", "cage_slip",
                                   "radial_stiffness", "life"])
-def test_a_study_regenerates_its_figures_and_report(name, studied):
+def test_a_study_regenerates_its_figures_and_report(name, run_study):
     study = find_studies(STUDIES)[name]
-    tmp_path = studied(name)
-    done = subprocess.run([sys.executable, "-m", "bearing_sweep", "report",
-                           *map(str, _folders(tmp_path))],
-                          capture_output=True, text=True, timeout=300, cwd=tmp_path)
+    folder = run_study(name)
+    done = subprocess.run([sys.executable, "-m", "bearing_sweep", "report", *_folders(folder)],
+                          capture_output=True, text=True, timeout=300, cwd=folder)
     assert done.returncode == 0, done.stderr
     for figure in study.figures_module().FIGURES:
-        assert (tmp_path / "figures" / name / figure).stat().st_size > 10_000
-    page = (tmp_path / "figures" / name / "README.md").read_text()
-    rows = [line for line in page.splitlines() if line.startswith("| ") and "---" not in line]
+        assert (folder / "figures" / name / figure).stat().st_size > 10_000
+    page = (folder / "figures" / name / "README.md").read_text()
+    table = re.split(r"## (?:The paper's numbers|What is expected) beside ours", page)[1]
+    table = table.split("## Figures")[0]
+    rows = [line for line in table.splitlines() if line.startswith("| ") and "---" not in line]
     assert len(rows) == len(study.claims()) + 1  # and the header
     # A study beyond the papers sets its expected trends, not a paper's numbers, beside ours.
     assert ("## What is expected beside ours" in page) == study.beyond_the_papers
@@ -90,11 +92,11 @@ def test_a_study_regenerates_its_figures_and_report(name, studied):
 
 @pytest.mark.parametrize("name", ["ball_stiffness", "tapered_rib", "runout",
                                   "radial_stiffness", "life"])
-def test_a_study_selects_by_quantity_not_by_stored_numbers(name, studied, tmp_path):
+def test_a_study_selects_by_quantity_not_by_stored_numbers(name, run_study, tmp_path):
     """The same results with their inputs stored in other units give the same stated numbers
     and still draw: the figure scripts select by quantities and convert what they show."""
     study = find_studies(STUDIES)[name]
-    stored = studied(name) / "results" / name
+    stored = run_study(name) / "results" / name
     assert _store_in_other_units(stored, tmp_path / "other") > 0
     module = study.figures_module()
     ours, in_other_units = module.ours(stored), module.ours(tmp_path / "other")
@@ -266,3 +268,13 @@ def test_conditions_wrap_between_inputs_only():
     text = conditions(_fixed_inputs(), "speed", "radial_load", "crown_profile", width=40)
     assert text.splitlines() == ["paper000-D: speed = 5000 rpm,", "radial load = 4 kN,",
                                  "crown profile = logarithmic"]
+
+
+def test_agreement_reads_each_comparison_and_counts_samples_one_by_one():
+    from bearing_sweep.study import agreement
+    within = {"paper": 4.1, "tolerance": 0.6}
+    assert agreement(within, [3.4, 3.6, 4.6, 4.8]).tolist() == [False, True, True, False]
+    assert agreement({**within, "comparison": "at_most"}, [4.8, 4.6]).tolist() == [False, True]
+    assert agreement({"paper": 1.0, "comparison": "at_least"}, [0.99, 1.0]).tolist() == [
+        False, True]
+    assert not agreement(within, float("nan"))

@@ -6,7 +6,8 @@ import matplotlib.pyplot as plt
 import numpy as np
 
 from bearing_sweep import units
-from bearing_sweep.plotting import at, conditions, in_unit, label, result, save
+from bearing_sweep.plotting import at, conditions, histogram, in_unit, label, result, save
+from bearing_sweep.study import Study, agreement
 
 FIGURES = {
     "fig06_07_axial.png": "Figs. 6-7: 71807AC, axial displacement and axial stiffness against "
@@ -22,6 +23,11 @@ FIGURES = {
                     "geometry lets follow the load.",
     "contact_constant.png": "Beyond the paper: the contact constant Hertz theory gives against "
                             "the unstated groove curvature ratios; dotted: the paper's K.",
+    "unstated_inputs.png": "Beyond the paper: the stated numbers when the unstated groove "
+                           "curvature ratios (0.51-0.54) and clearance (+-5 um) are drawn (512 "
+                           "samples): the Hertz contact constant against the paper's K "
+                           "(shaded: within the claim's tolerance), and whether the radial "
+                           "stiffness rises from 500 to 3000 N in each geometry.",
 }
 
 _FORMS = {"jones": "Jones, tilts held", "fixed_angle": "fixed angle (paper), tilts held",
@@ -37,6 +43,7 @@ def draw(results: Path, figures: Path):
     _cross_terms(results, figures)
     _geometry(results, figures)
     _contact_constant(results, figures)
+    _unstated(results, figures)
 
 
 #: The units the figures show: displacements in um, stiffnesses in kN/mm.
@@ -154,6 +161,58 @@ def _contact_constant(results, figures):
 
 
 _PAPER_CONSTANT = 1.0649e10  # N/m^1.5, paper 001 Table 1
+
+
+def unstated_reach(results: Path) -> dict:
+    """For each stated number the unstated-inputs study tests: the samples' values and
+    whether each agrees with the paper within the claim's tolerance."""
+    data = result(results, "unstated_inputs")
+    claims = {c["id"]: c for c in Study("ball_stiffness", Path(__file__).parent).claims()}
+    constant = _per_m(data.hertz_contact_constant.isel(radial_load=0, form=0))
+    reach = {"contact_constant": (constant, agreement(claims["contact_constant"],
+                                                      constant.values))}
+    stiffness = data.radial_stiffness
+    rise = (at(stiffness, radial_load="3000 N") / at(stiffness, radial_load="500 N"))
+    for form in data.form.values:
+        name = f"radial_stiffness_rises_{form}"
+        one = rise.sel(form=form).assign_attrs(units="1", long_name=f"Kr(3000 N) / Kr(500 N), "
+                                               f"{_FORMS[form]}")
+        reach[name] = (one, agreement(claims[name], one.values))
+    return reach
+
+
+def _unstated(results, figures):
+    data = result(results, "unstated_inputs")
+    reach = unstated_reach(results)
+    figure, (left, middle, right) = plt.subplots(1, 3, figsize=(13, 3.9))
+    constant, agrees = reach.pop("contact_constant")
+    scaled = (constant / 1e10).assign_attrs(units="1e10 N/m^1.5", long_name="Hertz K")
+    histogram(left, scaled.to_dataset(name="K"), "K", bins=30)
+    left.axvspan((_PAPER_CONSTANT - 1.06e9) / 1e10, (_PAPER_CONSTANT + 1.06e9) / 1e10,
+                 color="C2", alpha=0.3, label="paper's K within tolerance")
+    left.set(xlabel=r"Hertz contact constant K [1e10 N/m$^{1.5}$]")
+    left.set_title(f"within tolerance: {100 * agrees.mean():.0f} % of the samples", fontsize=8)
+    left.legend(fontsize=7)
+    shown = middle.scatter(data.inner_curvature_ratio, data.outer_curvature_ratio,
+                           c=scaled.values, s=4)
+    figure.colorbar(shown, ax=middle, label=r"K [1e10 N/m$^{1.5}$]")
+    middle.set(xlabel="inner curvature ratio fi", ylabel="outer curvature ratio fo")
+    middle.set_title("Hertz K over the drawn ratios (contact_constant.png: K against fi)",
+                     fontsize=8)
+    edges = np.linspace(min(float(r.min()) for r, _ in reach.values()) - 0.01,
+                        max(float(r.max()) for r, _ in reach.values()) + 0.01, 50)
+    for name, (rise, agrees) in reach.items():
+        form = name.removeprefix("radial_stiffness_rises_")
+        histogram(right, rise.to_dataset(name="rise"), "rise", bins=edges,
+                  style={"alpha": 0.7, "label": f"{_FORMS[form]}: rises in "
+                         f"{100 * agrees.mean():.0f} %"})
+    right.axvline(1.0, color="k", ls=":")
+    right.set(xlabel="radial stiffness at 3000 N / at 500 N")
+    right.legend(fontsize=7)
+    figure.suptitle(conditions(data, "axial_load", "contact_constant", width=None)
+                    + "; fi, fo, clearance drawn (Latin hypercube)", fontsize=9)
+    figure.tight_layout()
+    save(figure, figures, "unstated_inputs.png")
 
 
 def _per_m(constant):

@@ -5,12 +5,14 @@ import matplotlib.pyplot as plt
 import numpy as np
 
 from bearing_sweep.plotting import at as _at
+from bearing_sweep.plotting import histogram as _histogram
 from bearing_sweep.plotting import conditions as _conditions
 from bearing_sweep.plotting import family as _family
 from bearing_sweep.plotting import in_unit as _in_unit
 from bearing_sweep.plotting import label as _label
 from bearing_sweep.plotting import result as _open
 from bearing_sweep.plotting import save as _save
+from bearing_sweep.study import Study, agreement
 
 FIGURES = {
     "fig06_bearing_a.png": "Fig. 6: bearing A, radial stiffness against radial load (no speed, "
@@ -36,7 +38,24 @@ FIGURES = {
     "contact_constant.png": "Beyond the paper: the stated percentages against the unstated "
                             "load-deflection constant K (multiples of Palmgren's); dotted: the "
                             "paper's values.",
+    "unstated_inputs.png": "Beyond the paper: the stated percentages of bearing D when the "
+                           "unstated K, roller density and pitch diameter are drawn (512 "
+                           "samples); shaded: the paper's value within its tolerance; top: "
+                           "their distribution, bottom: against K (light: the plausible band "
+                           "0.8-1.25 times Palmgren's).",
 }
+
+#: Palmgren's load-deflection constant of a steel line contact, 8.06e4 l^(8/9) (N, mm)
+#: (Harris & Kotzalas, Rolling Bearing Analysis, eq. for line contact), and the band of
+#: multiples of it that the line-contact laws in use span (unstated_inputs.toml).
+_PALMGREN = 8.06e4
+_PLAUSIBLE = (0.8, 1.25)
+#: Each stated percentage of the unstated-inputs study: its claim, and the two cases of the
+#: zipped axis ``case`` whose stiffnesses it compares.
+_UNSTATED = {"crown_consistent": ("crown_0", "crown_3.2um"),
+             "crown_paper": ("crown_0_paper", "crown_3.2um_paper"),
+             "clearance_6kN": ("6kN_Pd_0", "6kN_Pd_40um"),
+             "clearance_8kN": ("8kN_Pd_0", "8kN_Pd_40um")}
 
 
 def draw(results: Path, figures: Path):
@@ -51,6 +70,7 @@ def draw(results: Path, figures: Path):
     _speed_load(results, figures)
     _slices(results, figures)
     _contact_constant(results, figures)
+    _unstated(results, figures)
 
 
 _STIFFNESS_LABEL = "radial stiffness [1e5 N/mm]"
@@ -226,6 +246,51 @@ def _contact_constant(results, figures):
     axis.legend(fontsize=7)
     axis.grid(alpha=0.3)
     _save(figure, figures, "contact_constant.png")
+
+
+def unstated_reach(results: Path) -> dict:
+    """For each stated percentage of the unstated-inputs study: the samples' percentages, K
+    over Palmgren's, and whether each sample agrees with the paper within its tolerance."""
+    data = _open(results, "unstated_inputs")
+    length = float(_in_unit(data.effective_length, "mm"))
+    multiple = (_in_unit(data.contact_constant, "N/mm^(10/9)")
+                / (_PALMGREN * length ** (8 / 9))).values
+    claims = {c["id"]: c for c in Study("radial_stiffness", Path(__file__).parent).claims()}
+    reach = {}
+    for name, (before, after) in _UNSTATED.items():
+        stiffness = data.radial_stiffness
+        fall = 100.0 * (1.0 - stiffness.sel(case=after) / stiffness.sel(case=before))
+        fall = fall.assign_attrs(units="%", long_name=f"fall of Kr: {before} -> {after}")
+        reach[name] = {"claim": claims[name], "fall": fall, "multiple": multiple,
+                       "agrees": agreement(claims[name], fall.values)}
+    return reach
+
+
+def _unstated(results, figures):
+    reach = unstated_reach(results)
+    figure, axes = plt.subplots(2, len(reach), figsize=(3.3 * len(reach), 6.2))
+    for column, (name, one) in enumerate(reach.items()):
+        claim, multiple, agrees = one["claim"], one["multiple"], one["agrees"]
+        plausible = (multiple >= _PLAUSIBLE[0]) & (multiple <= _PLAUSIBLE[1])
+        band = (claim["paper"] - claim.get("tolerance", 0), claim["paper"]
+                + claim.get("tolerance", 0))
+        top, bottom = axes[0, column], axes[1, column]
+        _histogram(top, one["fall"].to_dataset(name="fall"), "fall", bins=40)
+        top.axvspan(*band, color="C2", alpha=0.3)
+        top.set_title(f"{name}: paper {claim['paper']:g} %\nwithin tolerance: "
+                      f"{100 * agrees.mean():.0f} % of all, {100 * agrees[plausible].mean():.0f}"
+                      " % in the band", fontsize=8)
+        top.set_xlabel("fall of radial stiffness [%]")
+        bottom.plot(multiple, one["fall"].values, ".", ms=2)
+        bottom.axhspan(*band, color="C2", alpha=0.3)
+        bottom.axvspan(*_PLAUSIBLE, color="0.5", alpha=0.15)
+        bottom.set(xlabel="K / Palmgren's K", ylabel="fall of radial stiffness [%]")
+        bottom.grid(alpha=0.3)
+    data = _open(results, "unstated_inputs")
+    figure.suptitle(_conditions(data, "speed", "slices", width=None) + "; K, roller density and "
+                    "pitch diameter drawn (Latin hypercube)", fontsize=9)
+    figure.tight_layout()
+    _save(figure, figures, "unstated_inputs.png")
 
 
 # -- the paper's stated numbers, recomputed ---------------------------------------------------
