@@ -421,12 +421,15 @@ class _Parser:
 
     def sampled_length(self, model: Model, spec: Input, fixed: dict) -> int:
         """How many values one sample of ``spec`` draws: 1, or one per entry of a pattern
-        whose length a fixed count sets."""
+        whose length a fixed count sets. A pattern no count sizes that takes one value for
+        all its entries (a raceway's single harmonic, say) draws that one value."""
         if not spec.dims:
             return 1
         count = model.dim_sizes.get(spec.dims[0])
         key = f"sample.{spec.name}"
         if not isinstance(count, str) or count not in {i.name for i in model.inputs}:
+            if spec.broadcast:
+                return 1
             self.fail(key, f"sampling of the pattern {spec.name!r} is not supported: no count "
                       f"sets its length (one value per {spec.dims[0]})")
         if fixed.get(count) is None:
