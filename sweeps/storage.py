@@ -4,8 +4,8 @@ and the outputs a model declares integral as integers.
 
 The default, float64 with zlib at level 1 and no shuffle filter, came from
 ``benchmarks/output_encoding.py`` (README, "Output files"): on a crb_radial result of 1e5 points
-it keeps every value bit for bit in 0.36 of the uncompressed size, for about 1.2 times the
-uncompressed writing time. The per-roller arrays, most of the file, hold many zeros (unloaded
+it keeps every value bit for bit in 0.36 of the uncompressed size, for 1.2 to 2.3 times the
+uncompressed writing time (a tenth of the computing time). The per-roller arrays, most of the file, hold many zeros (unloaded
 rollers) that compress better without shuffle; higher levels save little for much more time.
 """
 from __future__ import annotations
@@ -34,7 +34,7 @@ class Storage:
     """How the outputs are written: ``encoding`` (``"float64"`` or ``"float32"``) for the
     outputs that are not integral, and their ``compression`` (``"none"``, ``"zlib"`` or
     ``"zstd"``) at ``level``, with zlib the ``shuffle`` filter (bytes grouped by significance
-    before compressing, which float64 values need to compress well)."""
+    before compressing: smooth values then compress better, runs of zeros worse)."""
 
     encoding: str = "float64"
     compression: str = "zlib"

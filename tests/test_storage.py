@@ -141,3 +141,23 @@ def test_the_in_memory_dataset_writes_the_same_file(tmp_path):
     assert dtype == np.float32 and found["zlib"]
     assert filters(tmp_path / "copy.nc", "loaded_rollers")[1] == np.int32
     assert xr.open_dataset(tmp_path / "copy.nc").loaded_rollers.dtype == np.float64
+
+
+def test_an_interrupted_run_resumes_its_chunks_in_another_encoding(tmp_path, capsys,
+                                                                   monkeypatch):
+    definition = tmp_path / "d.toml"
+    definition.write_text(TEXT)
+    output = tmp_path / "out.nc"
+    arguments = ["run", str(definition), "-o", str(output), "--workers", "0", "--chunk-size",
+                 "4", "--quiet"]
+
+    def interrupted(*args):  # every chunk computed, the file not yet written
+        raise KeyboardInterrupt
+
+    monkeypatch.setattr("bearing_sweep.store.assemble", interrupted)
+    assert cli.main(arguments) == 130
+    monkeypatch.undo()
+    capsys.readouterr()
+    assert cli.main(arguments + ["--encoding", "float32"]) == 0
+    assert "resuming: 2 chunks already computed" in capsys.readouterr().err
+    assert filters(output, "roller_load")[1] == np.float32
