@@ -159,7 +159,7 @@ class _RollerSet:
         reach presses on the outer raceway with its centrifugal force alone.
         """
         total = self.total_approach(displacement, np.arange(displacement.size))
-        free = self.free_outer_approach[:, None]
+        free = self.free_outer_approach
         loaded = total - free > 0.0
         return np.maximum(inner_deflection, 0.0), np.where(loaded, total - inner_deflection,
                                                            free)
@@ -191,27 +191,35 @@ class _RollerSet:
                                   self.slice_law)
 
     def _free_outer_approach(self):
-        """Outer-contact approach of a roller held by its centrifugal force alone [m], and
-        whether it was found."""
+        """Outer-contact approach of a roller held by its centrifugal force alone [m],
+        ``(P, 1)``, or ``(P, Z)`` with tilt (each roller's own gaps, so that a roller the ring
+        begins to load has a bracketed force balance), and whether each point's was found
+        ``(P,)``."""
         n = LINE_CONTACT_EXPONENT
         plain = (self.centrifugal / self.constant) ** (1.0 / n)
         if self.outer_contact == "paper":
-            return plain, np.isfinite(plain)
-        approach = np.zeros_like(plain)
-        converged = np.isfinite(plain)
-        spinning = np.flatnonzero(self.centrifugal > 0.0)
+            return plain[:, None], np.isfinite(plain)
+        shape = self.cos.shape if self.tilt is not None else (plain.size, 1)
+        points, rollers = np.indices(shape).reshape(2, -1)
+        if self.tilt is None:
+            rollers = None
+        approach = np.zeros(points.size)
+        converged = np.isfinite(plain)[points]
+        spinning = np.flatnonzero(self.centrifugal[points] > 0.0)
         if spinning.size:
             # Every slice is in contact beyond the largest gap, so Qo >= K (delta - gap)^n.
-            upper = self.crown[spinning] * self.gap_shape.max() + plain[spinning]  # untilted
+            owner = points[spinning]
+            upper = self.largest_gap[owner] + plain[owner]
 
             def residual(outer, index):
-                points = spinning[index]
-                _, _, load, stiffness, _, _ = self.contacts(outer, outer, points)
-                return load - self.centrifugal[points], stiffness
+                entries = spinning[index]
+                _, _, load, stiffness, _, _ = self.contacts(
+                    outer, outer, points[entries], None if rollers is None else rollers[entries])
+                return load - self.centrifugal[points[entries]], stiffness
 
             approach[spinning], converged[spinning] = solve_increasing(
                 residual, np.zeros(spinning.size), upper, 0.5 * upper, _XTOL * upper)
-        return approach, converged
+        return approach.reshape(shape), converged.reshape(shape).all(axis=-1)
 
     def loads(self, displacement, points, share):
         """Roller loads and bearing load and stiffness at given radial displacements.
@@ -237,7 +245,7 @@ class _RollerSet:
             Every roller's force balance converged, ``(p,)``.
         """
         total = self.total_approach(displacement, points)
-        available = total - self.free_outer_approach[points, None]
+        available = total - self.free_outer_approach[points]
         loaded = available > 0.0
         owner = np.broadcast_to(points[:, None], loaded.shape)[loaded]
         roller = np.broadcast_to(np.arange(loaded.shape[1]), loaded.shape)[loaded]
@@ -461,11 +469,13 @@ def _solve(rollers, load, perturbation):
     # largest gap plus ((F / cos_max + Fc)/K)^(1/n) of approach. With preload, rollers opposite
     # the load push back, so there the bound is checked and doubled until it holds.
     cos_max = cos_azimuth.max(axis=-1)
-    lower = np.maximum(half_clearance, 0.0)
+    # A tilted roller's end touches before its middle would: the play that counts is smaller.
+    play = half_clearance + (0.0 if rollers.tilt is None else 2.0 * rollers.floor.min(axis=-1))
+    lower = np.maximum(play, 0.0)
     reach = (half_clearance + 2.0 * rollers.largest_gap
              + 2.0 * ((load / cos_max + centrifugal) / constant) ** (1.0 / n))
     upper = np.maximum(1.001 * reach / cos_max, lower) + 1e-12
-    preloaded = np.flatnonzero(half_clearance < 0.0)
+    preloaded = np.flatnonzero(play < 0.0)
     for _ in range(64):
         if preloaded.size == 0:
             break
@@ -478,8 +488,8 @@ def _solve(rollers, load, perturbation):
 
     # At zero load the ring of a bearing with clearance may sit anywhere in its play: take the
     # limit of a vanishing load, resting on the best-placed roller, which carries nothing.
-    resting = (load == 0.0) & (half_clearance >= 0.0)
-    touch = (half_clearance + rollers.free_outer_approach) / cos_max
+    resting = (load == 0.0) & (play >= 0.0)
+    touch = (play + rollers.free_outer_approach.max(axis=-1)) / cos_max
     lower = np.where(resting, touch, lower)
     upper = np.where(resting, touch, upper)
 
@@ -495,8 +505,11 @@ def _solve(rollers, load, perturbation):
         return result[0] - load[index], result[1]
 
     displacement, converged = solve_increasing(residual, lower, upper, upper, _XTOL * upper)
-    cache["roller_load"][resting] = 0.0
-    cache["stiffness"][resting] = 0.0
+    # The limit itself: the best-placed roller just touches and carries nothing (evaluated
+    # there, rounding in the displacement leaves it a few mN with spinning rollers).
+    for name in ("roller_load", "stiffness", "load"):
+        cache[name][resting] = 0.0
+    cache["converged"][resting] = True
     # Forward-difference stiffness with the paper's perturbation (section 2.3).
     perturbed = rollers.loads(displacement + perturbation, everyone, share.copy())[0]
     balanced = np.abs(cache["load"] - load) <= 1e-9 * load + 1e-6

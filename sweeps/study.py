@@ -39,11 +39,18 @@ class Study:
         loader.loader.exec_module(module)
         return module
 
-    def claims(self) -> list[dict]:
+    def _claims_file(self) -> dict:
         path = self.folder / "claims.toml"
-        if not path.exists():
-            return []
-        return tomllib.loads(path.read_text()).get("claim", [])
+        return tomllib.loads(path.read_text()) if path.exists() else {}
+
+    def claims(self) -> list[dict]:
+        return self._claims_file().get("claim", [])
+
+    @property
+    def beyond_the_papers(self) -> bool:
+        """Whether the claims are expected trends (``beyond_the_papers = true`` at the top of
+        claims.toml) rather than numbers a paper states."""
+        return bool(self._claims_file().get("beyond_the_papers", False))
 
     def about(self) -> str:
         path = self.folder / "about.md"
@@ -116,9 +123,12 @@ def write_report(studies: list[Study], results: Path, figures: Path) -> list[Pat
             index.append(f"- {study.name}: not run yet (`bearing-sweep study {study.name}`)")
             continue
         ours = module.ours(results / study.name)
-        rows, agreeing, comparable = _claim_rows(study.claims(), ours)
-        page = [study.about().rstrip(), "", "## The paper's numbers beside ours", "",
-                "| stated number | source | paper | ours | agreement | assumptions |",
+        kind, heading, column = (("expected trends", "What is expected beside ours", "expected")
+                                 if study.beyond_the_papers else
+                                 ("stated numbers", "The paper's numbers beside ours", "paper"))
+        rows, agreeing, comparable = _claim_rows(study.claims(), ours, column)
+        page = [study.about().rstrip(), "", f"## {heading}", "",
+                f"| {kind[:-1]} | source | {column} | ours | agreement | assumptions |",
                 "|---|---|---|---|---|---|", *rows, "", "## Figures", ""]
         for file, caption in module.FIGURES.items():
             if (folder / file).exists():
@@ -127,20 +137,23 @@ def write_report(studies: list[Study], results: Path, figures: Path) -> list[Pat
         (folder / "README.md").write_text("\n".join(page))
         written.append(folder / "README.md")
         index.append(f"- [{study.name}]({study.name}/README.md): {agreeing} of {comparable} "
-                     f"comparable stated numbers agree within their tolerance ({len(rows)} stated)")
+                     f"comparable {kind} agree within their tolerance ({len(rows)} stated)")
     figures.mkdir(parents=True, exist_ok=True)
     (figures / "README.md").write_text("\n".join(index) + "\n")
     written.append(figures / "README.md")
     return written
 
 
-def _claim_rows(claims: list[dict], ours: dict) -> tuple[list[str], int, int]:
-    """Table rows, and how many claims agree and how many could be compared."""
+def _claim_rows(claims: list[dict], ours: dict, column: str = "paper"
+                ) -> tuple[list[str], int, int]:
+    """Table rows, and how many claims agree and how many could be compared with the value in
+    ``column`` (the paper's, or the expected one)."""
     rows, agreeing, comparable = [], 0, 0
+    whose = "the paper's" if column == "paper" else f"the {column} value"
     for claim in claims:
         value = ours.get(claim["id"])
         unit = claim.get("unit", "")
-        paper = claim.get("paper")
+        paper = claim.get("paper", claim.get("expected"))  # a study beyond the papers: expected
         digits = claim.get("digits", 3)  # significant digits shown
         if value is None or paper is None:
             shown, verdict = "not computed" if value is None else f"{value:.{digits}g} {unit}", \
@@ -154,10 +167,10 @@ def _claim_rows(claims: list[dict], ours: dict) -> tuple[list[str], int, int]:
             agreeing += agrees
             comparable += 1
             shown = f"{value:.{digits}g} {unit}"
-            band = {"within": f"within {tolerance:g} {unit}", "at_most": "at most the paper's",
-                    "at_least": "at least the paper's"}[comparison]
+            band = {"within": f"within {tolerance:g} {unit}", "at_most": f"at most {whose}",
+                    "at_least": f"at least {whose}"}[comparison]
             verdict = (f"agrees ({band})" if agrees
-                       else f"differs: ours - paper = {value - paper:+.3g} {unit}")
+                       else f"differs: ours - {column} = {value - paper:+.3g} {unit}")
         paper_text = "—" if paper is None else f"{paper:g} {unit}"
         rows.append(f"| {claim['statement']} | {claim.get('source', '')} | {paper_text} | "
                     f"{shown} | {verdict} | {claim.get('assumptions', '')} |")

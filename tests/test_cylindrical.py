@@ -304,3 +304,25 @@ def test_crown_relieves_the_edge_of_a_misaligned_roller():
 def test_misalignment_needs_the_crowned_outer_contact():
     with pytest.raises(ValueError, match="misalignment needs outer_contact 'crowned'"):
         crb_radial(5000.0, outer_contact="paper", misalignment=1e-3, **BEARING_D)
+
+
+def test_misaligned_rollers_at_the_edge_of_the_load_zone_converge():
+    # A roller the ring just begins to load, spinning (centrifugal force on its outer
+    # contact) and tilted: its force balance must be bracketed by its own tilted contacts,
+    # and with clearance a tilted roller's end touches before its middle would. A grid over
+    # load, clearance, speed, misalignment and crown converges everywhere.
+    load, clearance, speed, tilt, crown = np.meshgrid(
+        [100.0, 5000.0], [0.0, 0.01 * MM, 0.04 * MM], [0.0, 5000 * RPM], [5e-4, 2e-3, 5e-3],
+        [0.0, 1e-7, 5e-6], indexing="ij")
+    result = crb_radial(load, clearance=clearance, speed=speed, misalignment=tilt,
+                        crown=crown, slices=30, **BEARING_D)
+    assert (result["status"] == CONVERGED).all()
+    balance = (result["roller_load"] * np.cos(2 * np.pi * np.arange(14) / 14)).sum(-1)
+    assert balance == pytest.approx(load, rel=1e-9)
+
+
+def test_an_unloaded_spinning_bearing_with_clearance_rests_on_its_best_roller():
+    result = crb_radial(0.0, clearance=np.array([0.01, 0.04]) * MM, speed=300 * RPM,
+                        **BEARING_D)
+    assert (result["status"] == CONVERGED).all()
+    assert (result["roller_load"] == 0.0).all()

@@ -42,39 +42,59 @@ def _store_in_other_units(source: Path, target: Path) -> int:
     return converted
 
 
+@pytest.fixture(scope="module")
+def studied(tmp_path_factory):
+    """Run a study once for every test that reads its results (each study costs seconds to
+    a minute): ``studied(name)`` is the folder holding its results/ and figures/."""
+    done = {}
+
+    def run(name):
+        if name not in done:
+            root = tmp_path_factory.mktemp(name)
+            finished = subprocess.run(
+                [sys.executable, "-m", "bearing_sweep", "study", name, "--workers", "0",
+                 *map(str, _folders(root))], capture_output=True, text=True, timeout=300,
+                cwd=root)
+            assert finished.returncode == 0, finished.stderr
+            done[name] = root
+        return done[name]
+    return run
+
+
+def _folders(root):
+    return ["--studies", STUDIES, "--results", root / "results", "--figures", root / "figures"]
+
+
 @pytest.mark.parametrize("name", ["ball_stiffness", "tapered_rib", "runout", "cage_slip",
-                                  "radial_stiffness"])
-def test_a_study_regenerates_its_figures_and_report(name, tmp_path):
+                                  "radial_stiffness", "life"])
+def test_a_study_regenerates_its_figures_and_report(name, studied):
     study = find_studies(STUDIES)[name]
-    folders = ["--studies", STUDIES, "--results", tmp_path / "results", "--figures",
-               tmp_path / "figures"]
-    for command in (["study", name, "--workers", "0"], ["report"]):
-        done = subprocess.run([sys.executable, "-m", "bearing_sweep", *command, *map(str, folders)],
-                              capture_output=True, text=True, timeout=300, cwd=tmp_path)
-        assert done.returncode == 0, done.stderr
+    tmp_path = studied(name)
+    done = subprocess.run([sys.executable, "-m", "bearing_sweep", "report",
+                           *map(str, _folders(tmp_path))],
+                          capture_output=True, text=True, timeout=300, cwd=tmp_path)
+    assert done.returncode == 0, done.stderr
     for figure in study.figures_module().FIGURES:
         assert (tmp_path / "figures" / name / figure).stat().st_size > 10_000
     page = (tmp_path / "figures" / name / "README.md").read_text()
     rows = [line for line in page.splitlines() if line.startswith("| ") and "---" not in line]
     assert len(rows) == len(study.claims()) + 1  # and the header
+    # A study beyond the papers sets its expected trends, not a paper's numbers, beside ours.
+    assert ("## What is expected beside ours" in page) == study.beyond_the_papers
+    assert ("## The paper's numbers beside ours" in page) != study.beyond_the_papers
     # A claim says in its assumptions when it is "not recomputed" or "not recomputable".
-    computed = [claim for claim in study.claims() if "paper" in claim and "not recomput"
-                not in claim.get("assumptions", "")]
+    computed = [claim for claim in study.claims() if ("paper" in claim or "expected" in claim)
+                and "not recomput" not in claim.get("assumptions", "")]
     assert page.count("not computed") == len(study.claims()) - len(computed)
 
 
 @pytest.mark.parametrize("name", ["ball_stiffness", "tapered_rib", "runout",
-                                  "radial_stiffness"])
-def test_a_study_selects_by_quantity_not_by_stored_numbers(name, tmp_path):
+                                  "radial_stiffness", "life"])
+def test_a_study_selects_by_quantity_not_by_stored_numbers(name, studied, tmp_path):
     """The same results with their inputs stored in other units give the same stated numbers
     and still draw: the figure scripts select by quantities and convert what they show."""
     study = find_studies(STUDIES)[name]
-    done = subprocess.run([sys.executable, "-m", "bearing_sweep", "study", name, "--workers", "0",
-                           "--studies", str(STUDIES), "--results", str(tmp_path / "results"),
-                           "--figures", str(tmp_path / "figures")],
-                          capture_output=True, text=True, timeout=300, cwd=tmp_path)
-    assert done.returncode == 0, done.stderr
-    stored = tmp_path / "results" / name
+    stored = studied(name) / "results" / name
     assert _store_in_other_units(stored, tmp_path / "other") > 0
     module = study.figures_module()
     ours, in_other_units = module.ours(stored), module.ours(tmp_path / "other")
