@@ -143,7 +143,8 @@ def describe(name: str) -> dict:
     dict
         ``name``, ``version``, ``summary``, ``reference``, ``function`` (the import path of
         the model's function, for direct use on arrays in SI units), ``inputs`` and
-        ``outputs`` (lists of dicts: ``name``, ``unit``, ``meaning``, ``dims``; an input also
+        ``outputs`` (lists of dicts: ``name``, ``unit``, ``meaning``, ``dims``; an output also
+        ``dtype``, ``"int"`` for one stored as integers; an input also
         ``kind``, ``default``, ``required``, ``minimum``, ``maximum``, ``range`` and
         ``choices``; ``default`` is None for a required input and for one the model derives
         when it is not given), ``validity``, ``conditions`` and ``statuses``.
@@ -164,8 +165,8 @@ def describe(name: str) -> dict:
                     "required": i.default is REQUIRED, "minimum": i.minimum,
                     "maximum": i.maximum, "range": i.range_text(), "choices": i.choices}
                    for i in model.inputs],
-        "outputs": [{"name": o.name, "unit": o.unit, "meaning": o.meaning, "dims": o.dims}
-                    for o in model.outputs],
+        "outputs": [{"name": o.name, "unit": o.unit, "meaning": o.meaning, "dims": o.dims,
+                     "dtype": o.dtype} for o in model.outputs],
         "validity": model.validity,
         "conditions": [c.message for c in model.constraints],
         "statuses": dict(STATUS_DESCRIPTIONS),

@@ -117,7 +117,8 @@ def _describe(name: str) -> str:
     lines += ["", "Outputs:"]
     for o in model["outputs"]:
         dims = f" (dims: {', '.join(o['dims'])})" if o["dims"] else ""
-        lines.append(f"  {o['name']} [{o['unit']}]{dims}: {o['meaning']}")
+        integer = ", an integer" if o["dtype"] == "int" else ""
+        lines.append(f"  {o['name']} [{o['unit']}]{dims}: {o['meaning']}{integer}")
     lines.append("  status: per point, one of:")
     lines += [f"    {status}: {text}" for status, text in model["statuses"].items()]
     if model["validity"]:

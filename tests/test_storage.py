@@ -94,6 +94,14 @@ def test_a_value_declared_integral_that_is_not_is_refused():
         integral_values(np.array([2.5]), "n")
 
 
+def test_describe_names_the_integer_outputs(capsys):
+    assert {o["name"]: o["dtype"] for o in api.describe("crb_radial")["outputs"]}[
+        "loaded_rollers"] == "int"
+    assert cli.main(["describe", "crb_radial"]) == 0
+    assert "  loaded_rollers [1]: number of rollers carrying load, an integer\n" in \
+        capsys.readouterr().out
+
+
 def test_an_integer_output_must_be_dimensionless():
     model = registry.get_model("crb_radial")
     outputs = (registry.Output("roller_count_load", "N", "a load", dtype="int"),)
