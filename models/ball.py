@@ -577,7 +577,7 @@ MODELS = [Model(
         Output("ball_load", "N", "contact load Q of each ball (eq. 1)", dims=("ball",)),
         Output("ball_contact_angle", "deg", "contact angle of each ball (of its line of "
                "groove centres when unloaded)", dims=("ball",)),
-        Output("loaded_balls", "1", "number of balls carrying load"),
+        Output("loaded_balls", "1", "number of balls carrying load", dtype="int"),
         Output("max_contact_pressure", "MPa", "maximum Hertz contact pressure p0 = 3Q/(2 pi a "
                "b) of each ball, the larger of its inner and outer contact", dims=("ball",),
                label="maximum contact pressure"),

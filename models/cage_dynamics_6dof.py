@@ -553,12 +553,13 @@ MODELS = [Model(
                "rib over the settled samples (negative: dry contact)",
                dims=("roller", "end", "face_ring", "face_angle"), label="smallest rib gap"),
         Output("pocket_arc_events", "1", "dry pocket-arc contacts begun between settled "
-               "samples, all rollers", label="dry pocket-arc contacts"),
+               "samples, all rollers", label="dry pocket-arc contacts", dtype="int"),
         Output("pocket_end_events", "1", "dry pocket end-face contacts begun between settled "
-               "samples, all rollers", label="dry pocket end-face contacts"),
+               "samples, all rollers", label="dry pocket end-face contacts",
+               dtype="int"),
         Output("rib_events", "1", "dry rib contacts begun between settled samples, all "
-               "rollers"),
-        Output("integration_steps", "1", "steps of the integrator"),
+               "rollers", dtype="int"),
+        Output("integration_steps", "1", "steps of the integrator", dtype="int"),
     ),
     dim_sizes={"elapsed_time": _samples, "roller": "roller_count",
                "arc_axial": "arc_axial_points", "arc_angle": _arc_angles, "end": ("left", "right"),

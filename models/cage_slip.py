@@ -535,7 +535,7 @@ MODELS = [Model(
         Output("max_roller_load", "N", "largest roller load at the inner raceway"),
         Output("equilibrium_count", "1", "stable equilibria of the cage's torque balance "
                "found (2 or more: a hysteresis band; 0: the rollers cannot drive the cage)",
-               label="stable equilibria",
+               label="stable equilibria", dtype="int",
                counted=("points with several stable equilibria", _several)),
     ),
     dim_sizes={"orbit": "orbit_points"},

@@ -589,7 +589,7 @@ MODELS = [Model(
         Output("perturbation_stiffness", "N/mm", "forward-difference radial stiffness with the "
                "displacement step 'perturbation'",
                label="perturbation stiffness"),
-        Output("loaded_rollers", "1", "number of rollers carrying load"),
+        Output("loaded_rollers", "1", "number of rollers carrying load", dtype="int"),
         Output("centrifugal_force", "N", "centrifugal force of one roller (eq. 3)"),
         Output("roller_load", "N", "inner-raceway contact load of each roller (eq. 9)",
                dims=("roller",),

@@ -152,6 +152,9 @@ class Output:
     #: ("points with two stable equilibria"); ``values`` are in the declared ``unit``, as
     #: stored, not in SI.
     counted: tuple = ()
+    #: ``"int"`` for an output whose values are whole numbers (a count of loaded rollers):
+    #: stored as integers, with a fill value where a point has none; its unit is ``"1"``.
+    dtype: str = "float"
 
     @property
     def short(self) -> str:
@@ -236,7 +239,8 @@ def declaration_problems(model: Model) -> list[str]:
     Checked: the function's parameters are the declared inputs, in order; an input is
     required exactly where the function has no default; a choice's, count's or subset's
     default is the function's (a subset's as its names joined by spaces); every output
-    dimension has a size in ``dim_sizes``; no two inputs or outputs share a name (nor take
+    dimension has a size in ``dim_sizes``; an integer output (``dtype="int"``) has unit "1";
+    no two inputs or outputs share a name (nor take
     ``status``). Quantity defaults in SI and readable units need the engine's unit handling:
     ``bearing_sweep.testing.assert_valid_declaration`` checks those as well.
     """
@@ -270,6 +274,12 @@ def declaration_problems(model: Model) -> list[str]:
         if unsized:
             problems.append(f"output {output.name!r}: dimension {', '.join(unsized)} has no "
                             "size in dim_sizes")
+        if output.dtype not in ("float", "int"):
+            problems.append(f"output {output.name!r}: dtype {output.dtype!r} is not 'float' "
+                            "or 'int'")
+        elif output.dtype == "int" and (output.unit != "1" or output.entry_units):
+            problems.append(f"output {output.name!r}: an integer output has unit '1', not "
+                            f"{output.unit!r}")
     names = declared + [o.name for o in model.outputs] + ["status"]
     twice = sorted({n for n in names if names.count(n) > 1})
     if twice:  # an output named like an input would clash with its coordinate in the dataset

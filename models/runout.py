@@ -353,7 +353,7 @@ MODELS = [Model(
         Output("rotation_angle", "deg", "inner-ring rotation alpha", dims=("angle",)),
         Output("assembly_order", "1", "which of the given diameter errors each roller position "
                "has", dims=("roller",),
-               label="assembly order"),
+               label="assembly order", dtype="int"),
     ),
     dim_sizes={"angle": "revolutions*steps_per_revolution", "roller": "roller_count"},
     dim_coordinates={"angle": DimCoordinate(("steps_per_revolution",), _rotation_angles, "deg",

@@ -533,7 +533,7 @@ MODELS = [
                    label="axial displacement"),
             Output("roller_load", "N", "cup contact load Qe of each roller (eq. 18); roller 1 "
                    "on the radial load", dims=("roller",)),
-            Output("loaded_rollers", "1", "number of rollers carrying load"),
+            Output("loaded_rollers", "1", "number of rollers carrying load", dtype="int"),
             Output("max_contact_pressure", "MPa", "Hertz line-contact pressure of each roller "
                    "on the cone (inner raceway, the more curved), its load Qe spread over l; "
                    "NaN without pitch_diameter", dims=("roller",),

@@ -19,7 +19,8 @@ from .spec import SpecError, Sweep
 from .store import open_result, write_netcdf
 
 
-def run(definition, *, output=None, client=None, workers=None, progress=True) -> xr.Dataset:
+def run(definition, *, output=None, client=None, workers=None, progress=True, encoding=None,
+        compression=None) -> xr.Dataset:
     """Compute a sweep and return its labelled dataset.
 
     Parameters
@@ -39,6 +40,11 @@ def run(definition, *, output=None, client=None, workers=None, progress=True) ->
         compute in this process (default: two, or in this process for a small sweep).
     progress : bool
         A progress bar and a closing summary on stderr.
+    encoding, compression : str, optional
+        How ``output`` stores the outputs, over the definition's ``[output]`` table, as
+        ``bearing-sweep run --encoding --compression`` takes them: ``"float32"``,
+        ``"zlib:4"``, ``"none"`` (the returned dataset carries them as its variables'
+        ``encoding``, for ``to_netcdf``).
 
     Returns
     -------
@@ -53,6 +59,8 @@ def run(definition, *, output=None, client=None, workers=None, progress=True) ->
         is written.
     """
     sweep = _sweep(definition)
+    sweep.storage = spec.storage_options(sweep.storage, encoding, compression,
+                                         lambda key: f"{key}=")
     if workers is not None and (isinstance(workers, bool) or not isinstance(workers, int)
                                 or workers < 0):
         raise SpecError(f"workers={workers!r}: expected 0 (in this process) or more workers")
@@ -135,7 +143,8 @@ def describe(name: str) -> dict:
     dict
         ``name``, ``version``, ``summary``, ``reference``, ``function`` (the import path of
         the model's function, for direct use on arrays in SI units), ``inputs`` and
-        ``outputs`` (lists of dicts: ``name``, ``unit``, ``meaning``, ``dims``; an input also
+        ``outputs`` (lists of dicts: ``name``, ``unit``, ``meaning``, ``dims``; an output also
+        ``dtype``, ``"int"`` for one stored as integers; an input also
         ``kind``, ``default``, ``required``, ``minimum``, ``maximum``, ``range`` and
         ``choices``; ``default`` is None for a required input and for one the model derives
         when it is not given), ``validity``, ``conditions`` and ``statuses``.
@@ -156,8 +165,8 @@ def describe(name: str) -> dict:
                     "required": i.default is REQUIRED, "minimum": i.minimum,
                     "maximum": i.maximum, "range": i.range_text(), "choices": i.choices}
                    for i in model.inputs],
-        "outputs": [{"name": o.name, "unit": o.unit, "meaning": o.meaning, "dims": o.dims}
-                    for o in model.outputs],
+        "outputs": [{"name": o.name, "unit": o.unit, "meaning": o.meaning, "dims": o.dims,
+                     "dtype": o.dtype} for o in model.outputs],
         "validity": model.validity,
         "conditions": [c.message for c in model.constraints],
         "statuses": dict(STATUS_DESCRIPTIONS),

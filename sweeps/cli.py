@@ -39,6 +39,12 @@ def _parser() -> argparse.ArgumentParser:
     run.add_argument("--quiet", action="store_true", help="no progress bar")
     run.add_argument("--fresh", action="store_true",
                      help="ignore the finished chunks of an interrupted run and start over")
+    run.add_argument("--encoding", metavar="TYPE",
+                     help="float64 (default) or float32: the type the outputs are stored in "
+                          "(overrides [output] encoding)")
+    run.add_argument("--compression", metavar="NAME[:LEVEL]",
+                     help="none, zlib[:1-9] (default zlib:1) or zstd[:1-22] (overrides "
+                          "[output] compression)")
     cluster_options(run)
 
     analyze = commands.add_parser("analyze", help="statistics and Sobol indices of a sampled "
@@ -111,7 +117,8 @@ def _describe(name: str) -> str:
     lines += ["", "Outputs:"]
     for o in model["outputs"]:
         dims = f" (dims: {', '.join(o['dims'])})" if o["dims"] else ""
-        lines.append(f"  {o['name']} [{o['unit']}]{dims}: {o['meaning']}")
+        integer = ", an integer" if o["dtype"] == "int" else ""
+        lines.append(f"  {o['name']} [{o['unit']}]{dims}: {o['meaning']}{integer}")
     lines.append("  status: per point, one of:")
     lines += [f"    {status}: {text}" for status, text in model["statuses"].items()]
     if model["validity"]:
@@ -214,6 +221,7 @@ def main(argv=None) -> int:
             if args.chunk_size is not None and args.chunk_size < 1:
                 raise SpecError(f"--chunk-size {args.chunk_size}: expected a positive integer")
             sweep = spec.load(args.definition)
+            sweep.storage = spec.storage_options(sweep.storage, args.encoding, args.compression)
             output = args.output or Path("results") / f"{args.definition.stem}.nc"
             with Executor(args.workers, args.scheduler) as executor:
                 summary = run_sweep(sweep, output, executor, args.chunk_size, not args.quiet,

@@ -41,6 +41,9 @@ def labelled_dataset(sweep: Sweep, grid: Grid, outputs: dict, status: np.ndarray
                 f"; each entry in its own unit, given by {spec.name}_units")
             data_vars[f"{spec.name}_units"] = (spec.dims, np.array(spec.entry_units), {
                 "long_name": f"unit of each entry of {spec.name}"})
+        note = stored_note(spec.dtype == "int", sweep.storage)
+        if note:
+            attrs["comment"] = attrs.get("comment", spec.short) + "; " + note
         data_vars[spec.name] = (grid.dims + spec.dims, values, attrs)
     data_vars["status"] = (grid.dims, status.reshape(grid.shape), {
         "long_name": "solver status of the grid point",
@@ -68,6 +71,7 @@ def labelled_dataset(sweep: Sweep, grid: Grid, outputs: dict, status: np.ndarray
         "definition_file": str(sweep.path),
         "definition_sha256": sweep.sha256,
         "scheduler": provenance["scheduler"],
+        "output_encoding": sweep.storage.text(),
     }
     if sweep.bearing:
         attrs["bearing"] = sweep.bearing
@@ -83,7 +87,20 @@ def labelled_dataset(sweep: Sweep, grid: Grid, outputs: dict, status: np.ndarray
     dataset = xr.Dataset(data_vars, coords, attrs)
     for name in list(dataset.coords) + attrs["fixed_inputs"].split():
         dataset[name].encoding["_FillValue"] = None  # CF: no fill values on coordinates
+    for spec in model.outputs:  # how the file stores them (in memory: float64 and NaN)
+        dataset[spec.name].encoding.update(sweep.storage.variable_encoding(spec.dtype == "int"))
+    dataset["status"].encoding.update(sweep.storage.variable_encoding(integral=True),
+                                      dtype=np.int8, _FillValue=None)  # every point has one
     return dataset
+
+
+def stored_note(integral: bool, storage) -> str:
+    """What an output's ``comment`` says of how the file stores it, if not as float64."""
+    if integral:
+        return "stored as integers, the _FillValue where a point has no value"
+    if storage.encoding == "float32":
+        return "computed in float64, stored as float32 (about 7 significant digits)"
+    return ""
 
 
 def dimension_coordinate(model, grid: Grid, sweep: Sweep, dim: str) -> tuple:

@@ -21,6 +21,7 @@ from dataclasses import replace
 from .models.catalogue import PRESETS
 from .models.registry import Input, Model, all_models
 from . import sample, units
+from .storage import ENCODINGS, Storage
 
 DRAFT = "http://json-schema.org/draft-07/schema#"
 
@@ -73,7 +74,8 @@ def schema(model: str | None = None) -> dict:
 
 
 def _definition(model: Model) -> dict:
-    """The schema of a whole definition of ``model``: [sweep], [fixed] and [axes]."""
+    """The schema of a whole definition of ``model``: [sweep], [fixed], [axes], [sample] and
+    [output]."""
     presets = sorted(p.name for p in PRESETS.values() if model.name in p.models)
     sweep = {"type": "object", "additionalProperties": False, "required": ["model"],
              "properties": {
@@ -98,7 +100,22 @@ def _definition(model: Model) -> dict:
                 "axes": {"type": "object", "properties": axes, "additionalProperties": zipped,
                          "description": "each key a dimension of the grid, in order: a "
                                         "parameter's values, or a table of zipped parameters"},
-                "sample": _sample(model)}}
+                "sample": _sample(model),
+                "output": OUTPUT}}
+
+
+#: The [output] table: how the result file stores the outputs (``spec.storage_options``).
+OUTPUT = {"type": "object", "additionalProperties": False,
+          "description": "how the result file stores the outputs",
+          "properties": {
+              "encoding": {"enum": list(ENCODINGS), "default": Storage().encoding,
+                           "description": "the type of the outputs that are not integers"},
+              "compression": {"type": "string", "pattern": r"^(none|zlib(:[1-9])?|zstd(:([1-9]|1"
+                                                           r"[0-9]|2[0-2]))?)$",
+                              "default": f"{Storage().compression}:{Storage().level}",
+                              "description": "none, zlib[:1-9] or zstd[:1-22]"},
+              "shuffle": {"type": "boolean", "default": Storage().shuffle,
+                          "description": "the shuffle filter before zlib"}}}
 
 
 def _sample(model: Model) -> dict:

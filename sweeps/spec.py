@@ -17,12 +17,15 @@ import numpy as np
 from .models.catalogue import PRESETS
 from .models.registry import Input, Model, all_models
 from . import sample, units
+from .storage import COMPRESSIONS, DEFAULT_LEVELS, ENCODINGS, Storage
 
 _RANGE_KEYS = {"start", "stop", "num", "step", "units"}
 _VALUES_KEYS = {"values", "units"}
 _RESERVED = {"status", "sample"}
 #: The keys of a [sample] table that are not sampled parameters.
 _SAMPLE_SETTINGS = ("n", "method", "seed")
+#: The keys of an [output] table.
+_OUTPUT_KEYS = ("encoding", "compression", "shuffle")
 #: Most points in one sweep: beyond, the result files alone would fill a disk.
 MAX_POINTS = 10**9
 #: Most values on one axis (each is validated on its own before any computing).
@@ -85,6 +88,7 @@ class Sweep:
     axes: list[Axis]
     origin: dict[str, str] = field(default_factory=dict)  # where each fixed value came from
     sampling: Sampling | None = None  # a [sample] table: its axis is the first of ``axes``
+    storage: Storage = Storage()  # the [output] table: how the outputs are written
 
     @property
     def sha256(self) -> str:
@@ -181,6 +185,48 @@ def suggestion(name: str, options) -> str:
     return f"; did you mean {close[0]!r}?" if close else ""
 
 
+def storage_options(base: Storage, encoding=None, compression=None,
+                    named=lambda key: f"--{key}") -> Storage:
+    """``base`` with the ``encoding`` and ``compression`` given (None: as in ``base``),
+    written as on the command line and in an [output] table: ``"float32"``, ``"zlib:4"``;
+    ``named(key)`` says where, in a :class:`SpecError` for a mistake."""
+    if encoding is not None and encoding not in ENCODINGS:
+        raise SpecError(f"{named('encoding')}: {encoding!r} is not accepted; the encoding is "
+                        + " or ".join(repr(e) for e in ENCODINGS)
+                        + suggestion(str(encoding), ENCODINGS))
+    name, level = base.compression, base.level
+    if compression is not None:
+        name, level = _compression(compression, named("compression"))
+    return replace(base, encoding=encoding or base.encoding, compression=name, level=level)
+
+
+def _compression(text, where: str) -> tuple[str, int]:
+    """``"none"``, ``"zlib"``, ``"zlib:4"``, ``"zstd:3"`` as (name, level)."""
+    accepted = "'none', 'zlib' or 'zlib:LEVEL' (1-9), 'zstd' or 'zstd:LEVEL' (1-22)"
+    if not isinstance(text, str):
+        raise SpecError(f"{where}: {text!r}: expected a string, {accepted}")
+    name, _, level_text = text.partition(":")
+    if name not in COMPRESSIONS:
+        raise SpecError(f"{where}: {text!r} is not accepted; the compression is {accepted}"
+                        + suggestion(name, COMPRESSIONS))
+    levels = COMPRESSIONS[name]
+    if levels is None:
+        if level_text:
+            raise SpecError(f"{where}: {text!r}: 'none' takes no level")
+        return name, 0
+    if level_text and not (level_text.isdigit() and int(level_text) in levels):
+        raise SpecError(f"{where}: {text!r}: the level of {name} is an integer from "
+                        f"{levels.start} to {levels.stop - 1}")
+    if name == "zstd":
+        import netCDF4
+
+        if not getattr(netCDF4, "__has_zstandard_support__", False):
+            raise SpecError(f"{where}: {text!r}: the installed netCDF4 {netCDF4.__version__} "
+                            f"(HDF5 {netCDF4.__hdf5libversion__}) cannot write zstd; use "
+                            "'zlib'")
+    return name, int(level_text) if level_text else DEFAULT_LEVELS[name]
+
+
 class _Parser:
     def __init__(self, where: str):
         self.where = where
@@ -201,11 +247,12 @@ class _Parser:
 
     # -- the whole definition -------------------------------------------------------------
     def sweep(self, document: dict, text: str) -> Sweep:
-        sections = ("sweep", "fixed", "axes", "sample")
+        sections = ("sweep", "fixed", "axes", "sample", "output")
         for key in document:
             if key not in sections:
                 self.fail(key, "unknown section" + suggestion(key, sections)
-                          + " (accepted: [sweep], [fixed], [axes], [sample])")
+                          + " (accepted: [sweep], [fixed], [axes], [sample], [output])")
+        storage = self.storage(self.table(document, "output", _OUTPUT_KEYS))
         head = self.table(document, "sweep", ("model", "bearing", "title"))
         name = head.get("model")
         if not isinstance(name, str):
@@ -260,7 +307,7 @@ class _Parser:
         title = model.name if self.where.startswith("<") else \
             f"{model.name}: {Path(self.where).stem}"
         sweep = Sweep(self.where, text, model, str(head.get("title") or title), bearing, fixed,
-                      axes, origin, sampling)
+                      axes, origin, sampling, storage)
         self.check_pattern_lengths(sweep)
         self.check_constraints(sweep)
         return sweep
@@ -293,6 +340,16 @@ class _Parser:
             return Value(spec.default, spec.default, spec.unit)
         unit = units.parse_unit(spec.unit)
         return Value(float(units.to_si(spec.default, unit)), spec.default, spec.unit)
+
+    # -- [output] -------------------------------------------------------------------------
+    def storage(self, table: dict) -> Storage:
+        """How the outputs are written, from the [output] table (defaults for what it omits)."""
+        base = storage_options(Storage(), table.get("encoding"), table.get("compression"),
+                               lambda key: f"{self.where}: output.{key}")
+        shuffle = table.get("shuffle", base.shuffle)
+        if not isinstance(shuffle, bool):
+            self.fail("output.shuffle", f"{shuffle!r}: expected true or false")
+        return replace(base, shuffle=shuffle)
 
     # -- [sample] -------------------------------------------------------------------------
     def sampled(self, table: dict, inputs: dict, model: Model) -> dict:

@@ -14,6 +14,7 @@ from .grid import Grid
 from .labels import labelled_dataset
 from .parts import written_atomically
 from .spec import Sweep
+from .storage import integral_values
 
 
 def package_version() -> str:
@@ -76,10 +77,10 @@ def gather(sweep: Sweep, grid: Grid, parts, chunks, scheduler: str, errors=()) -
 def assemble(sweep: Sweep, grid: Grid, parts, chunks, path, scheduler: str, errors=()):
     """Write the sweep's dataset from its chunks, one chunk in memory at a time.
 
-    The file's structure (coordinates, attributes, empty variables) is written by xarray,
-    the chunks' values then into it, region by region, and the finished file renamed into
-    place: an existing file at ``path`` stays intact until then. ``errors``: the model's
-    messages, from :func:`tally`.
+    The file's structure (coordinates, attributes, empty variables, each stored as
+    ``sweep.storage`` says) is written by xarray, the chunks' values then into it, region by
+    region, and the finished file renamed into place: an existing file at ``path`` stays
+    intact until then. ``errors``: the model's messages, from :func:`tally`.
     """
     import dask.array
     import netCDF4
@@ -97,10 +98,13 @@ def assemble(sweep: Sweep, grid: Grid, parts, chunks, path, scheduler: str, erro
         finally:
             skeleton_store.close()
         del skeleton
+        integral = {o.name for o in grid.model.outputs if o.dtype == "int"}
         with netCDF4.Dataset(temporary, "r+") as target:
             for start, stop in chunks:
                 part = parts.load(start, stop)
-                values = dict(part["outputs"], status=part["status"])
+                values = {name: integral_values(data, name) if name in integral else data
+                          for name, data in part["outputs"].items()}
+                values["status"] = part["status"]
                 for name, data in values.items():
                     variable = target.variables[name]
                     for index, low, high in _regions(grid.shape, start, stop):
@@ -148,8 +152,7 @@ def write_netcdf(dataset: xr.Dataset, path) -> Path:
     """Write ``dataset`` to ``path`` atomically: an existing file at ``path`` stays intact
     until the new one is complete."""
     with written_atomically(path) as temporary:
-        # Uncompressed: zlib would make writing ten times slower for half the size; a user who
-        # wants it smaller can run `nccopy -d 1`.
+        # As each variable's encoding says (a sweep's outputs: its [output] table).
         dataset.to_netcdf(temporary, engine="netcdf4")
     return Path(path)
 

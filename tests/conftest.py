@@ -21,3 +21,20 @@ def definition(tmp_path):
         return path
 
     return write
+
+
+@pytest.fixture
+def paper_slice_law_fails(monkeypatch):
+    """crb_radial raises for every point with ``slice_law = "paper"`` (a model_error there)."""
+    import bearing_sweep.models.registry as registry
+
+    model = registry.get_model("crb_radial")
+    original = model.function
+
+    def fragile(**kwargs):
+        if kwargs["slice_law"] == "paper":
+            raise RuntimeError("simulated failure")
+        return original(**kwargs)
+
+    monkeypatch.setitem(registry._MODELS, "crb_radial",
+                        registry.Model(**{**model.__dict__, "function": fragile}))

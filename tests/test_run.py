@@ -99,17 +99,8 @@ def test_atomic_write_leaves_the_previous_file_intact_on_failure(tmp_path, monke
     assert [p.name for p in tmp_path.iterdir()] == ["result.nc"]
 
 
-def test_a_model_exception_marks_its_points_and_the_rest_completes(tmp_path, monkeypatch):
-    model = registry.get_model("crb_radial")
-    original = model.function
-
-    def fragile(**kwargs):
-        if kwargs["slice_law"] == "paper":
-            raise RuntimeError("simulated failure")
-        return original(**kwargs)
-
-    monkeypatch.setitem(registry._MODELS, "crb_radial",
-                        registry.Model(**{**model.__dict__, "function": fragile}))
+def test_a_model_exception_marks_its_points_and_the_rest_completes(tmp_path,
+                                                                   paper_slice_law_fails):
     summary, data = compute(tmp_path, "fragile")
     failed = data.status.sel(arrangement="paper")
     assert (failed == MODEL_ERROR).all() and (data.status.sel(arrangement="uniform") == 0).all()
