@@ -335,3 +335,19 @@ x3 = { distribution = "uniform", low = -3, high = 3 }
     assert len(left.patches) == 6  # first-order and total bars of three inputs
     assert sum(p.get_height() for p in right.patches) == 64  # A and B only
     plt.close(figure)
+
+
+def test_a_pattern_no_count_sizes_draws_one_value_for_all_its_entries():
+    # A raceway's harmonics have no count that sets their number; a broadcast pattern given
+    # one value has one entry standing for all, so one drawn value per sample is that value.
+    from bearing_sweep.spec import parse
+
+    sweep = parse('[sweep]\nmodel = "crb_runout"\nbearing = "paper004-NU208-1"\n'
+                  '[fixed]\ninner_roundness_order = 2\n'
+                  '[sample]\nn = 8\nmethod = "random"\nseed = 3\n'
+                  'inner_roundness_amplitude = { distribution = "uniform", low = "0 um", '
+                  'high = "1 um" }\n')
+    (axis,) = sweep.axes
+    drawn = axis.si["inner_roundness_amplitude"]
+    assert drawn.shape == (8, 1)
+    assert ((drawn >= 0.0) & (drawn <= 1e-6)).all() and np.ptp(drawn) > 0.0

@@ -29,9 +29,10 @@ FIGURES = {
                               "roller set of Table 3 row 19, with the paper's increasing and "
                               "alternating orders.",
     "tolerances.png": "Beyond the paper: runout of NU208 with rollers of grade G2 (diameter "
-                      "+-1 um, oval up to 0.5 um, random phases): its spread in random and "
-                      "selective assembly of the same roller sets, and which tolerance "
-                      "drives it (Sobol' indices, 95 % intervals).",
+                      "+-1 um, oval up to 0.5 um, random phases) and an inner raceway oval "
+                      "up to 1 um: its spread in random and selective assembly of the same "
+                      "roller sets, and which tolerance drives it (Sobol' indices, 95 % "
+                      "intervals).",
 }
 
 
@@ -177,7 +178,8 @@ def _assembly(results, figures):
 
 
 _SHORT = {"roller_diameter_error": "diameter", "roller_roundness_amplitude":
-          "roundness\namplitude", "roller_roundness_phase": "roundness\nphase"}
+          "roundness\namplitude", "roller_roundness_phase": "roundness\nphase",
+          "inner_roundness_amplitude": "inner\nraceway"}
 
 
 def assembly_gain(data) -> dict:
