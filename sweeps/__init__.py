@@ -6,7 +6,14 @@ result; every mistake in what is asked is a :class:`SpecError`. The model functi
 :mod:`bearing_sweep.models`.
 """
 from .api import analyze, check, describe, list_models, run
-from .quicklook import plot
 from .spec import SpecError
+
+
+def __getattr__(name):
+    # matplotlib costs a third of a second to import: only for who plots.
+    if name == "plot":
+        from .quicklook import plot
+        return plot
+    raise AttributeError(f"module {__name__!r} has no attribute {name!r}")
 
 __all__ = ["run", "check", "analyze", "list_models", "describe", "plot", "SpecError"]

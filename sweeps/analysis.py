@@ -15,7 +15,6 @@ from datetime import datetime, timezone
 
 import numpy as np
 import xarray as xr
-from scipy import stats
 
 from .labels import CONVENTIONS
 from .spec import SpecError
@@ -127,6 +126,8 @@ def _statistics(values: xr.DataArray) -> xr.DataArray:
 def _indices(data: xr.DataArray, outputs: list[str], axes: list[str]) -> xr.Dataset:
     """First-order and total Sobol' indices of each scalar output, at each point of the other
     axes, with their bootstrap intervals."""
+    from scipy import stats  # here: scipy.stats costs a second to import
+
     n = int(data.attrs["sample_size"])
     inputs = data.attrs["sample_inputs"].split()
     d = len(inputs)

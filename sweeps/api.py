@@ -12,7 +12,7 @@ import sys
 import xarray as xr
 
 from .models.registry import REQUIRED, STATUS_DESCRIPTIONS, all_models
-from . import analysis, spec
+from . import spec
 from .compute import Executor, run_sweep
 from .parts import check_output
 from .spec import SpecError, Sweep
@@ -122,6 +122,8 @@ def analyze(result, *, output=None) -> xr.Dataset:
                             f"({str(error).splitlines()[0]})") from None
     if output is not None:
         check_output(output)
+    from . import analysis  # its scipy.stats only for who analyses
+
     analyzed = analysis.analyze(result, where)
     if output is not None:
         write_netcdf(analyzed, output)

@@ -9,7 +9,7 @@ from pathlib import Path
 
 from .models.catalogue import PRESETS
 from .models.registry import all_models
-from . import api, quicklook, schema, spec, study
+from . import api, schema, spec, study
 from .parts import check_output, write_durably
 from .compute import Executor, WorkerMismatch, check_scheduler_address, run_sweep
 from .spec import SpecError
@@ -213,6 +213,8 @@ def main(argv=None) -> int:
             if not args.result.is_file():
                 raise SpecError(f"{args.result}: no such result file")
             output = args.output or args.result.with_suffix(".png")
+            from . import quicklook  # matplotlib only for who plots
+
             quicklook.check_figure_path(output, args.result)
             quicklook.plot(args.result, args.variable, x=args.x, output=output)
             print(f"wrote {output}")

@@ -10,8 +10,6 @@ from __future__ import annotations
 from dataclasses import dataclass
 
 import numpy as np
-from scipy import stats
-from scipy.stats import qmc
 
 #: The designs a ``[sample]`` table may name.
 METHODS = ("random", "latin_hypercube", "sobol", "halton", "saltelli")
@@ -47,6 +45,8 @@ class Distribution:
 
     def frozen(self):
         """The scipy.stats distribution."""
+        from scipy import stats  # here: scipy.stats costs a second to import
+
         p = self.parameters
         if self.name == "uniform":
             return stats.uniform(loc=p["low"], scale=p["high"] - p["low"])
@@ -99,6 +99,8 @@ def unit_hypercube(method: str, n: int, dimensions: int, seed: int) -> np.ndarra
     1979); ``sobol`` and ``halton``: scrambled low-discrepancy sequences. The same seed gives
     the same points.
     """
+    from scipy.stats import qmc  # here: scipy.stats costs a second to import
+
     rng = np.random.default_rng(seed)
     if method == "random":
         return rng.random((n, dimensions))
@@ -118,6 +120,8 @@ def saltelli_blocks(n: int, groups: list[int], seed: int) -> np.ndarray:
     in scipy.stats.sobol_indices (Saltelli et al., Comput. Phys. Commun. 181(2), 259-270,
     2010, doi:10.1016/j.cpc.2009.09.018, section 5).
     """
+    from scipy.stats import qmc
+
     columns = sum(groups)
     both = qmc.Sobol(2 * columns, rng=np.random.default_rng(seed)).random(n)
     a, b = both[:, :columns], both[:, columns:]
