@@ -14,6 +14,7 @@ other models stay available.
 """
 from __future__ import annotations
 
+import importlib
 import inspect
 import logging
 import re
@@ -347,6 +348,27 @@ def _models_of(entry_point: EntryPoint, origins: dict[str, str]) -> dict[str, Mo
     return found
 
 
+#: Our own models and the module of this package that declares each, so that a sweep of one
+#: of them imports that module alone (the cage models' numba and scipy.integrate cost half a
+#: second to import); a test holds it equal to what the entry points declare.
+OWN_MODEL_MODULES = {
+    "crb_radial": "cylindrical", "ball_5dof": "ball", "trb_load": "tapered",
+    "trb_rib": "tapered", "hertz_point": "contact", "crb_runout": "runout",
+    "cage_slip": "cage_slip", "cage_dynamics": "cage_dynamics",
+    "cage_dynamics_6dof": "cage_dynamics_6dof",
+}
+
+
 def get_model(name: str) -> Model:
-    """The model called ``name``; ``KeyError`` if there is none."""
+    """The model called ``name``; ``KeyError`` if there is none.
+
+    One of ours is found in its own module without importing the others (ours keep their
+    names whatever plug-ins declare, so the answer is the same); any other name loads every
+    entry point.
+    """
+    if not _MODELS and name in OWN_MODEL_MODULES:
+        module = importlib.import_module(f"{__package__}.{OWN_MODEL_MODULES[name]}")
+        for model in module.MODELS:
+            if model.name == name:
+                return model
     return all_models()[name]

@@ -15,7 +15,7 @@ from pathlib import Path
 import numpy as np
 
 from .models.catalogue import PRESETS
-from .models.registry import Input, Model, all_models
+from .models.registry import Input, Model, all_models, get_model
 from . import sample, units
 from .storage import COMPRESSIONS, DEFAULT_LEVELS, ENCODINGS, Storage
 
@@ -121,11 +121,12 @@ def parse(text: str, where: str = "<definition>") -> Sweep:
 def find_model(name: str) -> Model:
     """The registered model called ``name``; :class:`SpecError` (with the closest name)
     if there is none."""
-    models = all_models()
-    if name not in models:
+    try:
+        return get_model(name)
+    except KeyError:
+        models = all_models()
         raise SpecError(f"unknown model {name!r}" + suggestion(name, models)
-                        + " (models: " + ", ".join(sorted(models)) + ")")
-    return models[name]
+                        + " (models: " + ", ".join(sorted(models)) + ")") from None
 
 
 def from_dict(document: dict, where: str = "<definition>") -> Sweep:

@@ -30,3 +30,32 @@ def test_every_preset_is_a_valid_definition_and_returns_every_output(name):
     assert set(result) == {o.name for o in model.outputs} | {"status"}
     assert np.all(result["status"] == 0)
     assert preset.source.startswith("Paper")
+
+
+def test_our_models_are_found_in_the_modules_the_index_names():
+    # get_model finds one of ours in its own module alone: the index must say exactly what
+    # the entry points declare, or a model would be missed or taken from the wrong module.
+    from bearing_sweep.models.registry import OWN_MODEL_MODULES, all_models
+
+    ours = {name: model.function.__module__.rsplit(".", 1)[1]
+            for name, model in all_models().items()
+            if model.function.__module__.startswith("bearing_sweep.models.")}
+    assert ours == OWN_MODEL_MODULES
+
+
+def test_a_sweep_of_one_model_imports_no_other_models_module(tmp_path):
+    # Start-up: crb_radial's sweep needs neither the cage models' numba nor scipy.integrate
+    # nor matplotlib nor scipy.stats (each costs a fraction of a second to import).
+    import subprocess
+    import sys
+
+    (tmp_path / "d.toml").write_text('[sweep]\nmodel = "crb_radial"\nbearing = "paper000-D"\n'
+                                     '[axes]\nradial_load = ["1 kN", "2 kN"]\n')
+    script = ("import sys\nfrom bearing_sweep import cli\n"
+              "cli.main(['run', 'd.toml', '-o', 'd.nc'])\n"
+              "print(sorted(m for m in ('numba', 'scipy.integrate', 'matplotlib', "
+              "'scipy.stats', 'bearing_sweep.models.cage_slip') if m in sys.modules))\n")
+    done = subprocess.run([sys.executable, "-c", script], cwd=tmp_path, capture_output=True,
+                          text=True, timeout=120)
+    assert done.returncode == 0, done.stderr
+    assert done.stdout.strip().splitlines()[-1] == "[]"
