@@ -270,7 +270,9 @@ def test_the_command_line_imports_without_fcntl():
 @pytest.mark.slow
 def test_ctrl_c_on_the_local_cluster_is_one_line_and_resumes(tmp_path):
     # A terminal's Ctrl-C reaches the whole foreground process group: the workers too.
-    (tmp_path / "slow.toml").write_text(SLOW.replace("num = 200", "num = 300"))
+    # 160 000 points: enough left to compute after the first chunk is saved that the signal
+    # always lands mid-run (at 90 000 a quick machine sometimes finished first).
+    (tmp_path / "slow.toml").write_text(SLOW.replace("num = 200", "num = 400"))
     run = subprocess.Popen([sys.executable, "-m", "bearing_sweep", "run", "slow.toml", "-o", "out.nc",
                             "--quiet"], cwd=tmp_path, stdout=subprocess.PIPE,
                            stderr=subprocess.PIPE, text=True, start_new_session=True)
