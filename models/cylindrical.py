@@ -93,26 +93,26 @@ class _RollerSet:
         # Approaches are counted at each roller's slice with the smallest gap, so that every
         # gap is >= 0 and a roller touches when its approach does; a tilted roller's deepest
         # slice lies towards an end, 2 * floor nearer the raceways than its middle.
-        self.floor = 0.0  # (P, Z): smallest gap of each roller's slices
         if self.tilt is None:  # a symmetric roller: its distinct slices with their counts
             self.gap_shape, self.gap_count = distinct_slices(slices, crown_profile)  # (m,)
         else:
             self.gap_shape, self.gap_count = crown_shape(slices, crown_profile), np.ones(slices)
             self.slice_position = slice_centres(slices)
-            self.floor = np.zeros(self.tilt.shape)
-            self.floor = self.all_gaps().min(axis=-1)
+            self.floor = (self.crown[:, None, None] * self.gap_shape  # (P, Z): smallest gap
+                          - self.tilt[..., None] * self.slice_position).min(axis=-1)
         self.slice_law, self.outer_contact = slice_law, outer_contact
         self.free_outer_approach, self.free_outer_converged = self._free_outer_approach()
 
-    def gaps(self, points, rollers=None):
+    def gaps(self, points, rollers):
         """Gap of every slice of the rollers ``rollers`` of the bearings ``points`` [m],
-        ``points.shape + (m,)`` (index arrays broadcast); ``rollers=None``: the roller's own
-        crown only, as for a roller that touches the outer ring alone."""
+        ``points.shape + (m,)`` (index arrays broadcast), counted from each roller's
+        smallest (so ``>= 0``)."""
         gaps = self.crown[points][..., None] * self.gap_shape
-        if self.tilt is None or rollers is None:
+        if self.tilt is None:
             return gaps
+        # In this order the smallest gap is exactly zero: the floor is that very difference.
         return (gaps - self.tilt[points, rollers][..., None] * self.slice_position
-                - np.asarray(self.floor)[points, rollers][..., None])
+                - self.floor[points, rollers][..., None])
 
     def all_gaps(self):
         """:meth:`gaps` of every roller of every bearing, ``(P, Z or 1, m)``."""
@@ -131,9 +131,9 @@ class _RollerSet:
         total = displacement[:, None] * self.cos[points] - self.half_clearance[points, None]
         return total if self.tilt is None else total - 2.0 * self.floor[points]
 
-    def contacts(self, inner_approach, outer_approach, points, rollers=None):
+    def contacts(self, inner_approach, outer_approach, points, rollers):
         """Inner load, outer load and the load the outer contact is balanced against, of the
-        rollers ``rollers`` (None: untilted) of the bearings ``points``.
+        rollers ``rollers`` of the bearings ``points``.
 
         Returns ``(Qi, dQi, Qo, dQo, Qt, dQt)`` [N, N/m]: the roller's force balance is
         ``Qo(outer) = Qt(inner) + Fc``. With ``outer_contact='crowned'`` both contacts are the
@@ -201,8 +201,6 @@ class _RollerSet:
             return plain[:, None], np.isfinite(plain)
         shape = self.cos.shape if self.tilt is not None else (plain.size, 1)
         points, rollers = np.indices(shape).reshape(2, -1)
-        if self.tilt is None:
-            rollers = None
         approach = np.zeros(points.size)
         converged = np.isfinite(plain)[points]
         spinning = np.flatnonzero(self.centrifugal[points] > 0.0)
@@ -213,8 +211,8 @@ class _RollerSet:
 
             def residual(outer, index):
                 entries = spinning[index]
-                _, _, load, stiffness, _, _ = self.contacts(
-                    outer, outer, points[entries], None if rollers is None else rollers[entries])
+                _, _, load, stiffness, _, _ = self.contacts(outer, outer, points[entries],
+                                                            rollers[entries])
                 return load - self.centrifugal[points[entries]], stiffness
 
             approach[spinning], converged[spinning] = solve_increasing(
