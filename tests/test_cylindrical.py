@@ -56,11 +56,13 @@ def _solve_fd(load, relative=1e-4, **kw):
 @given(load=st.floats(200.0, 20000.0), clearance=st.floats(-0.005, 0.05),
        crown=st.floats(0.0, 0.008), speed=st.floats(0.0, 15000.0),
        slices=st.integers(1, 90), outer=st.sampled_from(["crowned", "paper"]),
-       cage=st.floats(0.0, 30.0))
+       cage=st.floats(0.0, 30.0), tilt=st.floats(0.0, 5.0))
 def test_analytic_stiffness_equals_finite_difference(load, clearance, crown, speed, slices,
-                                                     outer, cage):
+                                                     outer, cage, tilt):
+    # Misalignment [mrad] tilts each slice's gap; only the crowned outer contact takes it.
     kw = dict(clearance=clearance * MM, crown=crown * MM, speed=speed * RPM, slices=slices,
-              outer_contact=outer, cage_position=np.radians(cage), **BEARING_D)
+              outer_contact=outer, cage_position=np.radians(cage),
+              misalignment=tilt * 1e-3 if outer == "crowned" else 0.0, **BEARING_D)
     result = crb_radial(load, **kw)
     assert result["status"] == CONVERGED
     assert result["radial_stiffness"] == pytest.approx(_solve_fd(load, **kw), rel=5e-3)
