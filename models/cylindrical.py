@@ -447,7 +447,9 @@ def crb_radial(radial_load, roller_count, pitch_diameter, roller_diameter, effec
             reference_life[rated] = roller_bearing_reference_life(
                 inner_laminae, life[0][rated], diameter[rated], pitch[rated],
                 outer_lamina_loads=outer_laminae, lamina_weights=rollers.gap_count)
-    outputs.update(rating_lives(reference_life, load, "roller", speed, pitch, *life))
+    # P = Fr, of a point that has a load distribution (a failed point's lives are NaN too).
+    equivalent_load = np.where(outputs["status"] == CONVERGED, load, np.nan)
+    outputs.update(rating_lives(reference_life, equivalent_load, "roller", speed, pitch, *life))
     beyond = ((pressure > pressure_limit[:, None]) | (inner + outer > APPROACH_LIMIT
                                                     * diameter[:, None])).any(axis=-1)
     outputs["status"] = np.where((outputs["status"] == CONVERGED) & beyond, OUT_OF_VALIDITY,

@@ -227,10 +227,13 @@ def test_a_soft_contact_constant_is_out_of_validity_by_its_approach():
 def test_a_nan_input_fails_the_point(nan_input):
     values = dict(radial_load=4000.0, speed=5000 * RPM, clearance=0.01 * MM, cage_position=0.0)
     values[nan_input] = np.array([values[nan_input], np.nan])
-    result = crb_radial(**values, crown=0.004 * MM, **BEARING_D)
+    result = crb_radial(**values, crown=0.004 * MM, dynamic_load_rating=48e3, **BEARING_D)
     assert result["status"].tolist() == [CONVERGED, NOT_CONVERGED]
     assert np.isnan(result["radial_displacement"][1])
     assert np.isnan(result["max_contact_pressure"][1]).all()
+    # Every life too, the ISO 281 one included: the failed point has no load distribution.
+    for name in ("reference_rating_life", "basic_rating_life", "equivalent_dynamic_load"):
+        assert np.isfinite(result[name][0]) and np.isnan(result[name][1]), name
 
 
 def test_an_unconverged_free_outer_approach_fails_the_point(monkeypatch):
