@@ -24,7 +24,6 @@ from .life import ball_bearing_reference_life, radial_ball_equivalent_load
 from .lubrication import CELSIUS
 from .registry import (CONVERGED, INFEASIBLE, NOT_CONVERGED, OUT_OF_VALIDITY, Constraint,
                              Input, Model, Output, combine_status)
-from .solvers import solve_equilibrium
 
 DOFS = ("axial", "radial_y", "radial_z", "tilt_y", "tilt_z")
 GEOMETRIES = ("jones", "fixed_angle")
@@ -96,141 +95,51 @@ def series_constant(inner, outer, exponent=POINT_CONTACT_EXPONENT):
             + np.asarray(outer) ** (-1.0 / exponent)) ** (-exponent)
 
 
-# A ball of azimuth psi with an axial force f_a and a radial force f_r puts f_a A + f_r R on
-# the five scaled loads, A = (1, 0, 0, sin psi, -cos psi), R = (0, cos psi, sin psi, 0, 0);
-# its stiffness is k_aa A A^T + k_rr R R^T + k_ar (A R^T + R A^T). So each load is one sum over
-# the balls of a force times a function of psi, and so is each entry of the stiffness:
-_PSI_FUNCTIONS = ("1", "cos", "sin", "cos cos", "sin sin", "cos sin")
-_REACTION_TERMS = (("axial", "1", 1.0), ("radial", "cos", 1.0), ("radial", "sin", 1.0),
-                   ("axial", "sin", 1.0), ("axial", "cos", -1.0))
-_STIFFNESS_TERMS = {  # (i, j), i <= j: (weight, function of psi, sign); the rest is zero
-    (0, 0): ("aa", "1", 1.0), (0, 3): ("aa", "sin", 1.0), (0, 4): ("aa", "cos", -1.0),
-    (3, 3): ("aa", "sin sin", 1.0), (3, 4): ("aa", "cos sin", -1.0),
-    (4, 4): ("aa", "cos cos", 1.0),
-    (1, 1): ("rr", "cos cos", 1.0), (1, 2): ("rr", "cos sin", 1.0),
-    (2, 2): ("rr", "sin sin", 1.0),
-    (0, 1): ("ar", "cos", 1.0), (0, 2): ("ar", "sin", 1.0), (1, 3): ("ar", "cos sin", 1.0),
-    (2, 3): ("ar", "sin sin", 1.0), (1, 4): ("ar", "cos cos", -1.0),
-    (2, 4): ("ar", "cos sin", -1.0),
-}
-
-
-def _gather(terms, weights):
-    """Where each term's sum lies in the flattened ``(weights, _PSI_FUNCTIONS)`` sums, and its
-    sign."""
-    index = [weights.index(weight) * len(_PSI_FUNCTIONS) + _PSI_FUNCTIONS.index(function)
-             for weight, function, _ in terms]
-    return np.array(index), np.array([sign for _, _, sign in terms])
-
-
-_REACTION_INDEX, _REACTION_SIGN = _gather(_REACTION_TERMS, ("axial", "radial"))
-_STIFFNESS_INDEX, _STIFFNESS_SIGN = _gather(
-    [_STIFFNESS_TERMS.get((min(i, j), max(i, j)), ("aa", "1", 0.0))
-     for i in range(5) for j in range(5)], ("aa", "rr", "ar"))
-
-
-def _sums_over_balls(weights, functions):
-    """``sum_j w[n, j] functions[f, j]`` for each ``w`` of ``weights`` (each ``(N, Z)``),
-    side by side: ``(N, len(weights) * F)``.
-
-    Each point's balls are summed in one fixed order whatever the number of points, so a
-    point's numbers do not depend on the chunk it is computed in; a matrix product may not
-    give that (BLAS picks its kernels, and so its rounding, by the size of the batch).
-    """
-    return np.concatenate([np.einsum("nz,fz->nf", np.ascontiguousarray(weight), functions,
-                                     optimize=False) for weight in weights], axis=1)
-
-
 class _Rings:
-    """Ball loads and ring stiffness of one group of points with the same ball count.
+    """Per-point geometry of one group of points with the same ball count and geometry, for
+    the compiled equilibrium (:mod:`models.ball_equilibrium`).
 
     Per point: curvature-centre distance ``A``, unloaded contact angle, half clearance and
     contact constant, all ``(N,)``. ``geometry`` is 'jones' or 'fixed_angle'.
     """
 
     def __init__(self, ball_count, distance, contact_angle, half_clearance, constant, geometry):
-        azimuth = 2.0 * np.pi * np.arange(ball_count) / ball_count
-        self.cos_azimuth, self.sin_azimuth = np.cos(azimuth), np.sin(azimuth)
-        cos, sin = self.cos_azimuth, self.sin_azimuth
-        self.psi_functions = np.stack([np.ones(ball_count), cos, sin, cos * cos, sin * sin,
-                                       cos * sin])  # _PSI_FUNCTIONS, (6, Z)
-        self.distance, self.constant = distance, constant
+        from . import ball_equilibrium as compiled  # numba: imported only where it is used
+        self.compiled = compiled
+        self.psi = compiled.azimuth_functions(ball_count)
         self.jones = geometry == "jones"
-        self.sin0, self.cos0 = np.sin(contact_angle), np.cos(contact_angle)
-        self.axial0 = distance * self.sin0
-        self.radial0 = distance * self.cos0 - half_clearance
-        self.offset0 = half_clearance * self.cos0
+        sin0, cos0 = np.sin(contact_angle), np.cos(contact_angle)
+        self.offset0 = half_clearance * cos0
+        columns = {compiled.DISTANCE: distance, compiled.SIN0: sin0, compiled.COS0: cos0,
+                   compiled.AXIAL0: distance * sin0,
+                   compiled.RADIAL0: distance * cos0 - half_clearance,
+                   compiled.OFFSET0: self.offset0, compiled.CONSTANT: constant}
+        self.rings = np.stack([np.broadcast_to(columns[c], np.shape(distance)).astype(float)
+                               for c in range(compiled.COLUMNS)], -1)
+        self.constant = self.rings[:, compiled.CONSTANT]
 
     def contacts(self, scaled, index):
         """Each ball's approach, load, load slope, unit normal (axial and radial parts) and
-        centre distance at the displacement ``scaled`` (``(N, Z)`` each)."""
-        # A q and R q (see _PSI_FUNCTIONS), each term in a fixed order.
-        axial_shift = scaled[:, 0:1] + scaled[:, 3:4] * self.sin_azimuth \
-            - scaled[:, 4:5] * self.cos_azimuth
-        radial_shift = scaled[:, 1:2] * self.cos_azimuth + scaled[:, 2:3] * self.sin_azimuth
-        if self.jones:
-            separation_axial = self.axial0[index, None] + axial_shift
-            separation_radial = self.radial0[index, None] + radial_shift
-            length = np.hypot(separation_axial, separation_radial)
-            normal_axial, normal_radial = separation_axial / length, separation_radial / length
-            approach = length - self.distance[index, None]
-        else:
-            sin0, cos0 = self.sin0[index, None], self.cos0[index, None]
-            normal_axial = np.broadcast_to(sin0, axial_shift.shape)
-            normal_radial = np.broadcast_to(cos0, axial_shift.shape)
-            length = None
-            approach = axial_shift * sin0 + radial_shift * cos0 - self.offset0[index, None]
-        root = np.sqrt(np.maximum(approach, 0.0))
-        constant = self.constant[index, None]
-        load = constant * root**3  # K delta^1.5
-        slope = POINT_CONTACT_EXPONENT * constant * root
-        return approach, load, slope, normal_axial, normal_radial, length
-
-    def uniform_stiffness(self, approach, index):
-        """Stiffness with every ball at the approach ``approach`` ``(N,)`` and its unloaded
-        contact angle: a preloaded bearing's, to start the equilibrium iteration from."""
-        shape = (approach.size, self.sin_azimuth.size)
-        approach = np.broadcast_to(approach[:, None], shape)
-        root = np.sqrt(approach)
-        constant = self.constant[index, None]
-        return self.stiffness_of((
-            approach, constant * root**3, POINT_CONTACT_EXPONENT * constant * root,
-            np.broadcast_to(self.sin0[index, None], shape),
-            np.broadcast_to(self.cos0[index, None], shape),
-            self.distance[index, None] + approach))
+        centre distance (NaN in the fixed-angle geometry) at the displacement ``scaled`` of
+        the points ``index`` (``(n, Z)`` each)."""
+        return tuple(self.compiled.contacts_at(*self._points(scaled, index), self.rings,
+                                               self.jones, self.psi))
 
     def reaction(self, scaled, index):
-        """Scaled generalised force the balls put on the inner ring (paper eq. 6-7)."""
-        return self.reaction_of(self.contacts(scaled, index))
-
-    def reaction_of(self, contacts):
-        _, load, _, normal_axial, normal_radial, _ = contacts
-        sums = _sums_over_balls((load * normal_axial, load * normal_radial),
-                                self.psi_functions)
-        return sums[:, _REACTION_INDEX] * _REACTION_SIGN
+        """Scaled generalised force the balls put on the inner ring (paper eq. 6-7),
+        ``(n, 5)``."""
+        return self.compiled.sums_at(*self._points(scaled, index), self.rings, self.jones,
+                                     self.psi)[0]
 
     def stiffness(self, scaled, index):
-        """Scaled tangent stiffness d(reaction)/d(displacement), ``(N, 5, 5)`` (eq. 9)."""
-        return self.stiffness_of(self.contacts(scaled, index))
+        """Scaled tangent stiffness d(reaction)/d(displacement), ``(n, 5, 5)`` (eq. 9)."""
+        return self.compiled.sums_at(*self._points(scaled, index), self.rings, self.jones,
+                                     self.psi)[1]
 
-    def stiffness_of(self, contacts):
-        """The stiffness from :meth:`contacts`' results.
-
-        A ball's force ``Q(s) s/|s|`` on the centre separation ``s`` has the derivative
-        ``Q' n n^T + (Q/|s|)(I - n n^T)``: the second term, the turning of the line of
-        action, is what the fixed-angle geometry leaves out.
-        """
-        _, load, slope, normal_axial, normal_radial, length = contacts
-        axial_axial = slope * normal_axial**2
-        radial_radial = slope * normal_radial**2
-        mixed = slope * normal_axial * normal_radial
-        if self.jones:
-            turning = load / length
-            axial_axial = axial_axial + turning * normal_radial**2
-            radial_radial = radial_radial + turning * normal_axial**2
-            mixed = mixed - turning * normal_axial * normal_radial
-        sums = _sums_over_balls((axial_axial, radial_radial, mixed), self.psi_functions)
-        return (sums[:, _STIFFNESS_INDEX] * _STIFFNESS_SIGN).reshape(-1, 5, 5)
+    @staticmethod
+    def _points(scaled, index):
+        return (np.ascontiguousarray(scaled, dtype=float),
+                np.ascontiguousarray(index, dtype=np.int64))
 
 
 def ball_5dof(ball_count, ball_diameter, pitch_diameter, contact_angle,
@@ -366,8 +275,8 @@ def ball_5dof(ball_count, ball_diameter, pitch_diameter, contact_angle,
     (diameter, pitch, angle, inner_ratio, outer_ratio, clearance, modulus, poisson,
      *loads, given, pressure_limit, speed) = arrays[:16]
     life = arrays[16:]
-    inner, outer = raceway_contacts(diameter, pitch, angle, inner_ratio, outer_ratio, modulus,
-                                    poisson)
+    inner, outer = _per_distinct_row(raceway_contacts, diameter, pitch, angle, inner_ratio,
+                                     outer_ratio, modulus, poisson)
     hertz_ok = (inner["status"] == CONVERGED) & (outer["status"] == CONVERGED)
     hertz_constant = series_constant(inner["contact_constant"], outer["contact_constant"])
     constant = np.where(np.isnan(given), hertz_constant, given)
@@ -378,12 +287,10 @@ def ball_5dof(ball_count, ball_diameter, pitch_diameter, contact_angle,
     load = np.stack(loads, -1) / scale
     load[:, ~free] = 0.0
     rings = _Rings(ball_count, distance, angle, 0.5 * clearance, constant, geometry)
-    scaled, converged = _equilibrium(rings, load, free, ball_count)
-
-    everything = np.arange(load.shape[0])
-    stiffness = rings.stiffness(scaled, everything)
-    reduced = stiffness[:, free][:, :, free]
-    singular = _reciprocal_condition(reduced) < _SINGULAR
+    scaled, converged, stiffness, condition, contacts = _equilibrium(rings, load, free,
+                                                                     ball_count)
+    approach, ball_load, _, normal_axial, normal_radial, _ = contacts
+    singular = condition < _SINGULAR
     loaded = np.linalg.norm(load, axis=-1) > 0
     # A ring moved farther than the groove-centre distance A has left its bearing: the
     # iteration of a load the balls cannot balance runs away so (in the fixed-angle geometry,
@@ -393,7 +300,6 @@ def ball_5dof(ball_count, ball_diameter, pitch_diameter, contact_angle,
     status = np.select([~hertz_ok, ~converged & (singular | left_bearing), ~converged,
                         singular & loaded],
                        [NOT_CONVERGED, INFEASIBLE, NOT_CONVERGED, INFEASIBLE], CONVERGED)
-    approach, ball_load, _, normal_axial, normal_radial, _ = rings.contacts(scaled, everything)
     contact_angle = np.arctan2(normal_axial, normal_radial)
     # Both semi-axes grow as Q^(1/3), so p0 = 3Q/(2 pi a b) does too.
     unit_pressure = np.maximum(inner["max_pressure"], outer["max_pressure"])
@@ -430,6 +336,21 @@ def ball_5dof(ball_count, ball_diameter, pitch_diameter, contact_angle,
     return outputs
 
 
+def _per_distinct_row(function, *arrays):
+    """``function(*arrays)``, a tuple of dicts of per-point arrays, computed once for each
+    distinct row of the ``(N,)`` ``arrays``: a sweep's bearing is mostly the same at every
+    point, and its Hertz contacts cost as much as the equilibrium. Each row's numbers are
+    those of a call with that row alone."""
+    table = np.stack(arrays, -1)
+    if (table == table[:1]).all():
+        distinct, where = table[:1], np.zeros(len(table), dtype=int)
+    else:
+        distinct, where = np.unique(table, axis=0, return_inverse=True)
+    found = function(*distinct.T)
+    return tuple({name: np.asarray(value)[where.reshape(-1)] for name, value in part.items()}
+                 for part in found)
+
+
 def _reference_life(ball_load, rating, diameter, pitch, angle, inner_ratio, outer_ratio):
     """ISO/TS 16281's L10r of the inner ring rotating under the ball loads [10^6
     revolutions]; infinite without load, NaN without a rating."""
@@ -439,7 +360,8 @@ def _reference_life(ball_load, rating, diameter, pitch, angle, inner_ratio, oute
 
 
 def _equilibrium(rings: _Rings, load, free, ball_count):
-    """Displacements where the balls' reaction balances ``load`` in the free directions.
+    """Displacements where the balls' reaction balances ``load`` in the free directions, the
+    stiffness and each ball's contact there (:func:`models.ball_equilibrium.equilibria`).
 
     An unloaded bearing has no stiffness, so the damped Newton iteration starts from the
     displacement the load gives a bearing whose balls are all compressed as much as the load
@@ -452,26 +374,10 @@ def _equilibrium(rings: _Rings, load, free, ball_count):
     typical = (magnitude / (ball_count * rings.constant)) ** (1.0 / POINT_CONTACT_EXPONENT)
     damping = _START_DAMPING * POINT_CONTACT_EXPONENT * ball_count * rings.constant * np.sqrt(
         typical)
-    active = np.flatnonzero(magnitude > 0)  # unloaded points without preload stay centred
-    start = np.zeros_like(load)
-    preloaded = rings.uniform_stiffness(typical[active], active)[:, free][:, :, free]
-    start[active[:, None], free] = np.linalg.solve(
-        preloaded + damping[active, None, None] * np.eye(int(free.sum())),
-        load[active][:, free, None])[..., 0]
-
-    def evaluate(scaled, index):
-        contacts = rings.contacts(scaled, index)
-        return rings.reaction_of(contacts), rings.stiffness_of(contacts)
-
-    return solve_equilibrium(evaluate, start, load, damping,
-                             _RESIDUAL_TOLERANCE * magnitude, free, _MAX_ITERATIONS)
-
-
-def _reciprocal_condition(matrices):
-    """Smallest over largest singular value of each matrix (0 for a zero matrix)."""
-    values = np.linalg.svd(matrices, compute_uv=False)
-    with np.errstate(invalid="ignore", divide="ignore"):
-        return np.where(values[:, 0] > 0, values[:, -1] / values[:, 0], 0.0)
+    # Unloaded points without preload (typical 0) stay centred.
+    return rings.compiled.equilibria(
+        rings.rings, np.ascontiguousarray(load), typical, damping,
+        _RESIDUAL_TOLERANCE * magnitude, free, rings.jones, _MAX_ITERATIONS, rings.psi)
 
 
 def _fits(ball_count, pitch_diameter, ball_diameter):
@@ -524,7 +430,7 @@ MODELS = [Model(
             "pressures and rating lives (ISO/TS 16281, ISO 281).",
     reference="Paper 001, eq. 1-10; Jones (1960); Harris & Kotzalas, Rolling Bearing Analysis; "
               "ISO/TS 16281:2008; ISO 281:2007",
-    version="4",
+    version="5",
     inputs=(
         Input("ball_count", "1", "number of balls Z", kind="count", minimum=3, maximum=1000),
         Input("ball_diameter", "mm", "ball diameter D", minimum=0.0, exclusive_minimum=True),
@@ -613,7 +519,7 @@ MODELS = [Model(
                    "= [\"tilt_y\", \"tilt_z\"]) or use geometry 'jones'"),
     ),
     seconds_per_point=3e-5,
-    points_per_call=500,
+    points_per_call=4096,
     validity="max_contact_pressure above pressure_limit (default 4200 MPa, ISO 76:2006: the "
              "contact stress of the "
              "static load rating of ball bearings, where raceways deform permanently by about "
