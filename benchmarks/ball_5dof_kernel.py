@@ -24,8 +24,6 @@ pairs; prints the median of the pairs' ratios with the load average. The answers
 baseline of ball_5dof_throughput.py (reused) on the grid's first points against both.
 """
 import math
-import os
-import statistics
 import sys
 import time
 from pathlib import Path
@@ -41,6 +39,7 @@ from bearing_sweep.models.ball import MODELS, raceway_contacts
 sys.path.insert(0, str(Path(__file__).parent))
 from ball_5dof_throughput import BEARING, per_point  # noqa: E402  (the scipy baseline)
 from declared_costs import repeated  # noqa: E402
+from pairs import interleaved, ratio_line  # noqa: E402
 
 DEFINITION = """
 [sweep]
@@ -54,8 +53,6 @@ moment_y = { start = "-5 N*m", stop = "5 N*m", num = 4 }
 TOLERANCE = 1e-10  # ball_5dof's residual tolerance, relative to the load
 MAX_ITERATIONS = 200
 AGREEMENT = 1e-8  # answers: the residual tolerance through the stiffness, with margin
-PAIRS = 9
-SECONDS = 0.3  # of each side's runs in a pair
 
 
 #: Ball j's rows: A has the entries (1, sin psi, -cos psi) at dofs (0, 3, 4), B the entries
@@ -228,15 +225,6 @@ def bearing_terms(bearing):
                 unit_pressure=float(np.maximum(inner["max_pressure"], outer["max_pressure"])))
 
 
-def timed(work) -> float:
-    """Seconds per call of ``work`` over at least ``SECONDS``."""
-    calls, start = 0, time.perf_counter()
-    while time.perf_counter() - start < SECONDS:
-        work()
-        calls += 1
-    return (time.perf_counter() - start) / calls
-
-
 def largest_difference(ours, theirs):
     """Largest difference relative to each column's largest value (per dof, per entry)."""
     ours, theirs = np.asarray(ours, float), np.asarray(theirs, float)
@@ -273,21 +261,14 @@ def main():
                 largest_difference(outputs["max_contact_pressure"] * 1e6, compiled[4]))
     assert worst < AGREEMENT, f"model and kernel differ by {worst:.1e}"
 
-    ratios, model_times, kernel_times = [], [], []
-    load = os.getloadavg()
-    for _ in range(PAIRS):
-        model_times.append(timed(run_model) / grid.size)
-        kernel_times.append(timed(run_kernel) / grid.size)
-        ratios.append(model_times[-1] / kernel_times[-1])
-    ratio = statistics.median(ratios)
+    result = interleaved(run_model, run_kernel)
+    model_seconds, kernel_seconds = result[3] / grid.size, result[4] / grid.size
     print(f"ball_5dof against a compiled per-point kernel ({grid.size} points per call, "
           "71807AC, Jones, five free displacements)")
-    print(f"  baseline, numba kernel per point: {1e6 * statistics.median(kernel_times):7.2f} "
-          "us/point")
-    print(f"  ball_5dof through the engine:     {1e6 * statistics.median(model_times):7.2f} "
-          f"us/point; largest relative difference {worst:.1e}")
-    print(f"  ratio: {ratio:.2f}x (goal: within 1.5x); pairs {min(ratios):.2f}-"
-          f"{max(ratios):.2f}x, load average {load[0]:.2f} {load[1]:.2f} {load[2]:.2f}")
+    print(f"  baseline, numba kernel per point: {1e6 * kernel_seconds:7.2f} us/point")
+    print(f"  ball_5dof through the engine:     {1e6 * model_seconds:7.2f} us/point; "
+          f"largest relative difference {worst:.1e}")
+    print(ratio_line(result, "within 1.5x"))
 
     first = min(256, grid.size)  # the grid before its repetition
     began = time.perf_counter()
@@ -299,10 +280,9 @@ def main():
     assert scipy_worst < 1e-6, f"kernel and scipy differ by {scipy_worst:.1e}"
     print(f"ball_5dof and its kernel against the per-point scipy baseline ({first} points)")
     print(f"  baseline, scipy.optimize.root per point: {1e6 * scipy_seconds:9.1f} us/point")
-    print(f"  kernel {scipy_seconds / statistics.median(kernel_times):.0f}x faster; "
+    print(f"  kernel {scipy_seconds / kernel_seconds:.0f}x faster; "
           f"largest relative difference {scipy_worst:.1e}")
-    print(f"  ratio: {scipy_seconds / statistics.median(model_times):.0f}x ball_5dof over "
-          "scipy (goal: measured)")
+    print(f"  ratio: {scipy_seconds / model_seconds:.0f}x scipy over ball_5dof (goal: measured)")
 
 
 if __name__ == "__main__":
