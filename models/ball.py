@@ -110,12 +110,10 @@ class _Rings:
         self.jones = geometry == "jones"
         sin0, cos0 = np.sin(contact_angle), np.cos(contact_angle)
         self.offset0 = half_clearance * cos0
-        columns = {compiled.DISTANCE: distance, compiled.SIN0: sin0, compiled.COS0: cos0,
-                   compiled.AXIAL0: distance * sin0,
-                   compiled.RADIAL0: distance * cos0 - half_clearance,
-                   compiled.OFFSET0: self.offset0, compiled.CONSTANT: constant}
-        self.rings = np.stack([np.broadcast_to(columns[c], np.shape(distance)).astype(float)
-                               for c in range(compiled.COLUMNS)], -1)
+        # The columns DISTANCE..CONSTANT of models.ball_equilibrium, in its order.
+        self.rings = np.stack(np.broadcast_arrays(
+            distance, sin0, cos0, distance * sin0, distance * cos0 - half_clearance,
+            self.offset0, constant), -1).astype(float)
         self.constant = self.rings[:, compiled.CONSTANT]
 
     def contacts(self, scaled, index):

@@ -1,9 +1,9 @@
 """The inner ring's equilibrium of :func:`models.ball.ball_5dof`, one point at a time, compiled.
 
-Across a block of points in numpy, each damped Newton iteration made some forty array calls on
-``(points, balls)`` temporaries: the calls' overhead dominated small blocks, and the
-temporaries' memory traffic large ones (a 10 000-point block no longer fits in the cache).
-Point by point a step is a few hundred floating-point operations on arrays of one ball row.
+Across a block of points in numpy, each damped Newton iteration made some forty array calls,
+each a pass over ``(points, balls)`` temporaries: the calls' overhead dominated small blocks,
+memory traffic large ones. Point by point a step is a few hundred floating-point operations on
+arrays of one row of balls, and a point stops iterating when it has converged.
 
 The equations are those of :mod:`models.ball` (module docstring, :func:`ball_contacts`,
 :func:`ring_sums`); the iteration is :func:`models.solvers.solve_equilibrium`'s, for one point.
@@ -294,8 +294,8 @@ def equilibria(rings, load, typical, damping, tolerance, free, jones, max_iterat
     condition = np.empty(count)
     contacts = [np.empty((count, balls)) for _ in range(6)]
     dofs = np.flatnonzero(free)
-    balls_here = [np.empty(balls) for _ in range(6)]
-    approach, ball_load, slope, normal_axial, normal_radial, length = balls_here
+    approach, ball_load, slope, normal_axial, normal_radial, length = [
+        np.empty(balls) for _ in range(6)]
     reaction, residual, step = np.empty(DOFS), np.empty(DOFS), np.empty(DOFS)
     trial, trial_residual = np.empty(DOFS), np.empty(DOFS)
     trial_stiffness = np.empty((DOFS, DOFS))
