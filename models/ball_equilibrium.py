@@ -9,7 +9,9 @@ The equations are those of :mod:`models.ball` (module docstring, :func:`ball_con
 :func:`ring_sums`); the iteration is :func:`models.solvers.solve_equilibrium`'s, for one point.
 Each point's balls are summed in their order and compiled without ``fastmath`` (no
 reassociation), so a point's numbers depend neither on the other points of the call nor on the
-machine's vector width.
+machine's vector width; and with numpy's error model, so that a division by zero gives an
+infinity or NaN as the vectorised model did (that point then does not converge) rather than an
+exception for the whole block.
 
 Per-point data come as the rows of one ``rings`` array, columns ``DISTANCE..CONSTANT``; the
 ball azimuths as ``psi``, rows ``1, cos, sin, cos cos, sin sin, cos sin`` of ``(6, Z)``.
@@ -39,7 +41,7 @@ def azimuth_functions(ball_count):
     return np.stack([np.ones(ball_count), cos, sin, cos * cos, sin * sin, cos * sin])
 
 
-@njit(cache=True, inline="always")
+@njit(cache=True, error_model="numpy", inline="always")
 def _ball(scaled, ring, jones, cos, sin):
     """One ball's approach, load, load slope, unit normal (axial and radial parts) and centre
     distance (NaN in the fixed-angle geometry) at the scaled displacement ``scaled``.
@@ -70,7 +72,7 @@ def _ball(scaled, ring, jones, cos, sin):
     return approach, load, EXPONENT * ring[CONSTANT] * root, normal_axial, normal_radial, length
 
 
-@njit(cache=True)
+@njit(cache=True, error_model="numpy")
 def ball_contacts(scaled, ring, jones, psi, approach, load, slope, normal_axial, normal_radial,
                   length):
     """:func:`_ball` of every ball, written into the ``(Z,)`` arrays given."""
@@ -79,7 +81,7 @@ def ball_contacts(scaled, ring, jones, psi, approach, load, slope, normal_axial,
          length[ball]) = _ball(scaled, ring, jones, psi[1, ball], psi[2, ball])
 
 
-@njit(cache=True)
+@njit(cache=True, error_model="numpy")
 def preloaded_contacts(typical, ring, approach, load, slope, normal_axial, normal_radial,
                        length):
     """:func:`ball_contacts` of a preloaded bearing whose balls are all compressed by
@@ -93,7 +95,7 @@ def preloaded_contacts(typical, ring, approach, load, slope, normal_axial, norma
     length[:] = ring[DISTANCE] + typical
 
 
-@njit(cache=True)
+@njit(cache=True, error_model="numpy")
 def ring_sums(load, slope, normal_axial, normal_radial, length, jones, psi, reaction,
               stiffness):
     """The balls' scaled reaction on the ring (paper 001 eq. 6-7) and its tangent stiffness
@@ -156,7 +158,7 @@ def ring_sums(load, slope, normal_axial, normal_radial, length, jones, psi, reac
             stiffness[row, column] = stiffness[column, row]
 
 
-@njit(cache=True)
+@njit(cache=True, error_model="numpy")
 def _damped_step(stiffness, damping, residual, dofs, matrix, step):
     """``step`` on the free ``dofs``: ``(K + mu I) step = residual`` restricted to them, by
     Gaussian elimination with partial pivoting; 0 elsewhere."""
@@ -187,7 +189,7 @@ def _damped_step(stiffness, damping, residual, dofs, matrix, step):
         step[dofs[row]] = value / matrix[row, row]
 
 
-@njit(cache=True)
+@njit(cache=True, error_model="numpy")
 def _residual(load, reaction, free, residual):
     """``load - reaction`` in the free directions (0 in the held ones), and its norm."""
     total = 0.0
@@ -197,7 +199,7 @@ def _residual(load, reaction, free, residual):
     return math.sqrt(total)
 
 
-@njit(cache=True)
+@njit(cache=True, error_model="numpy")
 def reciprocal_condition(stiffness, dofs, matrix):
     """Smallest over largest singular value of the stiffness restricted to the free ``dofs``
     (0 for a zero matrix), by cyclic Jacobi rotations in ``matrix``.
@@ -248,7 +250,7 @@ def reciprocal_condition(stiffness, dofs, matrix):
     return smallest / largest if largest > 0.0 else (0.0 if largest == 0.0 else largest)
 
 
-@njit(cache=True)
+@njit(cache=True, error_model="numpy")
 def equilibria(rings, load, typical, damping, tolerance, free, jones, max_iterations, psi):
     """Each point's scaled displacement where the balls balance ``load`` in the ``free``
     directions, by :func:`models.solvers.solve_equilibrium`'s damped Newton iteration.
@@ -341,7 +343,7 @@ def equilibria(rings, load, typical, damping, tolerance, free, jones, max_iterat
     return scaled, converged, stiffness, condition, contacts
 
 
-@njit(cache=True)
+@njit(cache=True, error_model="numpy")
 def contacts_at(scaled, index, rings, jones, psi):
     """:func:`ball_contacts` of the points ``index`` at ``scaled``: six ``(n, Z)`` arrays."""
     count, balls = scaled.shape[0], psi.shape[1]
@@ -353,7 +355,7 @@ def contacts_at(scaled, index, rings, jones, psi):
     return found
 
 
-@njit(cache=True)
+@njit(cache=True, error_model="numpy")
 def sums_at(scaled, index, rings, jones, psi):
     """:func:`ring_sums` of the points ``index`` at ``scaled``: the scaled reactions
     ``(n, 5)`` and tangent stiffnesses ``(n, 5, 5)``."""
