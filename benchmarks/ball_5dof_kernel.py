@@ -1,15 +1,16 @@
 """ball_5dof through the engine against a compiled per-point kernel of the same equilibrium.
 
-Kernel (baseline): written here with numba, as a user would write ball_5dof for one point at a
-time, in Jones' geometry: the same start (every ball compressed as ``Z K delta^1.5 = |F|``
-would compress it, at its unloaded contact angle), the same damped Newton iteration (damping
-1 % of that start's stiffness, times 0.2 on a step taken and 5 on one refused), the same
-tolerance (residual within 1e-10 of the load, tilts times and moments over the groove radius
-R) and at most 200 iterations; each ball's force and stiffness summed onto the ring through the
-non-zero entries of its rows ``A = (1, 0, 0, sin psi, -cos psi)`` and ``B = (0, cos psi,
-sin psi, 0, 0)``, the damped system solved by Gaussian elimination; then the stiffness matrix, ball loads, contact angles
-and contact pressures (``p0 = p1 Q^(1/3)`` with the Hertz pressure ``p1`` at 1 N of the
-bearing, computed once) at the solution.
+Kernel (baseline): written here with numba (numpy's error model: no zero-division checks), as a
+user would write ball_5dof for one point at a time, in Jones' geometry: the same start (every
+ball compressed as ``Z K delta^1.5 = |F|`` would compress it, at its unloaded contact angle),
+the same damped Newton iteration (damping 1 % of that start's stiffness, times 0.2 on a step
+taken and 5 on one refused), the same tolerance (residual within 1e-10 of the load, tilts times
+and moments over the groove radius R) and at most 200 iterations; each ball's force and
+stiffness summed onto the ring through the non-zero entries of its rows ``A = (1, 0, 0, sin
+psi, -cos psi)`` and ``B = (0, cos psi, sin psi, 0, 0)``, the damped system solved by Gaussian
+elimination; then the stiffness matrix, ball loads, contact angles and contact pressures (``p0
+= p1 Q^(1/3)`` with the Hertz pressure ``p1`` at 1 N of the bearing, computed once) at the
+solution.
 
 Model: ``ball_5dof`` through the engine's chunk evaluation
 (``bearing_sweep.compute.evaluate_chunk`` on a Grid), in blocks of its declared
@@ -60,7 +61,7 @@ AGREEMENT = 1e-8  # answers: the residual tolerance through the stiffness, with 
 A_DOFS, B_DOFS = (0, 3, 4), (1, 2)
 
 
-@njit(cache=True)
+@njit(cache=True, error_model="numpy")
 def balls(q, distance, angle, half_clearance, constant, rows, load, slope, normal, length):
     """Each ball's load, slope, normal (axial, radial) and centre distance at the scaled
     ``q``, into the arrays given."""
@@ -78,7 +79,7 @@ def balls(q, distance, angle, half_clearance, constant, rows, load, slope, norma
         slope[j] = 1.5 * constant * math.sqrt(delta) if delta > 0.0 else 0.0
 
 
-@njit(cache=True)
+@njit(cache=True, error_model="numpy")
 def ring(rows, load, slope, normal, length, force, matrix):
     """Reaction (5,) and tangent stiffness (5, 5) summed over the balls, into the arrays
     given: ball j adds Q (n_a A + n_b B) and k_aa A A^T + k_bb B B^T + k_ab (A B^T + B A^T),
@@ -105,7 +106,7 @@ def ring(rows, load, slope, normal, length, force, matrix):
                 matrix[B_DOFS[u], B_DOFS[v]] += k_bb * rows[j, 3 + u] * rows[j, 3 + v]
 
 
-@njit(cache=True)
+@njit(cache=True, error_model="numpy")
 def solve(matrix, damping, right, work, x):
     """``(matrix + damping I) x = right`` by Gaussian elimination with partial pivoting,
     ``work`` (5, 6) scratch."""
@@ -132,7 +133,7 @@ def solve(matrix, damping, right, work, x):
         x[r] = total / work[r, r]
 
 
-@njit(cache=True)
+@njit(cache=True, error_model="numpy")
 def kernel(loads, ball_count, distance, angle, half_clearance, constant, radius, unit_pressure):
     """Displacement (N, 5), stiffness (N, 5, 5), ball loads, contact angles and pressures
     (N, Z) and convergence of every point, one at a time (loads (N, 5) in SI)."""

@@ -1,12 +1,12 @@
 """crb_runout through the engine against a compiled per-point kernel and a per-step scipy solve.
 
-Kernel (baseline): written here with numba, crb_runout for one bearing at a time and one
-rotation step after another: the rollers' azimuths and spins (paper 004 eq. 1-3, spin in the
-translating frame), each lower roller's room along its radius line between the raceways
-(eq. 4-6), and the inner-ring centre at the lowest vertex of the upper envelope of those lines,
-found as the model finds it (every falling-rising pair, a vertex only where no third line lies
-above it, lines within 1e-13 m meeting); then the runout (largest minus smallest centre
-distance) and the vertical runout.
+Kernel (baseline): written here with numba (numpy's error model: no zero-division checks),
+crb_runout for one bearing at a time and one rotation step after another: the rollers' azimuths
+and spins (paper 004 eq. 1-3, spin in the translating frame), each lower roller's room along
+its radius line between the raceways (eq. 4-6), and the inner-ring centre at the lowest vertex
+of the upper envelope of those lines, found as the model finds it (every falling-rising pair, a
+vertex only where no third line lies above it, lines within 1e-13 m meeting); then the runout
+(largest minus smallest centre distance) and the vertical runout.
 
 Scipy baseline: crb_runout_throughput.py's per-step ``scipy.optimize.linprog`` (reused), on
 the grid's point that has its roller errors, roundness order 4 and phase 0.
@@ -55,7 +55,7 @@ TIE = 1e-13  # [m], crb_runout's lines that meet
 AGREEMENT = 1e-6  # [um]
 
 
-@njit(cache=True)
+@njit(cache=True, error_model="numpy")
 def kernel(inner, outer, diameter, error, order, amplitude, phase, steps):
     """Centre x, y (N, S) [m], runout and vertical runout (N,) of every bearing."""
     count, rollers = error.shape

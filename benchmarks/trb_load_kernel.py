@@ -1,13 +1,14 @@
 """trb_load through the engine against a compiled per-point kernel and a per-point scipy solve.
 
-Kernel (baseline): written here with numba, trb_load for one point at a time: roller ``i``
-compressed by ``delta_r cos(psi_i) cos(alpha) + delta_a sin(alpha)``, ``Q_i = K delta_i^1.11``
-(paper 003 eq. 13-18), the same start (``delta_a`` of eq. 15, every roller loaded alike by
-``F_a``, with ``delta_r = delta_a tan(alpha) / 2``), the same damped Newton iteration
-(damping 1 % of the start's stiffness, times 0.2 on a step taken and 5 on one refused), the
-same tolerance (residual within 1e-12 of the load) and at most 200 iterations; then the roller
-loads and cone contact pressures at the solution (``p0 = (Q/l E* sum(rho) / pi)^(1/2)``, the
-bearing's ``E*`` and curvature sum computed once).
+Kernel (baseline): written here with numba (numpy's error model: no zero-division checks),
+trb_load for one point at a time: roller ``i`` compressed by ``delta_r cos(psi_i) cos(alpha) +
+delta_a sin(alpha)``, ``Q_i = K delta_i^1.11`` (paper 003 eq. 13-18), the same start
+(``delta_a`` of eq. 15, every roller loaded alike by ``F_a``, with ``delta_r = delta_a
+tan(alpha) / 2``), the same damped Newton iteration (damping 1 % of the start's stiffness,
+times 0.2 on a step taken and 5 on one refused), the same tolerance (residual within 1e-12 of
+the load) and at most 200 iterations; then the roller loads and cone contact pressures at the
+solution (``p0 = (Q/l E* sum(rho) / pi)^(1/2)``, the bearing's ``E*`` and curvature sum
+computed once).
 
 Scipy baseline: ``scipy.optimize.root`` (MINPACK hybrid method) per point on the same two
 equations with the analytic Jacobian, from the same start.
@@ -54,7 +55,7 @@ MAX_ITERATIONS = 200
 SCIPY_POINTS = 128
 
 
-@njit(cache=True)
+@njit(cache=True, error_model="numpy")
 def reaction(x_r, x_a, rows, constant):
     """Force (r, a) and stiffness (rr, ra, aa) the rollers put on the ring at (x_r, x_a)."""
     n = LOAD_EXPONENT
@@ -71,7 +72,7 @@ def reaction(x_r, x_a, rows, constant):
     return f_r, f_a, k_rr, k_ra, k_aa
 
 
-@njit(cache=True)
+@njit(cache=True, error_model="numpy")
 def kernel(radial, axial, roller_count, constant, angle, length, curvature, modulus):
     """Displacements (N, 2), roller loads and pressures (N, Z) and convergence per point."""
     count, n = radial.size, LOAD_EXPONENT
