@@ -13,6 +13,9 @@ residual.
 from __future__ import annotations
 
 import functools
+import importlib
+import importlib.util
+import sys
 
 import numpy as np
 
@@ -104,8 +107,7 @@ class _Rings:
     """
 
     def __init__(self, ball_count, distance, contact_angle, half_clearance, constant, geometry):
-        from . import ball_equilibrium as compiled  # numba: imported only where it is used
-        self.compiled = compiled
+        self.compiled = compiled = _kernels(np.size(distance))
         self.psi = compiled.azimuth_functions(ball_count)
         self.jones = geometry == "jones"
         sin0, cos0 = np.sin(contact_angle), np.cos(contact_angle)
@@ -120,19 +122,22 @@ class _Rings:
         """Each ball's approach, load, load slope, unit normal (axial and radial parts) and
         centre distance (NaN in the fixed-angle geometry) at the displacement ``scaled`` of
         the points ``index`` (``(n, Z)`` each)."""
-        return tuple(self.compiled.contacts_at(*self._points(scaled, index), self.rings,
-                                               self.jones, self.psi))
+        with np.errstate(all="ignore"):  # IEEE results, as compiled
+            return tuple(self.compiled.contacts_at(*self._points(scaled, index), self.rings,
+                                                   self.jones, self.psi))
 
     def reaction(self, scaled, index):
         """Scaled generalised force the balls put on the inner ring (paper eq. 6-7),
         ``(n, 5)``."""
-        return self.compiled.sums_at(*self._points(scaled, index), self.rings, self.jones,
-                                     self.psi)[0]
+        with np.errstate(all="ignore"):
+            return self.compiled.sums_at(*self._points(scaled, index), self.rings,
+                                         self.jones, self.psi)[0]
 
     def stiffness(self, scaled, index):
         """Scaled tangent stiffness d(reaction)/d(displacement), ``(n, 5, 5)`` (eq. 9)."""
-        return self.compiled.sums_at(*self._points(scaled, index), self.rings, self.jones,
-                                     self.psi)[1]
+        with np.errstate(all="ignore"):
+            return self.compiled.sums_at(*self._points(scaled, index), self.rings,
+                                         self.jones, self.psi)[1]
 
     @staticmethod
     def _points(scaled, index):
@@ -373,9 +378,42 @@ def _equilibrium(rings: _Rings, load, free, ball_count):
     damping = _START_DAMPING * POINT_CONTACT_EXPONENT * ball_count * rings.constant * np.sqrt(
         typical)
     # Unloaded points without preload (typical 0) stay centred.
-    return rings.compiled.equilibria(
-        rings.rings, np.ascontiguousarray(load), typical, damping,
-        _RESIDUAL_TOLERANCE * magnitude, free, rings.jones, _MAX_ITERATIONS, rings.psi)
+    with np.errstate(all="ignore"):
+        return rings.compiled.equilibria(
+            rings.rings, np.ascontiguousarray(load), typical, damping,
+            _RESIDUAL_TOLERANCE * magnitude, free, rings.jones, _MAX_ITERATIONS, rings.psi)
+
+
+#: Points this process may compute with the interpreted equilibrium before it loads the
+#: compiled one: about as long (1.6 ms a point) as numba takes to import and load it (0.5 s),
+#: so a small sweep never pays for numba, and a large one pays at most twice that.
+INTERPRETED_POINTS = 300
+_interpreted_points = 0
+
+
+def _kernels(points):
+    """:mod:`models.ball_equilibrium`, compiled or interpreted (the same numbers) for a call of
+    ``points`` points: interpreted while numba is not loaded and this process has computed
+    fewer than ``INTERPRETED_POINTS`` points so."""
+    global _interpreted_points
+    compiled = f"{__package__}.ball_equilibrium"
+    if compiled in sys.modules or _interpreted_points + points > INTERPRETED_POINTS:
+        return importlib.import_module(compiled)
+    _interpreted_points += points
+    return _interpreted_kernels()
+
+
+def _interpreted_kernels():
+    """:mod:`models.ball_equilibrium`'s source run by the interpreter, numba not imported."""
+    name = f"{__package__}._ball_equilibrium_interpreted"
+    if name not in sys.modules:
+        spec = importlib.util.spec_from_file_location(
+            name, importlib.util.find_spec(f"{__package__}.ball_equilibrium").origin)
+        module = importlib.util.module_from_spec(spec)
+        module.INTERPRETED = True  # read by the module: no numba
+        spec.loader.exec_module(module)
+        sys.modules[name] = module
+    return sys.modules[name]
 
 
 def _fits(ball_count, pitch_diameter, ball_diameter):

@@ -15,15 +15,24 @@ exception for the whole block.
 
 Per-point data come as the rows of one ``rings`` array, columns ``DISTANCE..CONSTANT``; the
 ball azimuths as ``psi``, rows ``1, cos, sin, cos cos, sin sin, cos sin`` of ``(6, Z)``.
+
+:func:`models.ball._kernels` also runs this same source without numba (``INTERPRETED`` set
+before it runs): IEEE operations in the same order give the same numbers (a test holds them
+bitwise equal), in about 1.6 ms a point against numba's 0.5 s to import and load its cached
+code, which a sweep of a few hundred points need not pay.
 """
 from __future__ import annotations
 
 import math
 
 import numpy as np
-from numba import njit
-
 from .contact import POINT_CONTACT_EXPONENT as EXPONENT
+
+if globals().get("INTERPRETED"):  # set by interpreted(): the same functions, not compiled
+    def njit(*_, **__):
+        return lambda function: function
+else:
+    from numba import njit
 
 #: Columns of ``rings``: groove-centre distance ``A`` [m], sine and cosine of the unloaded
 #: contact angle, the unloaded centre separation along the axis and the radius [m], the
@@ -57,8 +66,9 @@ def _ball(scaled, ring, jones, cos, sin):
     if jones:
         separation_axial = ring[AXIAL0] + axial_shift
         separation_radial = ring[RADIAL0] + radial_shift
-        length = math.sqrt(separation_axial * separation_axial
-                           + separation_radial * separation_radial)
+        # np.sqrt: a float64 either way, so a zero length divides as numpy does, interpreted.
+        length = np.sqrt(separation_axial * separation_axial
+                         + separation_radial * separation_radial)
         reciprocal = 1.0 / length
         normal_axial = separation_axial * reciprocal
         normal_radial = separation_radial * reciprocal
@@ -369,3 +379,4 @@ def sums_at(scaled, index, rings, jones, psi):
         ring_sums(load, slope, normal_axial, normal_radial, length, jones, psi,
                   reaction[point], stiffness[point])
     return reaction, stiffness
+

@@ -42,3 +42,39 @@ def test_a_bearing_of_several_geometries_gives_each_points_own_numbers():
         for name, values in alone.items():
             assert values.tobytes() == together[name][point:point + 1].tobytes(), name
     assert np.unique(together["hertz_contact_constant"]).size == 3
+
+
+def test_the_interpreted_equilibrium_gives_the_compiled_ones_bits(monkeypatch):
+    # A small sweep runs the equilibrium's source uncompiled (no numba to load): its numbers
+    # must be the compiled ones to the bit, or results would depend on the sweep's size.
+    import importlib
+
+    from bearing_sweep.models import ball
+
+    compiled = importlib.import_module("bearing_sweep.models.ball_equilibrium")
+    interpreted = ball._interpreted_kernels()
+    assert interpreted is not compiled and interpreted.INTERPRETED
+    rng = np.random.default_rng(5)
+    count = 12
+    points = dict(axial_load=rng.uniform(-500.0, 3000.0, count),
+                  radial_load=rng.uniform(-2000.0, 2000.0, count),
+                  radial_load_z=rng.uniform(-800.0, 800.0, count),
+                  clearance=rng.uniform(-0.004, 0.02, count) * MM,
+                  contact_angle=np.radians(rng.uniform(0.0, 40.0, count)))
+    points["axial_load"][:2] = 0.0  # unloaded: centred, or held by the preload alone
+    points["radial_load"][:2] = points["radial_load_z"][:2] = 0.0
+    points["axial_load"][2] = np.nan
+    bearing = dict(ball_count=11, ball_diameter=6 * MM, pitch_diameter=40 * MM,
+                   dynamic_load_rating=9e3)
+    for geometry, held in (("jones", ""), ("jones", "tilt_y tilt_z"),
+                           ("fixed_angle", "tilt_y tilt_z"), ("jones", "axial radial_z")):
+        if "radial_z" in held:
+            points["radial_load_z"] = np.zeros(count)
+        results = []
+        for module in (compiled, interpreted):
+            monkeypatch.setattr(ball, "_kernels", lambda points, module=module: module)
+            results.append(ball.ball_5dof(**bearing, **points, geometry=geometry,
+                                          fixed_dofs=held))
+        assert set(np.unique(results[0]["status"])) > {0}  # failures are compared too
+        for name, values in results[0].items():
+            assert values.tobytes() == results[1][name].tobytes(), (geometry, held, name)
