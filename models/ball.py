@@ -554,10 +554,11 @@ MODELS = [Model(
                    "with a radial shift changes no ball's approach; hold the tilts (fixed_dofs "
                    "= [\"tilt_y\", \"tilt_z\"]) or use geometry 'jones'"),
     ),
-    # Through the engine, one core: 2.3e-5 s/point under a load average of 4 on two cores,
-    # about 1.1e-5 on a quiet one (studies/ball_stiffness/unstated_inputs.toml, 3072 points,
-    # and benchmarks/declared_costs.py's grid). Compiled point by point, the model keeps few
-    # temporaries: blocks of 4096 points pay its per-call overhead (~1 ms) seldom.
+    # Through the engine, one core, on two cores shared with others (load average 3-4):
+    # 1.1e-5 to 1.6e-5 s/point on studies/ball_stiffness/unstated_inputs.toml (3072 points)
+    # and on benchmarks/declared_costs.py's grid; 2.3e-5 at a load of 4-5. Compiled point by
+    # point, the model keeps few temporaries: blocks of 4096 points pay its per-call overhead
+    # (~1 ms) seldom.
     seconds_per_point=1.5e-5,
     points_per_call=4096,
     validity="max_contact_pressure above pressure_limit (default 4200 MPa, ISO 76:2006: the "
