@@ -11,8 +11,7 @@ from .bearing_life import (DEFAULT_CONTAMINATION_FACTOR, LIFE_INPUTS, life_outpu
                            rating_lives)
 from .contact import (APPROACH_LIMIT, LINE_CONTACT_EXPONENT, ROLLER_PRESSURE_LIMIT,
                             SLICE_LAWS, effective_modulus, largest_slice_line_load,
-                            line_contact_pressure, palmgren_constant, slice_loads,
-                            sliced_line_contact)
+                            line_contact_pressure, palmgren_constant, slice_loads)
 from .geometry import elements_fit
 from .life import roller_bearing_reference_life
 from .lubrication import CELSIUS
@@ -101,6 +100,10 @@ class _RollerSet:
             self.floor = (self.crown[:, None, None] * self.gap_shape  # (P, Z): smallest gap
                           - self.tilt[..., None] * self.slice_position).min(axis=-1)
         self.slice_law, self.outer_contact = slice_law, outer_contact
+        # Each roller's gaps in rising order, as the compiled balance sums the touching ones
+        # (``(P, 1, m)`` without tilt, where the distinct gaps already rise).
+        self.sorted_gaps = np.ascontiguousarray(
+            self.all_gaps() if self.tilt is None else np.sort(self.all_gaps(), axis=-1))
         self.free_outer_approach, self.free_outer_converged = self._free_outer_approach()
 
     def gaps(self, points, rollers):
@@ -130,27 +133,6 @@ class _RollerSet:
         ``(p, Z)`` (eq. 1)."""
         total = displacement[:, None] * self.cos[points] - self.half_clearance[points, None]
         return total if self.tilt is None else total - 2.0 * self.floor[points]
-
-    def contacts(self, inner_approach, outer_approach, points, rollers):
-        """Inner load, outer load and the load the outer contact is balanced against, of the
-        rollers ``rollers`` of the bearings ``points``.
-
-        Returns ``(Qi, dQi, Qo, dQo, Qt, dQt)`` [N, N/m]: the roller's force balance is
-        ``Qo(outer) = Qt(inner) + Fc``. With ``outer_contact='crowned'`` both contacts are the
-        same sliced crowned contact and ``Qt = Qi``. With ``'paper'`` (eq. 6 of paper 000) the
-        outer contact is a straight roller, ``Qo = K delta_o^n``, balanced against
-        ``Qt = K delta_i^n`` rather than the crowned ``Qi`` of eq. 9.
-        """
-        constant = self.constant[points]
-        gaps = self.gaps(points, rollers)
-        inner = sliced_line_contact(inner_approach, gaps, self.gap_count, constant, self.slice_law)
-        if self.outer_contact == "crowned":
-            outer = sliced_line_contact(outer_approach, gaps, self.gap_count, constant,
-                                        self.slice_law)
-            return inner + outer + inner
-        outer = sliced_line_contact(outer_approach, _NO_GAP, _ONE_SLICE, constant)
-        balanced = sliced_line_contact(inner_approach, _NO_GAP, _ONE_SLICE, constant)
-        return inner + outer + balanced
 
     def approaches(self, displacement, inner_deflection):
         """Inner and outer contact approach of every roller [m], ``(P, Z)``, at the solution.
@@ -195,31 +177,21 @@ class _RollerSet:
         ``(P, 1)``, or ``(P, Z)`` with tilt (each roller's own gaps, so that a roller the ring
         begins to load has a bracketed force balance), and whether each point's was found
         ``(P,)``."""
+        from .cylindrical_balance import free_outer_approaches  # numba: only when solving
+
         n = LINE_CONTACT_EXPONENT
         plain = (self.centrifugal / self.constant) ** (1.0 / n)
         if self.outer_contact == "paper":
             return plain[:, None], np.isfinite(plain)
-        shape = self.cos.shape if self.tilt is not None else (plain.size, 1)
-        points, rollers = np.indices(shape).reshape(2, -1)
-        approach = np.zeros(points.size)
-        converged = np.isfinite(plain)[points]
-        spinning = np.flatnonzero(self.centrifugal[points] > 0.0)
-        if spinning.size:
-            # Every slice is in contact beyond the largest gap, so Qo >= K (delta - gap)^n.
-            owner = points[spinning]
-            upper = self.largest_gap[owner] + plain[owner]
+        approach = np.zeros(self.sorted_gaps.shape[:2])
+        converged = np.repeat(np.isfinite(plain)[:, None], approach.shape[1], axis=1)
+        # Every slice is in contact beyond the largest gap, so Qo >= K (delta - gap)^n.
+        free_outer_approaches(self.sorted_gaps, self.gap_count, self.constant, self.centrifugal,
+                              self.slice_law == "paper", self.largest_gap + plain, _XTOL,
+                              approach, converged)
+        return approach, converged.all(axis=-1)
 
-            def residual(outer, index):
-                entries = spinning[index]
-                _, _, load, stiffness, _, _ = self.contacts(outer, outer, points[entries],
-                                                            rollers[entries])
-                return load - self.centrifugal[points[entries]], stiffness
-
-            approach[spinning], converged[spinning] = solve_increasing(
-                residual, np.zeros(spinning.size), upper, 0.5 * upper, _XTOL * upper)
-        return approach.reshape(shape), converged.reshape(shape).all(axis=-1)
-
-    def loads(self, displacement, points, share):
+    def loads(self, displacement, points, split):
         """Roller loads and bearing load and stiffness at given radial displacements.
 
         Parameters
@@ -228,9 +200,10 @@ class _RollerSet:
             Radial displacement ``delta_r`` of the bearings ``points`` [m], shape ``(p,)``.
         points : numpy.ndarray
             Indices of the bearings evaluated.
-        share : numpy.ndarray
-            Initial guess of each roller's inner deflection as a fraction of its available
-            approach, shape ``(p, Z)``; updated in place with the solution.
+        split : numpy.ndarray
+            Each roller's last solution, from which its solve starts: inner approach, total
+            approach and their derivative (NaN: none yet), shape ``(p, Z, 3)``; updated in
+            place with the solution.
 
         Returns
         -------
@@ -242,42 +215,20 @@ class _RollerSet:
         converged : numpy.ndarray of bool
             Every roller's force balance converged, ``(p,)``.
         """
+        from .cylindrical_balance import roller_balances  # numba: only when solving
+
         total = self.total_approach(displacement, points)
         available = total - self.free_outer_approach[points]
-        loaded = available > 0.0
-        owner = np.broadcast_to(points[:, None], loaded.shape)[loaded]
-        roller = np.broadcast_to(np.arange(loaded.shape[1]), loaded.shape)[loaded]
-        entry_total, entry_available = total[loaded], available[loaded]
-        cache = {}
-
-        def residual(inner, index):
-            # Roller force balance Qo(total - inner) = Qt(inner) + Fc (eq. 2, 6).
-            result = self.contacts(inner, entry_total[index] - inner, owner[index],
-                                   roller[index])
-            for name, value in zip(("qi", "ki", "qo", "ko", "qt", "kt"), result):
-                cache.setdefault(name, np.empty(entry_total.size))[index] = value
-            return result[4] + self.centrifugal[owner[index]] - result[2], result[5] + result[3]
-
-        inner, converged = solve_increasing(
-            residual, np.zeros(entry_total.size), entry_available,
-            share[loaded] * entry_available, _XTOL * entry_available)
-        share[loaded] = inner / entry_available
-        roller_load = np.zeros(total.shape)
-        roller_stiffness = np.zeros(total.shape)
-        inner_deflection = available.copy()
-        if entry_total.size:
-            roller_load[loaded] = cache["qi"]
-            # Series contacts: dQi/d(delta_rj) = Qi' Qo' / (Qo' + Qt') (eq. 14, generalised).
-            with np.errstate(invalid="ignore"):
-                roller_stiffness[loaded] = cache["ki"] * cache["ko"] / (cache["ko"] + cache["kt"])
-            roller_stiffness[loaded] = np.nan_to_num(roller_stiffness[loaded])  # 0/0 at contact
-            inner_deflection[loaded] = inner
-        all_converged = np.ones(total.shape, dtype=bool)
-        all_converged[loaded] = converged
+        roller_load, roller_stiffness, inner_deflection = (np.empty(total.shape)
+                                                           for _ in range(3))
+        # Roller force balance Qo(total - inner) = Qt(inner) + Fc (eq. 2, 6).
+        converged = roller_balances(
+            total, available, points, self.sorted_gaps, self.gap_count, self.constant,
+            self.centrifugal, self.slice_law == "paper", self.outer_contact == "crowned",
+            _XTOL, split, roller_load, roller_stiffness, inner_deflection)
         cos = self.cos[points]
         radial_load = (roller_load * cos).sum(axis=-1)
         radial_stiffness = (roller_stiffness * cos**2).sum(axis=-1)  # eq. 13-16
-        converged = all_converged.all(axis=-1)
         return radial_load, radial_stiffness, roller_load, inner_deflection, converged
 
 
@@ -420,6 +371,8 @@ def crb_radial(radial_load, roller_count, pitch_diameter, roller_diameter, effec
     azimuth = cage_position[:, None] + 2.0 * np.pi * np.arange(roller_count) / roller_count
     if outer_contact not in OUTER_CONTACTS:
         raise ValueError(f"unknown outer_contact {outer_contact!r}; expected {OUTER_CONTACTS}")
+    if slice_law not in SLICE_LAWS:
+        raise ValueError(f"unknown slice_law {slice_law!r}; expected {SLICE_LAWS}")
     if outer_contact == "paper" and np.any(misalignment != 0.0):
         raise ValueError("misalignment needs outer_contact 'crowned' (the paper's straight "
                          "outer contact has no tilt)")
@@ -463,7 +416,7 @@ def _solve(rollers, load, perturbation):
     constant, centrifugal = rollers.constant, rollers.centrifugal
     count, n = load.size, LINE_CONTACT_EXPONENT
     everyone = np.arange(count)
-    share = np.full(cos_azimuth.shape, 0.5)
+    split = np.full(cos_azimuth.shape + (3,), np.nan)  # no roller solved yet
     # Bracket: no roller touches below max(Pd/2, 0); at the upper bound the best-placed roller
     # (at cos_max) alone carries F / cos_max through both contacts, each needing at most the
     # largest gap plus ((F / cos_max + Fc)/K)^(1/n) of approach. With preload, rollers opposite
@@ -479,9 +432,9 @@ def _solve(rollers, load, perturbation):
     for _ in range(64):
         if preloaded.size == 0:
             break
-        guess = share[preloaded]
+        guess = split[preloaded]
         short = rollers.loads(upper[preloaded], preloaded, guess)[0] < load[preloaded]
-        share[preloaded] = guess
+        split[preloaded] = guess
         lower[preloaded[short]] = upper[preloaded[short]]
         upper[preloaded[short]] *= 2.0
         preloaded = preloaded[short]
@@ -496,9 +449,9 @@ def _solve(rollers, load, perturbation):
     cache = {"converged": np.ones(count, dtype=bool)}
 
     def residual(displacement, index):
-        guess = share[index]
+        guess = split[index]
         result = rollers.loads(displacement, index, guess)
-        share[index] = guess
+        split[index] = guess
         for name, value in zip(("load", "stiffness", "roller_load", "deflection"), result):
             cache.setdefault(name, np.empty((count,) + value.shape[1:]))[index] = value
         cache["converged"][index] &= result[4]
@@ -511,7 +464,7 @@ def _solve(rollers, load, perturbation):
         cache[name][resting] = 0.0
     cache["converged"][resting] = True
     # Forward-difference stiffness with the paper's perturbation (section 2.3).
-    perturbed = rollers.loads(displacement + perturbation, everyone, share.copy())[0]
+    perturbed = rollers.loads(displacement + perturbation, everyone, split.copy())[0]
     balanced = np.abs(cache["load"] - load) <= 1e-9 * load + 1e-6
     ok = converged & cache["converged"] & balanced & rollers.free_outer_converged
     outputs = {
@@ -538,7 +491,7 @@ MODELS = [Model(
     summary="Cylindrical roller bearing under radial load: load distribution and radial stiffness "
             "with crowned rollers (slices), centrifugal force and clearance.",
     reference="Paper 000, Radial stiffness analysis of cylindrical roller bearing, eq. 1-16",
-    version="4",
+    version="5",
     inputs=(
         Input("radial_load", "N", "radial load Fr on the inner ring", minimum=0.0),
         Input("roller_count", "1", "number of rollers Z", kind="count", minimum=3, maximum=1000),
@@ -622,7 +575,10 @@ MODELS = [Model(
                    "roller_count) must exceed roller_diameter"),
     ),
     seconds_per_point=1e-4,
-    points_per_call=500,
+    # The rollers' balances are compiled and solved point by point, so a block's temporaries
+    # are a few (points, rollers) arrays: 2000 points per call cost some 12 % less a point
+    # than 500 (the numpy parts' overhead shared), and two workers slow each other by 2-3 %.
+    points_per_call=2000,
     validity="a roller's maximum contact pressure above pressure_limit (default 4000 MPa, "
              "ISO 76's reference stress for roller bearings) or its approach (both contacts) "
              "above 2 % of the roller diameter; speed only through the pressure its "
