@@ -3,14 +3,19 @@
 The kernel, written here with numba, is what a user would write instead of the model: one
 point at a time, each roller's force balance and the ring's radial balance solved by the
 model's safeguarded Newton (``models.solvers.solve_increasing``, one entry), from the model's
-starts and to its tolerances, on the same equations (sliced crowned rollers with their
-distinct gaps, centrifugal force, clearance; no misalignment). It computes what the model
+starts (a roller's from a first-order prediction of its split: its last solution moved by what
+its total approach gained, shared as its contacts' stiffnesses share it) and to its
+tolerances, on the same equations (sliced crowned rollers with their distinct gaps,
+centrifugal force, clearance; no misalignment). It computes what the model
 computes for such a point apart from the lives (the grid gives no load rating): the
 displacement, the implicit and the forward-difference stiffness, the roller loads and inner
 approaches, each roller's largest contact pressure and the status. Each slice is summed only
 while it touches (the gaps are sorted), and its ``(delta - c)^(1/9)`` is taken for a whole
 roller at once by a loop the compiler vectorises, ``error_model="numpy"`` keeping division
-checks out of it (numpy's own SIMD ``pow`` is otherwise faster than a scalar one).
+checks out of it (numpy's own SIMD ``pow`` is otherwise faster than a scalar one). The model
+compiles its rollers' balances the same way (``models.cylindrical_balance``); the kernel
+shares none of its code on purpose, so that a slow part of the model would not slow the
+baseline alike.
 
 Both run on one core (CPU time of this process, which others' load on the shared cores
 disturbs less than wall time) on the grid of benchmarks/crb_radial_throughput.py (bearing D of
