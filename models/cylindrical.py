@@ -347,6 +347,13 @@ def crb_radial(radial_load, roller_count, pitch_diameter, roller_diameter, effec
     kinematic cage speed holds while the roller stays elastic, and its outer contact's
     pressure carries that force (1e6 r/min gives bearing D some 16 GPa there).
 
+    Solution: the ring's displacement by the safeguarded Newton of
+    :func:`models.solvers.solve_increasing`, all points at once; at each displacement tried,
+    every roller's force balance point by point in compiled code
+    (:mod:`models.cylindrical_balance`, numba), started from a first-order prediction of its
+    split from its last solution and summing only the slices that touch. A point's results do
+    not depend on the other points of the call.
+
     References
     ----------
     .. [1] Paper 000, "Radial stiffness analysis of cylindrical roller bearing", eq. 1-16.
