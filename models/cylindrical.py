@@ -94,6 +94,7 @@ class _RollerSet:
         # slice lies towards an end, 2 * floor nearer the raceways than its middle.
         if self.tilt is None:  # a symmetric roller: its distinct slices with their counts
             self.gap_shape, self.gap_count = distinct_slices(slices, crown_profile)  # (m,)
+            self.floor = np.zeros((self.crown.size, 1))  # its smallest gap is its middle's
         else:
             self.gap_shape, self.gap_count = crown_shape(slices, crown_profile), np.ones(slices)
             self.slice_position = slice_centres(slices)
@@ -191,7 +192,7 @@ class _RollerSet:
                               approach, converged)
         return approach, converged.all(axis=-1)
 
-    def loads(self, displacement, points, split):
+    def loads(self, displacement, points, split, roller_load, inner_deflection):
         """Roller loads and bearing load and stiffness at given radial displacements.
 
         Parameters
@@ -202,34 +203,28 @@ class _RollerSet:
             Indices of the bearings evaluated.
         split : numpy.ndarray
             Each roller's last solution, from which its solve starts: inner approach, total
-            approach and their derivative (NaN: none yet), shape ``(p, Z, 3)``; updated in
-            place with the solution.
+            approach and their derivative (NaN: none yet), shape ``(P, Z, 3)``; its rows
+            ``points`` updated in place with the solution.
+        roller_load, inner_deflection : numpy.ndarray
+            ``(P, Z)``, their rows ``points`` filled: ``Qi_j`` [N] and the inner-contact
+            approach [m] (negative: the gap of an unloaded roller).
 
         Returns
         -------
         radial_load, radial_stiffness : numpy.ndarray
             ``F_r = sum Qi_j cos phi_j`` (eq. 10) [N] and ``dF_r/d delta_r`` [N/m], ``(p,)``.
-        roller_load, inner_deflection : numpy.ndarray
-            ``Qi_j`` [N] and the inner-contact approach [m] (negative: the gap of an unloaded
-            roller), ``(p, Z)``.
         converged : numpy.ndarray of bool
             Every roller's force balance converged, ``(p,)``.
         """
         from .cylindrical_balance import roller_balances  # numba: only when solving
 
-        total = self.total_approach(displacement, points)
-        available = total - self.free_outer_approach[points]
-        roller_load, roller_stiffness, inner_deflection = (np.empty(total.shape)
-                                                           for _ in range(3))
         # Roller force balance Qo(total - inner) = Qt(inner) + Fc (eq. 2, 6).
-        converged = roller_balances(
-            total, available, points, self.sorted_gaps, self.gap_count, self.constant,
-            self.centrifugal, self.slice_law == "paper", self.outer_contact == "crowned",
-            _XTOL, split, roller_load, roller_stiffness, inner_deflection)
-        cos = self.cos[points]
-        radial_load = (roller_load * cos).sum(axis=-1)
-        radial_stiffness = (roller_stiffness * cos**2).sum(axis=-1)  # eq. 13-16
-        return radial_load, radial_stiffness, roller_load, inner_deflection, converged
+        return roller_balances(
+            displacement, points, self.cos, self.half_clearance,
+            self.floor, self.free_outer_approach,
+            self.sorted_gaps, self.gap_count, self.constant, self.centrifugal,
+            self.slice_law == "paper", self.outer_contact == "crowned", _XTOL, split,
+            roller_load, inner_deflection)
 
 
 def crb_radial(radial_load, roller_count, pitch_diameter, roller_diameter, effective_length,
@@ -424,6 +419,11 @@ def _solve(rollers, load, perturbation):
     count, n = load.size, LINE_CONTACT_EXPONENT
     everyone = np.arange(count)
     split = np.full(cos_azimuth.shape + (3,), np.nan)  # no roller solved yet
+    # Where each solve's roller loads and approaches go, and where those of other calls do.
+    cache = {"converged": np.ones(count, dtype=bool), "load": np.empty(count),
+             "stiffness": np.empty(count), "roller_load": np.empty(cos_azimuth.shape),
+             "deflection": np.empty(cos_azimuth.shape)}
+    spare = np.empty(cos_azimuth.shape), np.empty(cos_azimuth.shape)
     # Bracket: no roller touches below max(Pd/2, 0); at the upper bound the best-placed roller
     # (at cos_max) alone carries F / cos_max through both contacts, each needing at most the
     # largest gap plus ((F / cos_max + Fc)/K)^(1/n) of approach. With preload, rollers opposite
@@ -439,9 +439,7 @@ def _solve(rollers, load, perturbation):
     for _ in range(64):
         if preloaded.size == 0:
             break
-        guess = split[preloaded]
-        short = rollers.loads(upper[preloaded], preloaded, guess)[0] < load[preloaded]
-        split[preloaded] = guess
+        short = rollers.loads(upper[preloaded], preloaded, split, *spare)[0] < load[preloaded]
         lower[preloaded[short]] = upper[preloaded[short]]
         upper[preloaded[short]] *= 2.0
         preloaded = preloaded[short]
@@ -453,16 +451,12 @@ def _solve(rollers, load, perturbation):
     lower = np.where(resting, touch, lower)
     upper = np.where(resting, touch, upper)
 
-    cache = {"converged": np.ones(count, dtype=bool)}
-
     def residual(displacement, index):
-        guess = split[index]
-        result = rollers.loads(displacement, index, guess)
-        split[index] = guess
-        for name, value in zip(("load", "stiffness", "roller_load", "deflection"), result):
-            cache.setdefault(name, np.empty((count,) + value.shape[1:]))[index] = value
-        cache["converged"][index] &= result[4]
-        return result[0] - load[index], result[1]
+        radial_load, stiffness, converged = rollers.loads(
+            displacement, index, split, cache["roller_load"], cache["deflection"])
+        cache["load"][index], cache["stiffness"][index] = radial_load, stiffness
+        cache["converged"][index] &= converged
+        return radial_load - load[index], stiffness
 
     displacement, converged = solve_increasing(residual, lower, upper, upper, _XTOL * upper)
     # The limit itself: the best-placed roller just touches and carries nothing (evaluated
@@ -471,7 +465,7 @@ def _solve(rollers, load, perturbation):
         cache[name][resting] = 0.0
     cache["converged"][resting] = True
     # Forward-difference stiffness with the paper's perturbation (section 2.3).
-    perturbed = rollers.loads(displacement + perturbation, everyone, split.copy())[0]
+    perturbed = rollers.loads(displacement + perturbation, everyone, split.copy(), *spare)[0]
     balanced = np.abs(cache["load"] - load) <= 1e-9 * load + 1e-6
     ok = converged & cache["converged"] & balanced & rollers.free_outer_converged
     outputs = {

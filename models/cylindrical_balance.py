@@ -116,20 +116,26 @@ def newton_step(state, x, value, slope):
 
 
 @njit(cache=True, error_model="numpy")
-def roller_balances(total, available, points, gaps, counts, constant, centrifugal, by_loaded,
-                    crowned_outer, xtol, split, roller_load, roller_stiffness, deflection):
-    """Solve the force balance of every roller that the ring reaches.
+def roller_balances(displacement, points, cos, half_clearance, floor, free, gaps, counts,
+                    constant, centrifugal, by_loaded, crowned_outer, xtol, split, roller_load,
+                    deflection):
+    """Solve the force balance of every roller of the bearings ``points`` at the radial
+    displacements ``displacement`` (``(p,)`` both) and sum the rollers' loads on the ring.
 
     Parameters
     ----------
-    total, available : numpy.ndarray
-        ``(p, Z)`` approach of both contacts together, and that minus the outer approach
-        of a free roller [m]; a roller is loaded where ``available > 0``.
-    points : numpy.ndarray
-        ``(p,)`` each row's bearing: its row of ``gaps`` (``(P, 1 or Z, m)``, sorted along the
-        last axis), ``constant`` and ``centrifugal`` (``(P,)``).
+    cos, half_clearance, floor, free : numpy.ndarray
+        Of every bearing: ``cos(phi_j)`` ``(P, Z)``; ``P_d/2`` ``(P,)``; each roller's
+        smallest gap from its middle's (tilt; ``(P, 1)`` zeros without) and the outer
+        approach of a free roller [m], ``(P, 1 or Z)``. A roller's total approach at its
+        deepest slice is ``delta_r cos(phi_j) - P_d/2 - 2 floor`` (eq. 1); it is loaded where
+        that exceeds ``free``.
+    gaps : numpy.ndarray
+        ``(P, 1 or Z, m)`` every roller's slice gaps in rising order [m].
     counts : numpy.ndarray
         ``(m,)`` slices per gap.
+    constant, centrifugal : numpy.ndarray
+        ``(P,)`` ``K`` [N/m^n] and ``Fc`` [N].
     by_loaded : bool
         The paper's slice law (eq. 9 as printed) rather than the uniform one.
     crowned_outer : bool
@@ -138,41 +144,48 @@ def roller_balances(total, available, points, gaps, counts, constant, centrifuga
         roller, ``Qo = K delta_o^n``, balanced against ``Qt = K x^n`` rather than the crowned
         ``Qi`` of eq. 9.
     xtol : float
-        Tolerance of a roller's inner approach relative to its ``available`` [-].
+        Tolerance of a roller's inner approach relative to the approach it has to share [-].
     split : numpy.ndarray
-        ``(p, Z, 3)`` start of each roller: its inner approach, total and ``dx/d(total)`` at its
+        ``(P, Z, 3)`` start of each roller: its inner approach, total and ``dx/d(total)`` at its
         last solution (NaN: none yet, start halfway); updated with the solutions.
-    roller_load, roller_stiffness, deflection : numpy.ndarray
-        ``(p, Z)``, filled: ``Qi`` [N], ``dQi/d(total)`` [N/m] and the inner approach [m]
-        (``available``, negative, where the roller is not loaded).
+    roller_load, deflection : numpy.ndarray
+        ``(P, Z)``, their rows ``points`` filled: ``Qi`` [N] and the inner approach [m]
+        (negative, its gap, where the roller is not loaded).
 
     Returns
     -------
-    numpy.ndarray of bool
+    radial_load, radial_stiffness : numpy.ndarray
+        ``(p,)`` ``F_r = sum Qi_j cos(phi_j)`` (eq. 10) [N] and ``dF_r/d delta_r`` [N/m].
+    converged : numpy.ndarray of bool
         ``(p,)`` every loaded roller's balance converged.
     """
     slices = counts.sum()
     straight, one = np.zeros(1), np.ones(1)
     work, roots = np.empty(gaps.shape[-1]), np.empty(gaps.shape[-1])
     state = np.empty(8)
-    converged = np.ones(total.shape[0], dtype=np.bool_)
-    for i in range(total.shape[0]):
+    radial_load, radial_stiffness = np.empty(points.size), np.empty(points.size)
+    converged = np.ones(points.size, dtype=np.bool_)
+    for i in range(points.size):
         point = points[i]
         k, fc = constant[point], centrifugal[point]
-        for j in range(total.shape[1]):
-            reach, room = total[i, j], available[i, j]
-            roller_load[i, j] = roller_stiffness[i, j] = 0.0
-            deflection[i, j] = room
+        load_sum = stiffness_sum = 0.0
+        for j in range(cos.shape[1]):
+            c = cos[point, j]
+            # In total_approach's order, so that both give the same bits.
+            reach = displacement[i] * c - half_clearance[point]
+            reach = reach - 2.0 * floor[point, j if floor.shape[1] > 1 else 0]
+            room = reach - free[point, j if free.shape[1] > 1 else 0]
+            roller_load[point, j], deflection[point, j] = 0.0, room
             if not room > 0.0:
                 continue
             own = gaps[point, j if gaps.shape[1] > 1 else 0]
-            if own[-1] != own[-1]:  # a NaN gap (NaN sorts last): no balance, as in numpy
-                roller_load[i, j] = roller_stiffness[i, j] = deflection[i, j] = np.nan
+            if own[-1] != own[-1]:  # a NaN gap (NaN sorts last): no balance
+                roller_load[point, j] = deflection[point, j] = np.nan
                 converged[i] = False
                 continue
             # A first-order prediction of the split from the last solution: what the total
             # gained, shared as the contacts' stiffnesses share it.
-            last, last_total, share = split[i, j, 0], split[i, j, 1], split[i, j, 2]
+            last, last_total, share = split[point, j, 0], split[point, j, 1], split[point, j, 2]
             start = (last + share * (reach - last_total) if math.isfinite(last)
                      else 0.5 * room)
             x = start_solve(state, 0.0, room, start, xtol * room)
@@ -192,14 +205,17 @@ def roller_balances(total, available, points, gaps, counts, constant, centrifuga
                 if done:
                     break
             converged[i] = converged[i] and ok
-            deflection[i, j] = x
-            roller_load[i, j] = qi
+            roller_load[point, j], deflection[point, j] = qi, x
             # Series contacts: dQi/d(total) = Qi' Qo' / (Qo' + Qt') (eq. 14, generalised).
             stiffness = ki * ko / (ko + kt)
-            roller_stiffness[i, j] = stiffness if stiffness == stiffness else 0.0  # 0/0: touch
-            split[i, j, 0], split[i, j, 1] = x, reach
-            split[i, j, 2] = ko / (ko + kt) if ko + kt > 0.0 else 1.0
-    return converged
+            if stiffness != stiffness:  # 0/0 just at contact
+                stiffness = 0.0
+            split[point, j, 0], split[point, j, 1] = x, reach
+            split[point, j, 2] = ko / (ko + kt) if ko + kt > 0.0 else 1.0
+            load_sum += qi * c
+            stiffness_sum += stiffness * (c * c)  # eq. 13-16
+        radial_load[i], radial_stiffness[i] = load_sum, stiffness_sum
+    return radial_load, radial_stiffness, converged
 
 
 @njit(cache=True, error_model="numpy")

@@ -41,27 +41,31 @@ def test_a_compiled_contact_is_the_sliced_line_contact(law):
 
 
 def _balances(total, split, centrifugal=40.0, crowned=True):
+    """One bearing whose rollers' total approaches are ``total`` (``(Z,)``)."""
     shape, counts = distinct_slices(60)
     gaps = np.ascontiguousarray((4e-6 * shape)[None, None, :])
-    free = 0.0 if centrifugal == 0 else 2e-7  # below any balance's outer approach
-    available = total - free
-    outputs = [np.empty(total.shape) for _ in range(3)]
-    converged = roller_balances(total, available, np.zeros(total.shape[0], dtype=np.int64),
-                                gaps, counts, np.array([CONSTANT]), np.array([centrifugal]),
-                                False, crowned, 1e-13, split, *outputs)
-    return (*outputs, converged, gaps[0, 0], counts)
+    displacement = 12e-6  # the largest total: every cos(phi) within [-1, 1]
+    cos = (total / displacement)[None, :]
+    free = np.full((1, 1), 2e-7)  # below any balance's outer approach
+    roller_load, inner = np.empty(cos.shape), np.empty(cos.shape)
+    radial, stiffness, converged = roller_balances(
+        np.array([displacement]), np.array([0]), cos, np.zeros(1), np.zeros((1, 1)), free,
+        gaps, counts, np.array([CONSTANT]), np.array([centrifugal]), False, crowned, 1e-13,
+        split, roller_load, inner)
+    assert radial[0] == pytest.approx((roller_load * cos).sum(), rel=1e-14)
+    return roller_load[0], inner[0], converged[0], gaps[0, 0], counts
 
 
 @pytest.mark.parametrize("crowned", [True, False])
 def test_each_roller_is_in_force_balance_whatever_its_start(crowned):
-    total = np.array([[1e-6, 3e-6, 6e-6, 12e-6, -1e-6]])
-    cold = np.full(total.shape + (3,), np.nan)
-    load, stiffness, inner, converged, gaps, counts = _balances(total, cold, crowned=crowned)
-    assert converged.all() and np.all(np.isfinite(cold[0, :4]))
-    assert inner[0, 4] == total[0, 4] - 2e-7 and load[0, 4] == 0.0 == stiffness[0, 4]
+    total = np.array([1e-6, 3e-6, 6e-6, 12e-6, -1e-6])
+    cold = np.full((1, total.size, 3), np.nan)
+    load, inner, converged, gaps, counts = _balances(total, cold, crowned=crowned)
+    assert converged and np.all(np.isfinite(cold[0, :4]))
+    assert inner[4] == pytest.approx(total[4] - 2e-7, rel=1e-15) and load[4] == 0.0
     # Qo(total - x) = Qt(x) + Fc, by the vectorised law (crowned outer, or the paper's
     # straight outer contact against a straight inner one).
-    x, outer = inner[0, :4], total[0, :4] - inner[0, :4]
+    x, outer = inner[:4], total[:4] - inner[:4]
     constant = np.full(4, CONSTANT)
     if crowned:
         balanced = sliced_line_contact(x, np.tile(gaps, (4, 1)), counts, constant)[0]
@@ -73,6 +77,6 @@ def test_each_roller_is_in_force_balance_whatever_its_start(crowned):
     # Started from a prediction (the last solution moved along its derivative) or from
     # halfway, the solution is the same within the tolerance 1e-13 of the approach.
     moved = total * 1.01
-    predicted = _balances(moved, cold.copy(), crowned=crowned)[2]
-    fresh = _balances(moved, np.full(cold.shape, np.nan), crowned=crowned)[2]
-    np.testing.assert_allclose(predicted[0, :4], fresh[0, :4], rtol=0, atol=1e-13 * 12e-6)
+    predicted = _balances(moved, cold.copy(), crowned=crowned)[1]
+    fresh = _balances(moved, np.full(cold.shape, np.nan), crowned=crowned)[1]
+    np.testing.assert_allclose(predicted[:4], fresh[:4], rtol=0, atol=1e-13 * 12e-6)
