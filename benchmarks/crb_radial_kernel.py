@@ -379,7 +379,7 @@ def main():
     loads_after = os.getloadavg()
 
     load_text = (f"load average {loads_before[0]:.2f} before, {loads_after[0]:.2f} after "
-                 f"(2 cores shared)")
+                 f"({os.cpu_count()} cores, shared)")
     print(f"crb_radial against a compiled per-point kernel, {grid.size} points in one block of "
           f"{block} (bearing D, k = {SLICES}, crown, speed, clearance)")
     print(f"  numba kernel baseline: {statistics.median(kernel_seconds) * 1e6:7.2f} us/point "
