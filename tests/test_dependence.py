@@ -135,7 +135,8 @@ def test_on_grid_gives_every_point_its_value_and_failed_points_nan(toy):
     assert set(xr.broadcast(data["product"], data["status"])[0].dims) == {"a", "b"}
 
 
-def test_a_model_whose_output_varies_along_a_dropped_axis_stops_the_sweep(toy, tmp_path):
+def test_a_model_whose_output_varies_along_a_dropped_axis_stops_the_sweep(toy, tmp_path,
+                                                                          capsys):
     lying = GRID.replace('"toy"', '"liar"')
     with pytest.raises(InconsistentOutput, match=r"model 'liar', output 'product': declared "
                        r"to depend on b, c only .* it differs between points that share "
@@ -144,8 +145,12 @@ def test_a_model_whose_output_varies_along_a_dropped_axis_stops_the_sweep(toy, t
     path = tmp_path / "liar.toml"
     path.write_text(lying)
     result = tmp_path / "liar.nc"
-    assert cli.main(["run", str(path), "-o", str(result), "--workers", "0"]) == 1
+    assert cli.main(["run", str(path), "-o", str(result), "--workers", "0", "--quiet"]) == 1
+    error = capsys.readouterr().err
+    assert error.startswith("error: model 'liar', output 'product'") and error.count("\n") == 1
+    assert "the computed chunks are kept" in error
     assert not result.exists()
+    assert list((tmp_path / "liar.nc.parts").glob("chunk-*.npz"))  # a fixed model resumes
 
 
 def test_depends_on_names_declared_inputs():
