@@ -38,10 +38,14 @@ def stored_dims(grid: Grid, output) -> tuple[str, ...]:
     return tuple(dim for axis, dim in enumerate(grid.dims) if axis in axes)
 
 
+def stored_shape(grid: Grid, output) -> tuple[int, ...]:
+    """The sizes of ``output``'s :func:`stored_dims`."""
+    return tuple(grid.shape[grid.dims.index(d)] for d in stored_dims(grid, output))
+
+
 def stored_cells(grid: Grid, output) -> int:
     """How many values of ``output`` the file holds along the grid's dimensions."""
-    return int(np.prod([grid.shape[grid.dims.index(d)] for d in stored_dims(grid, output)],
-                       dtype=np.int64))
+    return int(np.prod(stored_shape(grid, output), dtype=np.int64))
 
 
 def reductions(grid: Grid) -> dict[str, "Reduction"]:
@@ -61,7 +65,7 @@ class Reduction:
         self.grid, self.output = grid, output
         self.dims = stored_dims(grid, output)
         self.axes = [grid.dims.index(d) for d in self.dims]
-        self.shape = tuple(grid.shape[a] for a in self.axes)
+        self.shape = stored_shape(grid, output)
         cells = stored_cells(grid, output)
         self.values = np.full((cells,) + tuple(grid.dim_sizes[d] for d in output.dims), np.nan)
         # The point each value comes from; none yet: beyond every point.

@@ -14,7 +14,7 @@ import xarray as xr
 
 from .models.registry import STATUS_DESCRIPTIONS, STATUS_MEANINGS
 from . import units
-from .dependence import stored_dims
+from .dependence import stored_dims, stored_shape
 from .grid import Grid
 from .spec import Sweep, Value
 
@@ -36,7 +36,7 @@ def labelled_dataset(sweep: Sweep, grid: Grid, outputs: dict, status: np.ndarray
     data_vars = {}
     for spec in model.outputs:
         dims = stored_dims(grid, spec)
-        values = outputs[spec.name].reshape(tuple(grid.shape[grid.dims.index(d)] for d in dims)
+        values = outputs[spec.name].reshape(stored_shape(grid, spec)
                                             + outputs[spec.name].shape[1:])
         attrs = described(spec.short, spec.meaning, None if spec.entry_units else spec.unit)
         attrs["coverage_content_type"] = "modelResult"
