@@ -368,7 +368,8 @@ def crb_radial(radial_load, roller_count, pitch_diameter, roller_diameter, effec
         effective_modulus(youngs_modulus, poisson_ratio), pressure_limit) + life))
     shape = arrays[0].shape
     (load, pitch, diameter, length, clearance, crown, speed, density, constant, cage_position,
-     misalignment, perturbation, modulus, pressure_limit) = (a.ravel() for a in arrays[:14])
+     misalignment, perturbation, modulus, pressure_limit) = (
+        np.array(a.ravel()) for a in arrays[:14])  # owned: numba warns of broadcast views
     life = [a.ravel() for a in arrays[14:]]
     azimuth = cage_position[:, None] + 2.0 * np.pi * np.arange(roller_count) / roller_count
     if outer_contact not in OUTER_CONTACTS:
