@@ -174,7 +174,8 @@ def roller_balances(displacement, points, cos, half_clearance, floor, free, gaps
             # In total_approach's order, so that both give the same bits.
             reach = displacement[i] * c - half_clearance[point]
             reach = reach - 2.0 * floor[point, j if floor.shape[1] > 1 else 0]
-            room = reach - free[point, j if free.shape[1] > 1 else 0]
+            spare = free[point, j if free.shape[1] > 1 else 0]
+            room = reach - spare
             roller_load[point, j], deflection[point, j] = 0.0, room
             if not room > 0.0:
                 continue
@@ -184,10 +185,17 @@ def roller_balances(displacement, points, cos, half_clearance, floor, free, gaps
                 converged[i] = False
                 continue
             # A first-order prediction of the split from the last solution: what the total
-            # gained, shared as the contacts' stiffnesses share it.
+            # gained, shared as the contacts' stiffnesses share it. The paper's law, whose
+            # load drops each time a slice comes into contact, may balance a roller at
+            # several splits: there the start stays the last split's fraction of the room,
+            # which finds the balance the model has always found.
             last, last_total, share = split[point, j, 0], split[point, j, 1], split[point, j, 2]
-            start = (last + share * (reach - last_total) if math.isfinite(last)
-                     else 0.5 * room)
+            if not math.isfinite(last):
+                start = 0.5 * room
+            elif by_loaded:
+                start = last / (last_total - spare) * room
+            else:
+                start = last + share * (reach - last_total)
             x = start_solve(state, 0.0, room, start, xtol * room)
             qi = ki = ko = kt = np.nan
             done = ok = False
