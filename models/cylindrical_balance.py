@@ -22,7 +22,7 @@ N = LINE_CONTACT_EXPONENT
 MAX_ITER = 200
 # x^(-1/9) from the bits of x: its exponent field divided by -9 around this constant, within
 # 3 % for every normal x; four division-free Newton steps then take it to full precision and
-# one Newton step on x^(1/9) itself rounds that within an ulp of pow's.
+# one Newton step on x^(1/9) itself brings it within two ulps of the exact root.
 _ROOT_MAGIC = 5118851384464337920
 
 
@@ -147,7 +147,9 @@ def roller_balances(displacement, points, cos, half_clearance, floor, free, gaps
         Tolerance of a roller's inner approach relative to the approach it has to share [-].
     split : numpy.ndarray
         ``(P, Z, 3)`` start of each roller: its inner approach, total and ``dx/d(total)`` at its
-        last solution (NaN: none yet, start halfway); updated with the solutions.
+        last solution (NaN: none yet, start halfway); updated with the solutions. A roller
+        starts from that solution moved along the derivative (the paper's law: from its
+        fraction of the room).
     roller_load, deflection : numpy.ndarray
         ``(P, Z)``, their rows ``points`` filled: ``Qi`` [N] and the inner approach [m]
         (negative, its gap, where the roller is not loaded).
