@@ -260,7 +260,7 @@ def reciprocal_condition(stiffness, dofs, matrix):
     return smallest / largest if largest > 0.0 else (0.0 if largest == 0.0 else largest)
 
 
-@njit(cache=True, error_model="numpy")
+@njit(cache=True, error_model="numpy", nogil=True)  # a threaded worker runs blocks side by side
 def equilibria(rings, load, typical, damping, tolerance, free, jones, max_iterations, psi):
     """Each point's scaled displacement where the balls balance ``load`` in the ``free``
     directions, by :func:`models.solvers.solve_equilibrium`'s damped Newton iteration.
