@@ -30,10 +30,12 @@ def _parser() -> argparse.ArgumentParser:
                              help="run on an existing dask.distributed scheduler (its workers "
                                   "need the same bearing-sweep version installed)")
 
-    run = commands.add_parser("run", help="compute a sweep definition into a netCDF file")
+    run = commands.add_parser("run", help="compute a sweep definition into a netCDF file or a "
+                              "zarr store")
     run.add_argument("definition", type=Path, help="the sweep definition (TOML)")
     run.add_argument("-o", "--output", type=Path,
-                     help="netCDF file to write (default results/<definition name>.nc)")
+                     help="netCDF file to write (default results/<definition name>.nc), or a "
+                          "zarr store (a path ending in .zarr) that each worker writes into")
     run.add_argument("--chunk-size", type=int, metavar="POINTS",
                      help="grid points per task (default: chosen from the model's cost)")
     run.add_argument("--quiet", action="store_true", help="no progress bar")

@@ -12,7 +12,7 @@ import xarray as xr
 from .models.registry import STATUS_MEANINGS
 from .grid import Grid
 from .labels import labelled_dataset
-from .parts import written_atomically
+from .parts import is_zarr, written_atomically
 from .spec import Sweep
 from .storage import integral_values
 
@@ -47,17 +47,32 @@ def provenance(scheduler: str) -> dict:
 def tally(grid: Grid, parts, chunks) -> tuple[dict, list, dict]:
     """The count of points by status, the model's error messages and the counts of the
     outputs the model declares ``counted``, read one chunk at a time."""
-    model = grid.model
+    return summed(grid.model, (chunk_tally(grid.model, parts.load(start, stop))
+                               for start, stop in chunks))
+
+
+def chunk_tally(model, part: dict) -> dict:
+    """What :func:`tally` counts in one computed chunk, as JSON-ready lists and numbers (a
+    zarr output keeps it, not the values, for each finished chunk)."""
+    noted = {}
+    for output in (o for o in model.outputs if o.counted):
+        text, where = output.counted
+        noted[text] = noted.get(text, 0) + int(np.count_nonzero(where(part["outputs"][
+            output.name])))
+    return {"status": np.bincount(part["status"], minlength=len(STATUS_MEANINGS)).tolist(),
+            "errors": sorted(set(part["errors"])), "noted": noted}
+
+
+def summed(model, tallies) -> tuple[dict, list, dict]:
+    """The sweep's counts (as :func:`tally` returns them) from its chunks' :func:`chunk_tally`."""
     counts = np.zeros(len(STATUS_MEANINGS), dtype=np.int64)
     errors = set()
     noted = {o.counted[0]: 0 for o in model.outputs if o.counted}
-    for start, stop in chunks:
-        part = parts.load(start, stop)
-        counts += np.bincount(part["status"], minlength=len(STATUS_MEANINGS))
-        errors.update(part["errors"])
-        for output in (o for o in model.outputs if o.counted):
-            text, where = output.counted
-            noted[text] += int(np.count_nonzero(where(part["outputs"][output.name])))
+    for one in tallies:
+        counts += one["status"]
+        errors.update(one["errors"])
+        for text, count in one["noted"].items():
+            noted[text] += count
     return dict(zip(STATUS_MEANINGS, counts.tolist())), sorted(errors), noted
 
 
@@ -98,19 +113,27 @@ def assemble(sweep: Sweep, grid: Grid, parts, chunks, path, scheduler: str, erro
         finally:
             skeleton_store.close()
         del skeleton
-        integral = {o.name for o in grid.model.outputs if o.dtype == "int"}
         with netCDF4.Dataset(temporary, "r+") as target:
             for start, stop in chunks:
-                part = parts.load(start, stop)
-                values = {name: integral_values(data, name) if name in integral else data
-                          for name, data in part["outputs"].items()}
-                values["status"] = part["status"]
-                for name, data in values.items():
-                    variable = target.variables[name]
-                    for index, low, high in _regions(grid.shape, start, stop):
-                        block = data[low - start:high - start]
-                        variable[index or ...] = block.reshape(
-                            tuple(s.stop - s.start for s in index) + block.shape[1:])
+                for name, index, block in stored_blocks(grid, start, stop,
+                                                        parts.load(start, stop)):
+                    target.variables[name][index or ...] = block
+
+
+def stored_blocks(grid: Grid, start: int, stop: int, part: dict):
+    """The values of points ``start..stop-1`` (a computed ``part``) as a result stores them:
+    integral outputs as integers, and the status. Yields ``(name, index, block)``: a tuple of
+    slices of the variable's grid dimensions and its values there (empty for a grid of one
+    point: index with ``...``)."""
+    integral = {o.name for o in grid.model.outputs if o.dtype == "int"}
+    values = {name: integral_values(data, name) if name in integral else data
+              for name, data in part["outputs"].items()}
+    values["status"] = part["status"]
+    for name, data in values.items():
+        for index, low, high in _regions(grid.shape, start, stop):
+            block = data[low - start:high - start]
+            yield name, index, block.reshape(tuple(s.stop - s.start for s in index)
+                                             + block.shape[1:])
 
 
 def _flat_shape(grid: Grid, output) -> tuple:
@@ -158,6 +181,11 @@ def write_netcdf(dataset: xr.Dataset, path) -> Path:
 
 
 def open_result(path) -> xr.Dataset:
-    """Open a sweep's netCDF file fully into memory (the file is closed afterwards)."""
-    with xr.open_dataset(path, engine="netcdf4") as dataset:
+    """Open a sweep's netCDF file (or zarr store) fully into memory (it is closed afterwards)."""
+    with xr.open_dataset(path, engine=result_engine(path)) as dataset:
         return dataset.load()
+
+
+def result_engine(path) -> str:
+    """xarray's engine for a sweep's result at ``path``: zarr for a ``.zarr`` store."""
+    return "zarr" if is_zarr(path) else "netcdf4"
