@@ -348,14 +348,16 @@ def replace_durably(temporary: Path, path: Path):
     with open(temporary, "rb+") as handle:
         os.fsync(handle.fileno())
     os.replace(temporary, path)
-    sync_folder(path.parent)
+    fsync_path(path.parent)
 
 
-def sync_folder(folder):
-    """fsync ``folder``: the names just made or changed in it reach the disk."""
+def fsync_path(path):
+    """fsync the file or folder at ``path`` (a folder: the names just made or changed in it
+    reach the disk). Nothing happens where it cannot be opened: a file that is not there, a
+    folder on some systems (Windows, where the rename stands)."""
     try:
-        handle = os.open(folder, os.O_RDONLY)
-    except OSError:  # a folder cannot be opened on some systems (Windows): the rename stands
+        handle = os.open(path, os.O_RDONLY)
+    except OSError:
         return
     try:
         os.fsync(handle)

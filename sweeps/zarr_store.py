@@ -24,6 +24,7 @@ import json
 import math
 import os
 import shutil
+from concurrent.futures import ThreadPoolExecutor
 from dataclasses import dataclass
 from pathlib import Path
 
@@ -32,10 +33,12 @@ import xarray as xr
 
 from .grid import Grid
 from .labels import labelled_dataset
-from .parts import Parts, sync_folder, write_durably
+from .parts import Parts, fsync_path, write_durably
 from .spec import Sweep
 from .store import _flat_shape, provenance, stored_blocks, summed
 
+#: How many files a task flushes to the disk at once.
+FLUSHING_THREADS = 8
 #: zarr format 2: its codecs are numcodecs' Zlib and Zstd, the netCDF file's, and readers of
 #: format 3 read it too (format 3 has no zlib codec, and zarr-python 2 cannot read it).
 ZARR_FORMAT = 2
@@ -102,8 +105,9 @@ def write_structure(sweep: Sweep, grid: Grid, block: tuple, scheduler: str, path
         stored = np.dtype(kept.get("dtype", variable.dtype))
         variable.encoding = kept | sweep.storage.zarr_codecs(stored.itemsize) | {
             "chunks": block + variable.shape[len(block):]}
-    # The structure only: the lazy values are queued for a write that is never made.
-    dataset.to_zarr(path, mode="w", compute=False, zarr_format=ZARR_FORMAT, consolidated=False)
+    # The structure only: the lazy values are queued for a write that is never made. Its
+    # metadata consolidated: a task reads one file, not two per variable.
+    dataset.to_zarr(path, mode="w", compute=False, zarr_format=ZARR_FORMAT, consolidated=True)
 
 
 @dataclass(frozen=True)
@@ -115,32 +119,21 @@ class StoreWriter:
 
     def write(self, grid: Grid, start: int, stop: int, part: dict):
         """Write points ``start..stop-1`` (a computed ``part``, as ``evaluate_chunk`` returns
-        it) and flush their zarr chunks to the disk."""
+        it) and flush their zarr chunks to the disk, so that the chunk's mark never outlives
+        its values in a power loss."""
         import zarr
 
         group = zarr.open_group(self.path, mode="r+", zarr_format=ZARR_FORMAT,
-                                use_consolidated=False)
+                                use_consolidated=True)
+        written = []
         for name, index, block in stored_blocks(grid, start, stop, part):
             array = group[name]
             array[index or ...] = block.astype(array.dtype, copy=False)
-            self._flush(name, index, array)
-
-    def _flush(self, name: str, index: tuple, array):
-        """fsync the zarr chunk that holds ``index`` of ``array`` (the values and the file's
-        name in its folder), so that the chunk's mark never outlives its values in a power
-        loss. A chunk equal to the fill value everywhere has no file (zarr writes none)."""
-        position = [s.start // c for s, c in zip(index, array.chunks)]
-        position += [0] * (array.ndim - len(position))
-        path = Path(self.path, name, ".".join(map(str, position)) or "0")
-        try:
-            handle = os.open(path, os.O_RDONLY)
-        except FileNotFoundError:
-            return
-        try:
-            os.fsync(handle)
-        finally:
-            os.close(handle)
-        sync_folder(path.parent)
+            position = [s.start // c for s, c in zip(index, array.chunks)]
+            position += [0] * (array.ndim - len(position))
+            written.append(Path(self.path, name, ".".join(map(str, position)) or "0"))
+        # A zarr chunk equal to the fill value everywhere has no file (zarr writes none).
+        flush(written + sorted({path.parent for path in written}))
 
 
 class StoreParts(Parts):
@@ -164,6 +157,7 @@ class StoreParts(Parts):
         temporary = self.folder / ".store.zarr.tmp"
         shutil.rmtree(temporary, ignore_errors=True)
         write_structure(sweep, grid, block_shape(grid.shape, chunk_size), scheduler, temporary)
+        flush([temporary, *temporary.rglob("*")])
         os.replace(temporary, self.store)
 
     @property
@@ -198,7 +192,7 @@ class StoreParts(Parts):
         group.attrs.put({key: encode_zarr_attr_value(value)
                          for key, value in attributes.items()})
         zarr.consolidate_metadata(str(self.store), zarr_format=ZARR_FORMAT)
-        os.sync()  # the store's metadata, written in this process, on the disk before its rename
+        flush([self.store / ".zattrs", self.store / ".zmetadata", self.store])
         replace_folder(self.store, Path(output))
 
 
@@ -210,8 +204,15 @@ def replace_folder(folder: Path, path: Path):
     if os.path.lexists(path):
         os.replace(path, old)
     os.replace(folder, path)
-    sync_folder(path.parent)
+    fsync_path(path.parent)
     shutil.rmtree(old, ignore_errors=True)
+
+
+def flush(paths):
+    """fsync every file and folder in ``paths``, all at once: the filesystem's journal then
+    commits them together (one at a time, a chunk's took longer than writing it)."""
+    with ThreadPoolExecutor(FLUSHING_THREADS) as pool:
+        list(pool.map(fsync_path, paths))
 
 
 def _read_tally(path: Path) -> dict | None:
