@@ -6,17 +6,18 @@ recommends (``DASK_CONFIG``: no malloc trim threshold). Two measurements:
 
 1. Time per point: the same sweep to a zarr store on the external cluster, and to a netCDF
    file on a LocalCluster of two workers (the baseline: the default path, every chunk's values
-   returned to the driver, kept as parts and assembled into the file at the end). Both
-   clusters are started before any clock runs and the runs alternate in pairs; the median of
-   the pairs' ratios is reported.
+   returned to the driver, kept as parts and assembled into the file at the end). Both clusters are started before any clock runs and the runs alternate in
+   pairs; the median of the pairs' ratios is reported.
 2. Memory: ``bearing-sweep run -o x.zarr --scheduler ADDRESS`` in its own process, a smaller
-   and an 8 times larger sweep; the peak resident memory of the driver (its rusage), of the
+   and a 4 times larger sweep; the peak resident memory of the driver (its rusage), of the
    scheduler and of each worker process (their high-water mark, reset before each run).
    Values never pass through the driver, and a worker holds one chunk at a time: no process
    may need more memory for the larger sweep (goal: a ratio of at most 1.1).
 
-The projection to 1e8 points uses the larger run's time per point on these two workers, and
-the driver's memory per chunk (the slope between the two runs) for the 1e8 points' chunks.
+Every run is in chunks of 4000 points (about a second's work each, as a large sweep's default
+chunks). The projection to 1e8 points takes the time per point between the two memory runs
+(their difference: without the start of a process, the same in both), and the driver's memory
+per chunk (the slope between the two runs) for the 1e8 points' chunks.
 """
 import contextlib
 import os
@@ -27,11 +28,12 @@ import tempfile
 import time
 from pathlib import Path
 
+import cloudpickle
 import numpy as np
 import psutil
 
 from bearing_sweep import spec, store, zarr_store
-from bearing_sweep.compute import Executor, choose_chunk_size, run_sweep
+from bearing_sweep.compute import Executor, run_sweep
 from bearing_sweep.grid import Grid
 
 BIN = Path(sys.executable).parent
@@ -47,7 +49,10 @@ radial_load = {{ start = "0.5 kN", stop = "12 kN", num = {loads} }}
 clearance = {{ start = "0 mm", stop = "0.05 mm", num = 200 }}
 """
 #: Load steps of the timed pairs, and of the smaller and larger memory runs (x 200 points).
-TIMED, SMALL, LARGE = 80, 12, 96
+TIMED, SMALL, LARGE = 120, 40, 160
+#: Points per chunk of every run: about a second's work, as the default chunking makes them
+#: in a large sweep (``compute.CHUNK_SECONDS``; 10000 points of crb_radial's declared cost).
+CHUNK = 4000
 PAIRS = 3
 #: What the README asks of a cluster's workers: dask's nanny would otherwise set
 #: MALLOC_TRIM_THRESHOLD_=65536, which doubles the model's time (see compute.Executor.connect).
@@ -112,7 +117,7 @@ def paired_times(folder: Path, address: str) -> tuple[np.ndarray, np.ndarray]:
             for kind, executor, output in (("zarr", external, "timed.zarr"),
                                            ("netcdf", local, "timed.nc")):
                 began = time.perf_counter()
-                run_sweep(sweep, folder / output, executor, progress=False)
+                run_sweep(sweep, folder / output, executor, CHUNK, progress=False)
                 times[kind].append(time.perf_counter() - began)
     a, b = (store.open_result(folder / name) for name in ("timed.nc", "timed.zarr"))
     for name in a.data_vars:  # the same numbers, whatever the format and the cluster
@@ -141,7 +146,8 @@ def memory_run(folder: Path, address: str, loads: int, scheduler, workers) -> di
         reset_high_water_mark(process)
     began = time.perf_counter()
     driver = subprocess.Popen([sys.executable, "-m", "bearing_sweep", "run", f"{name}.toml",
-                               "-o", f"{name}.zarr", "--scheduler", address, "--quiet"],
+                               "-o", f"{name}.zarr", "--scheduler", address, "--chunk-size",
+                               str(CHUNK), "--quiet"],
                               cwd=folder, stdout=subprocess.DEVNULL, stderr=subprocess.PIPE)
     _, status, usage = os.wait4(driver.pid, 0)
     seconds = time.perf_counter() - began
@@ -154,8 +160,8 @@ def memory_run(folder: Path, address: str, loads: int, scheduler, workers) -> di
 
 
 def chunk_count(grid: Grid) -> int:
-    """How many chunks ``bearing-sweep run`` makes of a zarr output on two workers."""
-    return len(zarr_store.chunks(grid, choose_chunk_size(grid, 2)))
+    """How many chunks of at most :data:`CHUNK` points a zarr output has."""
+    return len(zarr_store.chunks(grid, CHUNK))
 
 
 def main():
@@ -169,8 +175,9 @@ def main():
     points = TIMED * 200
     ratios = zarr_times / netcdf_times
     print(f"crb_radial to zarr on an external dask scheduler, 2 workers on 127.0.0.1 "
-          f"({points} points, {PAIRS} interleaved pairs, load average {load[0]:.1f})")
-    print(f"  baseline: netCDF on a LocalCluster of 2 workers: median "
+          f"({points} points in chunks of {CHUNK}, {PAIRS} interleaved pairs, load "
+          f"average {load[0]:.1f})")
+    print(f"  baseline, netCDF on a LocalCluster of 2 workers: median "
           f"{np.median(netcdf_times) / points * 1e6:.0f} us/point "
           f"({np.median(netcdf_times):.1f} s)")
     print(f"  zarr, external scheduler: median {np.median(zarr_times) / points * 1e6:.0f} "
@@ -180,9 +187,9 @@ def main():
 
     print(f"crb_radial to zarr, peak resident memory per process, {small['points']} and "
           f"{large['points']} points")
-    print(f"  baseline: the {small['points']}-point run ({small['chunks']} chunks, "
-          f"{small['seconds']:.1f} s; {large['points']} points: {large['chunks']} chunks, "
-          f"{large['seconds']:.1f} s)")
+    print(f"  baseline, the {small['points']}-point run ({small['chunks']} chunks of {CHUNK}): "
+          f"{small['seconds']:.1f} s; the {large['points']}-point run ({large['chunks']} "
+          f"chunks): {large['seconds']:.1f} s")
     processes = [key for key in small if key not in ("points", "seconds", "chunks")]
     for key in processes:
         print(f"  {key:<9} {small[key] / 2**20:6.0f} MiB -> {large[key] / 2**20:6.0f} MiB")
@@ -190,15 +197,18 @@ def main():
     print(f"  ratio: {growth:.2f}x peak memory of the larger run, worst process (goal: at most "
           f"1.1x: memory bounded)")
 
-    per_point = large["seconds"] / large["points"]
-    chunks = chunk_count(Grid.from_sweep(spec.parse(DEFINITION.format(
-        loads=round(PROJECTED_POINTS / 200)), "projected.toml")))
+    per_point = (large["seconds"] - small["seconds"]) / (large["points"] - small["points"])
+    projected = Grid.from_sweep(spec.parse(DEFINITION.format(
+        loads=round(PROJECTED_POINTS / 200)), "projected.toml"))
+    chunks = chunk_count(projected)
     slope = max(0.0, (large["driver"] - small["driver"]) / (large["chunks"] - small["chunks"]))
     print(f"  projection to {PROJECTED_POINTS:.0e} points on these 2 workers: "
           f"{PROJECTED_POINTS * per_point / 3600:.1f} h ({per_point * 1e6:.0f} us/point; "
           f"N workers: x 2/N); {chunks} chunks; driver "
           f"{(large['driver'] + slope * (chunks - large['chunks'])) / 2**20:.0f} MiB at "
-          f"{slope / 1024:.1f} KiB per chunk, each other process as measured")
+          f"{slope / 1024:.1f} KiB per chunk, each other process as measured; but each task "
+          f"carries the grid, {len(cloudpickle.dumps(projected)) / 2**20:.1f} MiB pickled "
+          f"here, in the driver and the scheduler while it is in flight")
 
 
 if __name__ == "__main__":
