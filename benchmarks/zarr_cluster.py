@@ -4,10 +4,11 @@ A ``dask scheduler`` and two ``dask worker`` processes (with their nannies, as o
 cluster) run on 127.0.0.1 from a temporary folder, with the workers' environment the README
 recommends (``DASK_CONFIG``: no malloc trim threshold). Two measurements:
 
-1. Time per point: the same sweep to a zarr store on the external cluster, and to a netCDF
-   file on a LocalCluster of two workers (the baseline: the default path, every chunk's values
-   returned to the driver, kept as parts and assembled into the file at the end). Both clusters are started before any clock runs and the runs alternate in
-   pairs; the median of the pairs' ratios is reported.
+1. Time per point: the same sweep to a zarr store on the external cluster, and to a netCDF file
+   on a LocalCluster of two workers (the baseline: the default path, every chunk's values
+   returned to the driver, kept as parts and assembled into the file at the end). Both clusters
+   are started before any clock runs and the runs alternate in pairs; the median of the pairs'
+   ratios is reported.
 2. Memory: ``bearing-sweep run -o x.zarr --scheduler ADDRESS`` in its own process, a smaller
    and a 4 times larger sweep; the peak resident memory of the driver (its rusage), of the
    scheduler and of each worker process (their high-water mark, reset before each run).

@@ -2,9 +2,10 @@
 
 ``<output>.parts/`` holds a manifest (what the parts belong to: the definition's sha256, the
 model's and the package's versions, the grid's size and the chunk size) and one ``.npz`` file
-per finished chunk (a zarr output keeps its values in its store instead: see ``zarr_store``), each written atomically and flushed to the disk before it is renamed into
-place. Parts of another definition, model or package version are discarded, with a message;
-a part that cannot be read (a power loss before it reached the disk) is computed again.
+per finished chunk, each written atomically and flushed to the disk before it is renamed into
+place (a zarr output keeps its chunks' values in its store instead: ``zarr_store``). Parts of
+another definition, model or package version are discarded, with a message; a part that cannot
+be read (a power loss before it reached the disk) is computed again.
 A lock on ``.<output>.lock`` keeps two runs from writing the same output, and
 :func:`check_output` refuses an output path that holds something other than an earlier result.
 """
@@ -53,9 +54,9 @@ def check_output(output, definition=None):
     Accepted: a path that does not exist yet in a folder that exists or can be made, a
     regular netCDF file that this program wrote (its global attributes name it: only the
     header is read), or for a ``.zarr`` output a zarr store this program wrote (its group
-    attributes name it: only they are read). Anything else (the definition itself, a folder, a device, a pipe, a
-    symbolic link, another program's file) raises :class:`UnsafeOutput`; nothing is opened
-    but a regular file's first bytes and header.
+    attributes name it: only they are read). Anything else (the definition itself, another
+    folder, a device, a pipe, a symbolic link, another program's file) raises
+    :class:`UnsafeOutput`; nothing is opened but a regular file's first bytes and header.
     """
     output = Path(output)
     try:

@@ -1,6 +1,6 @@
 """How a sweep's outputs are stored in its netCDF file or zarr store: in float64 or float32,
-compressed or not (the ``[output]`` table of a definition, ``bearing-sweep run --encoding --compression``),
-and the outputs a model declares integral as integers.
+compressed or not (the ``[output]`` table of a definition, ``bearing-sweep run --encoding
+--compression``), and the outputs a model declares integral as integers.
 
 The default, float64 with zlib at level 1 and no shuffle filter, came from
 ``benchmarks/output_encoding.py`` (README, "Output files"): on a crb_radial result of 1e5 points

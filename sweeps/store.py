@@ -57,8 +57,8 @@ def chunk_tally(model, part: dict) -> dict:
     noted = {}
     for output in (o for o in model.outputs if o.counted):
         text, where = output.counted
-        noted[text] = noted.get(text, 0) + int(np.count_nonzero(where(part["outputs"][
-            output.name])))
+        found = int(np.count_nonzero(where(part["outputs"][output.name])))
+        noted[text] = noted.get(text, 0) + found
     return {"status": np.bincount(part["status"], minlength=len(STATUS_MEANINGS)).tolist(),
             "errors": sorted(set(part["errors"])), "noted": noted}
 

@@ -162,7 +162,7 @@ class StoreParts(Parts):
 
     @property
     def writer(self) -> StoreWriter:
-        return StoreWriter(str(self.store.resolve()))
+        return StoreWriter(str(self.store.absolute()))
 
     def unreadable(self, path: Path, points: int) -> str | None:
         found = _read_tally(path)

@@ -8,6 +8,7 @@ import pytest
 import xarray as xr
 import zarr
 
+import bearing_sweep
 from bearing_sweep import cli, spec, store
 from bearing_sweep.compute import Executor, WorkerMismatch, run_sweep
 from bearing_sweep.grid import Grid
@@ -117,14 +118,17 @@ def test_an_interrupted_zarr_run_resumes_with_only_what_is_missing(tmp_path, mon
     assert not output.exists() and (parts / "store.zarr").is_dir()
     assert len(list(parts.glob("chunk-*.json"))) == 3
 
+    damaged = sorted(parts.glob("chunk-*.json"))[-1]
+    damaged.write_text("{")  # a mark a power loss cut short: its chunk is computed again
     computed.clear()
     messages = []
     monkeypatch.setattr(compute, "evaluate_chunk", lambda grid, start, stop: (
         computed.append(stop - start), original(grid, start, stop))[1])
     summary = run_sweep(sweep, output, Executor(workers=0), chunk_size=99, progress=False,
                         log=messages.append)  # the interrupted run's chunking is kept
-    assert messages == [f"resuming: 3 chunks already computed in {parts}"]
-    assert sum(computed) == 24 - 3 * 2 and set(computed) == {2}
+    assert messages == [f"unreadable part {damaged.name} (incomplete) in {parts}: computing it "
+                        "again", f"resuming: 2 chunks already computed in {parts}"]
+    assert sum(computed) == 24 - 2 * 2 and set(computed) == {2}
     assert summary.status_counts["converged"] == 24 and not parts.exists()
     run_sweep(sweep, tmp_path / "whole.nc", Executor(workers=0), progress=False)
     assert_same_result(tmp_path / "whole.nc", output)
@@ -149,7 +153,7 @@ def test_values_of_another_version_are_never_written(tmp_path, monkeypatch):
     assert not list((tmp_path / "out.zarr.parts").glob("chunk-*"))
 
 
-def test_the_command_replaces_its_own_store_and_refuses_another_folder(tmp_path, capsys):
+def test_the_command_and_the_api_write_a_store_and_replace_their_own(tmp_path, capsys):
     definition = tmp_path / "d.toml"
     definition.write_text(DEFINITION)
     output = tmp_path / "out.zarr"
@@ -157,8 +161,13 @@ def test_the_command_replaces_its_own_store_and_refuses_another_folder(tmp_path,
         assert cli.main(["run", str(definition), "-o", str(output), "--workers", "0",
                          "--quiet"]) == 0
         assert f"-> {output}" in capsys.readouterr().out
-    assert store.open_result(output).status.shape == (3, 4, 2)
-    assert sorted(p.name for p in tmp_path.iterdir()) == ["d.toml", "out.zarr"]
+    by_command = store.open_result(output)
+    assert by_command.status.shape == (3, 4, 2)
+    with bearing_sweep.run(definition, output=tmp_path / "api.zarr", workers=0,
+                           progress=False) as by_api:  # returned opened from the store
+        xr.testing.assert_identical(without_provenance(by_api.load()),
+                                    without_provenance(by_command))
+    assert sorted(p.name for p in tmp_path.iterdir()) == ["api.zarr", "d.toml", "out.zarr"]
 
 
 def test_a_folder_that_is_not_our_store_is_refused(tmp_path, capsys, no_computing):  # noqa: F811
