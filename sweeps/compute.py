@@ -96,14 +96,15 @@ def evaluate_into(writer, expected: dict, grid: Grid, start: int, stop: int) -> 
     """Run the model on points ``start..stop-1`` and write them with ``writer`` (a
     :class:`zarr_store.StoreWriter`) in the process that computed them.
 
-    Returns only ``{"tally": store.chunk_tally, "versions": dict}``: the values never travel.
-    Values computed by other :func:`versions` than ``expected`` are not written (the driver
-    refuses the chunk).
+    Returns ``{"tally": store.chunk_tally, "firsts": dict, "versions": dict}``: the values
+    never travel, but one per cell of the outputs stored on fewer dimensions (``firsts``, as
+    the writer returns them). Values computed by other :func:`versions` than ``expected`` are
+    not written (the driver refuses the chunk).
     """
     result = evaluate_chunk(grid, start, stop)
-    if result["versions"] == expected:
-        writer.write(grid, start, stop, result)
-    return {"tally": store.chunk_tally(grid.model, result), "versions": result["versions"]}
+    firsts = writer.write(grid, start, stop, result) if result["versions"] == expected else {}
+    return {"tally": store.chunk_tally(grid.model, result), "firsts": firsts,
+            "versions": result["versions"]}
 
 
 def _from_si(value: np.ndarray, spec) -> np.ndarray:
@@ -430,7 +431,7 @@ def run_sweep(sweep: Sweep, output=None, executor: Executor | None = None,
             else:
                 check_output(output, sweep.path)  # nothing has taken its place meanwhile
                 if zarr:
-                    parts.finish(sweep, grid, output, scheduler, errors)
+                    parts.finish(sweep, grid, chunks, output, scheduler, errors)
                 else:
                     store.assemble(sweep, grid, parts, chunks, output, scheduler, errors)
             parts.remove()

@@ -10,6 +10,7 @@ import numpy as np
 import xarray as xr
 
 from .models.registry import STATUS_MEANINGS
+from .dependence import reductions, stored_cells
 from .grid import Grid
 from .labels import labelled_dataset
 from .parts import is_zarr, written_atomically
@@ -79,13 +80,16 @@ def summed(model, tallies) -> tuple[dict, list, dict]:
 def gather(sweep: Sweep, grid: Grid, parts, chunks, scheduler: str, errors=()) -> xr.Dataset:
     """The sweep's labelled dataset in memory, from its chunks: the dataset :func:`assemble`
     writes (``errors``: the model's messages, from :func:`tally`)."""
-    outputs = {o.name: np.full(_flat_shape(grid, o), np.nan) for o in grid.model.outputs}
+    reduced = reductions(grid)
+    outputs = {o.name: np.full(_flat_shape(grid, o), np.nan) for o in grid.model.outputs
+               if o.name not in reduced}
     status = np.zeros(grid.size, dtype=np.int8)
     for start, stop in chunks:
         part = parts.load(start, stop)
-        for name, values in part["outputs"].items():
+        for name, values in _per_point_outputs(part, reduced, start, stop).items():
             outputs[name][start:stop] = values
         status[start:stop] = part["status"]
+    outputs.update({name: reduction.values for name, reduction in reduced.items()})
     return labelled_dataset(sweep, grid, outputs, status, provenance(scheduler), errors)
 
 
@@ -95,7 +99,9 @@ def assemble(sweep: Sweep, grid: Grid, parts, chunks, path, scheduler: str, erro
     The file's structure (coordinates, attributes, empty variables, each stored as
     ``sweep.storage`` says) is written by xarray, the chunks' values then into it, region by
     region, and the finished file renamed into place: an existing file at ``path`` stays
-    intact until then. ``errors``: the model's messages, from :func:`tally`.
+    intact until then. ``errors``: the model's messages, from :func:`tally`. An output that
+    depends on fewer inputs than the grid (:mod:`dependence`) is gathered from every chunk and
+    written last.
     """
     import dask.array
     import netCDF4
@@ -113,22 +119,28 @@ def assemble(sweep: Sweep, grid: Grid, parts, chunks, path, scheduler: str, erro
         finally:
             skeleton_store.close()
         del skeleton
+        integral = {o.name for o in grid.model.outputs if o.dtype == "int"}
+        reduced = reductions(grid)
         with netCDF4.Dataset(temporary, "r+") as target:
             for start, stop in chunks:
-                for name, index, block in stored_blocks(grid, start, stop,
-                                                        parts.load(start, stop)):
+                part = parts.load(start, stop)
+                for name, index, block in stored_blocks(
+                        grid, start, stop, _per_point_outputs(part, reduced, start, stop),
+                        part["status"]):
                     target.variables[name][index or ...] = block
+            for name, reduction in reduced.items():
+                target.variables[name][...] = stored_reduction(reduction, name in integral)
 
 
-def stored_blocks(grid: Grid, start: int, stop: int, part: dict):
-    """The values of points ``start..stop-1`` (a computed ``part``) as a result stores them:
-    integral outputs as integers, and the status. Yields ``(name, index, block)``: a tuple of
-    slices of the variable's grid dimensions and its values there (empty for a grid of one
-    point: index with ``...``)."""
+def stored_blocks(grid: Grid, start: int, stop: int, outputs: dict, status: np.ndarray):
+    """The values of points ``start..stop-1`` as a result stores them: the ``outputs`` stored
+    per point (integral ones as integers) and the ``status``. Yields ``(name, index, block)``:
+    a tuple of slices of the grid's dimensions and the variable's values there (empty for a
+    grid of one point: index with ``...``)."""
     integral = {o.name for o in grid.model.outputs if o.dtype == "int"}
     values = {name: integral_values(data, name) if name in integral else data
-              for name, data in part["outputs"].items()}
-    values["status"] = part["status"]
+              for name, data in outputs.items()}
+    values["status"] = status
     for name, data in values.items():
         for index, low, high in _regions(grid.shape, start, stop):
             block = data[low - start:high - start]
@@ -136,9 +148,27 @@ def stored_blocks(grid: Grid, start: int, stop: int, part: dict):
                                              + block.shape[1:])
 
 
+def stored_reduction(reduction, integral: bool) -> np.ndarray:
+    """The values of an output stored on fewer dimensions (a :class:`dependence.Reduction`
+    holding every chunk's), as a result stores them: on its dimensions, as integers if
+    ``integral``."""
+    data = reduction.values
+    data = integral_values(data, reduction.output.name) if integral else data
+    return data.reshape(reduction.shape + data.shape[1:])
+
+
+def _per_point_outputs(part: dict, reduced: dict, start: int, stop: int) -> dict:
+    """A chunk's outputs stored per point; those stored on fewer dimensions (``reduced``, by
+    name) are handed to their :class:`dependence.Reduction` instead."""
+    for name, reduction in reduced.items():
+        reduction.add(start, stop, part["outputs"][name], part["status"])
+    return {name: values for name, values in part["outputs"].items() if name not in reduced}
+
+
 def _flat_shape(grid: Grid, output) -> tuple:
-    """An output's shape with the grid's points flat: points, then its own dimensions."""
-    return (grid.size,) + tuple(grid.dim_sizes[d] for d in output.dims)
+    """An output's shape with the grid's cells it is stored on flat (every point, or fewer:
+    :func:`dependence.stored_dims`), then its own dimensions."""
+    return (stored_cells(grid, output),) + tuple(grid.dim_sizes[d] for d in output.dims)
 
 
 def _regions(shape: tuple, start: int, stop: int, offset: int = 0):

@@ -24,6 +24,7 @@ import json
 import math
 import os
 import shutil
+import zipfile
 from concurrent.futures import ThreadPoolExecutor
 from dataclasses import dataclass
 from pathlib import Path
@@ -31,11 +32,12 @@ from pathlib import Path
 import numpy as np
 import xarray as xr
 
+from .dependence import first_held, reduced_outputs, reductions
 from .grid import Grid
 from .labels import labelled_dataset
 from .parts import Parts, fsync_path, write_durably
 from .spec import Sweep
-from .store import _flat_shape, provenance, stored_blocks, summed
+from .store import _flat_shape, provenance, stored_blocks, stored_reduction, summed
 
 #: How many files a task flushes to the disk at once.
 FLUSHING_THREADS = 8
@@ -98,13 +100,14 @@ def write_structure(sweep: Sweep, grid: Grid, block: tuple, scheduler: str, path
     their own), each stored as the netCDF file stores it (``[output]``: type, fill value,
     compression)."""
     dataset = labelled_structure(sweep, grid, scheduler)
+    sizes = dict(zip(grid.dims, block))
     for name in [o.name for o in grid.model.outputs] + ["status"]:
         variable = dataset[name]
         kept = {key: value for key, value in variable.encoding.items()
                 if key in ("dtype", "_FillValue")}
         stored = np.dtype(kept.get("dtype", variable.dtype))
         variable.encoding = kept | sweep.storage.zarr_codecs(stored.itemsize) | {
-            "chunks": block + variable.shape[len(block):]}
+            "chunks": tuple(sizes.get(d, n) for d, n in zip(variable.dims, variable.shape))}
     # The structure only: the lazy values are queued for a write that is never made. Its
     # metadata consolidated: a task reads one file, not two per variable.
     dataset.to_zarr(path, mode="w", compute=False, zarr_format=ZARR_FORMAT, consolidated=True)
@@ -117,16 +120,26 @@ class StoreWriter:
 
     path: str
 
-    def write(self, grid: Grid, start: int, stop: int, part: dict):
+    def write(self, grid: Grid, start: int, stop: int, part: dict) -> dict:
         """Write points ``start..stop-1`` (a computed ``part``, as ``evaluate_chunk`` returns
         it) and flush their zarr chunks to the disk, so that the chunk's mark never outlives
-        its values in a power loss."""
+        its values in a power loss.
+
+        Returns, for each output stored on fewer dimensions (``dependence``), the chunk's
+        :func:`dependence.first_held` points and values, for the driver to write once every
+        chunk has given its own: ``{name: (points, values)}``, one value per cell.
+        """
         import zarr
 
+        reduced = {o.name: o for o in reduced_outputs(grid)}
+        firsts = {name: first_held(grid, output, start, stop, part["outputs"][name],
+                                   part["status"]) for name, output in reduced.items()}
+        per_point = {name: values for name, values in part["outputs"].items()
+                     if name not in reduced}
         group = zarr.open_group(self.path, mode="r+", zarr_format=ZARR_FORMAT,
                                 use_consolidated=True)
         written = []
-        for name, index, block in stored_blocks(grid, start, stop, part):
+        for name, index, block in stored_blocks(grid, start, stop, per_point, part["status"]):
             array = group[name]
             array[index or ...] = block.astype(array.dtype, copy=False)
             position = [s.start // c for s, c in zip(index, array.chunks)]
@@ -134,14 +147,15 @@ class StoreWriter:
             written.append(Path(self.path, name, ".".join(map(str, position)) or "0"))
         # A zarr chunk equal to the fill value everywhere has no file (zarr writes none).
         flush(written + sorted({path.parent for path in written}))
+        return firsts
 
 
 class StoreParts(Parts):
     """A zarr output on its way: ``<output>.parts/`` with the manifest, the store being written
-    (``store.zarr``) and, for each chunk whose values are in it, a JSON file of its counts
-    (``store.chunk_tally``). The interface of :class:`parts.Parts`, which it extends."""
-
-    suffix = ".json"
+    (``store.zarr``) and, for each chunk whose values are in it, a mark: an ``.npz`` file of
+    its counts (``store.chunk_tally``) and of the values it gives the outputs stored on fewer
+    dimensions (one per cell, :meth:`StoreWriter.write`). The interface of
+    :class:`parts.Parts`, which it extends."""
 
     def __init__(self, output, key: dict):
         super().__init__(output, key)
@@ -165,30 +179,49 @@ class StoreParts(Parts):
         return StoreWriter(str(self.store.absolute()))
 
     def unreadable(self, path: Path, points: int) -> str | None:
-        found = _read_tally(path)
-        if found is None:
+        try:
+            found = self.load(path)
+        except (OSError, ValueError, EOFError, KeyError, zipfile.BadZipFile):
             return "incomplete"
-        return None if sum(found["status"]) == points else "not this chunk's counts"
+        return None if sum(found[0]["status"]) == points else "not this chunk's counts"
 
     def save(self, start: int, stop: int, result: dict):
-        """Mark the chunk finished, its values being in the store: keep its counts."""
-        text = json.dumps(result["tally"]).encode()
-        write_durably(self.path(start, stop), lambda handle: handle.write(text))
+        """Mark the chunk finished, its values being in the store: keep its counts and the
+        values it gives the outputs stored on fewer dimensions."""
+        arrays = {"tally": np.array(json.dumps(result["tally"]))}
+        for name, (points, values) in result["firsts"].items():
+            arrays[f"points_{name}"], arrays[f"values_{name}"] = points, values
+        write_durably(self.path(start, stop), lambda handle: np.savez(handle, **arrays))
+
+    @staticmethod
+    def load(path: Path) -> tuple[dict, dict]:
+        """A mark's counts, and its ``{name: (points, values)}``."""
+        with np.load(path) as data:
+            firsts = {key[len("points_"):]: (data[key], data["values_" + key[len("points_"):]])
+                      for key in data.files if key.startswith("points_")}
+            return json.loads(str(data["tally"])), firsts
 
     def tally(self, model, chunks) -> tuple[dict, list, dict]:
         """The sweep's counts (``store.tally``) from its chunks' marks."""
-        return summed(model, (_read_tally(self.path(start, stop)) for start, stop in chunks))
+        return summed(model, (self.load(self.path(start, stop))[0] for start, stop in chunks))
 
-    def finish(self, sweep: Sweep, grid: Grid, output, scheduler: str, errors=()):
-        """Complete the store's global attributes (as the netCDF file's: model errors,
-        scheduler, history), consolidate its metadata, and give it the output's name; an
-        earlier result there is replaced."""
+    def finish(self, sweep: Sweep, grid: Grid, chunks, output, scheduler: str, errors=()):
+        """Write the outputs stored on fewer dimensions from the ``chunks``' marks, complete
+        the store's global attributes (as the netCDF file's: model errors, scheduler,
+        history), consolidate its metadata, and give it the output's name; an earlier result
+        there is replaced."""
         import zarr
         from xarray.backends.zarr import encode_zarr_attr_value
 
         attributes = labelled_structure(sweep, grid, scheduler, errors).attrs
         group = zarr.open_group(self.store, mode="r+", zarr_format=ZARR_FORMAT,
                                 use_consolidated=False)
+        reduced = reductions(grid)
+        for start, stop in chunks:
+            for name, (points, values) in self.load(self.path(start, stop))[1].items():
+                reduced[name].add_firsts(points, values)
+        for name, reduction in reduced.items():
+            group[name][...] = stored_reduction(reduction, reduction.output.dtype == "int")
         group.attrs.put({key: encode_zarr_attr_value(value)
                          for key, value in attributes.items()})
         zarr.consolidate_metadata(str(self.store), zarr_format=ZARR_FORMAT)
@@ -215,10 +248,3 @@ def flush(paths):
         list(pool.map(fsync_path, paths))
 
 
-def _read_tally(path: Path) -> dict | None:
-    try:
-        found = json.loads(path.read_text())
-    except (OSError, ValueError):
-        return None
-    return found if isinstance(found, dict) and {"status", "errors", "noted"} <= found.keys() \
-        else None

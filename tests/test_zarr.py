@@ -11,10 +11,12 @@ import zarr
 import bearing_sweep
 from bearing_sweep import cli, spec, store
 from bearing_sweep.compute import Executor, WorkerMismatch, run_sweep
+from bearing_sweep.dependence import InconsistentOutput
 from bearing_sweep.grid import Grid
 from bearing_sweep.store import _regions
 from bearing_sweep.zarr_store import block_chunks, block_shape
 from test_conventions import assert_cf_labelled
+from test_dependence import GRID as TOY_GRID, toy  # noqa: F401  (a fixture)
 from test_outputs import no_computing, refused  # noqa: F401  (a fixture)
 
 # 3 x 4 x 2 points: chunks of 3 points are blocks of (1, 1, 2), of 16 points (2, 4, 2).
@@ -116,10 +118,10 @@ def test_an_interrupted_zarr_run_resumes_with_only_what_is_missing(tmp_path, mon
         run_sweep(sweep, output, Executor(workers=0), chunk_size=3, progress=False)
     parts = tmp_path / "out.zarr.parts"
     assert not output.exists() and (parts / "store.zarr").is_dir()
-    assert len(list(parts.glob("chunk-*.json"))) == 3
+    assert len(list(parts.glob("chunk-*.npz"))) == 3
 
-    damaged = sorted(parts.glob("chunk-*.json"))[-1]
-    damaged.write_text("{")  # a mark a power loss cut short: its chunk is computed again
+    damaged = sorted(parts.glob("chunk-*.npz"))[-1]
+    damaged.write_bytes(damaged.read_bytes()[:40])  # cut short by a power loss: computed again
     computed.clear()
     messages = []
     monkeypatch.setattr(compute, "evaluate_chunk", lambda grid, start, stop: (
@@ -182,3 +184,19 @@ def test_a_folder_that_is_not_our_store_is_refused(tmp_path, capsys, no_computin
         other, zarr_format=2)
     err = refused(tmp_path, capsys, other)
     assert "its attributes do not name bearing-sweep" in err
+
+
+def test_outputs_on_fewer_axes_are_the_files_and_a_wrong_declaration_stops(toy,  # noqa: F811
+                                                                            tmp_path):
+    # Chunks of one point: each cell's value comes from its first held point, a later chunk
+    # where the first row fails, as in the netCDF file.
+    sweep = spec.parse(TOY_GRID)
+    run_sweep(sweep, tmp_path / "toy.nc", Executor(workers=0), chunk_size=1, progress=False)
+    run_sweep(sweep, tmp_path / "toy.zarr", Executor(workers=0), chunk_size=1, progress=False)
+    assert assert_same_result(tmp_path / "toy.nc", tmp_path / "toy.zarr")["product"].dims == (
+        "b",)
+    lying = spec.parse(TOY_GRID.replace('"toy"', '"liar"'))
+    with pytest.raises(InconsistentOutput, match="output 'product': declared to depend on b, c "
+                                                 "only"):
+        run_sweep(lying, tmp_path / "liar.zarr", Executor(workers=0), progress=False)
+    assert not (tmp_path / "liar.zarr").exists()
