@@ -16,9 +16,9 @@ recommends (``DASK_CONFIG``: no malloc trim threshold). Two measurements:
    may need more memory for the larger sweep (goal: a ratio of at most 1.1).
 
 Every run is in chunks of 4000 points (about a second's work each, as a large sweep's default
-chunks). The projection to 1e8 points takes the time per point between the two memory runs
-(their difference: without the start of a process, the same in both), and the driver's memory
-per chunk (the slope between the two runs) for the 1e8 points' chunks.
+chunks). The projection to 1e8 points takes the timed zarr runs' median time per point (with
+the store's fixed costs: an upper bound), and the driver's memory per chunk (the slope between
+the two memory runs) for the 1e8 points' chunks.
 """
 import contextlib
 import os
@@ -198,7 +198,7 @@ def main():
     print(f"  ratio: {growth:.2f}x peak memory of the larger run, worst process (goal: at most "
           f"1.1x: memory bounded)")
 
-    per_point = (large["seconds"] - small["seconds"]) / (large["points"] - small["points"])
+    per_point = np.median(zarr_times) / points  # with the store's fixed costs: an upper bound
     projected = Grid.from_sweep(spec.parse(DEFINITION.format(
         loads=round(PROJECTED_POINTS / 200)), "projected.toml"))
     chunks = chunk_count(projected)
