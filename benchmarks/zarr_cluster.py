@@ -50,7 +50,7 @@ radial_load = {{ start = "0.5 kN", stop = "12 kN", num = {loads} }}
 clearance = {{ start = "0 mm", stop = "0.05 mm", num = 200 }}
 """
 #: Load steps of the timed pairs, and of the smaller and larger memory runs (x 200 points).
-TIMED, SMALL, LARGE = 120, 40, 160
+TIMED, SMALL, LARGE = 200, 40, 160
 #: Points per chunk of every run: about a second's work, as the default chunking makes them
 #: in a large sweep (``compute.CHUNK_SECONDS``; 10000 points of crb_radial's declared cost).
 CHUNK = 4000
