@@ -16,7 +16,7 @@ from . import spec
 from .compute import Executor, run_sweep
 from .parts import check_output
 from .spec import SpecError, Sweep
-from .store import open_result, result_engine, write_netcdf
+from .store import is_result, open_result, result_engine, write_netcdf
 
 
 def run(definition, *, output=None, client=None, workers=None, progress=True, encoding=None,
@@ -96,7 +96,7 @@ def analyze(result, *, output=None) -> xr.Dataset:
     Parameters
     ----------
     result : xarray.Dataset, str or os.PathLike
-        A result of a definition with a ``[sample]`` table, or its netCDF file.
+        A result of a definition with a ``[sample]`` table, or its netCDF file or zarr store.
     output : str or os.PathLike, optional
         A netCDF file to write the analysis to, atomically, as ``bearing-sweep analyze -o``.
 
@@ -116,7 +116,7 @@ def analyze(result, *, output=None) -> xr.Dataset:
     where = "the dataset"
     if not isinstance(result, xr.Dataset):
         where = str(result)
-        if not os.path.isfile(result):
+        if not is_result(result):
             raise SpecError(f"{result}: no such result file")
         if output is not None and os.path.exists(output) and os.path.samefile(result, output):
             raise SpecError(f"{output}: is the result itself; choose another output")

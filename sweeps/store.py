@@ -2,6 +2,7 @@
 or gathered in memory; its provenance (package version, git commit)."""
 from __future__ import annotations
 
+import os
 import subprocess
 from importlib.metadata import PackageNotFoundError, version
 from pathlib import Path
@@ -214,6 +215,12 @@ def open_result(path) -> xr.Dataset:
     """Open a sweep's netCDF file (or zarr store) fully into memory (it is closed afterwards)."""
     with xr.open_dataset(path, engine=result_engine(path)) as dataset:
         return dataset.load()
+
+
+def is_result(path) -> bool:
+    """Whether ``path`` holds something to open as a result: a file, or a zarr store (a
+    folder); :func:`open_result` says whether it is one."""
+    return os.path.isfile(path) or (is_zarr(path) and os.path.isdir(path))
 
 
 def result_engine(path) -> str:

@@ -200,3 +200,17 @@ def test_outputs_on_fewer_axes_are_the_files_and_a_wrong_declaration_stops(toy, 
                                                  "only"):
         run_sweep(lying, tmp_path / "liar.zarr", Executor(workers=0), progress=False)
     assert not (tmp_path / "liar.zarr").exists()
+
+
+def test_analyze_and_plot_take_a_store(tmp_path, capsys):
+    definition = tmp_path / "sampled.toml"
+    definition.write_text(DEFINITION.split("[axes]")[0] + '[axes]\nspeed = ["0 rpm"]\n'
+                          '[sample]\nmethod = "random"\nn = 4\nseed = 1\nradial_load = '
+                          '{ distribution = "uniform", low = "2 kN", high = "6 kN" }\n')
+    result = tmp_path / "sampled.zarr"
+    assert cli.main(["run", str(definition), "-o", str(result), "--workers", "0",
+                     "--quiet"]) == 0
+    assert cli.main(["analyze", str(result)]) == 0
+    assert store.open_result(tmp_path / "sampled_analysis.nc").attrs["sample_size"] == 4
+    assert cli.main(["plot", str(result), "radial_stiffness"]) == 0
+    assert (tmp_path / "sampled.png").stat().st_size > 0
