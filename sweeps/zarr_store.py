@@ -9,14 +9,17 @@ filesystem every worker shares with the driver.
 
 The zarr chunks along the grid's axes are the sweep's chunks (:func:`block_shape`): a chunk of
 points fills one whole zarr chunk of every output, so no two tasks ever write one zarr chunk
-(a zarr chunk is written whole: two writers of one would lose the values of one of them).
+(a zarr chunk is written whole: two writers of one would lose the values of one of them). An
+output stored on fewer axes (``dependence``) is the exception: each task returns one value per
+cell of those axes, and the driver writes them once every chunk has given its own.
 
 Until the sweep is complete the store lives in ``<output>.parts/store.zarr``, beside the
-manifest of ``parts.Parts`` and one small JSON file per finished chunk (its counts), written
-once the worker has written the chunk's values and flushed them to the disk: an interrupted
-run resumes from the chunks so marked. At the end the global attributes are completed (model
-errors, scheduler, history), the metadata consolidated, and the store renamed to the output:
-a store found at the output path is always complete.
+manifest of ``parts.Parts`` and one small mark per finished chunk (its counts and its values
+of the outputs on fewer axes), written once the worker has written the chunk's values and
+flushed them to the disk: an interrupted run resumes from the chunks so marked. At the end
+the global attributes are completed (model errors, scheduler, history), the metadata
+consolidated, and the store renamed to the output: a store found at the output path is always
+complete.
 """
 from __future__ import annotations
 
