@@ -15,8 +15,8 @@ recommends (``DASK_CONFIG``: no malloc trim threshold). Two measurements:
    Values never pass through the driver, and a worker holds one chunk at a time: no process
    may need more memory for the larger sweep (goal: a ratio of at most 1.1).
 
-Every run is in chunks of 4000 points (about a second's work each, as a large sweep's default
-chunks). The projection to 1e8 points takes the timed zarr runs' median time per point (with
+Every run is in chunks of 10000 points (half a second's work each; a large sweep's default
+chunks are of a second). The projection to 1e8 points takes the timed zarr runs' median time per point (with
 the store's fixed costs: an upper bound), and the driver's memory per chunk (the slope between
 the two memory runs) for the 1e8 points' chunks.
 """
@@ -50,10 +50,10 @@ radial_load = {{ start = "0.5 kN", stop = "12 kN", num = {loads} }}
 clearance = {{ start = "0 mm", stop = "0.05 mm", num = 200 }}
 """
 #: Load steps of the timed pairs, and of the smaller and larger memory runs (x 200 points).
-TIMED, SMALL, LARGE = 200, 40, 160
-#: Points per chunk of every run: about a second's work, as the default chunking makes them
-#: in a large sweep (``compute.CHUNK_SECONDS``; 10000 points of crb_radial's declared cost).
-CHUNK = 4000
+TIMED, SMALL, LARGE = 400, 100, 400
+#: Points per chunk of every run: half a second's work at crb_radial's declared cost, as the
+#: default chunking makes them in a large sweep (``compute.CHUNK_SECONDS``: 20000 points).
+CHUNK = 10000
 PAIRS = 3
 #: What the README asks of a cluster's workers: dask's nanny would otherwise set
 #: MALLOC_TRIM_THRESHOLD_=65536, which doubles the model's time (see compute.Executor.connect).
