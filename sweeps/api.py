@@ -16,7 +16,7 @@ from . import spec
 from .compute import Executor, run_sweep
 from .parts import check_output
 from .spec import SpecError, Sweep
-from .store import open_result, write_netcdf
+from .store import is_result, open_result, result_engine, write_netcdf
 
 
 def run(definition, *, output=None, client=None, workers=None, progress=True, encoding=None,
@@ -30,11 +30,14 @@ def run(definition, *, output=None, client=None, workers=None, progress=True, en
         same structure with units in strings (``{"sweep": {"model": "crb_radial"},
         "axes": {"radial_load": ["2 kN", "4 kN"]}}``).
     output : str or os.PathLike, optional
-        A netCDF file to write, atomically and resumably, as ``bearing-sweep run -o`` does;
+        A netCDF file to write, atomically and resumably, as ``bearing-sweep run -o`` does,
+        or a zarr store (a path ending in ``.zarr``) that each worker writes its chunks into;
         the dataset is then returned opened from it (lazily: close it, or use ``with``).
         Without it, nothing is written and the dataset is returned in memory.
     client : dask.distributed.Client, optional
-        An existing client to compute the chunks on; it is left open.
+        An existing client to compute the chunks on (a ``dask_jobqueue.SLURMCluster``'s, for
+        one); it is left open. Its workers need the same bearing-sweep installed, and to
+        write a zarr ``output`` the same filesystem at the same path.
     workers : int, optional
         Without ``client``: a local dask cluster of this many single-threaded processes, 0 to
         compute in this process (default: two, or in this process for a small sweep).
@@ -76,7 +79,7 @@ def run(definition, *, output=None, client=None, workers=None, progress=True, en
         print(summary.text(), file=sys.stderr)
     if output is None:
         return summary.dataset
-    return xr.open_dataset(output, engine="netcdf4")
+    return xr.open_dataset(output, engine=result_engine(output))
 
 
 def check(definition) -> None:
@@ -93,7 +96,7 @@ def analyze(result, *, output=None) -> xr.Dataset:
     Parameters
     ----------
     result : xarray.Dataset, str or os.PathLike
-        A result of a definition with a ``[sample]`` table, or its netCDF file.
+        A result of a definition with a ``[sample]`` table, or its netCDF file or zarr store.
     output : str or os.PathLike, optional
         A netCDF file to write the analysis to, atomically, as ``bearing-sweep analyze -o``.
 
@@ -113,7 +116,7 @@ def analyze(result, *, output=None) -> xr.Dataset:
     where = "the dataset"
     if not isinstance(result, xr.Dataset):
         where = str(result)
-        if not os.path.isfile(result):
+        if not is_result(result):
             raise SpecError(f"{result}: no such result file")
         if output is not None and os.path.exists(output) and os.path.samefile(result, output):
             raise SpecError(f"{output}: is the result itself; choose another output")

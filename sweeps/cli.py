@@ -9,7 +9,7 @@ from pathlib import Path
 
 from .models.catalogue import PRESETS
 from .models.registry import all_models
-from . import api, schema, spec, study
+from . import api, schema, spec, store, study
 from .parts import check_output, write_durably
 from .compute import Executor, WorkerMismatch, check_scheduler_address, run_sweep
 from .dependence import InconsistentOutput
@@ -31,10 +31,12 @@ def _parser() -> argparse.ArgumentParser:
                              help="run on an existing dask.distributed scheduler (its workers "
                                   "need the same bearing-sweep version installed)")
 
-    run = commands.add_parser("run", help="compute a sweep definition into a netCDF file")
+    run = commands.add_parser("run", help="compute a sweep definition into a netCDF file or a "
+                              "zarr store")
     run.add_argument("definition", type=Path, help="the sweep definition (TOML)")
     run.add_argument("-o", "--output", type=Path,
-                     help="netCDF file to write (default results/<definition name>.nc)")
+                     help="netCDF file to write (default results/<definition name>.nc), or a "
+                          "zarr store (a path ending in .zarr) that each worker writes into")
     run.add_argument("--chunk-size", type=int, metavar="POINTS",
                      help="grid points per task (default: chosen from the model's cost)")
     run.add_argument("--quiet", action="store_true", help="no progress bar")
@@ -50,7 +52,8 @@ def _parser() -> argparse.ArgumentParser:
 
     analyze = commands.add_parser("analyze", help="statistics and Sobol indices of a sampled "
                                   "result")
-    analyze.add_argument("result", type=Path, help="a netCDF file of a sweep with [sample]")
+    analyze.add_argument("result", type=Path, help="a netCDF file (or zarr store) of a sweep with "
+                         "[sample]")
     analyze.add_argument("-o", "--output", type=Path, metavar="OUT",
                          help="the netCDF file to write (default RESULT_analysis.nc beside it)")
 
@@ -73,7 +76,8 @@ def _parser() -> argparse.ArgumentParser:
     schema_command.add_argument("-o", "--output", type=Path, metavar="FILE",
                                 help="write the schema to FILE (default: standard output)")
     plot = commands.add_parser("plot", help="draw one output of a result against an axis")
-    plot.add_argument("result", type=Path, help="a netCDF file written by bearing-sweep run")
+    plot.add_argument("result", type=Path, help="a netCDF file (or zarr store) written by "
+                      "bearing-sweep run")
     plot.add_argument("variable", nargs="?", help="the output to draw (default: the first)")
     plot.add_argument("--x", metavar="AXIS",
                       help="the axis along x (default: the sweep's first axis)")
@@ -213,7 +217,7 @@ def main(argv=None) -> int:
         elif args.command == "schema":
             _schema(args.model, args.output)
         elif args.command == "plot":
-            if not args.result.is_file():
+            if not store.is_result(args.result):
                 raise SpecError(f"{args.result}: no such result file")
             output = args.output or args.result.with_suffix(".png")
             from . import quicklook  # matplotlib only for who plots

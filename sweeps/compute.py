@@ -2,6 +2,7 @@
 from __future__ import annotations
 
 import contextlib
+import functools
 import logging
 import math
 import signal
@@ -14,10 +15,10 @@ from dataclasses import dataclass, field
 import numpy as np
 
 from .models.registry import MODEL_ERROR, VALUES_KEPT
-from . import store, units
+from . import store, units, zarr_store
 from .grid import Grid
 from .labels import stored_unit
-from .parts import HeldChunks, OutputLock, Parts, check_output
+from .parts import HeldChunks, OutputLock, Parts, check_output, is_zarr
 from .spec import SpecError, Sweep
 
 #: Below this estimated single-core time [s] a sweep runs in-process: starting a cluster
@@ -89,6 +90,21 @@ def evaluate_chunk(grid: Grid, start: int, stop: int) -> dict:
     for values in outputs.values():
         values[failed] = np.nan  # whatever a model left there, a failed point is NaN
     return {"outputs": outputs, "status": status, "errors": errors, "versions": versions(model)}
+
+
+def evaluate_into(writer, expected: dict, grid: Grid, start: int, stop: int) -> dict:
+    """Run the model on points ``start..stop-1`` and write them with ``writer`` (a
+    :class:`zarr_store.StoreWriter`) in the process that computed them.
+
+    Returns ``{"tally": store.chunk_tally, "firsts": dict, "versions": dict}``: the values
+    never travel, but one per cell of the outputs stored on fewer dimensions (``firsts``, as
+    the writer returns them). Values computed by other :func:`versions` than ``expected`` are
+    not written (the driver refuses the chunk).
+    """
+    result = evaluate_chunk(grid, start, stop)
+    firsts = writer.write(grid, start, stop, result) if result["versions"] == expected else {}
+    return {"tally": store.chunk_tally(grid.model, result), "firsts": firsts,
+            "versions": result["versions"]}
 
 
 def _from_si(value: np.ndarray, spec) -> np.ndarray:
@@ -275,18 +291,20 @@ class Executor:
                     f"({self.worker_count()} workers)")
         return f"dask LocalCluster ({self.worker_count()} single-threaded worker processes)"
 
-    def map(self, grid: Grid, chunks, parallel: bool):
-        """Yield ``(start, stop, result)`` as chunks finish."""
+    def map(self, grid: Grid, chunks, parallel: bool, task=None):
+        """Yield ``(start, stop, result)`` as chunks finish; ``result`` is
+        ``task(grid, start, stop)`` (default :func:`evaluate_chunk`)."""
+        task = task or evaluate_chunk
         if not parallel:
             for start, stop in chunks:
-                yield start, stop, evaluate_chunk(grid, start, stop)
+                yield start, stop, task(grid, start, stop)
             return
         from distributed import as_completed
 
         client = self.connect()
         # The grid travels with every task (it is small): scattered data would be lost with a
         # worker that dies, and with it every chunk still to compute.
-        futures = {client.submit(evaluate_chunk, grid, start, stop, pure=False): (start, stop)
+        futures = {client.submit(task, grid, start, stop, pure=False): (start, stop)
                    for start, stop in chunks}
         try:
             with client.as_current():  # as_completed looks for the current client
@@ -346,8 +364,7 @@ def _check_versions(found: dict, expected: dict, executor: Executor, parts: Part
         return
     where = f"dask scheduler {executor.scheduler}" if executor.scheduler else "the cluster"
     kept = "" if parts.folder is None else (
-        f" ({len(list(parts.folder.glob('chunk-*.npz')))} chunks computed so far are kept in "
-        f"{parts.folder})")
+        f" ({parts.count()} chunks computed so far are kept in {parts.folder})")
     raise WorkerMismatch(
         f"a worker of {where} runs bearing-sweep {found['package']} (model version "
         f"{found['model']}) where this run has bearing-sweep {expected['package']} (model version "
@@ -362,8 +379,9 @@ def run_sweep(sweep: Sweep, output=None, executor: Executor | None = None,
 
     Finished chunks are kept as part files beside ``output`` until the file is written, so a
     run after an interruption computes only what is missing (``fresh`` discards them). The
-    file is assembled one chunk at a time: memory is bounded by the chunk size. ``log``
-    receives messages for the user (resuming, discarding).
+    file is assembled one chunk at a time: memory is bounded by the chunk size. An output
+    ending in ``.zarr`` is a zarr store that each chunk is written into where it is computed
+    (:mod:`zarr_store`). ``log`` receives messages for the user (resuming, discarding).
     """
     if output is not None:
         check_output(output, sweep.path)
@@ -381,31 +399,41 @@ def run_sweep(sweep: Sweep, output=None, executor: Executor | None = None,
                 executor.connect()
             size = chunk_size or choose_chunk_size(
                 grid, executor.worker_count() if parallel else 1)
-            parts = HeldChunks() if output is None else Parts(output, {
-                "definition_sha256": sweep.sha256, "values_sha256": grid.values_sha256,
-                "model_version": model.version,
-                "points": grid.size, "package_version": expected["package"]})
+            zarr = is_zarr(output)
+            parts = HeldChunks() if output is None else (
+                zarr_store.StoreParts if zarr else Parts)(output, {
+                    "definition_sha256": sweep.sha256, "values_sha256": grid.values_sha256,
+                    "model_version": model.version,
+                    "points": grid.size, "package_version": expected["package"]})
             size = parts.open(size, fresh, log)
-            chunks = grid.chunks(size)
+            chunks = zarr_store.chunks(grid, size) if zarr else grid.chunks(size)
+            task = None
+            if zarr:  # each chunk is written into the store by the worker that computes it
+                parts.prepare(sweep, grid, size, executor.describe(parallel))
+                task = functools.partial(evaluate_into, parts.writer, expected)
             done = parts.finished()
             todo = [chunk for chunk in chunks if chunk not in done]
             bar = Progress(grid.size, model.name, progress)
             bar.advance(grid.size - sum(stop - start for start, stop in todo))
             try:
-                for start, stop, result in executor.map(grid, todo, parallel):
+                for start, stop, result in executor.map(grid, todo, parallel, task):
                     _check_versions(result.pop("versions"), expected, executor, parts)
                     parts.save(start, stop, result)
                     bar.advance(stop - start)
             finally:
                 bar.close()
             scheduler = executor.describe(parallel)
-            counts, errors, noted = store.tally(grid, parts, chunks)
+            counts, errors, noted = (parts.tally(model, chunks) if zarr
+                                     else store.tally(grid, parts, chunks))
             dataset = None
             if output is None:
                 dataset = store.gather(sweep, grid, parts, chunks, scheduler, errors)
             else:
                 check_output(output, sweep.path)  # nothing has taken its place meanwhile
-                store.assemble(sweep, grid, parts, chunks, output, scheduler, errors)
+                if zarr:
+                    parts.finish(sweep, grid, chunks, output, scheduler, errors)
+                else:
+                    store.assemble(sweep, grid, parts, chunks, output, scheduler, errors)
             parts.remove()
         return Summary(model.name, grid.size, counts, time.monotonic() - began,
                        "(in memory)" if output is None else str(output), scheduler, errors, noted,

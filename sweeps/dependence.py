@@ -22,6 +22,8 @@ from .grid import Grid
 #: in a pure model; the margin spares a finished sweep a failure over a last-bit difference
 #: (a library's vector loop and its scalar tail), far below any real dependence.
 AGREEMENT = 1e-12
+#: The source of a cell no point has given a value yet: beyond every point.
+UNKNOWN = np.iinfo(np.int64).max
 
 
 class InconsistentOutput(ValueError):
@@ -48,11 +50,50 @@ def stored_cells(grid: Grid, output) -> int:
     return int(np.prod(stored_shape(grid, output), dtype=np.int64))
 
 
+def reduced_outputs(grid: Grid) -> list:
+    """The outputs of the grid's model stored on fewer dimensions than the grid has."""
+    return [output for output in grid.model.outputs if stored_dims(grid, output) != grid.dims]
+
+
 def reductions(grid: Grid) -> dict[str, "Reduction"]:
-    """A :class:`Reduction` for each output of the grid's model stored on fewer dimensions
-    than the grid has, by name."""
-    return {output.name: Reduction(grid, output) for output in grid.model.outputs
-            if stored_dims(grid, output) != grid.dims}
+    """A :class:`Reduction` for each of the grid's :func:`reduced_outputs`, by name."""
+    return {output.name: Reduction(grid, output) for output in reduced_outputs(grid)}
+
+
+def first_held(grid: Grid, output, start: int, stop: int, values: np.ndarray,
+               status: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
+    """The first point whose values hold in each cell of ``output``'s :func:`stored_dims`
+    that points ``start..stop-1`` (their ``values`` and ``status``) fall in, and its value:
+    one value per cell, what :meth:`Reduction.add_firsts` takes. :class:`InconsistentOutput`
+    where another held point of the cell disagrees with it."""
+    held = np.isin(status, VALUES_KEPT)
+    points = np.arange(start, stop)[held]
+    values = values[held]
+    cells = _cells(grid, output, points)
+    _, first, inverse = np.unique(cells, return_index=True, return_inverse=True)
+    source, expected = points[first][inverse], values[first][inverse]
+    agree = _agree(values, expected)
+    if not agree.all():
+        wrong = np.flatnonzero(~agree)[0]
+        raise InconsistentOutput(_disagreement(grid, output, points[wrong], values[wrong],
+                                               source[wrong], expected[wrong]))
+    return points[first], values[first]
+
+
+def _cells(grid: Grid, output, points: np.ndarray) -> np.ndarray:
+    """The cell of ``output``'s :func:`stored_dims` (flat) each point falls in."""
+    axes = [grid.dims.index(d) for d in stored_dims(grid, output)]
+    if not axes:
+        return np.zeros(points.size, dtype=np.int64)
+    index = np.unravel_index(points, grid.shape)
+    return np.ravel_multi_index([index[a] for a in axes], stored_shape(grid, output))
+
+
+def _agree(values: np.ndarray, expected: np.ndarray) -> np.ndarray:
+    """Whether each point's values (its own dimensions too) agree with the expected ones."""
+    with np.errstate(invalid="ignore"):
+        agree = np.isclose(values, expected, rtol=AGREEMENT, atol=0.0, equal_nan=True)
+    return agree.all(axis=tuple(range(1, agree.ndim)))
 
 
 class Reduction:
@@ -64,49 +105,49 @@ class Reduction:
     def __init__(self, grid: Grid, output):
         self.grid, self.output = grid, output
         self.dims = stored_dims(grid, output)
-        self.axes = [grid.dims.index(d) for d in self.dims]
         self.shape = stored_shape(grid, output)
         cells = stored_cells(grid, output)
         self.values = np.full((cells,) + tuple(grid.dim_sizes[d] for d in output.dims), np.nan)
         # The point each value comes from; none yet: beyond every point.
-        self.source = np.full(cells, np.iinfo(np.int64).max, dtype=np.int64)
+        self.source = np.full(cells, UNKNOWN, dtype=np.int64)
 
     def add(self, start: int, stop: int, values: np.ndarray, status: np.ndarray):
         """Take the values of points ``start..stop-1`` (their ``status``): a cell takes the
         value of its first held point in grid order; :class:`InconsistentOutput` where a held
         point disagrees with it."""
-        held = np.isin(status, VALUES_KEPT)
-        points = np.arange(start, stop)[held]
-        values = values[held]
-        index = np.unravel_index(points, self.grid.shape) if self.grid.shape else ()
-        cells = np.ravel_multi_index([index[a] for a in self.axes], self.shape) \
-            if self.axes else np.zeros(points.size, dtype=np.int64)
-        first_cells, first = np.unique(cells, return_index=True)  # points come in order
-        earlier = points[first] < self.source[first_cells]  # chunks may come in any order
-        self.values[first_cells[earlier]] = values[first[earlier]]
-        self.source[first_cells[earlier]] = points[first[earlier]]
+        self.add_firsts(*first_held(self.grid, self.output, start, stop, values, status))
+
+    def add_firsts(self, points: np.ndarray, values: np.ndarray):
+        """Take a chunk's :func:`first_held` points (one per cell) and their values: a cell
+        keeps the value of its earliest point, whatever order the chunks come in;
+        :class:`InconsistentOutput` where a chunk disagrees with another."""
+        cells = _cells(self.grid, self.output, points)
+        known = self.source[cells] != UNKNOWN
         expected = self.values[cells]
-        with np.errstate(invalid="ignore"):
-            agree = np.isclose(values, expected, rtol=AGREEMENT, atol=0.0, equal_nan=True)
-        agree = agree.all(axis=tuple(range(1, agree.ndim)))
+        agree = _agree(values, expected) | ~known
         if not agree.all():
             wrong = np.flatnonzero(~agree)[0]
-            raise InconsistentOutput(self._disagreement(points[wrong], values[wrong],
-                                                        self.source[cells[wrong]],
-                                                        expected[wrong]))
+            raise InconsistentOutput(_disagreement(self.grid, self.output, points[wrong],
+                                                   values[wrong], self.source[cells[wrong]],
+                                                   expected[wrong]))
+        earlier = points < self.source[cells]
+        self.values[cells[earlier]] = values[earlier]
+        self.source[cells[earlier]] = points[earlier]
 
-    def _disagreement(self, point, value, source, expected) -> str:
-        inputs = ", ".join(self.output.depends_on) or "no input"
-        unit = "" if self.output.unit in ("", "1") else " " + self.output.unit
-        return (f"model {self.grid.model.name!r}, output {self.output.name!r}: declared to "
-                f"depend on {inputs} only (depends_on), it differs between points that share "
-                f"those: {_shown(expected)}{unit} at {self._where(source)} and "
-                f"{_shown(value)}{unit} at {self._where(point)}; the model's declaration is "
-                "wrong (remove or widen its depends_on)")
 
-    def _where(self, point) -> str:
-        index = np.unravel_index(point, self.grid.shape)
-        return "point " + ", ".join(f"{d}[{i}]" for d, i in zip(self.grid.dims, index))
+def _disagreement(grid: Grid, output, point, value, source, expected) -> str:
+    inputs = ", ".join(output.depends_on) or "no input"
+    unit = "" if output.unit in ("", "1") else " " + output.unit
+    return (f"model {grid.model.name!r}, output {output.name!r}: declared to "
+            f"depend on {inputs} only (depends_on), it differs between points that share "
+            f"those: {_shown(expected)}{unit} at {_where(grid, source)} and "
+            f"{_shown(value)}{unit} at {_where(grid, point)}; the model's declaration is "
+            "wrong (remove or widen its depends_on)")
+
+
+def _where(grid: Grid, point) -> str:
+    index = np.unravel_index(point, grid.shape)
+    return "point " + ", ".join(f"{d}[{i}]" for d, i in zip(grid.dims, index))
 
 
 def _shown(value) -> str:

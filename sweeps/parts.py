@@ -3,8 +3,9 @@
 ``<output>.parts/`` holds a manifest (what the parts belong to: the definition's sha256, the
 model's and the package's versions, the grid's size and the chunk size) and one ``.npz`` file
 per finished chunk, each written atomically and flushed to the disk before it is renamed into
-place. Parts of another definition, model or package version are discarded, with a message;
-a part that cannot be read (a power loss before it reached the disk) is computed again.
+place (a zarr output keeps its chunks' values in its store instead: ``zarr_store``). Parts of
+another definition, model or package version are discarded, with a message; a part that cannot
+be read (a power loss before it reached the disk) is computed again.
 A lock on ``.<output>.lock`` keeps two runs from writing the same output, and
 :func:`check_output` refuses an output path that holds something other than an earlier result.
 """
@@ -38,16 +39,24 @@ class UnreadablePart(OSError):
 
 #: The first bytes of a netCDF file: classic and 64-bit offset formats, and HDF5 (netCDF-4).
 NETCDF_SIGNATURES = (b"CDF\x01", b"CDF\x02", b"CDF\x05", b"\x89HDF\r\n\x1a\n")
+#: The suffix of an output written as a zarr store (a folder) rather than a netCDF file.
+ZARR_SUFFIX = ".zarr"
+
+
+def is_zarr(output) -> bool:
+    """Whether ``output`` names a zarr store (by its suffix, as ``-o result.zarr``)."""
+    return output is not None and Path(output).suffix == ZARR_SUFFIX
 
 
 def check_output(output, definition=None):
     """Refuse, before any computing, an output path that a sweep must not replace.
 
-    Accepted: a path that does not exist yet in a folder that exists or can be made, or a
+    Accepted: a path that does not exist yet in a folder that exists or can be made, a
     regular netCDF file that this program wrote (its global attributes name it: only the
-    header is read). Anything else (the definition itself, a folder, a device, a pipe, a
-    symbolic link, another program's file) raises :class:`UnsafeOutput`; nothing is opened
-    but a regular file's first bytes and header.
+    header is read), or for a ``.zarr`` output a zarr store this program wrote (its group
+    attributes name it: only they are read). Anything else (the definition itself, another
+    folder, a device, a pipe, a symbolic link, another program's file) raises
+    :class:`UnsafeOutput`; nothing is opened but a regular file's first bytes and header.
     """
     output = Path(output)
     try:
@@ -62,6 +71,13 @@ def check_output(output, definition=None):
     if definition is not None and _same_file(output, Path(definition)):
         raise UnsafeOutput(f"{output}: is the sweep definition itself; choose another output")
     kind = _file_kind(found.st_mode)
+    if kind == "a folder" and is_zarr(output):
+        reason = _not_our_store(output)
+        if reason:
+            raise UnsafeOutput(f"{output}: exists and is not a zarr store written by "
+                               f"bearing-sweep ({reason}); refusing to replace it (remove it or "
+                               "choose another output)")
+        return
     if kind != "regular file":
         raise UnsafeOutput(f"{output}: exists and is {kind}, not an earlier result; refusing to "
                            "replace it (choose another output)")
@@ -114,17 +130,34 @@ def _not_ours(path: Path) -> str | None:
         return "not a netCDF file"
     try:
         with netCDF4.Dataset(path, "r") as dataset:
-            attributes = dataset.ncattrs()
-            source = dataset.getncattr("source") if "source" in attributes else ""
+            attributes = dataset.__dict__
     except OSError as error:
         return str(error).splitlines()[0]
-    if "definition_sha256" in attributes or str(source).startswith("bearing-sweep"):
-        return None
-    return "its attributes do not name bearing-sweep"
+    return None if _names_us(attributes) else "its attributes do not name bearing-sweep"
+
+
+def _not_our_store(path: Path) -> str | None:
+    """Why the folder at ``path`` is not a zarr store of this program, or None if it is.
+    Reads its group attributes only (``.zattrs``, zarr format 2, as this program writes)."""
+    if not (path / ".zgroup").is_file():
+        return "no zarr group of format 2 in it"
+    attributes = _read_json(path / ".zattrs")
+    if not isinstance(attributes, dict):
+        return "its attributes cannot be read"
+    return None if _names_us(attributes) else "its attributes do not name bearing-sweep"
+
+
+def _names_us(attributes: dict) -> bool:
+    """Whether a result's global attributes say this program wrote it."""
+    return ("definition_sha256" in attributes
+            or str(attributes.get("source", "")).startswith("bearing-sweep"))
 
 
 class Parts:
     """The part files of one output."""
+
+    #: The suffix of a finished chunk's file.
+    suffix = ".npz"
 
     def __init__(self, output, key: dict):
         output = Path(output)
@@ -136,7 +169,7 @@ class Parts:
         manifest = self.folder / "manifest.json"
         if self.folder.exists():
             found = _read_json(manifest)
-            count = len(list(self.folder.glob("chunk-*.npz")))
+            count = self.count()
             same = found is not None and {k: found.get(k) for k in self.key} == self.key
             if fresh or not same:
                 if count:
@@ -157,9 +190,9 @@ class Parts:
         """Remove the parts that cannot be read (they are computed again), with one line to
         ``log``; return how many."""
         unreadable = []
-        for path in sorted(self.folder.glob("chunk-*.npz")):
+        for path in sorted(self.folder.glob(f"chunk-*{self.suffix}")):
             _, start, stop = path.stem.split("-")
-            reason = _unreadable(path, int(stop) - int(start))
+            reason = self.unreadable(path, int(stop) - int(start))
             if reason:
                 unreadable.append(f"{path.name} ({reason})")
                 path.unlink(missing_ok=True)
@@ -169,16 +202,24 @@ class Parts:
                 f"{'them' if more else 'it'} again")
         return len(unreadable)
 
+    def unreadable(self, path: Path, points: int) -> str | None:
+        """Why the finished chunk at ``path`` cannot be used, or None."""
+        return _unreadable(path, points)
+
+    def count(self) -> int:
+        """How many finished chunks are on disk."""
+        return len(list(self.folder.glob(f"chunk-*{self.suffix}")))
+
     def finished(self) -> set:
         """``(start, stop)`` of every chunk on disk."""
         done = set()
-        for path in self.folder.glob("chunk-*.npz"):
+        for path in self.folder.glob(f"chunk-*{self.suffix}"):
             _, start, stop = path.stem.split("-")
             done.add((int(start), int(stop)))
         return done
 
     def path(self, start: int, stop: int) -> Path:
-        return self.folder / f"chunk-{start:012d}-{stop:012d}.npz"
+        return self.folder / f"chunk-{start:012d}-{stop:012d}{self.suffix}"
 
     def save(self, start: int, stop: int, result: dict):
         arrays = {f"output_{name}": values for name, values in result["outputs"].items()}
@@ -308,11 +349,18 @@ def replace_durably(temporary: Path, path: Path):
     with open(temporary, "rb+") as handle:
         os.fsync(handle.fileno())
     os.replace(temporary, path)
+    fsync_path(path.parent)
+
+
+def fsync_path(path):
+    """fsync the file or folder at ``path`` (a folder: the names just made or changed in it
+    reach the disk). Nothing happens where it cannot be opened: a file that is not there, a
+    folder on some systems (Windows, where the rename stands)."""
     try:
-        folder = os.open(path.parent, os.O_RDONLY)
-    except OSError:  # a folder cannot be opened on some systems (Windows): the rename stands
+        handle = os.open(path, os.O_RDONLY)
+    except OSError:
         return
     try:
-        os.fsync(folder)
+        os.fsync(handle)
     finally:
-        os.close(folder)
+        os.close(handle)

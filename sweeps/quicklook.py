@@ -213,7 +213,7 @@ def _open(path) -> xr.Dataset:
     try:
         return open_result(path)
     except (OSError, ValueError) as error:
-        raise SpecError(f"{path}: cannot be read as a netCDF result: "
+        raise SpecError(f"{path}: cannot be read as a result: "
                         f"{str(error).splitlines()[0] if str(error) else type(error).__name__}"
                         ) from None
 

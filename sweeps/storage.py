@@ -1,6 +1,6 @@
-"""How a sweep's outputs are stored in its netCDF file: in float64 or float32, compressed or
-not (the ``[output]`` table of a definition, ``bearing-sweep run --encoding --compression``),
-and the outputs a model declares integral as integers.
+"""How a sweep's outputs are stored in its netCDF file or zarr store: in float64 or float32,
+compressed or not (the ``[output]`` table of a definition, ``bearing-sweep run --encoding
+--compression``), and the outputs a model declares integral as integers.
 
 The default, float64 with zlib at level 1 and no shuffle filter, came from
 ``benchmarks/output_encoding.py`` (README, "Output files"): on a crb_radial result of 1e5 points
@@ -64,6 +64,18 @@ class Storage:
             encoding.update(compression=self.compression, complevel=self.level,
                             shuffle=self.shuffles)
         return encoding
+
+    def zarr_codecs(self, itemsize: int) -> dict:
+        """xarray's zarr encoding of the same compression (zarr format 2): numcodecs' Zlib or
+        Zstd at the same level, with zlib the shuffle filter on items of ``itemsize`` bytes
+        (the stored type's); nothing for ``"none"``."""
+        import numcodecs
+
+        if self.compression == "none":
+            return {"compressors": None, "filters": None}
+        codec = {"zlib": numcodecs.Zlib, "zstd": numcodecs.Zstd}[self.compression]
+        return {"compressors": (codec(level=self.level),),
+                "filters": (numcodecs.Shuffle(elementsize=itemsize),) if self.shuffles else None}
 
 
 def integral_values(values: np.ndarray, name: str) -> np.ndarray:

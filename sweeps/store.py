@@ -2,6 +2,7 @@
 or gathered in memory; its provenance (package version, git commit)."""
 from __future__ import annotations
 
+import os
 import subprocess
 from importlib.metadata import PackageNotFoundError, version
 from pathlib import Path
@@ -13,7 +14,7 @@ from .models.registry import STATUS_MEANINGS
 from .dependence import reductions, stored_cells
 from .grid import Grid
 from .labels import labelled_dataset
-from .parts import written_atomically
+from .parts import is_zarr, written_atomically
 from .spec import Sweep
 from .storage import integral_values
 
@@ -48,17 +49,32 @@ def provenance(scheduler: str) -> dict:
 def tally(grid: Grid, parts, chunks) -> tuple[dict, list, dict]:
     """The count of points by status, the model's error messages and the counts of the
     outputs the model declares ``counted``, read one chunk at a time."""
-    model = grid.model
+    return summed(grid.model, (chunk_tally(grid.model, parts.load(start, stop))
+                               for start, stop in chunks))
+
+
+def chunk_tally(model, part: dict) -> dict:
+    """What :func:`tally` counts in one computed chunk, as JSON-ready lists and numbers (a
+    zarr output keeps it, not the values, for each finished chunk)."""
+    noted = {}
+    for output in (o for o in model.outputs if o.counted):
+        text, where = output.counted
+        found = int(np.count_nonzero(where(part["outputs"][output.name])))
+        noted[text] = noted.get(text, 0) + found
+    return {"status": np.bincount(part["status"], minlength=len(STATUS_MEANINGS)).tolist(),
+            "errors": sorted(set(part["errors"])), "noted": noted}
+
+
+def summed(model, tallies) -> tuple[dict, list, dict]:
+    """The sweep's counts (as :func:`tally` returns them) from its chunks' :func:`chunk_tally`."""
     counts = np.zeros(len(STATUS_MEANINGS), dtype=np.int64)
     errors = set()
     noted = {o.counted[0]: 0 for o in model.outputs if o.counted}
-    for start, stop in chunks:
-        part = parts.load(start, stop)
-        counts += np.bincount(part["status"], minlength=len(STATUS_MEANINGS))
-        errors.update(part["errors"])
-        for output in (o for o in model.outputs if o.counted):
-            text, where = output.counted
-            noted[text] += int(np.count_nonzero(where(part["outputs"][output.name])))
+    for one in tallies:
+        counts += one["status"]
+        errors.update(one["errors"])
+        for text, count in one["noted"].items():
+            noted[text] += count
     return dict(zip(STATUS_MEANINGS, counts.tolist())), sorted(errors), noted
 
 
@@ -109,19 +125,37 @@ def assemble(sweep: Sweep, grid: Grid, parts, chunks, path, scheduler: str, erro
         with netCDF4.Dataset(temporary, "r+") as target:
             for start, stop in chunks:
                 part = parts.load(start, stop)
-                values = {name: integral_values(data, name) if name in integral else data
-                          for name, data in _per_point_outputs(part, reduced, start, stop).items()}
-                values["status"] = part["status"]
-                for name, data in values.items():
-                    variable = target.variables[name]
-                    for index, low, high in _regions(grid.shape, start, stop):
-                        block = data[low - start:high - start]
-                        variable[index or ...] = block.reshape(
-                            tuple(s.stop - s.start for s in index) + block.shape[1:])
+                for name, index, block in stored_blocks(
+                        grid, start, stop, _per_point_outputs(part, reduced, start, stop),
+                        part["status"]):
+                    target.variables[name][index or ...] = block
             for name, reduction in reduced.items():
-                data = reduction.values
-                data = integral_values(data, name) if name in integral else data
-                target.variables[name][...] = data.reshape(reduction.shape + data.shape[1:])
+                target.variables[name][...] = stored_reduction(reduction, name in integral)
+
+
+def stored_blocks(grid: Grid, start: int, stop: int, outputs: dict, status: np.ndarray):
+    """The values of points ``start..stop-1`` as a result stores them: the ``outputs`` stored
+    per point (integral ones as integers) and the ``status``. Yields ``(name, index, block)``:
+    a tuple of slices of the grid's dimensions and the variable's values there (empty for a
+    grid of one point: index with ``...``)."""
+    integral = {o.name for o in grid.model.outputs if o.dtype == "int"}
+    values = {name: integral_values(data, name) if name in integral else data
+              for name, data in outputs.items()}
+    values["status"] = status
+    for name, data in values.items():
+        for index, low, high in _regions(grid.shape, start, stop):
+            block = data[low - start:high - start]
+            yield name, index, block.reshape(tuple(s.stop - s.start for s in index)
+                                             + block.shape[1:])
+
+
+def stored_reduction(reduction, integral: bool) -> np.ndarray:
+    """The values of an output stored on fewer dimensions (a :class:`dependence.Reduction`
+    holding every chunk's), as a result stores them: on its dimensions, as integers if
+    ``integral``."""
+    data = reduction.values
+    data = integral_values(data, reduction.output.name) if integral else data
+    return data.reshape(reduction.shape + data.shape[1:])
 
 
 def _per_point_outputs(part: dict, reduced: dict, start: int, stop: int) -> dict:
@@ -178,6 +212,17 @@ def write_netcdf(dataset: xr.Dataset, path) -> Path:
 
 
 def open_result(path) -> xr.Dataset:
-    """Open a sweep's netCDF file fully into memory (the file is closed afterwards)."""
-    with xr.open_dataset(path, engine="netcdf4") as dataset:
+    """Open a sweep's netCDF file (or zarr store) fully into memory (it is closed afterwards)."""
+    with xr.open_dataset(path, engine=result_engine(path)) as dataset:
         return dataset.load()
+
+
+def is_result(path) -> bool:
+    """Whether ``path`` holds something to open as a result: a file, or a zarr store (a
+    folder); :func:`open_result` says whether it is one."""
+    return os.path.isfile(path) or (is_zarr(path) and os.path.isdir(path))
+
+
+def result_engine(path) -> str:
+    """xarray's engine for a sweep's result at ``path``: zarr for a ``.zarr`` store."""
+    return "zarr" if is_zarr(path) else "netcdf4"

@@ -1,0 +1,253 @@
+"""A sweep's result as a zarr store, each chunk written by the process that computed it.
+
+With ``-o result.zarr`` no values pass through the process that runs the sweep: it writes the
+store's structure (coordinates, attributes, the outputs without values), and every task
+computes its chunk of points and writes it into its own region of the store, returning only
+its counts. The store is zarr format 2 (read by zarr-python 2 and 3 and by netCDF-C's NCZarr;
+its compressors, numcodecs' Zlib and Zstd, are the netCDF file's: ``storage.Storage``), on a
+filesystem every worker shares with the driver.
+
+The zarr chunks along the grid's axes are the sweep's chunks (:func:`block_shape`): a chunk of
+points fills one whole zarr chunk of every output, so no two tasks ever write one zarr chunk
+(a zarr chunk is written whole: two writers of one would lose the values of one of them). An
+output stored on fewer axes (``dependence``) is the exception: each task returns one value per
+cell of those axes, and the driver writes them once every chunk has given its own.
+
+Until the sweep is complete the store lives in ``<output>.parts/store.zarr``, beside the
+manifest of ``parts.Parts`` and one small mark per finished chunk (its counts and its values
+of the outputs on fewer axes), written once the worker has written the chunk's values and
+flushed them to the disk: an interrupted run resumes from the chunks so marked. At the end
+the global attributes are completed (model errors, scheduler, history), the metadata
+consolidated, and the store renamed to the output: a store found at the output path is always
+complete.
+"""
+from __future__ import annotations
+
+import json
+import math
+import os
+import shutil
+import zipfile
+from concurrent.futures import ThreadPoolExecutor
+from dataclasses import dataclass
+from pathlib import Path
+
+import numpy as np
+import xarray as xr
+
+from .dependence import first_held, reduced_outputs, reductions
+from .grid import Grid
+from .labels import labelled_dataset
+from .parts import Parts, fsync_path, write_durably
+from .spec import Sweep
+from .store import _flat_shape, provenance, stored_blocks, stored_reduction, summed
+
+#: How many files a task flushes to the disk at once.
+FLUSHING_THREADS = 8
+#: zarr format 2: its codecs are numcodecs' Zlib and Zstd, the netCDF file's, and readers of
+#: format 3 read it too (format 3 has no zlib codec, and zarr-python 2 cannot read it).
+ZARR_FORMAT = 2
+
+
+def block_shape(shape: tuple, size: int) -> tuple:
+    """The zarr chunk shape along a grid of ``shape`` for chunks of at most ``size`` points.
+
+    Whole rows of the last axes: 1 along the leading axes, a block of one axis, every index
+    of the axes after it (``(1, 1, c, n3, n4)``). C-ordered points then fill each block in
+    one unbroken range, so each chunk of points is one block (:func:`block_chunks`). Along
+    the blocked axis the blocks are of nearly equal length (1001 rows by 1000 points: two
+    blocks of 501 and 500, not 1000 and 1).
+    """
+    for axis, length in enumerate(shape):
+        inner = math.prod(shape[axis + 1:])
+        if inner <= size:
+            pieces = math.ceil(length / max(1, size // inner))
+            return (1,) * axis + (math.ceil(length / pieces),) + tuple(shape[axis + 1:])
+    return ()
+
+
+def block_chunks(shape: tuple, block: tuple) -> list[tuple[int, int]]:
+    """The ranges ``[start, stop)`` of C-ordered point numbers that fill each zarr chunk of
+    shape ``block`` (:func:`block_shape`) of a grid of ``shape``, in order."""
+    if not shape:
+        return [(0, 1)]
+    counts = [math.ceil(n / b) for n, b in zip(shape, block)]
+    chunks = []
+    for position in np.ndindex(*counts):
+        first = [p * b for p, b in zip(position, block)]
+        last = [min((p + 1) * b, n) - 1 for p, b, n in zip(position, block, shape)]
+        chunks.append((int(np.ravel_multi_index(first, shape)),
+                       int(np.ravel_multi_index(last, shape)) + 1))
+    return chunks
+
+
+def chunks(grid: Grid, size: int) -> list[tuple[int, int]]:
+    """A zarr output's chunks of at most ``size`` points, each one zarr chunk of the store."""
+    return block_chunks(grid.shape, block_shape(grid.shape, size))
+
+
+def labelled_structure(sweep: Sweep, grid: Grid, scheduler: str, errors=()) -> xr.Dataset:
+    """The sweep's labelled dataset with outputs and status that have no values (lazy dask
+    arrays, never computed): what the store holds but the values."""
+    import dask.array
+
+    lazy = {o.name: dask.array.full(_flat_shape(grid, o), np.nan, chunks=-1)
+            for o in grid.model.outputs}
+    status = dask.array.zeros(grid.size, dtype=np.int8, chunks=-1)
+    return labelled_dataset(sweep, grid, lazy, status, provenance(scheduler), errors)
+
+
+def write_structure(sweep: Sweep, grid: Grid, block: tuple, scheduler: str, path: Path):
+    """Write the store's structure at ``path``: coordinates, attributes, and the outputs and
+    status without values, in zarr chunks of ``block`` along the grid's axes (whole along
+    their own), each stored as the netCDF file stores it (``[output]``: type, fill value,
+    compression)."""
+    dataset = labelled_structure(sweep, grid, scheduler)
+    sizes = dict(zip(grid.dims, block))
+    for name in [o.name for o in grid.model.outputs] + ["status"]:
+        variable = dataset[name]
+        kept = {key: value for key, value in variable.encoding.items()
+                if key in ("dtype", "_FillValue")}
+        stored = np.dtype(kept.get("dtype", variable.dtype))
+        variable.encoding = kept | sweep.storage.zarr_codecs(stored.itemsize) | {
+            "chunks": tuple(sizes.get(d, n) for d, n in zip(variable.dims, variable.shape))}
+    # The structure only: the lazy values are queued for a write that is never made. Its
+    # metadata consolidated: a task reads one file, not two per variable.
+    dataset.to_zarr(path, mode="w", compute=False, zarr_format=ZARR_FORMAT, consolidated=True)
+
+
+@dataclass(frozen=True)
+class StoreWriter:
+    """Writes a computed chunk into its region of the store at ``path`` (small: it travels
+    with every task to the worker that computes it)."""
+
+    path: str
+
+    def write(self, grid: Grid, start: int, stop: int, part: dict) -> dict:
+        """Write points ``start..stop-1`` (a computed ``part``, as ``evaluate_chunk`` returns
+        it) and flush their zarr chunks to the disk, so that the chunk's mark never outlives
+        its values in a power loss.
+
+        Returns, for each output stored on fewer dimensions (``dependence``), the chunk's
+        :func:`dependence.first_held` points and values, for the driver to write once every
+        chunk has given its own: ``{name: (points, values)}``, one value per cell.
+        """
+        import zarr
+
+        reduced = {o.name: o for o in reduced_outputs(grid)}
+        firsts = {name: first_held(grid, output, start, stop, part["outputs"][name],
+                                   part["status"]) for name, output in reduced.items()}
+        per_point = {name: values for name, values in part["outputs"].items()
+                     if name not in reduced}
+        group = zarr.open_group(self.path, mode="r+", zarr_format=ZARR_FORMAT,
+                                use_consolidated=True)
+        written = []
+        for name, index, block in stored_blocks(grid, start, stop, per_point, part["status"]):
+            array = group[name]
+            array[index or ...] = block.astype(array.dtype, copy=False)
+            position = [s.start // c for s, c in zip(index, array.chunks)]
+            position += [0] * (array.ndim - len(position))
+            written.append(Path(self.path, name, ".".join(map(str, position)) or "0"))
+        # A zarr chunk equal to the fill value everywhere has no file (zarr writes none).
+        flush(written + sorted({path.parent for path in written}))
+        return firsts
+
+
+class StoreParts(Parts):
+    """A zarr output on its way: ``<output>.parts/`` with the manifest, the store being written
+    (``store.zarr``) and, for each chunk whose values are in it, a mark: an ``.npz`` file of
+    its counts (``store.chunk_tally``) and of the values it gives the outputs stored on fewer
+    dimensions (one per cell, :meth:`StoreWriter.write`). The interface of
+    :class:`parts.Parts`, which it extends."""
+
+    def __init__(self, output, key: dict):
+        super().__init__(output, key)
+        self.store = self.folder / "store.zarr"
+
+    def prepare(self, sweep: Sweep, grid: Grid, chunk_size: int, scheduler: str):
+        """Write the store's structure, unless an interrupted run of this sweep did: the
+        folder has it once it is whole (written aside, then renamed into place)."""
+        if self.store.exists():
+            return
+        for marker in self.folder.glob(f"chunk-*{self.suffix}"):
+            marker.unlink()  # the values they vouch for went with the store
+        temporary = self.folder / ".store.zarr.tmp"
+        shutil.rmtree(temporary, ignore_errors=True)
+        write_structure(sweep, grid, block_shape(grid.shape, chunk_size), scheduler, temporary)
+        flush([temporary, *temporary.rglob("*")])
+        os.replace(temporary, self.store)
+
+    @property
+    def writer(self) -> StoreWriter:
+        return StoreWriter(str(self.store.absolute()))
+
+    def unreadable(self, path: Path, points: int) -> str | None:
+        try:
+            found = self.load(path)
+        except (OSError, ValueError, EOFError, KeyError, zipfile.BadZipFile):
+            return "incomplete"
+        return None if sum(found[0]["status"]) == points else "not this chunk's counts"
+
+    def save(self, start: int, stop: int, result: dict):
+        """Mark the chunk finished, its values being in the store: keep its counts and the
+        values it gives the outputs stored on fewer dimensions."""
+        arrays = {"tally": np.array(json.dumps(result["tally"]))}
+        for name, (points, values) in result["firsts"].items():
+            arrays[f"points_{name}"], arrays[f"values_{name}"] = points, values
+        write_durably(self.path(start, stop), lambda handle: np.savez(handle, **arrays))
+
+    @staticmethod
+    def load(path: Path) -> tuple[dict, dict]:
+        """A mark's counts, and its ``{name: (points, values)}``."""
+        with np.load(path) as data:
+            firsts = {key[len("points_"):]: (data[key], data["values_" + key[len("points_"):]])
+                      for key in data.files if key.startswith("points_")}
+            return json.loads(str(data["tally"])), firsts
+
+    def tally(self, model, chunks) -> tuple[dict, list, dict]:
+        """The sweep's counts (``store.tally``) from its chunks' marks."""
+        return summed(model, (self.load(self.path(start, stop))[0] for start, stop in chunks))
+
+    def finish(self, sweep: Sweep, grid: Grid, chunks, output, scheduler: str, errors=()):
+        """Write the outputs stored on fewer dimensions from the ``chunks``' marks, complete
+        the store's global attributes (as the netCDF file's: model errors, scheduler,
+        history), consolidate its metadata, and give it the output's name; an earlier result
+        there is replaced."""
+        import zarr
+        from xarray.backends.zarr import encode_zarr_attr_value
+
+        attributes = labelled_structure(sweep, grid, scheduler, errors).attrs
+        group = zarr.open_group(self.store, mode="r+", zarr_format=ZARR_FORMAT,
+                                use_consolidated=False)
+        reduced = reductions(grid)
+        for start, stop in chunks:
+            for name, (points, values) in self.load(self.path(start, stop))[1].items():
+                reduced[name].add_firsts(points, values)
+        for name, reduction in reduced.items():
+            group[name][...] = stored_reduction(reduction, reduction.output.dtype == "int")
+        group.attrs.put({key: encode_zarr_attr_value(value)
+                         for key, value in attributes.items()})
+        zarr.consolidate_metadata(str(self.store), zarr_format=ZARR_FORMAT)
+        flush([self.store / ".zattrs", self.store / ".zmetadata", self.store])
+        replace_folder(self.store, Path(output))
+
+
+def replace_folder(folder: Path, path: Path):
+    """Rename ``folder`` to ``path``. A folder already at ``path`` is moved aside first and
+    removed after, so that a store found at ``path`` is always whole (in a power loss between
+    the two renames the old one is left at ``.<name>.<pid>.old``)."""
+    old = path.with_name(f".{path.name}.{os.getpid()}.old")
+    if os.path.lexists(path):
+        os.replace(path, old)
+    os.replace(folder, path)
+    fsync_path(path.parent)
+    shutil.rmtree(old, ignore_errors=True)
+
+
+def flush(paths):
+    """fsync every file and folder in ``paths``, all at once: the filesystem's journal then
+    commits them together (one at a time, a chunk's took longer than writing it)."""
+    with ThreadPoolExecutor(FLUSHING_THREADS) as pool:
+        list(pool.map(fsync_path, paths))
+
+
