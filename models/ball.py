@@ -13,9 +13,6 @@ residual.
 from __future__ import annotations
 
 import functools
-import importlib
-import importlib.util
-import sys
 
 import numpy as np
 
@@ -23,6 +20,7 @@ from .bearing_life import (DEFAULT_CONTAMINATION_FACTOR, LIFE_INPUTS, SPEED_INPU
                            life_outputs, rating_lives)
 from .contact import POINT_CONTACT_EXPONENT, hertz_point
 from .geometry import elements_fit
+from .kernels import Kernels
 from .life import ball_bearing_reference_life, radial_ball_equivalent_load
 from .lubrication import CELSIUS
 from .registry import (CONVERGED, INFEASIBLE, NOT_CONVERGED, OUT_OF_VALIDITY, Constraint,
@@ -385,35 +383,12 @@ def _equilibrium(rings: _Rings, load, free, ball_count):
 
 
 #: Points this process may compute with the interpreted equilibrium before it loads the
-#: compiled one: about as long (1.6 ms a point) as numba takes to import and load it (0.5 s),
-#: so a small sweep never pays for numba, and a large one pays at most twice that.
+#: compiled one: about as long (1.6 ms a point) as numba takes to import and load it (0.5 s).
 INTERPRETED_POINTS = 300
-_interpreted_points = 0
-
-
-def _kernels(points):
-    """:mod:`models.ball_equilibrium`, compiled or interpreted (the same numbers) for a call of
-    ``points`` points: interpreted while numba is not loaded and this process has computed
-    fewer than ``INTERPRETED_POINTS`` points so."""
-    global _interpreted_points
-    compiled = f"{__package__}.ball_equilibrium"
-    if compiled in sys.modules or _interpreted_points + points > INTERPRETED_POINTS:
-        return importlib.import_module(compiled)
-    _interpreted_points += points
-    return _interpreted_kernels()
-
-
-def _interpreted_kernels():
-    """:mod:`models.ball_equilibrium`'s source run by the interpreter, numba not imported."""
-    name = f"{__package__}._ball_equilibrium_interpreted"
-    if name not in sys.modules:
-        spec = importlib.util.spec_from_file_location(
-            name, importlib.util.find_spec(f"{__package__}.ball_equilibrium").origin)
-        module = importlib.util.module_from_spec(spec)
-        module.INTERPRETED = True  # read by the module: no numba
-        spec.loader.exec_module(module)
-        sys.modules[name] = module
-    return sys.modules[name]
+_EQUILIBRIUM = Kernels(f"{__package__}.ball_equilibrium", INTERPRETED_POINTS)
+#: :mod:`models.ball_equilibrium` for a call of a number of points, compiled or interpreted.
+_kernels = _EQUILIBRIUM.for_points
+_interpreted_kernels = _EQUILIBRIUM.interpreted
 
 
 def _fits(ball_count, pitch_diameter, ball_diameter):

@@ -6,19 +6,22 @@ memory traffic large ones. Point by point a step is a few hundred floating-point
 arrays of one row of balls, and a point stops iterating when it has converged.
 
 The equations are those of :mod:`models.ball` (module docstring, :func:`ball_contacts`,
-:func:`ring_sums`); the iteration is :func:`models.solvers.solve_equilibrium`'s, for one point.
-Each point's balls are summed in their order and compiled without ``fastmath`` (no
-reassociation), so a point's numbers depend neither on the other points of the call nor on the
-machine's vector width; and with numpy's error model, so that a division by zero gives an
-infinity or NaN as the vectorised model did (that point then does not converge) rather than an
-exception for the whole block.
+:func:`ring_sums`); the iteration is Newton's method damped in the manner of Levenberg and
+Marquardt: a step ``(K + mu I)^-1 (F - R)`` is taken where it does not raise the residual
+``|F - R|``, and ``mu`` shrinks fivefold then, so that the iteration ends as Newton's; where it
+does, the step is refused and ``mu`` grows fivefold. A step that leaves the residual unchanged
+is taken: it may cross a clearance, where nothing resists. Each point's balls are summed in
+their order and compiled without ``fastmath`` (no reassociation), so a point's numbers depend
+neither on the other points of the call nor on the machine's vector width; and with numpy's
+error model, so that a division by zero gives an infinity or NaN as the vectorised model did
+(that point then does not converge) rather than an exception for the whole block.
 
 Per-point data come as the rows of one ``rings`` array, columns ``DISTANCE..CONSTANT``; the
 ball azimuths as ``psi``, rows ``1, cos, sin, cos cos, sin sin, cos sin`` of ``(6, Z)``.
 
-:func:`models.ball._kernels` also runs this same source without numba (``INTERPRETED`` set
-before it runs): IEEE operations in the same order give the same numbers (a test holds them
-bitwise equal), in about 1.6 ms a point against numba's 0.5 s to import and load its cached
+:func:`models.ball._kernels` also runs this same source without numba (:mod:`models.kernels`):
+IEEE operations in the same order give the same numbers (a test holds them bitwise equal), in
+about 1.6 ms a point against numba's 0.5 s to import and load its cached
 code, which a sweep of a few hundred points need not pay.
 """
 from __future__ import annotations
@@ -26,13 +29,11 @@ from __future__ import annotations
 import math
 
 import numpy as np
-from .contact import POINT_CONTACT_EXPONENT as EXPONENT
 
-if globals().get("INTERPRETED"):  # set by interpreted(): the same functions, not compiled
-    def njit(*_, **__):
-        return lambda function: function
-else:
-    from numba import njit
+from .contact import POINT_CONTACT_EXPONENT as EXPONENT
+from .kernels import compiler
+
+njit = compiler(globals())  # numba's, or none where this source runs interpreted
 
 #: Columns of ``rings``: groove-centre distance ``A`` [m], sine and cosine of the unloaded
 #: contact angle, the unloaded centre separation along the axis and the radius [m], the
@@ -263,7 +264,7 @@ def reciprocal_condition(stiffness, dofs, matrix):
 @njit(cache=True, error_model="numpy", nogil=True)  # a threaded worker runs blocks side by side
 def equilibria(rings, load, typical, damping, tolerance, free, jones, max_iterations, psi):
     """Each point's scaled displacement where the balls balance ``load`` in the ``free``
-    directions, by :func:`models.solvers.solve_equilibrium`'s damped Newton iteration.
+    directions, by the damped Newton iteration (module docstring).
 
     Parameters
     ----------

@@ -24,6 +24,26 @@ def definition(tmp_path):
 
 
 @pytest.fixture
+def run_loads_numba(tmp_path):
+    """Run a sweep definition (TOML text) with the CLI in a new process and say whether that
+    process loaded numba."""
+    import subprocess
+    import sys
+
+    def run(text: str) -> bool:
+        (tmp_path / "d.toml").write_text(text)
+        script = ("import sys\nfrom bearing_sweep import cli\n"
+                  "cli.main(['run', 'd.toml', '-o', 'd.nc'])\n"
+                  "print('numba' in sys.modules)\n")
+        done = subprocess.run([sys.executable, "-c", script], cwd=tmp_path, capture_output=True,
+                              text=True, timeout=120)
+        assert done.returncode == 0, done.stderr
+        return done.stdout.strip().splitlines()[-1] == "True"
+
+    return run
+
+
+@pytest.fixture
 def paper_slice_law_fails(monkeypatch):
     """crb_radial raises for every point with ``slice_law = "paper"`` (a model_error there)."""
     import bearing_sweep.models.registry as registry

@@ -80,21 +80,10 @@ def test_the_interpreted_equilibrium_gives_the_compiled_ones_bits(monkeypatch):
             assert values.tobytes() == results[1][name].tobytes(), (geometry, held, name)
 
 
-def test_a_small_ball_sweep_does_not_load_numba(tmp_path):
+def test_a_small_ball_sweep_does_not_load_numba(run_loads_numba):
     # Start-up: importing numba and loading the compiled equilibrium costs about 0.5 s, more
     # than a hundred points take uncompiled.
-    import subprocess
-    import sys
-
-    (tmp_path / "d.toml").write_text('[sweep]\nmodel = "ball_5dof"\n'
-                                     'bearing = "paper001-71807AC"\n[axes]\n'
-                                     'axial_load = { start = "100 N", stop = "2500 N", '
-                                     'step = "100 N" }\n'
-                                     'radial_load = ["0 N", "250 N", "500 N", "1000 N"]\n')
-    script = ("import sys\nfrom bearing_sweep import cli\n"
-              "cli.main(['run', 'd.toml', '-o', 'd.nc'])\n"
-              "print('numba' in sys.modules)\n")
-    done = subprocess.run([sys.executable, "-c", script], cwd=tmp_path, capture_output=True,
-                          text=True, timeout=120)
-    assert done.returncode == 0, done.stderr
-    assert done.stdout.strip().splitlines()[-1] == "False"
+    assert not run_loads_numba('[sweep]\nmodel = "ball_5dof"\nbearing = "paper001-71807AC"\n'
+                               '[axes]\naxial_load = { start = "100 N", stop = "2500 N", '
+                               'step = "100 N" }\n'
+                               'radial_load = ["0 N", "250 N", "500 N", "1000 N"]\n')
