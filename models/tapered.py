@@ -21,11 +21,12 @@ from .bearing_life import (DEFAULT_CONTAMINATION_FACTOR, LIFE_INPUTS, SPEED_INPU
                            life_outputs, rating_lives)
 from .contact import (APPROACH_LIMIT, ROLLER_PRESSURE_LIMIT, effective_modulus,
                             hertz_point, line_contact_pressure)
+from .kernels import Kernels
 from .life import roller_bearing_reference_life, tapered_equivalent_load
 from .lubrication import CELSIUS
 from .registry import (CONVERGED, INFEASIBLE, NO_ROOT_IN_RANGE, NOT_CONVERGED,
                              OUT_OF_VALIDITY, Constraint, Input, Model, Output, combine_status)
-from .solvers import solve_equilibrium, solve_increasing
+from .solvers import solve_increasing
 
 #: Load-deflection exponent of a roller between its raceways, Q = K delta^1.11 (eq. 13-18).
 LOAD_EXPONENT = 1.11
@@ -35,6 +36,14 @@ _RESIDUAL_TOLERANCE = 1e-12  # relative to the load [-]
 _LIMIT_BRACKET = (np.radians(80.0), np.radians(90.0))  # rib angles searched for the limit
 _LIMIT_NODES = 41  # grid of the limit search: 0.25 deg steps
 _ANGLE_TOLERANCE = 1e-9  # [rad], 0.0002 arcsec
+_MAX_ITERATIONS = 200
+#: Points this process may compute with the interpreted equilibrium before it loads the
+#: compiled one: about as long (0.25 ms a point) as numba takes to import and load it (0.3 s).
+INTERPRETED_POINTS = 1000
+#: :mod:`models.tapered_equilibrium` for a call of a number of points, compiled or interpreted
+#: (the same numbers).
+_EQUILIBRIUM = Kernels(f"{__package__}.tapered_equilibrium", INTERPRETED_POINTS)
+_kernels = _EQUILIBRIUM.for_points
 
 
 def paper_contact_constant(effective_length, roller_mean_diameter):
@@ -167,31 +176,19 @@ def trb_load(radial_load, axial_load, roller_count, effective_length, roller_mea
     radial, axial, length, diameter, angle, given, pitch, modulus, pressure_limit = arrays[:9]
     speed, life = arrays[9], arrays[10:]
     constant = np.where(np.isnan(given), paper_contact_constant(length, diameter), given)
-    azimuth = _roller_azimuths(roller_count)
-    # The rows that turn (delta_r, delta_a) into each roller's compression, (N, Z, 2).
-    rows = np.stack([np.cos(angle)[:, None] * np.cos(azimuth), np.broadcast_to(
-        np.sin(angle)[:, None], (angle.size, roller_count))], axis=-1)
     carried = (axial > 0) & (radial * np.tan(angle) <= axial)
-
-    def evaluate(displacement, index):
-        compression = np.maximum(np.einsum("nzk,nk->nz", rows[index], displacement), 0.0)
-        load = constant[index, None] * compression**LOAD_EXPONENT
-        slope = LOAD_EXPONENT * constant[index, None] * compression ** (LOAD_EXPONENT - 1.0)
-        return (np.einsum("nz,nzk->nk", load, rows[index]),
-                np.einsum("nz,nzi,nzk->nik", slope, rows[index], rows[index]))
-
     # Start from the axial displacement of eq. 15 (all rollers equally loaded by F_a) with
     # a radial shift that keeps every roller compressed.
     sin_angle = np.sin(angle)
     axial_start = (np.maximum(axial, 0.0) / (roller_count * constant * sin_angle
                                              ** (LOAD_EXPONENT + 1.0))) ** (1 / LOAD_EXPONENT)
-    start = np.stack([0.5 * axial_start * np.tan(angle), axial_start], -1)
     typical = LOAD_EXPONENT * roller_count * constant * axial_start ** (LOAD_EXPONENT - 1.0)
-    load = np.stack([radial, axial], -1)
-    displacement, converged = solve_equilibrium(
-        evaluate, start, load, 0.01 * typical, _RESIDUAL_TOLERANCE * np.linalg.norm(load, axis=-1))
-    compression = np.einsum("nzk,nk->nz", rows, displacement)
-    roller_load = constant[:, None] * np.maximum(compression, 0.0) ** LOAD_EXPONENT
+    with np.errstate(all="ignore"):  # IEEE results, as compiled
+        displacement, converged, compression, roller_load = _kernels(radial.size).equilibria(
+            np.ascontiguousarray(radial), np.ascontiguousarray(axial),  # owned: not views
+            0.5 * axial_start * np.tan(angle), axial_start, 0.01 * typical,
+            _RESIDUAL_TOLERANCE * np.hypot(radial, axial), np.cos(angle), sin_angle,
+            constant, np.cos(_roller_azimuths(roller_count)), _MAX_ITERATIONS)
     pressure = line_contact_pressure(
         roller_load / length[:, None],
         cone_curvature_sum(diameter, pitch, angle)[:, None], modulus[:, None])
@@ -514,7 +511,7 @@ MODELS = [
         summary="Tapered roller bearing under radial and axial load: radial and axial "
                 "displacement and the load of every roller.",
         reference=_REFERENCE + ", eq. 13-18",
-        version="4",
+        version="5",
         inputs=_LOAD_INPUTS + (
             _CONSTANT,
             Input("pitch_diameter", "mm", "pitch diameter dm at the middle of the rollers, for "
@@ -548,8 +545,13 @@ MODELS = [
         constraints=(_CARRIED, Constraint(
             ("pitch_diameter", "roller_mean_diameter"), _cone_beneath,
             "pitch_diameter must exceed roller_mean_diameter")),
-        seconds_per_point=2e-5,
-        points_per_call=2000,
+        # Through the engine, one core, on two cores shared with others (load average 2-3):
+        # 7.6e-6 s/point on benchmarks/declared_costs.py's grid with lives (2.5e-5 with the
+        # equilibrium vectorised in numpy). Solved point by point: blocks of 4096 points run
+        # 1.3x the benchmark's compiled kernel, blocks of 2000 1.7x (the per-call cost of the
+        # outputs' numpy and unit conversions).
+        seconds_per_point=8e-6,
+        points_per_call=4096,
         validity="a roller's cone contact pressure above pressure_limit (default 4000 MPa, "
                  "ISO 76's reference stress for roller bearings; checked when pitch_diameter "
                  "is given) or its compression above 2 % of the mean roller diameter",
