@@ -545,12 +545,12 @@ MODELS = [
         constraints=(_CARRIED, Constraint(
             ("pitch_diameter", "roller_mean_diameter"), _cone_beneath,
             "pitch_diameter must exceed roller_mean_diameter")),
-        # Through the engine, one core, on two cores shared with others (load average 2-3):
-        # 7.6e-6 s/point on benchmarks/declared_costs.py's grid with lives (2.5e-5 with the
-        # equilibrium vectorised in numpy). Solved point by point: blocks of 4096 points run
-        # 1.3x the benchmark's compiled kernel, blocks of 2000 1.7x (the per-call cost of the
-        # outputs' numpy and unit conversions).
-        seconds_per_point=8e-6,
+        # Through the engine, one core, on two cores shared with others (load average 2.4):
+        # 4.2e-6 to 4.4e-6 s/point on benchmarks/declared_costs.py's grid with lives (1.3e-5
+        # with the equilibrium vectorised in numpy, in blocks of 2000). Solved point by point:
+        # blocks of 4096 points run 1.2x the benchmark's compiled kernel, blocks of 2048 1.4x
+        # (the per-call cost of the outputs' numpy and unit conversions).
+        seconds_per_point=5e-6,
         points_per_call=4096,
         validity="a roller's cone contact pressure above pressure_limit (default 4000 MPa, "
                  "ISO 76's reference stress for roller bearings; checked when pitch_diameter "
