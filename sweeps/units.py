@@ -2,6 +2,7 @@
 from __future__ import annotations
 
 import re
+from functools import lru_cache
 
 import numpy as np
 import pint
@@ -80,9 +81,16 @@ def convert(magnitude, unit: pint.Unit, target: pint.Unit):
 
 def from_si(values, unit_text: str):
     """SI values expressed in ``unit_text`` (the customary unit of a model output)."""
-    unit = parse_unit(unit_text)
-    base = UREG.get_base_units(unit)[1]
+    unit, base = _unit_and_base(unit_text)
     return UREG.Quantity(np.asarray(values, dtype=float), base).to(unit).magnitude
+
+
+@lru_cache(maxsize=None)
+def _unit_and_base(unit_text: str):
+    """``unit_text`` parsed, and its SI base unit: parsing costs more than converting a
+    block of a few thousand values, and every block of a sweep converts the same units."""
+    unit = parse_unit(unit_text)
+    return unit, UREG.get_base_units(unit)[1]
 
 
 _FRACTIONAL_POWER = re.compile(r"\^\s*\(?\s*-?\d*\.\d|\^\s*\(\s*-?\d+\s*/")
