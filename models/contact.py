@@ -2,7 +2,6 @@
 from __future__ import annotations
 
 import numpy as np
-from scipy.special import ellipe, ellipk
 
 from .registry import (CONVERGED, INFEASIBLE, NOT_CONVERGED, OUT_OF_VALIDITY, Constraint,
                              Input, Model, Output)
@@ -220,6 +219,8 @@ def _curvature_difference(parameter):
     ``F = [(k^2 + 1) E - 2 K] / [(k^2 - 1) E]`` with ``k = a/b`` (Harris, eq. 6.28), written in
     ``m``; its series ``3m/8 + 3m^2/16`` is used below ``_SMALL_PARAMETER``.
     """
+    from scipy.special import ellipe, ellipk  # here: a line contact's model needs no scipy
+
     m = np.asarray(parameter, dtype=float)
     small = m < _SMALL_PARAMETER
     safe = np.where(small, 0.5, m)
@@ -262,6 +263,8 @@ def ellipse_parameters(curvature_difference, formula="exact"):
     .. [2] B. J. Hamrock, D. E. Brewe, Simplified solution for stresses and deformations,
        J. Lubrication Technology 105 (1983) 171-177.
     """
+    from scipy.special import ellipe, ellipk  # here: a line contact's model needs no scipy
+
     difference = np.asarray(curvature_difference, dtype=float)
     alpha = (1.0 + difference) / (1.0 - difference)
     if formula == "hamrock_brewe":

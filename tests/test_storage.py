@@ -162,7 +162,7 @@ def test_an_interrupted_run_resumes_its_chunks_in_another_encoding(tmp_path, cap
     def interrupted(*args):  # every chunk computed, the file not yet written
         raise KeyboardInterrupt
 
-    monkeypatch.setattr("bearing_sweep.store.assemble", interrupted)
+    monkeypatch.setattr("bearing_sweep.store.ChunkWriter.finish", interrupted)
     assert cli.main(arguments) == 130
     monkeypatch.undo()
     capsys.readouterr()
