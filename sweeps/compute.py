@@ -248,8 +248,13 @@ class Executor:
         if self.scheduler:
             self.connect()
             return
-        with ThreadPoolExecutor(max_workers=1) as pool:  # returns at once; the start goes on
-            self.starting = pool.submit(self._start_local)
+        # Imported here, not in the thread: two threads importing the same modules at once
+        # can meet a module half initialised.
+        import distributed  # noqa: F401
+
+        pool = ThreadPoolExecutor(max_workers=1)
+        self.starting = pool.submit(self._start_local)
+        pool.shutdown(wait=False)  # returns at once: the start goes on, its thread ends with it
 
     def connect(self):
         if self.starting is not None:
