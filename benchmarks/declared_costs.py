@@ -4,9 +4,9 @@ own sweeps.
 The engine chooses its chunk size and whether a sweep is worth a cluster from each model's
 declared ``seconds_per_point``; this measures the real cost on one core, through the engine's
 own chunk evaluation (inputs built, model called in blocks of its ``points_per_call``,
-outputs converted; CPU time), over every sweep of the studies (studies/*/*.toml) that runs the model:
-each grid evaluated whole, as one chunk, and the cost per point the total time over the total
-points. A model no study runs (hertz_point) is measured on its definition in
+outputs converted; CPU time), over every sweep of the studies (studies/*/*.toml) that runs
+the model: each grid evaluated whole, as one chunk, and the cost per point the total time over
+the total points. A model no study runs (hertz_point) is measured on its definition in
 tests/data/every_model, its first axis repeated to a block of its ``points_per_call`` points,
 as a large sweep runs it: its few points alone would measure the call's fixed cost. It
 prints the declared over the measured cost (goal: between 0.5x and 2x). The transient cage

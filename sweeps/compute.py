@@ -418,8 +418,8 @@ def run_sweep(sweep: Sweep, output=None, executor: Executor | None = None,
                 "points": grid.size, "package_version": expected["package"]})
             size = parts.open(size, fresh, log)
             chunks = grid.chunks(size)
-            done = sorted(parts.finished())
-            todo = [chunk for chunk in chunks if chunk not in set(done)]
+            done = parts.finished()
+            todo = [chunk for chunk in chunks if chunk not in done]
             scheduler = executor.describe(parallel)
             tallies = []
             with contextlib.nullcontext() if output is None else store.result_file(
@@ -430,7 +430,7 @@ def run_sweep(sweep: Sweep, output=None, executor: Executor | None = None,
                     if writer is not None:
                         writer.write(start, stop, part)
 
-                for start, stop in done:  # an interrupted run's chunks
+                for start, stop in sorted(done):  # an interrupted run's chunks
                     finished(start, stop, parts.load(start, stop))
                 bar = Progress(grid.size, model.name, progress)
                 bar.advance(sum(stop - start for start, stop in done))

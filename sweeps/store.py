@@ -151,8 +151,9 @@ def _write_structure(dataset: xr.Dataset, target, placeholders):
     Returns xarray's store on ``target``.
 
     xarray would encode every value of a placeholder (a float32 copy of a whole output) and
-    write them; with dask.array's lazy arrays it would not, but dask and its scheduler cost a
-    third of a second to import, a third of a small sweep's time.
+    write them. With dask.array's lazy arrays it would not, but xarray's own netCDF store
+    then asks dask's scheduler for a write lock, importing dask.distributed: a third of a
+    second, a quarter of a small sweep's time.
     """
     store = _StructureStore(target, set(placeholders))
     dataset.dump_to_store(store, writer=_ValuesExcept(set(placeholders)))
