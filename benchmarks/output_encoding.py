@@ -8,7 +8,13 @@ the engine's own path (``store.result_file``, one chunk at a time) and reads it 
 bit, float32 within its rounding. Prints one row per setting, as ratios against the baseline,
 and the chosen default's size ratio (goal: at most 0.5, with writing under a tenth of the
 computing time and float64 kept).
+
+A second section: the size of the same result with the outputs that declare ``depends_on``
+(the centrifugal force, the viscosity ratio) on the speed axis alone, against every output on
+every point (baseline, the files before ``depends_on``), uncompressed and as the default
+stores them.
 """
+import dataclasses
 import sys
 import tempfile
 import time
@@ -18,6 +24,7 @@ import numpy as np
 
 from bearing_sweep import spec, store
 from bearing_sweep.compute import choose_chunk_size, evaluate_chunk
+from bearing_sweep.dependence import on_grid, stored_dims
 from bearing_sweep.grid import Grid
 from bearing_sweep.parts import HeldChunks
 from bearing_sweep.storage import Storage
@@ -43,14 +50,19 @@ SETTINGS = [Storage("float64", "none")] + [
 REPEATS = 3
 
 
+def write(sweep, grid, parts, chunks, path: Path):
+    """Write the result at ``path`` through the engine's own path, one chunk at a time."""
+    with store.result_file(sweep, grid, path, store.provenance("benchmark")) as writer:
+        for start, stop in chunks:
+            writer.write(start, stop, parts.load(start, stop))
+
+
 def measure(sweep, grid, parts, chunks, path: Path):
     """Best writing and reading times [s] of ``sweep``'s file, its size [B] and its data."""
     writing = reading = np.inf
     for _ in range(REPEATS):
         began = time.perf_counter()
-        with store.result_file(sweep, grid, path, store.provenance("benchmark")) as writer:
-            for start, stop in chunks:
-                writer.write(start, stop, parts.load(start, stop))
+        write(sweep, grid, parts, chunks, path)
         writing = min(writing, time.perf_counter() - began)
         began = time.perf_counter()
         data = store.open_result(path)
@@ -86,6 +98,32 @@ def main():
     default = next(row for row in rows if row[0] == Storage())
     print(f"  ratio: {default[3] / base_size:.3f}x the size with the default "
           f"({Storage().text()}; goal: at most 0.5)")
+    with tempfile.TemporaryDirectory() as folder:
+        folded_sizes(sweep, grid, parts, chunks, Path(folder) / "result.nc")
+
+
+def folded_sizes(sweep, grid, parts, chunks, path: Path):
+    """The file's size with the outputs that declare ``depends_on`` on the axes of their
+    inputs, against every output on every point, uncompressed and as the default stores
+    them; the folded outputs spread back over the grid must equal the per-point ones."""
+    every_point = dataclasses.replace(grid, model=dataclasses.replace(grid.model, outputs=tuple(
+        dataclasses.replace(o, depends_on=None) for o in grid.model.outputs)))
+    folded = [o.name for o in grid.model.outputs if stored_dims(grid, o) != grid.dims]
+    print(f"outputs on the axes of the inputs they depend on ({', '.join(folded)}), the same "
+          "result")
+    print("  baseline: every output on every point (the files before depends_on)")
+    for storage in (Storage("float64", "none"), Storage()):
+        sweep.storage = storage
+        sizes, results = [], []
+        for layout in (every_point, grid):
+            write(sweep, layout, parts, chunks, path)
+            sizes.append(path.stat().st_size)
+            results.append(on_grid(store.open_result(path)))
+        for name in folded:
+            assert np.array_equal(results[0][name], results[1][name], equal_nan=True), name
+        print(f"  {storage.text()}: {sizes[0] / 1e6:.3f} MB -> {sizes[1] / 1e6:.3f} MB, "
+              "values bit for bit")
+    print(f"  ratio: {sizes[1] / sizes[0]:.4f}x the size with the default (goal: below 1)")
 
 
 def same_values(reference, data, storage) -> str:

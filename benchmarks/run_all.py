@@ -2,8 +2,11 @@
 
 Each benchmark script prints a title line, an indented line naming its baseline, and an
 indented ``ratio: Nx`` (or ``speed-up: ... Nx``) line with its goal in parentheses; a script
-may print several such sections. A benchmark that fails is a row that says so.
+may print several such sections. A benchmark that fails is a row that says so. Each row
+carries the machine's one-minute load average when its script started: others' work on the
+same cores slows the measured and the baseline alike, but not always evenly.
 """
+import os
 import re
 import subprocess
 import sys
@@ -11,7 +14,8 @@ from pathlib import Path
 
 SCRIPTS = ("crb_radial_throughput.py", "ball_5dof_throughput.py", "crb_runout_throughput.py",
            "cage_slip_cost.py", "cage_dynamics_6dof_cost.py", "worker_scaling.py",
-           "output_encoding.py", "declared_costs.py", "cluster_break_even.py")
+           "output_encoding.py", "declared_costs.py", "cluster_break_even.py",
+           "crb_radial_kernel.py")
 RATIO = re.compile(r"^\s+(?:ratio|speed-up):\D*?([\d.]+)x(.*)$")
 GOAL = re.compile(r"goal:?\s*([^)]*)")
 
@@ -34,20 +38,22 @@ def main():
     folder = Path(__file__).parent
     rows = []
     for script in SCRIPTS:
+        load = os.getloadavg()[0]
         done = subprocess.run([sys.executable, str(folder / script)], capture_output=True,
                               text=True, cwd=folder.parent)
         print(done.stdout, end="", flush=True)
         found = list(sections(done.stdout)) if done.returncode == 0 else []
         if not found:
             rows.append((script, "failed: " + (done.stderr.strip().splitlines() or ["?"])[-1],
-                         "-", ""))
-        rows.extend(found)
+                         "-", "", load))
+        rows.extend(row + (load,) for row in found)
     width = max(len(row[0]) for row in rows)
     print()
-    print(f"{'benchmark':<{width}} | {'baseline':<44} | {'ratio':>7} | goal")
-    print(f"{'-' * width}-|-{'-' * 44}-|-{'-' * 7}-|-----")
-    for title, baseline, ratio, goal in rows:
-        print(f"{title:<{width}} | {baseline[:44]:<44} | {ratio + 'x':>7} | {goal}")
+    print(f"{os.cpu_count()} cores; load: the one-minute load average as each script began")
+    print(f"{'benchmark':<{width}} | {'baseline':<44} | {'ratio':>7} | load | goal")
+    print(f"{'-' * width}-|-{'-' * 44}-|-{'-' * 7}-|------|-----")
+    for title, baseline, ratio, goal, load in rows:
+        print(f"{title:<{width}} | {baseline[:44]:<44} | {ratio + 'x':>7} | {load:4.1f} | {goal}")
 
 
 if __name__ == "__main__":

@@ -80,7 +80,9 @@ def life_outputs(elements, equivalent_load):
         Output("equivalent_dynamic_load", "N", f"ISO 281 dynamic equivalent load P: "
                f"{equivalent_load}", label="equivalent dynamic load P"),
         Output("viscosity_ratio", "1", "viscosity ratio kappa = nu / nu1 (ISO 281 9.3.3); "
-               "NaN without oil viscosities, zero at rest", label="viscosity ratio kappa"),
+               "NaN without oil viscosities, zero at rest", label="viscosity ratio kappa",
+               depends_on=("speed", "pitch_diameter", "oil_temperature", "viscosity_40",
+                           "viscosity_100")),
         Output("life_modification_factor", "1", "life modification factor aISO of L10rm "
                "(ISO 281 9.3.3, with the reference load of ISO/TS 16281)",
                label="life modification factor aISO"),

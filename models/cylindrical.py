@@ -11,8 +11,7 @@ from .bearing_life import (DEFAULT_CONTAMINATION_FACTOR, LIFE_INPUTS, life_outpu
                            rating_lives)
 from .contact import (APPROACH_LIMIT, LINE_CONTACT_EXPONENT, ROLLER_PRESSURE_LIMIT,
                             SLICE_LAWS, effective_modulus, largest_slice_line_load,
-                            line_contact_pressure, palmgren_constant, slice_loads,
-                            sliced_line_contact)
+                            line_contact_pressure, palmgren_constant, slice_loads)
 from .geometry import elements_fit
 from .life import roller_bearing_reference_life
 from .lubrication import CELSIUS
@@ -95,12 +94,17 @@ class _RollerSet:
         # slice lies towards an end, 2 * floor nearer the raceways than its middle.
         if self.tilt is None:  # a symmetric roller: its distinct slices with their counts
             self.gap_shape, self.gap_count = distinct_slices(slices, crown_profile)  # (m,)
+            self.floor = np.zeros((self.crown.size, 1))  # its smallest gap is its middle's
         else:
             self.gap_shape, self.gap_count = crown_shape(slices, crown_profile), np.ones(slices)
             self.slice_position = slice_centres(slices)
             self.floor = (self.crown[:, None, None] * self.gap_shape  # (P, Z): smallest gap
                           - self.tilt[..., None] * self.slice_position).min(axis=-1)
         self.slice_law, self.outer_contact = slice_law, outer_contact
+        # Each roller's gaps in rising order, as the compiled balance sums the touching ones
+        # (``(P, 1, m)`` without tilt, where the distinct gaps already rise).
+        self.sorted_gaps = np.ascontiguousarray(
+            self.all_gaps() if self.tilt is None else np.sort(self.all_gaps(), axis=-1))
         self.free_outer_approach, self.free_outer_converged = self._free_outer_approach()
 
     def gaps(self, points, rollers):
@@ -130,27 +134,6 @@ class _RollerSet:
         ``(p, Z)`` (eq. 1)."""
         total = displacement[:, None] * self.cos[points] - self.half_clearance[points, None]
         return total if self.tilt is None else total - 2.0 * self.floor[points]
-
-    def contacts(self, inner_approach, outer_approach, points, rollers):
-        """Inner load, outer load and the load the outer contact is balanced against, of the
-        rollers ``rollers`` of the bearings ``points``.
-
-        Returns ``(Qi, dQi, Qo, dQo, Qt, dQt)`` [N, N/m]: the roller's force balance is
-        ``Qo(outer) = Qt(inner) + Fc``. With ``outer_contact='crowned'`` both contacts are the
-        same sliced crowned contact and ``Qt = Qi``. With ``'paper'`` (eq. 6 of paper 000) the
-        outer contact is a straight roller, ``Qo = K delta_o^n``, balanced against
-        ``Qt = K delta_i^n`` rather than the crowned ``Qi`` of eq. 9.
-        """
-        constant = self.constant[points]
-        gaps = self.gaps(points, rollers)
-        inner = sliced_line_contact(inner_approach, gaps, self.gap_count, constant, self.slice_law)
-        if self.outer_contact == "crowned":
-            outer = sliced_line_contact(outer_approach, gaps, self.gap_count, constant,
-                                        self.slice_law)
-            return inner + outer + inner
-        outer = sliced_line_contact(outer_approach, _NO_GAP, _ONE_SLICE, constant)
-        balanced = sliced_line_contact(inner_approach, _NO_GAP, _ONE_SLICE, constant)
-        return inner + outer + balanced
 
     def approaches(self, displacement, inner_deflection):
         """Inner and outer contact approach of every roller [m], ``(P, Z)``, at the solution.
@@ -195,31 +178,21 @@ class _RollerSet:
         ``(P, 1)``, or ``(P, Z)`` with tilt (each roller's own gaps, so that a roller the ring
         begins to load has a bracketed force balance), and whether each point's was found
         ``(P,)``."""
+        from .cylindrical_balance import free_outer_approaches  # numba: only when solving
+
         n = LINE_CONTACT_EXPONENT
         plain = (self.centrifugal / self.constant) ** (1.0 / n)
         if self.outer_contact == "paper":
             return plain[:, None], np.isfinite(plain)
-        shape = self.cos.shape if self.tilt is not None else (plain.size, 1)
-        points, rollers = np.indices(shape).reshape(2, -1)
-        approach = np.zeros(points.size)
-        converged = np.isfinite(plain)[points]
-        spinning = np.flatnonzero(self.centrifugal[points] > 0.0)
-        if spinning.size:
-            # Every slice is in contact beyond the largest gap, so Qo >= K (delta - gap)^n.
-            owner = points[spinning]
-            upper = self.largest_gap[owner] + plain[owner]
+        approach = np.zeros(self.sorted_gaps.shape[:2])
+        converged = np.repeat(np.isfinite(plain)[:, None], approach.shape[1], axis=1)
+        # Every slice is in contact beyond the largest gap, so Qo >= K (delta - gap)^n.
+        free_outer_approaches(self.sorted_gaps, self.gap_count, self.constant, self.centrifugal,
+                              self.slice_law == "paper", self.largest_gap + plain, _XTOL,
+                              approach, converged)
+        return approach, converged.all(axis=-1)
 
-            def residual(outer, index):
-                entries = spinning[index]
-                _, _, load, stiffness, _, _ = self.contacts(outer, outer, points[entries],
-                                                            rollers[entries])
-                return load - self.centrifugal[points[entries]], stiffness
-
-            approach[spinning], converged[spinning] = solve_increasing(
-                residual, np.zeros(spinning.size), upper, 0.5 * upper, _XTOL * upper)
-        return approach.reshape(shape), converged.reshape(shape).all(axis=-1)
-
-    def loads(self, displacement, points, share):
+    def loads(self, displacement, points, split, roller_load, inner_deflection):
         """Roller loads and bearing load and stiffness at given radial displacements.
 
         Parameters
@@ -228,57 +201,30 @@ class _RollerSet:
             Radial displacement ``delta_r`` of the bearings ``points`` [m], shape ``(p,)``.
         points : numpy.ndarray
             Indices of the bearings evaluated.
-        share : numpy.ndarray
-            Initial guess of each roller's inner deflection as a fraction of its available
-            approach, shape ``(p, Z)``; updated in place with the solution.
+        split : numpy.ndarray
+            Each roller's last solution, from which its solve starts: inner approach, total
+            approach and their derivative (NaN: none yet), shape ``(P, Z, 3)``; its rows
+            ``points`` updated in place with the solution.
+        roller_load, inner_deflection : numpy.ndarray
+            ``(P, Z)``, their rows ``points`` filled: ``Qi_j`` [N] and the inner-contact
+            approach [m] (negative: the gap of an unloaded roller).
 
         Returns
         -------
         radial_load, radial_stiffness : numpy.ndarray
             ``F_r = sum Qi_j cos phi_j`` (eq. 10) [N] and ``dF_r/d delta_r`` [N/m], ``(p,)``.
-        roller_load, inner_deflection : numpy.ndarray
-            ``Qi_j`` [N] and the inner-contact approach [m] (negative: the gap of an unloaded
-            roller), ``(p, Z)``.
         converged : numpy.ndarray of bool
             Every roller's force balance converged, ``(p,)``.
         """
-        total = self.total_approach(displacement, points)
-        available = total - self.free_outer_approach[points]
-        loaded = available > 0.0
-        owner = np.broadcast_to(points[:, None], loaded.shape)[loaded]
-        roller = np.broadcast_to(np.arange(loaded.shape[1]), loaded.shape)[loaded]
-        entry_total, entry_available = total[loaded], available[loaded]
-        cache = {}
+        from .cylindrical_balance import roller_balances  # numba: only when solving
 
-        def residual(inner, index):
-            # Roller force balance Qo(total - inner) = Qt(inner) + Fc (eq. 2, 6).
-            result = self.contacts(inner, entry_total[index] - inner, owner[index],
-                                   roller[index])
-            for name, value in zip(("qi", "ki", "qo", "ko", "qt", "kt"), result):
-                cache.setdefault(name, np.empty(entry_total.size))[index] = value
-            return result[4] + self.centrifugal[owner[index]] - result[2], result[5] + result[3]
-
-        inner, converged = solve_increasing(
-            residual, np.zeros(entry_total.size), entry_available,
-            share[loaded] * entry_available, _XTOL * entry_available)
-        share[loaded] = inner / entry_available
-        roller_load = np.zeros(total.shape)
-        roller_stiffness = np.zeros(total.shape)
-        inner_deflection = available.copy()
-        if entry_total.size:
-            roller_load[loaded] = cache["qi"]
-            # Series contacts: dQi/d(delta_rj) = Qi' Qo' / (Qo' + Qt') (eq. 14, generalised).
-            with np.errstate(invalid="ignore"):
-                roller_stiffness[loaded] = cache["ki"] * cache["ko"] / (cache["ko"] + cache["kt"])
-            roller_stiffness[loaded] = np.nan_to_num(roller_stiffness[loaded])  # 0/0 at contact
-            inner_deflection[loaded] = inner
-        all_converged = np.ones(total.shape, dtype=bool)
-        all_converged[loaded] = converged
-        cos = self.cos[points]
-        radial_load = (roller_load * cos).sum(axis=-1)
-        radial_stiffness = (roller_stiffness * cos**2).sum(axis=-1)  # eq. 13-16
-        converged = all_converged.all(axis=-1)
-        return radial_load, radial_stiffness, roller_load, inner_deflection, converged
+        # Roller force balance Qo(total - inner) = Qt(inner) + Fc (eq. 2, 6).
+        return roller_balances(
+            displacement, points, self.cos, self.half_clearance,
+            self.floor, self.free_outer_approach,
+            self.sorted_gaps, self.gap_count, self.constant, self.centrifugal,
+            self.slice_law == "paper", self.outer_contact == "crowned", _XTOL, split,
+            roller_load, inner_deflection)
 
 
 def crb_radial(radial_load, roller_count, pitch_diameter, roller_diameter, effective_length,
@@ -396,6 +342,13 @@ def crb_radial(radial_load, roller_count, pitch_diameter, roller_diameter, effec
     kinematic cage speed holds while the roller stays elastic, and its outer contact's
     pressure carries that force (1e6 r/min gives bearing D some 16 GPa there).
 
+    Solution: the ring's displacement by the safeguarded Newton of
+    :func:`models.solvers.solve_increasing`, all points at once; at each displacement tried,
+    every roller's force balance point by point in compiled code
+    (:mod:`models.cylindrical_balance`, numba), started from a first-order prediction of its
+    split from its last solution and summing only the slices that touch. A point's results do
+    not depend on the other points of the call.
+
     References
     ----------
     .. [1] Paper 000, "Radial stiffness analysis of cylindrical roller bearing", eq. 1-16.
@@ -415,11 +368,14 @@ def crb_radial(radial_load, roller_count, pitch_diameter, roller_diameter, effec
         effective_modulus(youngs_modulus, poisson_ratio), pressure_limit) + life))
     shape = arrays[0].shape
     (load, pitch, diameter, length, clearance, crown, speed, density, constant, cage_position,
-     misalignment, perturbation, modulus, pressure_limit) = (a.ravel() for a in arrays[:14])
+     misalignment, perturbation, modulus, pressure_limit) = (
+        np.array(a.ravel()) for a in arrays[:14])  # owned: numba warns of broadcast views
     life = [a.ravel() for a in arrays[14:]]
     azimuth = cage_position[:, None] + 2.0 * np.pi * np.arange(roller_count) / roller_count
     if outer_contact not in OUTER_CONTACTS:
         raise ValueError(f"unknown outer_contact {outer_contact!r}; expected {OUTER_CONTACTS}")
+    if slice_law not in SLICE_LAWS:
+        raise ValueError(f"unknown slice_law {slice_law!r}; expected {SLICE_LAWS}")
     if outer_contact == "paper" and np.any(misalignment != 0.0):
         raise ValueError("misalignment needs outer_contact 'crowned' (the paper's straight "
                          "outer contact has no tilt)")
@@ -463,7 +419,12 @@ def _solve(rollers, load, perturbation):
     constant, centrifugal = rollers.constant, rollers.centrifugal
     count, n = load.size, LINE_CONTACT_EXPONENT
     everyone = np.arange(count)
-    share = np.full(cos_azimuth.shape, 0.5)
+    split = np.full(cos_azimuth.shape + (3,), np.nan)  # no roller solved yet
+    # Where each solve's roller loads and approaches go, and where those of other calls do.
+    cache = {"converged": np.ones(count, dtype=bool), "load": np.empty(count),
+             "stiffness": np.empty(count), "roller_load": np.empty(cos_azimuth.shape),
+             "deflection": np.empty(cos_azimuth.shape)}
+    spare = np.empty(cos_azimuth.shape), np.empty(cos_azimuth.shape)
     # Bracket: no roller touches below max(Pd/2, 0); at the upper bound the best-placed roller
     # (at cos_max) alone carries F / cos_max through both contacts, each needing at most the
     # largest gap plus ((F / cos_max + Fc)/K)^(1/n) of approach. With preload, rollers opposite
@@ -479,9 +440,7 @@ def _solve(rollers, load, perturbation):
     for _ in range(64):
         if preloaded.size == 0:
             break
-        guess = share[preloaded]
-        short = rollers.loads(upper[preloaded], preloaded, guess)[0] < load[preloaded]
-        share[preloaded] = guess
+        short = rollers.loads(upper[preloaded], preloaded, split, *spare)[0] < load[preloaded]
         lower[preloaded[short]] = upper[preloaded[short]]
         upper[preloaded[short]] *= 2.0
         preloaded = preloaded[short]
@@ -493,16 +452,12 @@ def _solve(rollers, load, perturbation):
     lower = np.where(resting, touch, lower)
     upper = np.where(resting, touch, upper)
 
-    cache = {"converged": np.ones(count, dtype=bool)}
-
     def residual(displacement, index):
-        guess = share[index]
-        result = rollers.loads(displacement, index, guess)
-        share[index] = guess
-        for name, value in zip(("load", "stiffness", "roller_load", "deflection"), result):
-            cache.setdefault(name, np.empty((count,) + value.shape[1:]))[index] = value
-        cache["converged"][index] &= result[4]
-        return result[0] - load[index], result[1]
+        radial_load, stiffness, converged = rollers.loads(
+            displacement, index, split, cache["roller_load"], cache["deflection"])
+        cache["load"][index], cache["stiffness"][index] = radial_load, stiffness
+        cache["converged"][index] &= converged
+        return radial_load - load[index], stiffness
 
     displacement, converged = solve_increasing(residual, lower, upper, upper, _XTOL * upper)
     # The limit itself: the best-placed roller just touches and carries nothing (evaluated
@@ -511,7 +466,7 @@ def _solve(rollers, load, perturbation):
         cache[name][resting] = 0.0
     cache["converged"][resting] = True
     # Forward-difference stiffness with the paper's perturbation (section 2.3).
-    perturbed = rollers.loads(displacement + perturbation, everyone, share.copy())[0]
+    perturbed = rollers.loads(displacement + perturbation, everyone, split.copy(), *spare)[0]
     balanced = np.abs(cache["load"] - load) <= 1e-9 * load + 1e-6
     ok = converged & cache["converged"] & balanced & rollers.free_outer_converged
     outputs = {
@@ -538,7 +493,7 @@ MODELS = [Model(
     summary="Cylindrical roller bearing under radial load: load distribution and radial stiffness "
             "with crowned rollers (slices), centrifugal force and clearance.",
     reference="Paper 000, Radial stiffness analysis of cylindrical roller bearing, eq. 1-16",
-    version="4",
+    version="5",
     inputs=(
         Input("radial_load", "N", "radial load Fr on the inner ring", minimum=0.0),
         Input("roller_count", "1", "number of rollers Z", kind="count", minimum=3, maximum=1000),
@@ -590,7 +545,9 @@ MODELS = [Model(
                "displacement step 'perturbation'",
                label="perturbation stiffness"),
         Output("loaded_rollers", "1", "number of rollers carrying load", dtype="int"),
-        Output("centrifugal_force", "N", "centrifugal force of one roller (eq. 3)"),
+        Output("centrifugal_force", "N", "centrifugal force of one roller (eq. 3)",
+               depends_on=("pitch_diameter", "roller_diameter", "effective_length", "speed",
+                           "roller_density")),
         Output("roller_load", "N", "inner-raceway contact load of each roller (eq. 9)",
                dims=("roller",),
                label="roller load"),
@@ -621,8 +578,14 @@ MODELS = [Model(
                    "the rollers do not fit on the pitch circle: pitch_diameter * sin(180 deg / "
                    "roller_count) must exceed roller_diameter"),
     ),
-    seconds_per_point=1e-4,
-    points_per_call=500,
+    # benchmarks/declared_costs.py, rated points at 2000 a call: 6.1e-5 s CPU and 8.6e-5 s
+    # wall with others' load of 4 on the 2 cores, some 3.3e-5 quiet (the compiled per-point
+    # kernel's 32 us under that load against 18 us quiet); rating lives are a third of it.
+    seconds_per_point=5e-5,
+    # The rollers' balances are compiled and solved point by point, so a block's temporaries
+    # are a few (points, rollers) arrays: 2000 points per call cost some 12 % less a point
+    # than 500 (the numpy parts' overhead shared), and two workers slow each other by 2-3 %.
+    points_per_call=2000,
     validity="a roller's maximum contact pressure above pressure_limit (default 4000 MPa, "
              "ISO 76's reference stress for roller bearings) or its approach (both contacts) "
              "above 2 % of the roller diameter; speed only through the pressure its "

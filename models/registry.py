@@ -156,6 +156,11 @@ class Output:
     #: ``"int"`` for an output whose values are whole numbers (a count of loaded rollers):
     #: stored as integers, with a fill value where a point has none; its unit is ``"1"``.
     dtype: str = "float"
+    #: The inputs the output depends on, where the physics says they are fewer than all (a
+    #: roller's centrifugal force: the speed and the roller's size, not the load). The engine
+    #: stores it on the grid's axes that hold those inputs only, after checking that its
+    #: values are the same along the others. None: it may depend on every input.
+    depends_on: tuple[str, ...] | None = None
 
     @property
     def short(self) -> str:
@@ -241,9 +246,9 @@ def declaration_problems(model: Model) -> list[str]:
     required exactly where the function has no default; a choice's, count's or subset's
     default is the function's (a subset's as its names joined by spaces); every output
     dimension has a size in ``dim_sizes``; an integer output (``dtype="int"``) has unit "1";
-    no two inputs or outputs share a name (nor take
-    ``status``). Quantity defaults in SI and readable units need the engine's unit handling:
-    ``bearing_sweep.testing.assert_valid_declaration`` checks those as well.
+    an output's ``depends_on`` names declared inputs, once each; no two inputs or outputs share
+    a name (nor take ``status``). Quantity defaults in SI and readable units need the engine's
+    unit handling: ``bearing_sweep.testing.assert_valid_declaration`` checks those as well.
     """
     try:
         parameters = inspect.signature(model.function).parameters
@@ -281,6 +286,13 @@ def declaration_problems(model: Model) -> list[str]:
         elif output.dtype == "int" and (output.unit != "1" or output.entry_units):
             problems.append(f"output {output.name!r}: an integer output has unit '1', not "
                             f"{output.unit!r}")
+        if output.depends_on is not None:
+            unknown = [n for n in output.depends_on if n not in declared]
+            if unknown or len(set(output.depends_on)) < len(output.depends_on):
+                problems.append(f"output {output.name!r}: depends_on "
+                                f"({', '.join(output.depends_on)}) must name declared inputs, "
+                                "once each" + (f"; not inputs: {', '.join(unknown)}"
+                                               if unknown else ""))
     names = declared + [o.name for o in model.outputs] + ["status"]
     twice = sorted({n for n in names if names.count(n) > 1})
     if twice:  # an output named like an input would clash with its coordinate in the dataset

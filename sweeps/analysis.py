@@ -16,6 +16,7 @@ from datetime import datetime, timezone
 import numpy as np
 import xarray as xr
 
+from .dependence import held_points, on_grid
 from .labels import CONVENTIONS
 from .spec import SpecError
 
@@ -56,6 +57,7 @@ def analyze(data: xr.Dataset, where: str = "the dataset") -> xr.Dataset:
     if "sample" not in data.dims or "sample_method" not in data.attrs:
         raise SpecError(f"{where}: not a sampled result (no sample dimension: a definition "
                         "with a [sample] table gives one)")
+    data = on_grid(data)  # an output stored on fewer axes than the grid has: per sample
     outputs = [name for name, v in data.data_vars.items()
                if v.attrs.get("coverage_content_type") == "modelResult"]
     axes = [d for d in data["status"].dims if d != "sample"]
@@ -70,7 +72,7 @@ def analyze(data: xr.Dataset, where: str = "the dataset") -> xr.Dataset:
         if companion in data:
             variables[name].attrs["ancillary_variables"] = companion
             variables[companion] = data[companion]
-    held = _kept(independent["status"])
+    held = held_points(independent["status"])
     variables["valid_samples"] = held.sum("sample").astype(np.int64).assign_attrs(
         long_name="samples whose values hold", units="1",
         comment="samples whose status keeps values (converged, out_of_validity, "
@@ -99,15 +101,6 @@ def analyze(data: xr.Dataset, where: str = "the dataset") -> xr.Dataset:
     for name in analysis.coords:
         analysis[name].encoding["_FillValue"] = None  # CF: no fill values on coordinates
     return analysis
-
-
-def _kept(status: xr.DataArray) -> xr.DataArray:
-    """Where a point's values hold, from its status flags."""
-    meanings = status.attrs["flag_meanings"].split()
-    values = status.attrs["flag_values"]
-    kept = [int(v) for v, m in zip(values, meanings)
-            if m in ("converged", "out_of_validity", "no_root_in_range")]
-    return status.isin(kept)
 
 
 def _statistics(values: xr.DataArray) -> xr.DataArray:

@@ -49,8 +49,10 @@ def run(definition, *, output=None, client=None, workers=None, progress=True, en
     Returns
     -------
     xarray.Dataset
-        The sweep's axes as dimensions, every output and the ``status`` of every point, with
-        units and provenance: the same variables, values and attributes as the CLI's file.
+        The sweep's axes as dimensions, every output (on the axes of the inputs it depends
+        on, where it declares them: ``xarray.broadcast`` spreads it over the others) and the
+        ``status`` of every point, with units and provenance: the same variables, values and
+        attributes as the CLI's file.
 
     Raises
     ------
@@ -168,7 +170,7 @@ def describe(name: str) -> dict:
                     "maximum": i.maximum, "range": i.range_text(), "choices": i.choices}
                    for i in model.inputs],
         "outputs": [{"name": o.name, "unit": o.unit, "meaning": o.meaning, "dims": o.dims,
-                     "dtype": o.dtype} for o in model.outputs],
+                     "dtype": o.dtype, "depends_on": o.depends_on} for o in model.outputs],
         "validity": model.validity,
         "conditions": [c.message for c in model.constraints],
         "statuses": dict(STATUS_DESCRIPTIONS),

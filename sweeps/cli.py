@@ -12,6 +12,7 @@ from .models.registry import all_models
 from . import api, schema, spec, study
 from .parts import check_output, write_durably
 from .compute import Executor, WorkerMismatch, check_scheduler_address, run_sweep
+from .dependence import InconsistentOutput
 from .spec import SpecError
 
 #: Exit status for a mistake in the user's input (a definition, a name, an option).
@@ -118,7 +119,9 @@ def _describe(name: str) -> str:
     for o in model["outputs"]:
         dims = f" (dims: {', '.join(o['dims'])})" if o["dims"] else ""
         integer = ", an integer" if o["dtype"] == "int" else ""
-        lines.append(f"  {o['name']} [{o['unit']}]{dims}: {o['meaning']}{integer}")
+        fewer = "" if o["depends_on"] is None else (
+            f"; depends on {', '.join(o['depends_on']) or 'no input'} only")
+        lines.append(f"  {o['name']} [{o['unit']}]{dims}: {o['meaning']}{integer}{fewer}")
     lines.append("  status: per point, one of:")
     lines += [f"    {status}: {text}" for status, text in model["statuses"].items()]
     if model["validity"]:
@@ -252,6 +255,10 @@ def main(argv=None) -> int:
         return USAGE_ERROR
     except WorkerMismatch as error:  # the cluster, not the user's input, is at fault
         print(f"error: {error}", file=sys.stderr)
+        return 1
+    except InconsistentOutput as error:  # the model's declaration, not the input, is at fault
+        print(f"error: {error}; the computed chunks are kept, nothing else is written",
+              file=sys.stderr)
         return 1
     except OSError as error:  # a folder that cannot be written, a full disk, a busy output
         # A failed rename names its destination second: that is the file the user asked for.

@@ -14,6 +14,7 @@ import xarray as xr
 
 from .models.registry import STATUS_DESCRIPTIONS, STATUS_MEANINGS
 from . import units
+from .dependence import stored_dims, stored_shape
 from .grid import Grid
 from .spec import Sweep, Value
 
@@ -22,7 +23,11 @@ CONVENTIONS = "CF-1.10"
 
 def labelled_dataset(sweep: Sweep, grid: Grid, outputs: dict, status: np.ndarray,
                      provenance: dict, errors=()) -> xr.Dataset:
-    """The labelled dataset of a finished sweep (outputs flat over points, as computed).
+    """The labelled dataset of a finished sweep.
+
+    ``outputs``: each flat over the cells of the grid's dimensions it is stored on (the
+    points, as computed, or fewer for an output that depends on fewer inputs:
+    :func:`dependence.stored_dims`), then its own dimensions.
 
     ``provenance`` says how it was made: ``scheduler``, ``package_version`` and
     ``git_commit`` (None outside a checkout).
@@ -30,7 +35,9 @@ def labelled_dataset(sweep: Sweep, grid: Grid, outputs: dict, status: np.ndarray
     model = grid.model
     data_vars = {}
     for spec in model.outputs:
-        values = outputs[spec.name].reshape(grid.shape + outputs[spec.name].shape[1:])
+        dims = stored_dims(grid, spec)
+        values = outputs[spec.name].reshape(stored_shape(grid, spec)
+                                            + outputs[spec.name].shape[1:])
         attrs = described(spec.short, spec.meaning, None if spec.entry_units else spec.unit)
         attrs["coverage_content_type"] = "modelResult"
         if spec.entry_units:
@@ -44,7 +51,7 @@ def labelled_dataset(sweep: Sweep, grid: Grid, outputs: dict, status: np.ndarray
         note = stored_note(spec.dtype == "int", sweep.storage)
         if note:
             attrs["comment"] = attrs.get("comment", spec.short) + "; " + note
-        data_vars[spec.name] = (grid.dims + spec.dims, values, attrs)
+        data_vars[spec.name] = (dims + spec.dims, values, attrs)
     data_vars["status"] = (grid.dims, status.reshape(grid.shape), {
         "long_name": "solver status of the grid point",
         "flag_values": np.arange(len(STATUS_MEANINGS), dtype=np.int8),

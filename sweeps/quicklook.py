@@ -15,6 +15,7 @@ import numpy as np
 import xarray as xr
 from matplotlib.lines import Line2D
 
+from .dependence import on_grid
 from .parts import write_durably
 from .plotting import conditions, in_unit, label, plt
 from .spec import SpecError, suggestion
@@ -61,6 +62,7 @@ def plot(result, variable: str | None = None, *, x: str | None = None, output=No
     if "status" not in data or "flag_meanings" not in data["status"].attrs:
         raise SpecError(f"{result if not isinstance(result, xr.Dataset) else 'the dataset'}: "
                         "not a result of bearing-sweep run (it has no status variable)")
+    data = on_grid(data)  # an output stored on fewer axes than the grid: at every point
     outputs = [n for n, v in data.data_vars.items()
                if v.attrs.get("coverage_content_type") == "modelResult"]
     axes = list(data["status"].dims)

@@ -4,7 +4,7 @@ and the outputs a model declares integral as integers.
 
 The default, float64 with zlib at level 1 and no shuffle filter, came from
 ``benchmarks/output_encoding.py`` (README, "Output files"): on a crb_radial result of 1e5 points
-it keeps every value bit for bit in 0.36 of the uncompressed size, for 1.2 to 2.3 times the
+it keeps every value bit for bit in 0.41 of the uncompressed size, for 1.2 to 2.3 times the
 uncompressed writing time (a tenth of the computing time). The per-roller arrays, most of the file, hold many zeros (unloaded
 rollers) that compress better without shuffle; higher levels save little for much more time.
 """

@@ -11,6 +11,7 @@ import numpy as np
 import xarray as xr
 
 from .models.registry import STATUS_MEANINGS
+from .dependence import reductions, stored_cells
 from .grid import Grid
 from .labels import labelled_dataset
 from .parts import written_atomically
@@ -77,13 +78,16 @@ def summed(model, tallies) -> tuple[dict, list, dict]:
 def gather(sweep: Sweep, grid: Grid, parts, chunks, scheduler: str, errors=()) -> xr.Dataset:
     """The sweep's labelled dataset in memory, from its chunks: the dataset
     :func:`result_file` writes (``errors``: the model's messages, from :func:`summed`)."""
-    outputs = {o.name: np.full(_flat_shape(grid, o), np.nan) for o in grid.model.outputs}
+    reduced = reductions(grid)
+    outputs = {o.name: np.full(_flat_shape(grid, o), np.nan) for o in grid.model.outputs
+               if o.name not in reduced}
     status = np.zeros(grid.size, dtype=np.int8)
     for start, stop in chunks:
         part = parts.load(start, stop)
-        for name, values in part["outputs"].items():
+        for name, values in _per_point_outputs(part, reduced, start, stop).items():
             outputs[name][start:stop] = values
         status[start:stop] = part["status"]
+    outputs.update({name: reduction.values for name, reduction in reduced.items()})
     return labelled_dataset(sweep, grid, outputs, status, provenance(scheduler), errors)
 
 
@@ -95,9 +99,10 @@ def result_file(sweep: Sweep, grid: Grid, path, provenance: dict):
     The file's structure (coordinates, attributes, empty variables, each stored as
     ``sweep.storage`` says) is written at once, each chunk's values into their regions as
     :meth:`ChunkWriter.write` receives them (one chunk in memory at a time, while the others
-    compute), and when the block ends without an error the global attributes are completed
-    and the file renamed into place: an existing file at ``path`` stays intact until then.
-    ``provenance``: as :func:`provenance` gives it.
+    compute), and when the block ends without an error the outputs that depend on fewer
+    inputs than the grid (:mod:`dependence`, gathered from every chunk) and the global
+    attributes are written and the file renamed into place: an existing file at ``path``
+    stays intact until then. ``provenance``: as :func:`provenance` gives it.
     """
     import netCDF4
 
@@ -113,6 +118,7 @@ class ChunkWriter:
     def __init__(self, sweep: Sweep, grid: Grid, target, provenance: dict):
         self.sweep, self.grid, self.target, self.provenance = sweep, grid, target, provenance
         self.errors = set()
+        self.reduced = reductions(grid)
         skeleton = self._skeleton()
         self.store = _write_structure(skeleton, target,
                                       [o.name for o in grid.model.outputs] + ["status"])
@@ -130,14 +136,22 @@ class ChunkWriter:
                                 sorted(self.errors))
 
     def write(self, start: int, stop: int, part: dict):
-        """Write the values of points ``start..stop-1`` (a computed ``part``)."""
+        """Write the values of points ``start..stop-1`` (a computed ``part``); those of an
+        output stored on fewer dimensions are gathered for :meth:`finish`."""
         self.errors.update(part["errors"])
-        for name, index, block in stored_blocks(self.grid, start, stop, part):
+        per_point = {"outputs": _per_point_outputs(part, self.reduced, start, stop),
+                     "status": part["status"]}
+        for name, index, block in stored_blocks(self.grid, start, stop, per_point):
             self.target.variables[name][index or ...] = block
 
     def finish(self):
-        """The global attributes of the finished sweep (its time, the model's errors), in
-        the order xarray writes them."""
+        """Write the outputs stored on fewer dimensions, and the global attributes of the
+        finished sweep (its time, the model's errors) in the order xarray writes them."""
+        integral = {o.name for o in self.grid.model.outputs if o.dtype == "int"}
+        for name, reduction in self.reduced.items():
+            data = reduction.values
+            data = integral_values(data, name) if name in integral else data
+            self.target.variables[name][...] = data.reshape(reduction.shape + data.shape[1:])
         attributes = {**self._skeleton().attrs, **self.added}
         for name in self.target.ncattrs():
             self.target.delncattr(name)
@@ -208,9 +222,18 @@ def stored_blocks(grid: Grid, start: int, stop: int, part: dict):
                                              + block.shape[1:])
 
 
+def _per_point_outputs(part: dict, reduced: dict, start: int, stop: int) -> dict:
+    """A chunk's outputs stored per point; those stored on fewer dimensions (``reduced``, by
+    name) are handed to their :class:`dependence.Reduction` instead."""
+    for name, reduction in reduced.items():
+        reduction.add(start, stop, part["outputs"][name], part["status"])
+    return {name: values for name, values in part["outputs"].items() if name not in reduced}
+
+
 def _flat_shape(grid: Grid, output) -> tuple:
-    """An output's shape with the grid's points flat: points, then its own dimensions."""
-    return (grid.size,) + tuple(grid.dim_sizes[d] for d in output.dims)
+    """An output's shape with the grid's cells it is stored on flat (every point, or fewer:
+    :func:`dependence.stored_dims`), then its own dimensions."""
+    return (stored_cells(grid, output),) + tuple(grid.dim_sizes[d] for d in output.dims)
 
 
 def _regions(shape: tuple, start: int, stop: int, offset: int = 0):

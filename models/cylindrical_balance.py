@@ -1,0 +1,260 @@
+"""The force balance of every roller of :func:`models.cylindrical.crb_radial`, compiled.
+
+A roller's balance ``Qo(total - x) = Qt(x) + Fc`` is solved for its inner approach ``x`` at
+each radial displacement the ring's solve tries: the hot loop of the model. Here it runs one
+roller at a time with numba, each slice summed only while it touches (the roller's gaps are
+sorted) and the slices' ``(delta - c)^(1/9)`` of a contact taken at once by a loop of plain
+arithmetic that the compiler vectorises. ``error_model="numpy"`` keeps division checks out of
+the loops. Imported only when a crb_radial point is solved (numba costs half a second to
+import); ``cache=True`` keeps the compiled code beside this file, so workers load it.
+"""
+from __future__ import annotations
+
+import math
+
+import numpy as np
+from numba import njit
+
+from .contact import LINE_CONTACT_EXPONENT
+
+N = LINE_CONTACT_EXPONENT
+#: Iterations of a roller's solve before it is given up, as ``solve_increasing``'s default.
+MAX_ITER = 200
+# x^(-1/9) from the bits of x: its exponent field divided by -9 around this constant, within
+# 3 % for every normal x; four division-free Newton steps then take it to full precision and
+# one Newton step on x^(1/9) itself brings it within two ulps of the exact root.
+_ROOT_MAGIC = 5118851384464337920
+
+
+@njit(cache=True, error_model="numpy")
+def ninth_roots(values, roots, count):
+    """``roots[:count] = values[:count] ** (1/9)`` for positive normal ``values``, in plain
+    arithmetic (``pow`` is a call the compiler cannot vectorise)."""
+    bits, guess = values.view(np.int64), roots.view(np.int64)
+    for i in range(count):
+        guess[i] = _ROOT_MAGIC - bits[i] // 9
+    for i in range(count):
+        x, r = values[i], roots[i]
+        for _ in range(4):  # r -> x^(-1/9), quadratically
+            r8 = r * r
+            r8 = r8 * r8
+            r8 = r8 * r8
+            r = r * (10.0 - x * r8 * r) * (1.0 / 9.0)
+        r8 = r * r
+        r8 = r8 * r8
+        y = x * r8 * r8
+        y8 = y * y
+        y8 = y8 * y8
+        y8 = y8 * y8
+        roots[i] = y - (y - x / y8) * (1.0 / 9.0)
+
+
+@njit(cache=True, error_model="numpy")
+def sliced_contact(approach, gaps, counts, slices, constant, by_loaded, work, roots):
+    """:func:`models.contact.sliced_line_contact` of one contact whose ``gaps`` are sorted:
+    load and stiffness [N, N/m]. ``slices`` is ``counts.sum()``; ``by_loaded``: the paper's
+    law (the constant shared by the loaded slices)."""
+    touching, loaded = 0, 0.0
+    while touching < gaps.size and gaps[touching] < approach:
+        work[touching] = approach - gaps[touching]
+        loaded += counts[touching]
+        touching += 1
+    ninth_roots(work, roots, touching)
+    load_sum = slope_sum = 0.0
+    for i in range(touching):
+        term = roots[i] * counts[i]
+        load_sum += work[i] * term
+        slope_sum += term
+    divisor = (loaded if loaded > 0.0 else 1.0) if by_loaded else slices
+    scale = constant / divisor
+    return scale * load_sum, scale * N * slope_sum
+
+
+@njit(cache=True, error_model="numpy")
+def start_solve(state, lower, upper, start, xtol):
+    """Bracket, tolerance and first point of one entry of
+    :func:`models.solvers.solve_increasing`, in ``state`` (8 numbers)."""
+    state[0], state[1], state[2], state[3], state[4] = lower, upper, lower, upper, xtol
+    state[5] = state[6] = 0.0  # lower end seen, upper end seen
+    state[7] = 0.0 if upper - lower > xtol else 1.0  # pinned
+    return min(max(start, lower), upper)
+
+
+@njit(cache=True, error_model="numpy")
+def newton_step(state, x, value, slope):
+    """One iteration of :func:`models.solvers.solve_increasing` for one entry, with its rules
+    (Newton inside the bracket, else bisection; an unevaluated end probed before ending on it;
+    no root in the bracket, or a residual that is not finite, is not converged). Returns the
+    next ``x`` (the root once done), whether the entry is done and whether it converged."""
+    lower, upper, first_lower, first_upper, xtol = (state[0], state[1], state[2], state[3],
+                                                    state[4])
+    finite = math.isfinite(value)
+    low = x if value <= 0.0 else lower
+    high = x if value >= 0.0 else upper
+    if value <= 0.0:
+        state[5] = 1.0
+    if value >= 0.0:
+        state[6] = 1.0
+    newton = x - value / slope
+    step_to = newton if (newton > low and newton < high) else 0.5 * (low + high)
+    small = abs(newton - x) <= xtol
+    done = small or abs(step_to - x) <= xtol or value == 0.0
+    probe_lower = done and not small and value > 0.0 and state[5] == 0.0
+    probe_upper = done and not small and value < 0.0 and state[6] == 0.0
+    outside = (probe_lower and x <= first_lower) or (probe_upper and x >= first_upper)
+    pinned = state[7] != 0.0
+    probe = (probe_lower or probe_upper) and not outside and not pinned
+    if probe_lower:
+        step_to = first_lower
+    if probe_upper:
+        step_to = first_upper
+    done = (done and not probe) or not finite
+    state[0], state[1] = low, high
+    if done:
+        return (x if finite else np.nan), True, finite and (not outside or pinned)
+    return step_to, False, False
+
+
+@njit(cache=True, error_model="numpy")
+def roller_balances(displacement, points, cos, half_clearance, floor, free, gaps, counts,
+                    constant, centrifugal, by_loaded, crowned_outer, xtol, split, roller_load,
+                    deflection):
+    """Solve the force balance of every roller of the bearings ``points`` at the radial
+    displacements ``displacement`` (``(p,)`` both) and sum the rollers' loads on the ring.
+
+    Parameters
+    ----------
+    cos, half_clearance, floor, free : numpy.ndarray
+        Of every bearing: ``cos(phi_j)`` ``(P, Z)``; ``P_d/2`` ``(P,)``; each roller's
+        smallest gap from its middle's (tilt; ``(P, 1)`` zeros without) and the outer
+        approach of a free roller [m], ``(P, 1 or Z)``. A roller's total approach at its
+        deepest slice is ``delta_r cos(phi_j) - P_d/2 - 2 floor`` (eq. 1); it is loaded where
+        that exceeds ``free``.
+    gaps : numpy.ndarray
+        ``(P, 1 or Z, m)`` every roller's slice gaps in rising order [m].
+    counts : numpy.ndarray
+        ``(m,)`` slices per gap.
+    constant, centrifugal : numpy.ndarray
+        ``(P,)`` ``K`` [N/m^n] and ``Fc`` [N].
+    by_loaded : bool
+        The paper's slice law (eq. 9 as printed) rather than the uniform one.
+    crowned_outer : bool
+        Both contacts the same sliced crowned contact, the roller's balance
+        ``Qo(total - x) = Qi(x) + Fc``; else eq. 6 of paper 000: the outer contact a straight
+        roller, ``Qo = K delta_o^n``, balanced against ``Qt = K x^n`` rather than the crowned
+        ``Qi`` of eq. 9.
+    xtol : float
+        Tolerance of a roller's inner approach relative to the approach it has to share [-].
+    split : numpy.ndarray
+        ``(P, Z, 3)`` start of each roller: its inner approach, total and ``dx/d(total)`` at its
+        last solution (NaN: none yet, start halfway); updated with the solutions. A roller
+        starts from that solution moved along the derivative (the paper's law: from its
+        fraction of the room).
+    roller_load, deflection : numpy.ndarray
+        ``(P, Z)``, their rows ``points`` filled: ``Qi`` [N] and the inner approach [m]
+        (negative, its gap, where the roller is not loaded).
+
+    Returns
+    -------
+    radial_load, radial_stiffness : numpy.ndarray
+        ``(p,)`` ``F_r = sum Qi_j cos(phi_j)`` (eq. 10) [N] and ``dF_r/d delta_r`` [N/m].
+    converged : numpy.ndarray of bool
+        ``(p,)`` every loaded roller's balance converged.
+    """
+    slices = counts.sum()
+    straight, one = np.zeros(1), np.ones(1)
+    work, roots = np.empty(gaps.shape[-1]), np.empty(gaps.shape[-1])
+    state = np.empty(8)
+    radial_load, radial_stiffness = np.empty(points.size), np.empty(points.size)
+    converged = np.ones(points.size, dtype=np.bool_)
+    for i in range(points.size):
+        point = points[i]
+        k, fc = constant[point], centrifugal[point]
+        load_sum = stiffness_sum = 0.0
+        for j in range(cos.shape[1]):
+            c = cos[point, j]
+            # In total_approach's order, so that both give the same bits.
+            reach = displacement[i] * c - half_clearance[point]
+            reach = reach - 2.0 * floor[point, j if floor.shape[1] > 1 else 0]
+            spare = free[point, j if free.shape[1] > 1 else 0]
+            room = reach - spare
+            roller_load[point, j], deflection[point, j] = 0.0, room
+            if not room > 0.0:
+                continue
+            own = gaps[point, j if gaps.shape[1] > 1 else 0]
+            if own[-1] != own[-1]:  # a NaN gap (NaN sorts last): no balance
+                roller_load[point, j] = deflection[point, j] = np.nan
+                converged[i] = False
+                continue
+            # A first-order prediction of the split from the last solution: what the total
+            # gained, shared as the contacts' stiffnesses share it. The paper's law, whose
+            # load drops each time a slice comes into contact, may balance a roller at
+            # several splits: there the start stays the last split's fraction of the room,
+            # which finds the balance the model has always found.
+            last, last_total, share = split[point, j, 0], split[point, j, 1], split[point, j, 2]
+            if not math.isfinite(last):
+                start = 0.5 * room
+            elif by_loaded:
+                start = last / (last_total - spare) * room
+            else:
+                start = last + share * (reach - last_total)
+            x = start_solve(state, 0.0, room, start, xtol * room)
+            qi = ki = ko = kt = np.nan
+            done = ok = False
+            for _ in range(MAX_ITER):
+                qi, ki = sliced_contact(x, own, counts, slices, k, by_loaded, work, roots)
+                if crowned_outer:
+                    qo, ko = sliced_contact(reach - x, own, counts, slices, k, by_loaded, work,
+                                            roots)
+                    qt, kt = qi, ki
+                else:
+                    qo, ko = sliced_contact(reach - x, straight, one, 1.0, k, False, work,
+                                            roots)
+                    qt, kt = sliced_contact(x, straight, one, 1.0, k, False, work, roots)
+                x, done, ok = newton_step(state, x, qt + fc - qo, kt + ko)
+                if done:
+                    break
+            converged[i] = converged[i] and ok
+            roller_load[point, j], deflection[point, j] = qi, x
+            # Series contacts: dQi/d(total) = Qi' Qo' / (Qo' + Qt') (eq. 14, generalised).
+            stiffness = ki * ko / (ko + kt)
+            if stiffness != stiffness:  # 0/0 just at contact
+                stiffness = 0.0
+            split[point, j, 0], split[point, j, 1] = x, reach
+            split[point, j, 2] = ko / (ko + kt) if ko + kt > 0.0 else 1.0
+            load_sum += qi * c
+            stiffness_sum += stiffness * (c * c)  # eq. 13-16
+        radial_load[i], radial_stiffness[i] = load_sum, stiffness_sum
+    return radial_load, radial_stiffness, converged
+
+
+@njit(cache=True, error_model="numpy")
+def free_outer_approaches(gaps, counts, constant, centrifugal, by_loaded, upper, xtol,
+                          approach, converged):
+    """Outer approach of a roller held by its centrifugal force alone, ``Qo(a) = Fc``.
+
+    For every row of ``gaps`` (``(P, 1 or Z, m)``, sorted) whose bearing spins
+    (``centrifugal > 0``), solved in ``[0, upper]`` (``(P,)``, where every slice already
+    touches) to ``xtol`` relative to ``upper``: ``approach`` and ``converged`` (``(P, 1 or Z)``)
+    are set there and left as they are elsewhere.
+    """
+    slices = counts.sum()
+    work, roots = np.empty(gaps.shape[-1]), np.empty(gaps.shape[-1])
+    state = np.empty(8)
+    for p in range(gaps.shape[0]):
+        fc, k, top = centrifugal[p], constant[p], upper[p]
+        if not fc > 0.0:
+            continue
+        for r in range(gaps.shape[1]):
+            if not math.isfinite(top):
+                approach[p, r], converged[p, r] = np.nan, False
+                continue
+            a = start_solve(state, 0.0, top, 0.5 * top, xtol * top)
+            ok = False
+            for _ in range(MAX_ITER):
+                load, stiffness = sliced_contact(a, gaps[p, r], counts, slices, k, by_loaded,
+                                                 work, roots)
+                a, done, ok = newton_step(state, a, load - fc, stiffness)
+                if done:
+                    break
+            approach[p, r], converged[p, r] = a, ok

@@ -1,0 +1,138 @@
+"""Outputs that depend on fewer inputs than the grid holds (``Output.depends_on``: a roller's
+centrifugal force depends on the speed and the roller's size, not on the load): each is stored
+on the grid's axes that hold those inputs only.
+
+A zipped axis (a ``sample`` too) holding any of them is kept whole; an input that is fixed
+holds no axis. The value of a cell of the kept axes is that of its first point, in grid
+order, whose status keeps values (a failed point's NaN says nothing of the output); a cell
+whose points all failed is NaN. Every other point of the cell whose values hold must agree:
+a model whose output varies along an axis it says it does not depend on has a wrong
+declaration, and the sweep stops with :class:`InconsistentOutput` rather than store one of
+its values for all of them.
+"""
+from __future__ import annotations
+
+import numpy as np
+import xarray as xr
+
+from .models.registry import STATUS_MEANINGS, VALUES_KEPT
+from .grid import Grid
+
+#: How closely [relative] the points of a cell must agree. The same inputs give the same bits
+#: in a pure model; the margin spares a finished sweep a failure over a last-bit difference
+#: (a library's vector loop and its scalar tail), far below any real dependence.
+AGREEMENT = 1e-12
+
+
+class InconsistentOutput(ValueError):
+    """An output differs along an axis of an input it is declared not to depend on."""
+
+
+def stored_dims(grid: Grid, output) -> tuple[str, ...]:
+    """The grid's dimensions ``output`` is stored on, in the grid's order: all of them, or,
+    for an output that declares ``depends_on``, those of the axes holding any of its inputs."""
+    if output.depends_on is None:
+        return grid.dims
+    axes = {grid.axis_values[name][0] for name in output.depends_on
+            if name in grid.axis_values}
+    return tuple(dim for axis, dim in enumerate(grid.dims) if axis in axes)
+
+
+def stored_shape(grid: Grid, output) -> tuple[int, ...]:
+    """The sizes of ``output``'s :func:`stored_dims`."""
+    return tuple(grid.shape[grid.dims.index(d)] for d in stored_dims(grid, output))
+
+
+def stored_cells(grid: Grid, output) -> int:
+    """How many values of ``output`` the file holds along the grid's dimensions."""
+    return int(np.prod(stored_shape(grid, output), dtype=np.int64))
+
+
+def reductions(grid: Grid) -> dict[str, "Reduction"]:
+    """A :class:`Reduction` for each output of the grid's model stored on fewer dimensions
+    than the grid has, by name."""
+    return {output.name: Reduction(grid, output) for output in grid.model.outputs
+            if stored_dims(grid, output) != grid.dims}
+
+
+class Reduction:
+    """The values of one output on its :func:`stored_dims`, gathered from the chunks of a
+    sweep (:meth:`add`, in any order), then read from :attr:`values`: flat over the cells,
+    then the output's own dimensions. Holds one value per cell (the grid's size divided by
+    the sizes of the dimensions it drops, times its own dimensions' sizes)."""
+
+    def __init__(self, grid: Grid, output):
+        self.grid, self.output = grid, output
+        self.dims = stored_dims(grid, output)
+        self.axes = [grid.dims.index(d) for d in self.dims]
+        self.shape = stored_shape(grid, output)
+        cells = stored_cells(grid, output)
+        self.values = np.full((cells,) + tuple(grid.dim_sizes[d] for d in output.dims), np.nan)
+        # The point each value comes from; none yet: beyond every point.
+        self.source = np.full(cells, np.iinfo(np.int64).max, dtype=np.int64)
+
+    def add(self, start: int, stop: int, values: np.ndarray, status: np.ndarray):
+        """Take the values of points ``start..stop-1`` (their ``status``): a cell takes the
+        value of its first held point in grid order; :class:`InconsistentOutput` where a held
+        point disagrees with it."""
+        held = np.isin(status, VALUES_KEPT)
+        points = np.arange(start, stop)[held]
+        values = values[held]
+        index = np.unravel_index(points, self.grid.shape) if self.grid.shape else ()
+        cells = np.ravel_multi_index([index[a] for a in self.axes], self.shape) \
+            if self.axes else np.zeros(points.size, dtype=np.int64)
+        first_cells, first = np.unique(cells, return_index=True)  # points come in order
+        earlier = points[first] < self.source[first_cells]  # chunks may come in any order
+        self.values[first_cells[earlier]] = values[first[earlier]]
+        self.source[first_cells[earlier]] = points[first[earlier]]
+        expected = self.values[cells]
+        with np.errstate(invalid="ignore"):
+            agree = np.isclose(values, expected, rtol=AGREEMENT, atol=0.0, equal_nan=True)
+        agree = agree.all(axis=tuple(range(1, agree.ndim)))
+        if not agree.all():
+            wrong = np.flatnonzero(~agree)[0]
+            raise InconsistentOutput(self._disagreement(points[wrong], values[wrong],
+                                                        self.source[cells[wrong]],
+                                                        expected[wrong]))
+
+    def _disagreement(self, point, value, source, expected) -> str:
+        inputs = ", ".join(self.output.depends_on) or "no input"
+        unit = "" if self.output.unit in ("", "1") else " " + self.output.unit
+        return (f"model {self.grid.model.name!r}, output {self.output.name!r}: declared to "
+                f"depend on {inputs} only (depends_on), it differs between points that share "
+                f"those: {_shown(expected)}{unit} at {self._where(source)} and "
+                f"{_shown(value)}{unit} at {self._where(point)}; the model's declaration is "
+                "wrong (remove or widen its depends_on)")
+
+    def _where(self, point) -> str:
+        index = np.unravel_index(point, self.grid.shape)
+        return "point " + ", ".join(f"{d}[{i}]" for d, i in zip(self.grid.dims, index))
+
+
+def _shown(value) -> str:
+    value = np.asarray(value)
+    return f"{value.item():.10g}" if value.size == 1 else np.array2string(value, precision=10)
+
+
+def on_grid(data: xr.Dataset) -> xr.Dataset:
+    """A sweep's dataset with every output on all the grid's dimensions, as each point holds
+    it: an output stored on fewer (:func:`stored_dims`) is broadcast over the others, and NaN
+    where a point's status keeps no values (as the model's other outputs are there)."""
+    status = data["status"]
+    held = held_points(status)
+    data = data.copy()
+    for name, variable in data.data_vars.items():
+        if variable.attrs.get("coverage_content_type") != "modelResult" \
+                or set(status.dims) <= set(variable.dims):
+            continue
+        own = [d for d in variable.dims if d not in status.dims]
+        data[name] = variable.broadcast_like(status).where(held).transpose(
+            *status.dims, *own).assign_attrs(variable.attrs)
+    return data
+
+
+def held_points(status: xr.DataArray) -> xr.DataArray:
+    """Where a point's values hold, from the flags of a dataset's ``status`` variable."""
+    codes = dict(zip(status.attrs["flag_meanings"].split(), status.attrs["flag_values"]))
+    return status.isin([int(codes[STATUS_MEANINGS[code]]) for code in VALUES_KEPT
+                        if STATUS_MEANINGS[code] in codes])
