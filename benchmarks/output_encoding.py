@@ -52,7 +52,8 @@ REPEATS = 3
 
 def write(sweep, grid, parts, chunks, path: Path):
     """Write the result at ``path`` through the engine's own path, one chunk at a time."""
-    with store.result_file(sweep, grid, path, store.provenance("benchmark")) as writer:
+    size = chunks[0][1] - chunks[0][0]
+    with store.result_file(sweep, grid, path, store.provenance("benchmark"), size) as writer:
         for start, stop in chunks:
             writer.write(start, stop, parts.load(start, stop))
 

@@ -426,7 +426,7 @@ def run_sweep(sweep: Sweep, output=None, executor: Executor | None = None,
             scheduler = executor.describe(parallel)
             tallies = []
             with contextlib.nullcontext() if output is None else store.result_file(
-                    sweep, grid, output, store.provenance(scheduler)) as writer:
+                    sweep, grid, output, store.provenance(scheduler), size) as writer:
 
                 def finished(start: int, stop: int, part: dict):
                     tallies.append(store.chunk_tally(model, part))

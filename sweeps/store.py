@@ -92,9 +92,9 @@ def gather(sweep: Sweep, grid: Grid, parts, chunks, scheduler: str, errors=()) -
 
 
 @contextmanager
-def result_file(sweep: Sweep, grid: Grid, path, provenance: dict):
-    """Write the sweep's netCDF file at ``path`` as its chunks arrive; yields a
-    :class:`ChunkWriter`.
+def result_file(sweep: Sweep, grid: Grid, path, provenance: dict, chunk_size: int):
+    """Write the sweep's netCDF file at ``path`` as its chunks (of ``chunk_size`` points)
+    arrive; yields a :class:`ChunkWriter`.
 
     The file's structure (coordinates, attributes, empty variables, each stored as
     ``sweep.storage`` says) is written at once, each chunk's values into their regions as
@@ -103,11 +103,17 @@ def result_file(sweep: Sweep, grid: Grid, path, provenance: dict):
     inputs than the grid (:mod:`dependence`, gathered from every chunk) and the global
     attributes are written and the file renamed into place: an existing file at ``path``
     stays intact until then. ``provenance``: as :func:`provenance` gives it.
+
+    Each output is stored in HDF5 chunks of about one sweep chunk's points (:func:`_hdf5_chunk`)
+    and the file flushed after each sweep chunk: every HDF5 chunk is then compressed once,
+    as soon as it is complete, while the others compute. netCDF's default chunks span many
+    sweep chunks (a scalar output's one chunk is the whole grid): they were compressed only
+    when the file was closed, seconds of one core after the last chunk of a large sweep.
     """
     import netCDF4
 
     with written_atomically(path) as temporary, netCDF4.Dataset(temporary, "w") as target:
-        writer = ChunkWriter(sweep, grid, target, provenance)
+        writer = ChunkWriter(sweep, grid, target, provenance, chunk_size)
         yield writer
         writer.finish()
 
@@ -115,11 +121,17 @@ def result_file(sweep: Sweep, grid: Grid, path, provenance: dict):
 class ChunkWriter:
     """Writes a sweep's chunks into the netCDF file :func:`result_file` opened."""
 
-    def __init__(self, sweep: Sweep, grid: Grid, target, provenance: dict):
+    def __init__(self, sweep: Sweep, grid: Grid, target, provenance: dict, chunk_size: int):
         self.sweep, self.grid, self.target, self.provenance = sweep, grid, target, provenance
         self.errors = set()
         self.reduced = reductions(grid)
         skeleton = self._skeleton()
+        points = _hdf5_chunk(grid.shape, chunk_size)
+        for name in [o.name for o in grid.model.outputs if o.name not in self.reduced] + [
+                "status"]:
+            variable = skeleton[name]
+            if variable.ndim:  # a scalar is stored whole, without chunks
+                variable.encoding["chunksizes"] = points + variable.shape[len(grid.shape):]
         self.store = _write_structure(skeleton, target,
                                       [o.name for o in grid.model.outputs] + ["status"])
         # What xarray adds to the attributes (a "coordinates" list), kept by finish().
@@ -143,6 +155,7 @@ class ChunkWriter:
                      "status": part["status"]}
         for name, index, block in stored_blocks(self.grid, start, stop, per_point):
             self.target.variables[name][index or ...] = block
+        self.target.sync()  # the HDF5 chunks this completed are compressed now, not at the end
 
     def finish(self):
         """Write the outputs stored on fewer dimensions, and the global attributes of the
@@ -156,6 +169,19 @@ class ChunkWriter:
         for name in self.target.ncattrs():
             self.target.delncattr(name)
         self.store.set_attributes(attributes)
+
+
+def _hdf5_chunk(shape: tuple, points: int) -> tuple:
+    """An HDF5 chunk over a C-ordered grid of ``shape`` that holds about ``points``
+    consecutive points: whole trailing axes, part of the next, one along the leading ones."""
+    chunk, inner = [], 1
+    for size in reversed(shape):
+        take = size if inner * size <= points else max(1, min(size, points // inner))
+        chunk.append(take)
+        inner *= take
+        if take < size:
+            break
+    return (1,) * (len(shape) - len(chunk)) + tuple(reversed(chunk))
 
 
 def _write_structure(dataset: xr.Dataset, target, placeholders):
