@@ -11,7 +11,7 @@ Two workers can only be measured on two idle cores: the machine's load average i
 before the runs (the benchmark adds nothing then) and after each pair (it adds at most its
 two workers), and the benchmark says "machine too busy to measure" when others' load exceeds
 half a core. ``python benchmarks/worker_scaling.py POINTS PAIRS`` measures another size
-(default 1e6 points, 3 pairs: about eight minutes on two cores at crb_radial's 1e-4 s per
+(default 1e6 points, 3 pairs: about five minutes on two quiet cores at crb_radial's 6e-5 s per
 point).
 """
 import os
