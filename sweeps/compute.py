@@ -23,9 +23,8 @@ from .spec import SpecError, Sweep
 
 #: Below this estimated single-core time [s] a sweep runs in-process: starting a cluster
 #: would take longer than the work. benchmarks/cluster_break_even.py measured a fresh
-#: LocalCluster of two paying from 3.0 s and 6.3 s of in-process work (two runs on a shared
-#: machine, load 2-3 on its 2 cores), and about 4.4 s on a quiet one (issue 16: 1.1e5
-#: crb_radial points).
+#: LocalCluster of two paying from 4.2 s of in-process work on a quiet machine (and from
+#: 3.0 s and 6.3 s with others' load of 2-3 on its 2 cores).
 IN_PROCESS_SECONDS = 4.0
 #: Largest chunk, in estimated seconds of work on one core (a task costs a few milliseconds of
 #: scheduling; within a chunk the model runs in blocks of its ``points_per_call``).
