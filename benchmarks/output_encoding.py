@@ -3,7 +3,7 @@
 Baseline: the same result written as the engine wrote every file before the [output] table,
 float64 and uncompressed. The result, 1e5 points of bearing D of paper 000 (load x clearance x
 crown x speed, 60 slices, 14 rollers), is computed once; each setting then writes it through
-the engine's own path (``store.assemble``, one chunk at a time) and reads it back whole
+the engine's own path (``store.result_file``, one chunk at a time) and reads it back whole
 (``store.open_result``). Times are the best of three; float64 settings must read back bit for
 bit, float32 within its rounding. Prints one row per setting, as ratios against the baseline,
 and the chosen default's size ratio (goal: at most 0.5, with writing under a tenth of the
@@ -50,12 +50,20 @@ SETTINGS = [Storage("float64", "none")] + [
 REPEATS = 3
 
 
+def write(sweep, grid, parts, chunks, path: Path):
+    """Write the result at ``path`` through the engine's own path, one chunk at a time."""
+    size = chunks[0][1] - chunks[0][0]
+    with store.result_file(sweep, grid, path, store.provenance("benchmark"), size) as writer:
+        for start, stop in chunks:
+            writer.write(start, stop, parts.load(start, stop))
+
+
 def measure(sweep, grid, parts, chunks, path: Path):
     """Best writing and reading times [s] of ``sweep``'s file, its size [B] and its data."""
     writing = reading = np.inf
     for _ in range(REPEATS):
         began = time.perf_counter()
-        store.assemble(sweep, grid, parts, chunks, path, "benchmark")
+        write(sweep, grid, parts, chunks, path)
         writing = min(writing, time.perf_counter() - began)
         began = time.perf_counter()
         data = store.open_result(path)
@@ -109,7 +117,7 @@ def folded_sizes(sweep, grid, parts, chunks, path: Path):
         sweep.storage = storage
         sizes, results = [], []
         for layout in (every_point, grid):
-            store.assemble(sweep, layout, parts, chunks, path, "benchmark")
+            write(sweep, layout, parts, chunks, path)
             sizes.append(path.stat().st_size)
             results.append(on_grid(store.open_result(path)))
         for name in folded:

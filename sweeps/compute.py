@@ -10,6 +10,7 @@ import socket
 import sys
 import threading
 import time
+from concurrent.futures import ThreadPoolExecutor
 from dataclasses import dataclass, field
 
 import numpy as np
@@ -22,8 +23,10 @@ from .parts import HeldChunks, OutputLock, Parts, check_output, is_zarr
 from .spec import SpecError, Sweep
 
 #: Below this estimated single-core time [s] a sweep runs in-process: starting a cluster
-#: would take longer than the work.
-IN_PROCESS_SECONDS = 3.0
+#: would take longer than the work. benchmarks/cluster_break_even.py measured a fresh
+#: LocalCluster of two paying from 4.2 s of in-process work on a quiet machine (and from
+#: 3.0 s and 6.3 s with others' load of 2-3 on its 2 cores).
+IN_PROCESS_SECONDS = 4.0
 #: Largest chunk, in estimated seconds of work on one core (a task costs a few milliseconds of
 #: scheduling; within a chunk the model runs in blocks of its ``points_per_call``).
 CHUNK_SECONDS = 1.0
@@ -218,6 +221,7 @@ class Executor:
         self.client = client
         self.given = client is not None  # the caller's: used, never closed
         self.cluster = None
+        self.starting = None  # a local cluster starting in the background (a Future)
 
     def __enter__(self):
         return self
@@ -232,6 +236,9 @@ class Executor:
     def close(self):
         if self.given:
             return
+        if self.starting is not None:  # let it finish starting, to close it
+            with contextlib.suppress(Exception):
+                self.connect()
         if self.client is not None:
             self.client.close()
         if self.cluster is not None:
@@ -247,39 +254,63 @@ class Executor:
         return cost > IN_PROCESS_SECONDS
 
     def worker_count(self) -> int:
-        if self.client is not None:
-            return max(1, len(self.client.scheduler_info()["workers"]))
+        if self.scheduler or self.given:
+            return max(1, len(self.connect().scheduler_info()["workers"]))
         return self.workers or 2
 
-    def connect(self):
-        import dask
-        from distributed import Client, LocalCluster
+    def start(self):
+        """Begin connecting: a local cluster starts in a background thread (its processes
+        start and import while the caller prepares the sweep); :meth:`connect` waits for it."""
+        if self.client is not None or self.starting is not None:
+            return
+        if self.scheduler:
+            self.connect()
+            return
+        # Imported here, not in the thread: two threads importing the same modules at once
+        # can meet a module half initialised.
+        import distributed  # noqa: F401
 
+        pool = ThreadPoolExecutor(max_workers=1)
+        self.starting = pool.submit(self._start_local)
+        pool.shutdown(wait=False)  # returns at once: the start goes on, its thread ends with it
+
+    def connect(self):
+        if self.starting is not None:
+            starting, self.starting = self.starting, None
+            starting.result()  # raises what the start raised
         if self.client is None:
             # Not the default client: xarray would then guard every netCDF write with a lock
             # held through the scheduler, a round trip per variable.
             if self.scheduler:
                 self.client = _connect_to_scheduler(self.scheduler)
             else:
-                # dask sets MALLOC_TRIM_THRESHOLD_=65536 in its workers, which makes glibc map
-                # and unmap every large numpy temporary of a model afresh: twice the time. Its
-                # profiler serves only the dashboard; slower housekeeping cuts an idle two-worker
-                # cluster's CPU use from about 10 % to 4 % of a core, which the workers need
-                # when they occupy every core.
-                with dask.config.set({"distributed.nanny.pre-spawn-environ."
-                                      "MALLOC_TRIM_THRESHOLD_": None,
-                                      "distributed.worker.profile.enabled": False,
-                                      "distributed.admin.tick.interval": "500ms",
-                                      "distributed.admin.system-monitor.interval": "2s",
-                                      "distributed.worker.memory.monitor-interval": "1s"}):
-                    # The preload runs this module's dask_setup in every worker process,
-                    # restarted ones too. The cluster's own logs are not for the user: what
-                    # goes wrong reaches the summary or the command's one line of error.
-                    self.cluster = LocalCluster(n_workers=self.workers or 2, threads_per_worker=1,
-                                                processes=True, dashboard_address=":0",
-                                                silence_logs=logging.CRITICAL, preload=[__name__])
-                self.client = Client(self.cluster, set_as_default=False)
+                self._start_local()
         return self.client
+
+    def _start_local(self):
+        """Start a LocalCluster of ``workers`` (default 2) single-threaded processes and a
+        client of it."""
+        import dask
+        from distributed import Client, LocalCluster
+
+        # dask sets MALLOC_TRIM_THRESHOLD_=65536 in its workers, which makes glibc map
+        # and unmap every large numpy temporary of a model afresh: twice the time. Its
+        # profiler serves only the dashboard; slower housekeeping cuts an idle two-worker
+        # cluster's CPU use from about 10 % to 4 % of a core, which the workers need
+        # when they occupy every core.
+        with dask.config.set({"distributed.nanny.pre-spawn-environ."
+                              "MALLOC_TRIM_THRESHOLD_": None,
+                              "distributed.worker.profile.enabled": False,
+                              "distributed.admin.tick.interval": "500ms",
+                              "distributed.admin.system-monitor.interval": "2s",
+                              "distributed.worker.memory.monitor-interval": "1s"}):
+            # The preload runs this module's dask_setup in every worker process,
+            # restarted ones too. The cluster's own logs are not for the user: what
+            # goes wrong reaches the summary or the command's one line of error.
+            self.cluster = LocalCluster(n_workers=self.workers or 2, threads_per_worker=1,
+                                        processes=True, dashboard_address=":0",
+                                        silence_logs=logging.CRITICAL, preload=[__name__])
+        self.client = Client(self.cluster, set_as_default=False)
 
     def describe(self, parallel: bool) -> str:
         if not parallel:
@@ -378,10 +409,13 @@ def run_sweep(sweep: Sweep, output=None, executor: Executor | None = None,
     ``output`` is None, return its dataset in :attr:`Summary.dataset` without a file.
 
     Finished chunks are kept as part files beside ``output`` until the file is written, so a
-    run after an interruption computes only what is missing (``fresh`` discards them). The
-    file is assembled one chunk at a time: memory is bounded by the chunk size. An output
-    ending in ``.zarr`` is a zarr store that each chunk is written into where it is computed
-    (:mod:`zarr_store`). ``log`` receives messages for the user (resuming, discarding).
+    run after an interruption computes only what is missing (``fresh`` discards them). Each
+    chunk is written into the file as it arrives, while the others compute: memory is bounded
+    by the chunk size, and the file is complete soon after the last chunk. An output ending
+    in ``.zarr`` is a zarr store that each chunk is written into by the worker that computes
+    it (:mod:`zarr_store`). A cluster, when the sweep is worth one, starts while the parts
+    are looked at and the file's structure is written. ``log`` receives messages for the user
+    (resuming, discarding).
     """
     if output is not None:
         check_output(output, sweep.path)
@@ -396,7 +430,7 @@ def run_sweep(sweep: Sweep, output=None, executor: Executor | None = None,
             expected = versions(model)
             parallel = executor.parallel(grid)
             if parallel:
-                executor.connect()
+                executor.start()
             size = chunk_size or choose_chunk_size(
                 grid, executor.worker_count() if parallel else 1)
             zarr = is_zarr(output)
@@ -413,27 +447,39 @@ def run_sweep(sweep: Sweep, output=None, executor: Executor | None = None,
                 task = functools.partial(evaluate_into, parts.writer, expected)
             done = parts.finished()
             todo = [chunk for chunk in chunks if chunk not in done]
-            bar = Progress(grid.size, model.name, progress)
-            bar.advance(grid.size - sum(stop - start for start, stop in todo))
-            try:
-                for start, stop, result in executor.map(grid, todo, parallel, task):
-                    _check_versions(result.pop("versions"), expected, executor, parts)
-                    parts.save(start, stop, result)
-                    bar.advance(stop - start)
-            finally:
-                bar.close()
             scheduler = executor.describe(parallel)
-            counts, errors, noted = (parts.tally(model, chunks) if zarr
-                                     else store.tally(grid, parts, chunks))
-            dataset = None
-            if output is None:
-                dataset = store.gather(sweep, grid, parts, chunks, scheduler, errors)
-            else:
-                check_output(output, sweep.path)  # nothing has taken its place meanwhile
-                if zarr:
-                    parts.finish(sweep, grid, chunks, output, scheduler, errors)
+            tallies = []
+            with contextlib.nullcontext() if output is None or zarr else store.result_file(
+                    sweep, grid, output, store.provenance(scheduler), size) as writer:
+
+                def finished(start: int, stop: int, part: dict):
+                    tallies.append(store.chunk_tally(model, part))
+                    if writer is not None:
+                        writer.write(start, stop, part)
+
+                if not zarr:  # an interrupted run's chunks (a zarr store holds them already)
+                    for start, stop in sorted(done):
+                        finished(start, stop, parts.load(start, stop))
+                bar = Progress(grid.size, model.name, progress)
+                bar.advance(sum(stop - start for start, stop in done))
+                try:
+                    for start, stop, result in executor.map(grid, todo, parallel, task):
+                        _check_versions(result.pop("versions"), expected, executor, parts)
+                        parts.save(start, stop, result)
+                        if not zarr:  # a zarr chunk is in the store, its counts in its mark
+                            finished(start, stop, result)
+                        bar.advance(stop - start)
+                finally:
+                    bar.close()
+                counts, errors, noted = (parts.tally(model, chunks) if zarr
+                                         else store.summed(model, tallies))
+                dataset = None
+                if output is None:
+                    dataset = store.gather(sweep, grid, parts, chunks, scheduler, errors)
                 else:
-                    store.assemble(sweep, grid, parts, chunks, output, scheduler, errors)
+                    check_output(output, sweep.path)  # nothing has taken its place meanwhile
+                    if zarr:
+                        parts.finish(sweep, grid, chunks, output, scheduler, errors)
             parts.remove()
         return Summary(model.name, grid.size, counts, time.monotonic() - began,
                        "(in memory)" if output is None else str(output), scheduler, errors, noted,

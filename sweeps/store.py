@@ -1,9 +1,10 @@
-"""A finished sweep's dataset from its chunks: written atomically as netCDF one chunk at a time,
+"""A finished sweep's dataset from its chunks: written atomically as netCDF as the chunks arrive,
 or gathered in memory; its provenance (package version, git commit)."""
 from __future__ import annotations
 
 import os
 import subprocess
+from contextlib import contextmanager
 from importlib.metadata import PackageNotFoundError, version
 from pathlib import Path
 
@@ -29,14 +30,16 @@ def package_version() -> str:
 def git_commit() -> str | None:
     """The project's commit (``-dirty`` when it has uncommitted changes), if it is a checkout."""
     root = Path(__file__).resolve().parents[1]
-    try:
-        commit = subprocess.run(["git", "-C", str(root), "rev-parse", "HEAD"], capture_output=True,
-                                text=True, timeout=10, check=True).stdout.strip()
-        dirty = subprocess.run(["git", "-C", str(root), "status", "--porcelain",
+    try:  # one git process: the branch header names the commit, every other line a change
+        lines = subprocess.run(["git", "-C", str(root), "status", "--porcelain=v2", "--branch",
                                 "--untracked-files=no"], capture_output=True, text=True,
-                               timeout=10, check=True).stdout.strip()
+                               timeout=10, check=True).stdout.splitlines()
     except (OSError, subprocess.SubprocessError):
         return None
+    commit = next((line.split()[2] for line in lines if line.startswith("# branch.oid ")), None)
+    if commit is None or commit == "(initial)":  # a repository without a commit yet
+        return None
+    dirty = any(not line.startswith("#") for line in lines)
     return commit + ("-dirty" if dirty else "")
 
 
@@ -46,27 +49,22 @@ def provenance(scheduler: str) -> dict:
             "git_commit": git_commit()}
 
 
-def tally(grid: Grid, parts, chunks) -> tuple[dict, list, dict]:
-    """The count of points by status, the model's error messages and the counts of the
-    outputs the model declares ``counted``, read one chunk at a time."""
-    return summed(grid.model, (chunk_tally(grid.model, parts.load(start, stop))
-                               for start, stop in chunks))
-
-
 def chunk_tally(model, part: dict) -> dict:
-    """What :func:`tally` counts in one computed chunk, as JSON-ready lists and numbers (a
-    zarr output keeps it, not the values, for each finished chunk)."""
+    """What one computed chunk counts: points by status, the model's error messages and the
+    points where each output the model declares ``counted`` says so, as plain lists and
+    numbers (:func:`summed` adds them up)."""
     noted = {}
     for output in (o for o in model.outputs if o.counted):
         text, where = output.counted
-        found = int(np.count_nonzero(where(part["outputs"][output.name])))
-        noted[text] = noted.get(text, 0) + found
+        noted[text] = noted.get(text, 0) + int(np.count_nonzero(where(part["outputs"][
+            output.name])))
     return {"status": np.bincount(part["status"], minlength=len(STATUS_MEANINGS)).tolist(),
             "errors": sorted(set(part["errors"])), "noted": noted}
 
 
 def summed(model, tallies) -> tuple[dict, list, dict]:
-    """The sweep's counts (as :func:`tally` returns them) from its chunks' :func:`chunk_tally`."""
+    """The sweep's count of points by status, the model's error messages and the counts of
+    the outputs the model declares ``counted``, from its chunks' :func:`chunk_tally`."""
     counts = np.zeros(len(STATUS_MEANINGS), dtype=np.int64)
     errors = set()
     noted = {o.counted[0]: 0 for o in model.outputs if o.counted}
@@ -79,8 +77,8 @@ def summed(model, tallies) -> tuple[dict, list, dict]:
 
 
 def gather(sweep: Sweep, grid: Grid, parts, chunks, scheduler: str, errors=()) -> xr.Dataset:
-    """The sweep's labelled dataset in memory, from its chunks: the dataset :func:`assemble`
-    writes (``errors``: the model's messages, from :func:`tally`)."""
+    """The sweep's labelled dataset in memory, from its chunks: the dataset
+    :func:`result_file` writes (``errors``: the model's messages, from :func:`summed`)."""
     reduced = reductions(grid)
     outputs = {o.name: np.full(_flat_shape(grid, o), np.nan) for o in grid.model.outputs
                if o.name not in reduced}
@@ -94,43 +92,143 @@ def gather(sweep: Sweep, grid: Grid, parts, chunks, scheduler: str, errors=()) -
     return labelled_dataset(sweep, grid, outputs, status, provenance(scheduler), errors)
 
 
-def assemble(sweep: Sweep, grid: Grid, parts, chunks, path, scheduler: str, errors=()):
-    """Write the sweep's dataset from its chunks, one chunk in memory at a time.
+@contextmanager
+def result_file(sweep: Sweep, grid: Grid, path, provenance: dict, chunk_size: int):
+    """Write the sweep's netCDF file at ``path`` as its chunks (of ``chunk_size`` points)
+    arrive; yields a :class:`ChunkWriter`.
 
     The file's structure (coordinates, attributes, empty variables, each stored as
-    ``sweep.storage`` says) is written by xarray, the chunks' values then into it, region by
-    region, and the finished file renamed into place: an existing file at ``path`` stays
-    intact until then. ``errors``: the model's messages, from :func:`tally`. An output that
-    depends on fewer inputs than the grid (:mod:`dependence`) is gathered from every chunk and
-    written last.
+    ``sweep.storage`` says) is written at once, each chunk's values into their regions as
+    :meth:`ChunkWriter.write` receives them (one chunk in memory at a time, while the others
+    compute), and when the block ends without an error the outputs that depend on fewer
+    inputs than the grid (:mod:`dependence`, gathered from every chunk) and the global
+    attributes are written and the file renamed into place: an existing file at ``path``
+    stays intact until then. ``provenance``: as :func:`provenance` gives it.
+
+    Each output is stored in HDF5 chunks of about one sweep chunk's points (:func:`_hdf5_chunk`)
+    and the file flushed after each sweep chunk: every HDF5 chunk is then compressed once,
+    as soon as it is complete, while the others compute. netCDF's default chunks span many
+    sweep chunks (a scalar output's one chunk is the whole grid): they were compressed only
+    when the file was closed, seconds of one core after the last chunk of a large sweep.
     """
-    import dask.array
     import netCDF4
 
-    lazy = {o.name: dask.array.full(_flat_shape(grid, o), np.nan, chunks=-1)  # never computed
-            for o in grid.model.outputs}
-    status = dask.array.zeros(grid.size, dtype=np.int8, chunks=-1)
-    skeleton = labelled_dataset(sweep, grid, lazy, status, provenance(scheduler), errors)
-    with written_atomically(path) as temporary:
-        # The structure only: dump_to_store queues the lazy values for a write that is never
-        # made (the parts fill them in below), and closing the store closes the file.
-        skeleton_store = xr.backends.NetCDF4DataStore.open(temporary, mode="w")
-        try:
-            skeleton.dump_to_store(skeleton_store)
-        finally:
-            skeleton_store.close()
-        del skeleton
-        integral = {o.name for o in grid.model.outputs if o.dtype == "int"}
-        reduced = reductions(grid)
-        with netCDF4.Dataset(temporary, "r+") as target:
-            for start, stop in chunks:
-                part = parts.load(start, stop)
-                for name, index, block in stored_blocks(
-                        grid, start, stop, _per_point_outputs(part, reduced, start, stop),
-                        part["status"]):
-                    target.variables[name][index or ...] = block
-            for name, reduction in reduced.items():
-                target.variables[name][...] = stored_reduction(reduction, name in integral)
+    with written_atomically(path) as temporary, netCDF4.Dataset(temporary, "w") as target:
+        writer = ChunkWriter(sweep, grid, target, provenance, chunk_size)
+        yield writer
+        writer.finish()
+
+
+class ChunkWriter:
+    """Writes a sweep's chunks into the netCDF file :func:`result_file` opened."""
+
+    def __init__(self, sweep: Sweep, grid: Grid, target, provenance: dict, chunk_size: int):
+        self.sweep, self.grid, self.target, self.provenance = sweep, grid, target, provenance
+        self.errors = set()
+        self.reduced = reductions(grid)
+        skeleton = self._skeleton()
+        points = _hdf5_chunk(grid.shape, chunk_size)
+        for name in [o.name for o in grid.model.outputs if o.name not in self.reduced] + [
+                "status"]:
+            variable = skeleton[name]
+            if variable.ndim:  # a scalar is stored whole, without chunks
+                variable.encoding["chunksizes"] = points + variable.shape[len(grid.shape):]
+        self.store = _write_structure(skeleton, target,
+                                      [o.name for o in grid.model.outputs] + ["status"])
+        # What xarray adds to the attributes (a "coordinates" list), kept by finish().
+        self.added = {name: target.getncattr(name) for name in target.ncattrs()
+                      if name not in skeleton.attrs}
+
+    def _skeleton(self) -> xr.Dataset:
+        """The labelled dataset with placeholders for the values, which are never written."""
+        grid = self.grid
+        placeholders = {o.name: np.broadcast_to(np.nan, _flat_shape(grid, o))
+                        for o in grid.model.outputs}
+        status = np.broadcast_to(np.int8(0), (grid.size,))
+        return labelled_dataset(self.sweep, grid, placeholders, status, self.provenance,
+                                sorted(self.errors))
+
+    def write(self, start: int, stop: int, part: dict):
+        """Write the values of points ``start..stop-1`` (a computed ``part``); those of an
+        output stored on fewer dimensions are gathered for :meth:`finish`."""
+        self.errors.update(part["errors"])
+        for name, index, block in stored_blocks(
+                self.grid, start, stop, _per_point_outputs(part, self.reduced, start, stop),
+                part["status"]):
+            self.target.variables[name][index or ...] = block
+        self.target.sync()  # the HDF5 chunks this completed are compressed now, not at the end
+
+    def finish(self):
+        """Write the outputs stored on fewer dimensions, and the global attributes of the
+        finished sweep (its time, the model's errors) in the order xarray writes them."""
+        for name, reduction in self.reduced.items():
+            self.target.variables[name][...] = stored_reduction(
+                reduction, reduction.output.dtype == "int")
+        attributes = {**self._skeleton().attrs, **self.added}
+        for name in self.target.ncattrs():
+            self.target.delncattr(name)
+        self.store.set_attributes(attributes)
+
+
+def _hdf5_chunk(shape: tuple, points: int) -> tuple:
+    """An HDF5 chunk over a C-ordered grid of ``shape`` that holds about ``points``
+    consecutive points: whole trailing axes, part of the next, one along the leading ones."""
+    chunk, inner = [], 1
+    for size in reversed(shape):
+        take = size if inner * size <= points else max(1, min(size, points // inner))
+        chunk.append(take)
+        inner *= take
+        if take < size:
+            break
+    return (1,) * (len(shape) - len(chunk)) + tuple(reversed(chunk))
+
+
+def _write_structure(dataset: xr.Dataset, target, placeholders):
+    """Write ``dataset`` into the open netCDF4.Dataset ``target`` as xarray writes it, except
+    the values of the variables named in ``placeholders``: those are created empty, for
+    regions to fill, and their values (placeholders of the right shape) are never read.
+    Returns xarray's store on ``target``.
+
+    xarray would encode every value of a placeholder (a float32 copy of a whole output) and
+    write them. With dask.array's lazy arrays it would not, but xarray's own netCDF store
+    then asks dask's scheduler for a write lock, importing dask.distributed: a third of a
+    second, a quarter of a small sweep's time.
+    """
+    store = _StructureStore(target, set(placeholders))
+    dataset.dump_to_store(store, writer=_ValuesExcept(set(placeholders)))
+    return store
+
+
+class _StructureStore(xr.backends.NetCDF4DataStore):
+    """xarray's netCDF4 store on an open netCDF4.Dataset, that encodes a placeholder's first
+    value only: the encoding (type, fill value, attributes) does not depend on the size."""
+
+    def __init__(self, target, placeholders: set):
+        super().__init__(target)
+        self.placeholders = placeholders
+
+    def encode(self, variables, attributes):
+        first = {name: variable[tuple(slice(0, 1) for _ in variable.dims)]
+                 if name in self.placeholders else variable
+                 for name, variable in variables.items()}
+        encoded, attributes = super().encode(first, attributes)
+        for name in self.placeholders & set(encoded):
+            one = encoded[name]
+            encoded[name] = xr.Variable(one.dims, np.broadcast_to(one.data,
+                                                                  variables[name].shape),
+                                        one.attrs, one.encoding)
+        return encoded, attributes
+
+
+class _ValuesExcept:
+    """xarray's array writer, writing every variable's values but those of ``skipped``."""
+
+    def __init__(self, skipped: set):
+        self.skipped = skipped
+
+    def add(self, source, target, region=None):
+        if target.variable_name not in self.skipped:
+            target[region or ...] = source
 
 
 def stored_blocks(grid: Grid, start: int, stop: int, outputs: dict, status: np.ndarray):

@@ -205,7 +205,7 @@ class StoreParts(Parts):
             return json.loads(str(data["tally"])), firsts
 
     def tally(self, model, chunks) -> tuple[dict, list, dict]:
-        """The sweep's counts (``store.tally``) from its chunks' marks."""
+        """The sweep's counts (as ``store.summed`` gives them) from its chunks' marks."""
         return summed(model, (self.load(self.path(start, stop))[0] for start, stop in chunks))
 
     def finish(self, sweep: Sweep, grid: Grid, chunks, output, scheduler: str, errors=()):

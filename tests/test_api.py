@@ -97,16 +97,16 @@ def test_an_interrupted_run_to_an_output_resumes(tmp_path, monkeypatch, capsys):
     path = tmp_path / "sweep.toml"
     path.write_text(TEXT)
     output = tmp_path / "out.nc"
-    original = store.assemble
+    original = store.ChunkWriter.finish
 
     def interrupted(*args):  # every chunk computed, the file not yet written
         raise KeyboardInterrupt
 
-    monkeypatch.setattr(store, "assemble", interrupted)
+    monkeypatch.setattr(store.ChunkWriter, "finish", interrupted)
     with pytest.raises(KeyboardInterrupt):
         bearing_sweep.run(path, output=output, workers=0)
     assert not output.exists() and (tmp_path / "out.nc.parts").is_dir()
-    monkeypatch.setattr(store, "assemble", original)
+    monkeypatch.setattr(store.ChunkWriter, "finish", original)
     capsys.readouterr()
     bearing_sweep.run(path, output=output, workers=0).close()
     err = capsys.readouterr().err

@@ -166,7 +166,7 @@ def test_a_part_emptied_by_a_power_loss_is_computed_again(tmp_path, capsys, monk
     def power_loss(*args):  # every chunk is computed, the file not yet written
         raise KeyboardInterrupt
 
-    monkeypatch.setattr("bearing_sweep.store.assemble", power_loss)
+    monkeypatch.setattr("bearing_sweep.store.ChunkWriter.finish", power_loss)
     assert cli.main(arguments) == 130
     monkeypatch.undo()
     kept = sorted((tmp_path / "out.nc.parts").glob("chunk-*.npz"))
@@ -314,7 +314,7 @@ def test_parts_of_another_package_version_are_discarded(tmp_path, capsys, monkey
     def interrupted(*args):  # every chunk computed, the file not yet written
         raise KeyboardInterrupt
 
-    monkeypatch.setattr("bearing_sweep.store.assemble", interrupted)
+    monkeypatch.setattr("bearing_sweep.store.ChunkWriter.finish", interrupted)
     monkeypatch.setattr("bearing_sweep.store.package_version", lambda: "0.0.1")
     assert cli.main(arguments) == 130
     monkeypatch.undo()  # the package is upgraded before the run is resumed

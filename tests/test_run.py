@@ -261,3 +261,29 @@ def test_chunks_of_another_version_are_refused_and_the_others_kept(tmp_path, cap
     assert "2 chunks computed so far are kept" in err
     assert not output.exists()
     assert len(list((tmp_path / "out.nc.parts").glob("chunk-*.npz"))) == 2
+
+
+def test_each_chunk_is_written_into_the_file_before_the_next_is_computed(tmp_path,
+                                                                        monkeypatch):
+    # Writing while the others compute keeps the file's assembly out of the sweep's end: the
+    # file is complete soon after its last chunk.
+    import bearing_sweep.compute as compute_module
+
+    events = []
+    evaluate, write = compute_module.evaluate_chunk, store.ChunkWriter.write
+
+    def evaluated(grid, start, stop):
+        events.append(("computed", start))
+        return evaluate(grid, start, stop)
+
+    def written(self, start, stop, part):
+        events.append(("written", start))
+        return write(self, start, stop, part)
+
+    monkeypatch.setattr(compute_module, "evaluate_chunk", evaluated)
+    monkeypatch.setattr(store.ChunkWriter, "write", written)
+    summary, data = compute(tmp_path, "streamed", chunk_size=36)
+    starts = range(0, 108, 36)
+    assert events == [(event, start) for start in starts for event in ("computed", "written")]
+    _, whole = compute(tmp_path, "whole", chunk_size=10_000)
+    assert_same_numbers(whole, data)

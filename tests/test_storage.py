@@ -162,10 +162,38 @@ def test_an_interrupted_run_resumes_its_chunks_in_another_encoding(tmp_path, cap
     def interrupted(*args):  # every chunk computed, the file not yet written
         raise KeyboardInterrupt
 
-    monkeypatch.setattr("bearing_sweep.store.assemble", interrupted)
+    monkeypatch.setattr("bearing_sweep.store.ChunkWriter.finish", interrupted)
     assert cli.main(arguments) == 130
     monkeypatch.undo()
     capsys.readouterr()
     assert cli.main(arguments + ["--encoding", "float32"]) == 0
     assert "resuming: 2 chunks already computed" in capsys.readouterr().err
     assert filters(output, "roller_load")[1] == np.float32
+
+
+def test_outputs_are_stored_in_hdf5_chunks_of_one_sweep_chunk(tmp_path):
+    # Each HDF5 chunk is then complete (and compressed) when its sweep chunk arrives, not
+    # when the file is closed after the last one. The grid is 2 x 2 x 2 (radial_load,
+    # clearance, arrangement), 10 slices: 4 points per chunk are the last two axes whole.
+    path = tmp_path / "chunked.nc"
+    run_sweep(spec.parse(TEXT, "chunked.toml"), path, Executor(workers=0), chunk_size=4,
+              progress=False)
+    with netCDF4.Dataset(path) as data:
+        assert data["radial_stiffness"].chunking() == [1, 2, 2]
+        assert data["status"].chunking() == [1, 2, 2]
+        rollers = data.dimensions["roller"].size
+        assert data["roller_load"].chunking() == [1, 2, 2, rollers]
+    whole = run_sweep(spec.parse(TEXT), None, Executor(workers=0), progress=False).dataset
+    with xr.open_dataset(path) as data:
+        for name in whole.data_vars:
+            np.testing.assert_array_equal(data[name].values, whole[name].values, err_msg=name)
+
+
+def test_an_hdf5_chunk_holds_about_a_sweep_chunk_of_consecutive_points():
+    from bearing_sweep.store import _hdf5_chunk
+
+    assert _hdf5_chunk((1000, 1000), 10_000) == (10, 1000)  # ten whole rows
+    assert _hdf5_chunk((1000, 1000), 500) == (1, 500)  # part of one row
+    assert _hdf5_chunk((9, 3, 2, 2), 7) == (1, 1, 2, 2)  # the whole trailing axes that fit
+    assert _hdf5_chunk((5,), 100) == (5,)  # never beyond the grid
+    assert _hdf5_chunk((), 5) == ()  # a single point
