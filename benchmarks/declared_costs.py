@@ -1,16 +1,19 @@
 """Declared against measured cost per point of every model that sweeps fast, on the studies'
-own sweeps.
+own sweeps made large.
 
 The engine chooses its chunk size and whether a sweep is worth a cluster from each model's
-declared ``seconds_per_point``; this measures the real cost on one core, through the engine's
-own chunk evaluation (inputs built, model called in blocks of its ``points_per_call``,
-outputs converted; CPU time), over every sweep of the studies (studies/*/*.toml) that runs
-the model: each grid evaluated whole, as one chunk, and the cost per point the total time over
-the total points. A model no study runs (hertz_point) is measured on its definition in
-tests/data/every_model, its first axis repeated to a block of its ``points_per_call`` points,
-as a large sweep runs it: its few points alone would measure the call's fixed cost. It
-prints the declared over the measured cost (goal: between 0.5x and 2x). The transient cage
-models are measured in their own benchmarks (cage_slip_cost, cage_dynamics_6dof_cost).
+declared ``seconds_per_point``: the choice matters for sweeps of thousands of points and
+more, so that is what is measured. Each sweep of the studies (studies/*/*.toml) that runs the
+model has its first axis repeated until it holds at least one block of the model's
+``points_per_call`` (a study's sweep of a few dozen points would measure the call's fixed
+cost, and a compiled model's first points in a process run interpreted); a model no study
+runs (hertz_point) gets its definition in tests/data/every_model so. The model is warmed up by
+one such grid, untimed (imports, loading compiled code), then every grid is evaluated whole
+through the engine's own chunk evaluation (inputs built, model called in blocks of its
+``points_per_call``, outputs converted), on one core, in CPU time; the cost per point is the
+total time over the total points. It prints the declared over the measured cost (goal:
+between 0.5x and 2x). The transient cage models are measured in their own benchmarks
+(cage_slip_cost, cage_dynamics_6dof_cost).
 """
 import dataclasses
 import math
@@ -31,15 +34,17 @@ MODELS = ("crb_radial", "ball_5dof", "trb_load", "trb_rib", "hertz_point", "crb_
 
 
 def study_grids() -> tuple[dict, set]:
-    """The grids of the studies' sweeps, by model (every_model's definition, repeated, for a
-    model no study runs), and the models the studies run."""
+    """The grids of the studies' sweeps, by model (every_model's definition for a model no
+    study runs), each repeated to a block of the model's points, and the models the studies
+    run."""
     grids = {name: [] for name in MODELS}
     for path in sorted(ROOT.glob("studies/*/*.toml")):
         if path.name == "claims.toml":
             continue
         sweep = spec.load(path)
-        if sweep.model.name in grids:
-            grids[sweep.model.name].append(Grid.from_sweep(sweep))
+        grid = Grid.from_sweep(sweep)
+        if sweep.model.name in grids and grid.shape:  # one point alone is no sweep to repeat
+            grids[sweep.model.name].append(repeated(grid, sweep.model.points_per_call))
     studied = {name for name, found in grids.items() if found}
     for name, found in grids.items():
         if not found:
@@ -58,10 +63,11 @@ def repeated(grid: Grid, points: int) -> Grid:
 
 
 def measured_cost(grids) -> tuple[float, int]:
-    """Seconds of this process's CPU per point over ``grids``, each evaluated whole once (a
-    first point, which may import or compile, untimed), and the number of points. CPU time,
-    not wall time: on a shared machine the others' load would count as the model's."""
-    evaluate_chunk(grids[0], 0, 1)
+    """Seconds of this process's CPU per point over ``grids``, each evaluated whole once (the
+    first once more before, untimed: it may import or load compiled code), and the number of
+    points. CPU time, not wall time: on a shared machine the others' load would count as the
+    model's."""
+    evaluate_chunk(grids[0], 0, grids[0].size)
     seconds = points = 0
     for grid in grids:
         began = time.process_time()
@@ -77,7 +83,7 @@ def main():
     for name in MODELS:
         declared = grids[name][0].model.seconds_per_point
         cost, points = measured_cost(grids[name])
-        found = (f"the studies' {len(grids[name])} sweeps" if name in studied
+        found = (f"the studies' {len(grids[name])} sweeps, repeated" if name in studied
                  else "its definition in tests/data/every_model, repeated")
         print(f"{name}: {found}, {points} points, one core")
         print(f"  measured baseline: {cost:.3g} s/point")

@@ -529,12 +529,11 @@ MODELS = [Model(
                    "with a radial shift changes no ball's approach; hold the tilts (fixed_dofs "
                    "= [\"tilt_y\", \"tilt_z\"]) or use geometry 'jones'"),
     ),
-    # Through the engine, one core, on two cores shared with others (load average 3-4):
-    # 1.1e-5 to 1.6e-5 s/point on studies/ball_stiffness/unstated_inputs.toml (3072 points)
-    # and on benchmarks/declared_costs.py's grid; 2.3e-5 at a load of 4-5. Compiled point by
-    # point, the model keeps few temporaries: blocks of 4096 points pay its per-call overhead
-    # (~1 ms) seldom.
-    seconds_per_point=1.5e-5,
+    # benchmarks/declared_costs.py (the studies' sweeps, each repeated to a block): 6.1e-6 s
+    # CPU a point at a load of 0.7; 1.1e-5 to 1.6e-5 with others' load of 3-4 on the two
+    # cores. Compiled point by point, the model keeps few temporaries: blocks of 4096 points
+    # pay its per-call overhead (~1 ms) seldom.
+    seconds_per_point=8e-6,
     points_per_call=4096,
     validity="max_contact_pressure above pressure_limit (default 4200 MPa, ISO 76:2006: the "
              "contact stress of the "

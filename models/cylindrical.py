@@ -578,10 +578,10 @@ MODELS = [Model(
                    "the rollers do not fit on the pitch circle: pitch_diameter * sin(180 deg / "
                    "roller_count) must exceed roller_diameter"),
     ),
-    # benchmarks/declared_costs.py, rated points at 2000 a call: 6.1e-5 s CPU and 8.6e-5 s
-    # wall with others' load of 4 on the 2 cores, some 3.3e-5 quiet (the compiled per-point
-    # kernel's 32 us under that load against 18 us quiet); rating lives are a third of it.
-    seconds_per_point=5e-5,
+    # benchmarks/declared_costs.py (the studies' sweeps, each repeated to a block): 6.4e-5 s
+    # CPU a point at a load of 0.7, misaligned and many-sliced rollers and rating lives
+    # included (a third of a rated point's cost); an aligned unrated point costs about half.
+    seconds_per_point=6e-5,
     # The rollers' balances are compiled and solved point by point, so a block's temporaries
     # are a few (points, rollers) arrays: 2000 points per call cost some 12 % less a point
     # than 500 (the numpy parts' overhead shared), and two workers slow each other by 2-3 %.
