@@ -3,6 +3,7 @@ from __future__ import annotations
 
 import contextlib
 import functools
+import itertools
 import logging
 import math
 import signal
@@ -30,6 +31,8 @@ IN_PROCESS_SECONDS = 4.0
 #: Largest chunk, in estimated seconds of work on one core (a task costs a few milliseconds of
 #: scheduling; within a chunk the model runs in blocks of its ``points_per_call``).
 CHUNK_SECONDS = 1.0
+#: Chunks submitted per worker at a time; the next is submitted as one finishes.
+CHUNKS_IN_FLIGHT = 4
 #: How long to wait for a scheduler given by ``--scheduler`` to answer [s].
 CONNECT_SECONDS = 10.0
 
@@ -333,17 +336,32 @@ class Executor:
         from distributed import as_completed
 
         client = self.connect()
-        # The grid travels with every task (it is small): scattered data would be lost with a
-        # worker that dies, and with it every chunk still to compute.
-        futures = {client.submit(task, grid, start, stop, pure=False): (start, stop)
-                   for start, stop in chunks}
+        # A few chunks per worker in flight, the next submitted as one finishes: the driver
+        # and the scheduler hold a bounded number of tasks (each carries the grid, whose long
+        # axes can weigh megabytes) however many chunks a sweep has, and a worker never waits.
+        in_flight = CHUNKS_IN_FLIGHT * self.worker_count()
+        waiting = iter(chunks)
+
+        def submit(start: int, stop: int):
+            # The grid travels with every task: scattered data would be lost with a worker
+            # that dies, and with it every chunk still to compute.
+            future = client.submit(task, grid, start, stop, pure=False)
+            futures[future] = (start, stop)
+            return future
+
+        futures = {}
+        first = [submit(*chunk) for chunk in itertools.islice(waiting, in_flight)]
         try:
             with client.as_current():  # as_completed looks for the current client
-                for future in as_completed(list(futures)):
+                finished = as_completed(first)
+                for future in finished:
                     start, stop = futures.pop(future)
                     result = future.result()
                     # Let the worker drop it: held futures keep every result in the cluster.
                     future.release()
+                    following = next(waiting, None)
+                    if following is not None:
+                        finished.add(submit(*following))
                     yield start, stop, result
         finally:
             client.cancel(list(futures))

@@ -6,7 +6,8 @@ import xarray as xr
 import bearing_sweep.models.registry as registry
 from bearing_sweep.models.registry import MODEL_ERROR
 from bearing_sweep import spec, store
-from bearing_sweep.compute import Executor, Summary, run_sweep
+from bearing_sweep.compute import CHUNKS_IN_FLIGHT, Executor, Summary, run_sweep
+from bearing_sweep.grid import Grid
 
 TEXT = """
 [sweep]
@@ -287,3 +288,24 @@ def test_each_chunk_is_written_into_the_file_before_the_next_is_computed(tmp_pat
     assert events == [(event, start) for start in starts for event in ("computed", "written")]
     _, whole = compute(tmp_path, "whole", chunk_size=10_000)
     assert_same_numbers(whole, data)
+
+
+@pytest.mark.slow
+def test_a_cluster_is_given_a_few_chunks_per_worker_at_a_time():
+    """The driver and the scheduler hold a bounded number of tasks, each carrying the grid,
+    however many chunks a sweep has: the next chunk is submitted as one finishes."""
+    grid = Grid.from_sweep(spec.parse(TEXT, "inv.toml"))
+    chunks = grid.chunks(5)
+    assert len(chunks) > 2 * CHUNKS_IN_FLIGHT
+    with Executor(workers=1) as executor:
+        client = executor.connect()
+        submitted, received, most = [], [], 0
+        submit = client.submit
+        client.submit = lambda task, grid, start, *rest, **options: (
+            submitted.append(start) or submit(task, grid, start, *rest, **options))
+        for start, stop, result in executor.map(grid, chunks, parallel=True):
+            received.append(start)
+            most = max(most, len(submitted) - len(received))
+            assert result["status"].size == stop - start
+    assert most == CHUNKS_IN_FLIGHT
+    assert sorted(received) == sorted(submitted) == [start for start, _ in chunks]
