@@ -6,7 +6,7 @@ recommends (``DASK_CONFIG``: no malloc trim threshold). Two measurements:
 
 1. Time per point: the same sweep to a zarr store on the external cluster, and to a netCDF file
    on a LocalCluster of two workers (the baseline: the default path, every chunk's values
-   returned to the driver, kept as parts and assembled into the file at the end). Both clusters
+   returned to the driver, kept as a part and written into the file). Both clusters
    are started before any clock runs and the runs alternate in pairs; the median of the pairs'
    ratios is reported.
 2. Memory: ``bearing-sweep run -o x.zarr --scheduler ADDRESS`` in its own process, a smaller
