@@ -61,7 +61,7 @@ def labelled_dataset(sweep: Sweep, grid: Grid, outputs: dict, status: np.ndarray
     })
     data_vars.update(fixed_inputs(sweep))
     coords = coordinates(sweep)
-    for dim in {d for o in model.outputs for d in o.dims}:
+    for dim in dict.fromkeys(d for o in model.outputs for d in o.dims):  # in declared order
         coords[dim] = dimension_coordinate(model, grid, sweep, dim)
     attrs = {
         "Conventions": CONVENTIONS,
