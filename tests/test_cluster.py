@@ -8,7 +8,8 @@ from pathlib import Path
 
 import numpy as np
 import pytest
-import xarray as xr
+
+from bearing_sweep import store
 
 BIN = Path(sys.executable).parent
 
@@ -81,8 +82,8 @@ def equals_local_run(folder, remote_name):
                             "--workers", "0", "--quiet"], cwd=folder, capture_output=True,
                            text=True)
     assert local.returncode == 0, local.stderr
-    a = xr.open_dataset(folder / remote_name)
-    b = xr.open_dataset(folder / "local.nc")
+    a = store.open_result(folder / remote_name)
+    b = store.open_result(folder / "local.nc")
     for name in b.data_vars:
         np.testing.assert_array_equal(a[name].values, b[name].values, err_msg=name)
     return a
@@ -105,9 +106,15 @@ def test_sweep_on_a_real_scheduler_and_two_workers(tmp_path):
                                 cwd=tmp_path, capture_output=True, text=True, timeout=300)
         assert remote.returncode == 0, remote.stderr
         assert f"dask scheduler {address} (2 workers)" in remote.stdout
+        # The workers write a zarr store's chunks themselves, from their own processes.
+        stored, _ = run_on(address, tmp_path, "--chunk-size", "7", "--quiet",
+                           output="remote.zarr")
+        assert stored.returncode == 0, stored.stderr
         workers_of_another_version_are_refused(address, tmp_path)  # same cluster: it is slow
     result = equals_local_run(tmp_path, "remote.nc")
     assert result.attrs["scheduler"].startswith("dask scheduler")
+    assert equals_local_run(tmp_path, "remote.zarr").attrs["scheduler"] == \
+        result.attrs["scheduler"]
 
 
 def workers_of_another_version_are_refused(address, folder):
