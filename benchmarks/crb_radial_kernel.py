@@ -28,7 +28,6 @@ the same points, in interleaved pairs. The answers are compared first (the run f
 """
 import math
 import os
-import statistics
 import sys
 import time
 
@@ -44,6 +43,7 @@ from bearing_sweep.models.profiles import distinct_slices
 
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
 from crb_radial_throughput import GEOMETRY, MM, per_point  # noqa: E402  the scipy baseline
+from pairs import interleaved, ratio_line  # noqa: E402
 
 N = 10.0 / 9.0  # line-contact exponent
 XTOL = 1e-13  # relative tolerance of every solve, as the model's
@@ -340,12 +340,6 @@ def largest_difference(model, ours) -> float:
     return worst
 
 
-def cpu_time(function, *arguments) -> float:
-    began = time.process_time()
-    function(*arguments)
-    return time.process_time() - began
-
-
 def main():
     probe = model_grid(1)
     block = probe.model.points_per_call
@@ -360,39 +354,32 @@ def main():
     if not worst <= AGREEMENT:
         raise SystemExit(f"the kernel and the model differ by {worst:.1e} (> {AGREEMENT:g})")
 
-    loads_before = os.getloadavg()
-    ratios, model_seconds, kernel_seconds = [], [], []
-    for _ in range(PAIRS):
-        model_seconds.append(cpu_time(evaluate_chunk, grid, 0, grid.size) / grid.size)
-        kernel_seconds.append(cpu_time(kernel, *points) / grid.size)
-        ratios.append(model_seconds[-1] / kernel_seconds[-1])
+    timing = interleaved(lambda: evaluate_chunk(grid, 0, grid.size), lambda: kernel(*points),
+                         PAIRS, time.process_time)
     # The scipy baseline takes milliseconds a point: a few of the grid's points, in pairs.
     sample = np.linspace(0, grid.size - 1, 8).astype(int)
-    scipy_ratios, scipy_seconds = [], []
-    for _ in range(3):
-        began = time.process_time()
+
+    def scipy_sample():
         for i in sample:
             per_point(load[i], clearance[i], CROWN, SPEED, SLICES, **GEOMETRY)
-        scipy_seconds.append((time.process_time() - began) / sample.size)
-        scipy_ratios.append(scipy_seconds[-1] / (
-            cpu_time(evaluate_chunk, grid, 0, grid.size) / grid.size))
-    loads_after = os.getloadavg()
 
-    load_text = (f"load average {loads_before[0]:.2f} before, {loads_after[0]:.2f} after "
-                 f"({os.cpu_count()} cores, shared)")
+    scipy_timing = interleaved(scipy_sample, lambda: evaluate_chunk(grid, 0, grid.size), 3,
+                               time.process_time)
+
     print(f"crb_radial against a compiled per-point kernel, {grid.size} points in one block of "
           f"{block} (bearing D, k = {SLICES}, crown, speed, clearance)")
-    print(f"  numba kernel baseline: {statistics.median(kernel_seconds) * 1e6:7.2f} us/point "
+    print(f"  numba kernel baseline: {timing[4] / grid.size * 1e6:7.2f} us/point "
           f"(CPU, one core); model through evaluate_chunk: "
-          f"{statistics.median(model_seconds) * 1e6:7.2f} us/point")
+          f"{timing[3] / grid.size * 1e6:7.2f} us/point")
     print(f"  answers: largest relative difference {worst:.1e} (tolerance {AGREEMENT:g}); "
-          f"{load_text}")
-    print(f"  ratio: {statistics.median(ratios):.2f}x (goal: within 1.2x); pairs "
-          f"{min(ratios):.2f}x to {max(ratios):.2f}x")
+          f"{os.cpu_count()} cores, shared")
+    print(ratio_line(timing, "within 1.2x"))
     print("crb_radial against per-point scipy, the same block")
-    print(f"  per-point scipy baseline: {statistics.median(scipy_seconds) * 1e3:.2f} ms/point "
+    print(f"  per-point scipy baseline: {scipy_timing[3] / sample.size * 1e3:.2f} ms/point "
           f"({sample.size} of the points)")
-    print(f"  ratio: {statistics.median(scipy_ratios):.0f}x (goal: at least 50x)")
+    per_point_scale = grid.size / sample.size  # calls hold different numbers of points
+    print(ratio_line(tuple(r * per_point_scale for r in scipy_timing[:3]) + scipy_timing[3:],
+                     "at least 50x"))
 
 
 if __name__ == "__main__":

@@ -12,23 +12,24 @@ PAIRS = 9
 SECONDS = 0.3  # of each side's runs in a pair
 
 
-def timed(work, seconds=SECONDS) -> float:
-    """Seconds per call of ``work``, called until ``seconds`` have passed."""
-    calls, start = 0, time.perf_counter()
-    while time.perf_counter() - start < seconds:
+def timed(work, seconds=SECONDS, clock=time.perf_counter) -> float:
+    """Seconds per call of ``work`` on ``clock``, called until ``seconds`` have passed."""
+    calls, start = 0, clock()
+    while clock() - start < seconds:
         work()
         calls += 1
-    return (time.perf_counter() - start) / calls
+    return (clock() - start) / calls
 
 
-def interleaved(measured, baseline, pairs=PAIRS):
+def interleaved(measured, baseline, pairs=PAIRS, clock=time.perf_counter):
     """``(median ratio, lowest, highest, measured s/call, baseline s/call, load average)``
-    of ``measured`` over ``baseline`` (callables), timed in ``pairs`` pairs."""
+    of ``measured`` over ``baseline`` (callables), timed in ``pairs`` pairs on ``clock``
+    (``time.process_time``: this process's CPU time, which others' load disturbs less)."""
     load = os.getloadavg()
     ours, theirs = [], []
     for _ in range(pairs):
-        ours.append(timed(measured))
-        theirs.append(timed(baseline))
+        ours.append(timed(measured, clock=clock))
+        theirs.append(timed(baseline, clock=clock))
     ratios = [a / b for a, b in zip(ours, theirs)]
     return (statistics.median(ratios), min(ratios), max(ratios), statistics.median(ours),
             statistics.median(theirs), load)
