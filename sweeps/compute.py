@@ -459,13 +459,13 @@ def run_sweep(sweep: Sweep, output=None, executor: Executor | None = None,
                     "points": grid.size, "package_version": expected["package"]})
             size = parts.open(size, fresh, log)
             chunks = zarr_store.chunks(grid, size) if zarr else grid.chunks(size)
+            scheduler = executor.describe(parallel)
             task = None
             if zarr:  # each chunk is written into the store by the worker that computes it
-                parts.prepare(sweep, grid, size, executor.describe(parallel))
+                parts.prepare(sweep, grid, size, scheduler)
                 task = functools.partial(evaluate_into, parts.writer, expected)
             done = parts.finished()
             todo = [chunk for chunk in chunks if chunk not in done]
-            scheduler = executor.describe(parallel)
             tallies = []
             with contextlib.nullcontext() if output is None or zarr else store.result_file(
                     sweep, grid, output, store.provenance(scheduler), size) as writer:
