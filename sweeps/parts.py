@@ -44,8 +44,9 @@ ZARR_SUFFIX = ".zarr"
 
 
 def is_zarr(output) -> bool:
-    """Whether ``output`` names a zarr store (by its suffix, as ``-o result.zarr``)."""
-    return output is not None and Path(output).suffix == ZARR_SUFFIX
+    """Whether ``output`` names a zarr store (by its suffix, as ``-o result.zarr``, in any
+    case: ``result.ZARR`` must not become a netCDF file under a store's name)."""
+    return output is not None and Path(output).suffix.lower() == ZARR_SUFFIX
 
 
 def check_output(output, definition=None):

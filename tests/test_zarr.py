@@ -13,6 +13,7 @@ from bearing_sweep import cli, spec, store
 from bearing_sweep.compute import Executor, WorkerMismatch, run_sweep
 from bearing_sweep.dependence import InconsistentOutput
 from bearing_sweep.grid import Grid
+from bearing_sweep.parts import is_zarr
 from bearing_sweep.store import _regions
 from bearing_sweep.zarr_store import block_chunks, block_shape
 from test_conventions import assert_cf_labelled
@@ -214,3 +215,8 @@ def test_analyze_and_plot_take_a_store(tmp_path, capsys):
     assert store.open_result(tmp_path / "sampled_analysis.nc").attrs["sample_size"] == 4
     assert cli.main(["plot", str(result), "radial_stiffness"]) == 0
     assert (tmp_path / "sampled.png").stat().st_size > 0
+
+
+def test_a_store_is_named_by_its_suffix_in_any_case():
+    assert is_zarr("runs/result.zarr") and is_zarr("runs/Result.ZARR")
+    assert not is_zarr("runs/result.zarr.nc") and not is_zarr("runs/zarr") and not is_zarr(None)
