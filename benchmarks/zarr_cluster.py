@@ -33,7 +33,7 @@ import cloudpickle
 import numpy as np
 import psutil
 
-from bearing_sweep import spec, store, zarr_store
+from bearing_sweep import spec, store
 from bearing_sweep.compute import Executor, run_sweep
 from bearing_sweep.grid import Grid
 
@@ -162,7 +162,7 @@ def memory_run(folder: Path, address: str, loads: int, scheduler, workers) -> di
 
 def chunk_count(grid: Grid) -> int:
     """How many chunks of at most :data:`CHUNK` points a zarr output has."""
-    return len(zarr_store.chunks(grid, CHUNK))
+    return len(grid.chunks(CHUNK))
 
 
 def main():

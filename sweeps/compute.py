@@ -17,7 +17,7 @@ from dataclasses import dataclass, field
 import numpy as np
 
 from .models.registry import MODEL_ERROR, VALUES_KEPT
-from . import store, units, zarr_store
+from . import hdf5_chunks, store, units, zarr_store
 from .grid import Grid
 from .labels import stored_unit
 from .parts import HeldChunks, OutputLock, Parts, check_output, is_zarr
@@ -99,18 +99,20 @@ def evaluate_chunk(grid: Grid, start: int, stop: int) -> dict:
 
 
 def evaluate_into(writer, expected: dict, grid: Grid, start: int, stop: int) -> dict:
-    """Run the model on points ``start..stop-1`` and write them with ``writer`` (a
-    :class:`zarr_store.StoreWriter`) in the process that computed them.
+    """Run the model on points ``start..stop-1`` and write or encode them with ``writer`` (a
+    :class:`zarr_store.StoreWriter`, or an :class:`hdf5_chunks.ChunkEncoder`) in the process
+    that computed them.
 
-    Returns ``{"tally": store.chunk_tally, "firsts": dict, "versions": dict}``: the values
-    never travel, but one per cell of the outputs stored on fewer dimensions (``firsts``, as
-    the writer returns them). Values computed by other :func:`versions` than ``expected`` are
-    not written (the driver refuses the chunk).
+    Returns ``{"tally": store.chunk_tally, "versions": dict}`` and what the writer returns:
+    one value per cell of the outputs stored on fewer dimensions (``firsts``), for a netCDF
+    file the encoded HDF5 chunks (``chunks``); the values themselves never travel. Values
+    computed by other :func:`versions` than ``expected`` are neither written nor encoded
+    (the driver refuses the chunk).
     """
     result = evaluate_chunk(grid, start, stop)
-    firsts = writer.write(grid, start, stop, result) if result["versions"] == expected else {}
-    return {"tally": store.chunk_tally(grid.model, result), "firsts": firsts,
-            "versions": result["versions"]}
+    written = writer.write(grid, start, stop, result) if result["versions"] == expected else {}
+    return {"tally": store.chunk_tally(grid.model, result), "versions": result["versions"],
+            **written}
 
 
 def _from_si(value: np.ndarray, spec) -> np.ndarray:
@@ -452,13 +454,19 @@ def run_sweep(sweep: Sweep, output=None, executor: Executor | None = None,
             size = chunk_size or choose_chunk_size(
                 grid, executor.worker_count() if parallel else 1)
             zarr = is_zarr(output)
+            # A netCDF file's chunks encoded by the workers, the driver writing their bytes.
+            direct = output is not None and not zarr and hdf5_chunks.writes_directly(
+                sweep.storage, grid)
+            key = {"definition_sha256": sweep.sha256, "values_sha256": grid.values_sha256,
+                   "model_version": model.version, "points": grid.size,
+                   "package_version": expected["package"]}
+            if output is not None and not zarr:
+                key["parts_hold"] = hdf5_chunks.parts_hold(direct, sweep.storage)
             parts = HeldChunks() if output is None else (
-                zarr_store.StoreParts if zarr else Parts)(output, {
-                    "definition_sha256": sweep.sha256, "values_sha256": grid.values_sha256,
-                    "model_version": model.version,
-                    "points": grid.size, "package_version": expected["package"]})
+                zarr_store.StoreParts if zarr else hdf5_chunks.EncodedParts if direct
+                else Parts)(output, key)
             size = parts.open(size, fresh, log)
-            chunks = zarr_store.chunks(grid, size) if zarr else grid.chunks(size)
+            chunks = grid.chunks(size)
             scheduler = executor.describe(parallel)
             task = None
             if zarr:  # each chunk is written into the store by the worker that computes it
@@ -468,10 +476,12 @@ def run_sweep(sweep: Sweep, output=None, executor: Executor | None = None,
             todo = [chunk for chunk in chunks if chunk not in done]
             tallies = []
             with contextlib.nullcontext() if output is None or zarr else store.result_file(
-                    sweep, grid, output, store.provenance(scheduler), size) as writer:
+                    sweep, grid, output, store.provenance(scheduler), size, direct) as writer:
+                if direct:  # each chunk encoded by the process that computes it
+                    task = functools.partial(evaluate_into, writer.encoder, expected)
 
                 def finished(start: int, stop: int, part: dict):
-                    tallies.append(store.chunk_tally(model, part))
+                    tallies.append(part["tally"] if direct else store.chunk_tally(model, part))
                     if writer is not None:
                         writer.write(start, stop, part)
 

@@ -80,6 +80,18 @@ def first_held(grid: Grid, output, start: int, stop: int, values: np.ndarray,
     return points[first], values[first]
 
 
+def split_reduced(grid: Grid, start: int, stop: int, part: dict) -> tuple[dict, dict]:
+    """A computed chunk of points ``start..stop-1`` (``part``, as ``compute.evaluate_chunk``
+    returns it) as the process that computed it sends it on: the :func:`first_held` points
+    and values of each output stored on fewer dimensions, ``{name: (points, values)}``, and
+    the other outputs' values, ``{name: values}``."""
+    reduced = {output.name: output for output in reduced_outputs(grid)}
+    firsts = {name: first_held(grid, output, start, stop, part["outputs"][name],
+                               part["status"]) for name, output in reduced.items()}
+    return firsts, {name: values for name, values in part["outputs"].items()
+                    if name not in reduced}
+
+
 def _cells(grid: Grid, output, points: np.ndarray) -> np.ndarray:
     """The cell of ``output``'s :func:`stored_dims` (flat) each point falls in."""
     axes = [grid.dims.index(d) for d in stored_dims(grid, output)]

@@ -7,6 +7,7 @@ the grid never holds per-point arrays for all points at once.
 from __future__ import annotations
 
 import hashlib
+import math
 from dataclasses import dataclass
 
 import numpy as np
@@ -66,9 +67,10 @@ class Grid:
         return int(np.prod(self.shape, dtype=np.int64))
 
     def chunks(self, chunk_size: int) -> list[tuple[int, int]]:
-        """Ranges ``[start, stop)`` of point numbers covering the grid."""
-        return [(start, min(start + chunk_size, self.size))
-                for start in range(0, self.size, chunk_size)]
+        """Ranges ``[start, stop)`` of point numbers covering the grid, in order: each chunk
+        of at most ``chunk_size`` points fills one block (:func:`block_shape`), one zarr or
+        HDF5 chunk of every output stored per point."""
+        return block_chunks(self.shape, block_shape(self.shape, chunk_size))
 
     def inputs(self, start: int, stop: int) -> tuple[dict, dict]:
         """Model inputs of points ``start..stop-1``.
@@ -80,3 +82,36 @@ class Grid:
         varying = {name: values[index[position]]
                    for name, (position, values) in self.axis_values.items()}
         return varying, dict(zip(self.dims, index))
+
+
+def block_shape(shape: tuple, size: int) -> tuple:
+    """The block of a grid of ``shape`` that one chunk of at most ``size`` points fills: the
+    shape of a zarr chunk, and of an HDF5 chunk, along the grid's axes.
+
+    Whole rows of the last axes: 1 along the leading axes, a block of one axis, every index
+    of the axes after it (``(1, 1, c, n3, n4)``). C-ordered points then fill each block in
+    one unbroken range, so each chunk of points is one block (:func:`block_chunks`). Along
+    the blocked axis the blocks are of nearly equal length (1001 rows by 1000 points: two
+    blocks of 501 and 500, not 1000 and 1).
+    """
+    for axis, length in enumerate(shape):
+        inner = math.prod(shape[axis + 1:])
+        if inner <= size:
+            pieces = math.ceil(length / max(1, size // inner))
+            return (1,) * axis + (math.ceil(length / pieces),) + tuple(shape[axis + 1:])
+    return ()
+
+
+def block_chunks(shape: tuple, block: tuple) -> list[tuple[int, int]]:
+    """The ranges ``[start, stop)`` of C-ordered point numbers that fill each block of
+    shape ``block`` (:func:`block_shape`) of a grid of ``shape``, in order."""
+    if not shape:
+        return [(0, 1)]
+    counts = [math.ceil(n / b) for n, b in zip(shape, block)]
+    chunks = []
+    for position in np.ndindex(*counts):
+        first = [p * b for p, b in zip(position, block)]
+        last = [min((p + 1) * b, n) - 1 for p, b, n in zip(position, block, shape)]
+        chunks.append((int(np.ravel_multi_index(first, shape)),
+                       int(np.ravel_multi_index(last, shape)) + 1))
+    return chunks

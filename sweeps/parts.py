@@ -174,7 +174,7 @@ class Parts:
             same = found is not None and {k: found.get(k) for k in self.key} == self.key
             if fresh or not same:
                 if count:
-                    log(f"{'--fresh' if fresh else 'the definition, model or package changed'}: "
+                    log(f"{'--fresh' if fresh else 'the definition, model, package or storage changed'}: "
                         f"discarding {count} finished chunks in {self.folder}")
                 shutil.rmtree(self.folder)
             else:
@@ -232,15 +232,19 @@ class Parts:
         path = self.path(start, stop)
         try:
             with np.load(path) as data:
-                return {"outputs": {key[len("output_"):]: data[key] for key in data.files
-                                    if key.startswith("output_")},
-                        "status": data["status"], "errors": data["errors"].tolist()}
+                return self.read(data)
         except (OSError, ValueError, EOFError, KeyError, zipfile.BadZipFile) as error:
             # Found readable when the run began, damaged since: removed, so that the next run
             # computes it again.
             path.unlink(missing_ok=True)
             raise UnreadablePart(f"{path}: unreadable part ({type(error).__name__}); it is "
                                  "removed: run the same command again to compute it") from None
+
+    def read(self, data) -> dict:
+        """A finished chunk from its open part file ``data`` (as :meth:`save` wrote it)."""
+        return {"outputs": {key[len("output_"):]: data[key] for key in data.files
+                            if key.startswith("output_")},
+                "status": data["status"], "errors": data["errors"].tolist()}
 
     def remove(self):
         shutil.rmtree(self.folder, ignore_errors=True)
@@ -319,6 +323,35 @@ def _unreadable(path: Path, points: int) -> str | None:
     except (OSError, ValueError, EOFError, zipfile.BadZipFile) as error:
         return str(error).splitlines()[0] if str(error) else type(error).__name__
     return None
+
+
+def saved_counts(result: dict) -> dict:
+    """A finished chunk's counts (``result["tally"]``, as ``store.chunk_tally`` gives them)
+    and its values of the outputs stored on fewer dimensions (``result["firsts"]``: ``{name:
+    (points, values)}``) as the arrays of a part file; :func:`load_counts` reads them."""
+    arrays = {"tally": np.array(json.dumps(result["tally"]))}
+    for name, (points, values) in result["firsts"].items():
+        arrays[f"points_{name}"], arrays[f"values_{name}"] = points, values
+    return arrays
+
+
+def load_counts(data) -> tuple[dict, dict]:
+    """The counts and the ``{name: (points, values)}`` of an open part file (``data``) that
+    :func:`saved_counts` filled."""
+    firsts = {key[len("points_"):]: (data[key], data["values_" + key[len("points_"):]])
+              for key in data.files if key.startswith("points_")}
+    return json.loads(str(data["tally"])), firsts
+
+
+def counts_unreadable(path: Path, points: int) -> str | None:
+    """Why a part file holding :func:`saved_counts` cannot be used for a chunk of ``points``
+    points, or None. Reads its counts only."""
+    try:
+        with np.load(path) as data:
+            tally = json.loads(str(data["tally"]))
+    except (OSError, ValueError, EOFError, KeyError, zipfile.BadZipFile):
+        return "incomplete"
+    return None if sum(tally["status"]) == points else "not this chunk's counts"
 
 
 def write_durably(path: Path, write):

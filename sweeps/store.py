@@ -13,7 +13,7 @@ import xarray as xr
 
 from .models.registry import STATUS_MEANINGS
 from .dependence import reductions, stored_cells
-from .grid import Grid
+from .grid import Grid, block_shape
 from .labels import labelled_dataset
 from .parts import is_zarr, written_atomically
 from .spec import Sweep
@@ -93,9 +93,11 @@ def gather(sweep: Sweep, grid: Grid, parts, chunks, scheduler: str, errors=()) -
 
 
 @contextmanager
-def result_file(sweep: Sweep, grid: Grid, path, provenance: dict, chunk_size: int):
+def result_file(sweep: Sweep, grid: Grid, path, provenance: dict, chunk_size: int,
+                direct: bool = False):
     """Write the sweep's netCDF file at ``path`` as its chunks (of ``chunk_size`` points)
-    arrive; yields a :class:`ChunkWriter`.
+    arrive; yields a :class:`ChunkWriter`, or with ``direct`` an
+    :class:`hdf5_chunks.DirectWriter` of the chunks the workers encode (its ``encoder``).
 
     The file's structure (coordinates, attributes, empty variables, each stored as
     ``sweep.storage`` says) is written at once, each chunk's values into their regions as
@@ -105,18 +107,32 @@ def result_file(sweep: Sweep, grid: Grid, path, provenance: dict, chunk_size: in
     attributes are written and the file renamed into place: an existing file at ``path``
     stays intact until then. ``provenance``: as :func:`provenance` gives it.
 
-    Each output is stored in HDF5 chunks of about one sweep chunk's points (:func:`_hdf5_chunk`)
-    and the file flushed after each sweep chunk: every HDF5 chunk is then compressed once,
-    as soon as it is complete, while the others compute. netCDF's default chunks span many
-    sweep chunks (a scalar output's one chunk is the whole grid): they were compressed only
-    when the file was closed, seconds of one core after the last chunk of a large sweep.
+    Each output stored per point is stored in HDF5 chunks of one sweep chunk's points (the
+    block of the grid it fills, :func:`grid.block_shape`): every HDF5 chunk is complete when
+    its sweep chunk arrives. ``direct``: each is encoded (compressed) by the worker and its
+    bytes written as they are (:mod:`hdf5_chunks`), the file opened with h5py meanwhile and
+    with netCDF4 again for :meth:`ChunkWriter.finish`; otherwise netCDF4 writes the values and
+    the file is flushed after each sweep chunk, so that HDF5 compresses each chunk once.
     """
     import netCDF4
 
-    with written_atomically(path) as temporary, netCDF4.Dataset(temporary, "w") as target:
-        writer = ChunkWriter(sweep, grid, target, provenance, chunk_size)
-        yield writer
-        writer.finish()
+    from . import hdf5_chunks
+
+    with written_atomically(path) as temporary:
+        with netCDF4.Dataset(temporary, "w") as target:
+            writer = ChunkWriter(sweep, grid, target, provenance, chunk_size)
+            if not direct:
+                yield writer
+                writer.finish()
+                return
+            names = [o.name for o in grid.model.outputs if o.name not in writer.reduced]
+            encoder = hdf5_chunks.ChunkEncoder(hdf5_chunks.layouts(target, names + ["status"]))
+        # Never open in netCDF4 and h5py at once: each has its own HDF5 library.
+        with hdf5_chunks.DirectWriter(temporary, encoder, writer) as chunks:
+            yield chunks
+        with netCDF4.Dataset(temporary, "a") as target:
+            writer.reopen(target)
+            writer.finish()
 
 
 class ChunkWriter:
@@ -127,7 +143,7 @@ class ChunkWriter:
         self.errors = set()
         self.reduced = reductions(grid)
         skeleton = self._skeleton()
-        points = _hdf5_chunk(grid.shape, chunk_size)
+        points = block_shape(grid.shape, chunk_size)
         for name in [o.name for o in grid.model.outputs if o.name not in self.reduced] + [
                 "status"]:
             variable = skeleton[name]
@@ -158,6 +174,10 @@ class ChunkWriter:
             self.target.variables[name][index or ...] = block
         self.target.sync()  # the HDF5 chunks this completed are compressed now, not at the end
 
+    def reopen(self, target):
+        """Go on with ``target``, the file opened again (its chunks written meanwhile)."""
+        self.target, self.store = target, _StructureStore(target, set())
+
     def finish(self):
         """Write the outputs stored on fewer dimensions, and the global attributes of the
         finished sweep (its time, the model's errors) in the order xarray writes them."""
@@ -168,19 +188,6 @@ class ChunkWriter:
         for name in self.target.ncattrs():
             self.target.delncattr(name)
         self.store.set_attributes(attributes)
-
-
-def _hdf5_chunk(shape: tuple, points: int) -> tuple:
-    """An HDF5 chunk over a C-ordered grid of ``shape`` that holds about ``points``
-    consecutive points: whole trailing axes, part of the next, one along the leading ones."""
-    chunk, inner = [], 1
-    for size in reversed(shape):
-        take = size if inner * size <= points else max(1, min(size, points // inner))
-        chunk.append(take)
-        inner *= take
-        if take < size:
-            break
-    return (1,) * (len(shape) - len(chunk)) + tuple(reversed(chunk))
 
 
 def _write_structure(dataset: xr.Dataset, target, placeholders):

@@ -7,7 +7,7 @@ its counts. The store is zarr format 2 (read by zarr-python 2 and 3 and by netCD
 its compressors, numcodecs' Zlib and Zstd, are the netCDF file's: ``storage.Storage``), on a
 filesystem every worker shares with the driver.
 
-The zarr chunks along the grid's axes are the sweep's chunks (:func:`block_shape`): a chunk of
+The zarr chunks along the grid's axes are the sweep's chunks (:func:`grid.block_shape`): a chunk of
 points fills one whole zarr chunk of every output, so no two tasks ever write one zarr chunk
 (a zarr chunk is written whole: two writers of one would lose the values of one of them). An
 output stored on fewer axes (``dependence``) is the exception: each task returns one value per
@@ -23,11 +23,8 @@ complete.
 """
 from __future__ import annotations
 
-import json
-import math
 import os
 import shutil
-import zipfile
 from concurrent.futures import ThreadPoolExecutor
 from dataclasses import dataclass
 from pathlib import Path
@@ -35,10 +32,11 @@ from pathlib import Path
 import numpy as np
 import xarray as xr
 
-from .dependence import first_held, reduced_outputs, reductions
-from .grid import Grid
+from .dependence import reductions, split_reduced
+from .grid import Grid, block_shape
 from .labels import labelled_dataset
-from .parts import Parts, fsync_path, write_durably
+from .parts import (Parts, counts_unreadable, fsync_path, load_counts, saved_counts,
+                    write_durably)
 from .spec import Sweep
 from .store import _flat_shape, provenance, stored_blocks, stored_reduction, summed
 
@@ -47,43 +45,6 @@ FLUSHING_THREADS = 8
 #: zarr format 2: its codecs are numcodecs' Zlib and Zstd, the netCDF file's, and readers of
 #: format 3 read it too (format 3 has no zlib codec, and zarr-python 2 cannot read it).
 ZARR_FORMAT = 2
-
-
-def block_shape(shape: tuple, size: int) -> tuple:
-    """The zarr chunk shape along a grid of ``shape`` for chunks of at most ``size`` points.
-
-    Whole rows of the last axes: 1 along the leading axes, a block of one axis, every index
-    of the axes after it (``(1, 1, c, n3, n4)``). C-ordered points then fill each block in
-    one unbroken range, so each chunk of points is one block (:func:`block_chunks`). Along
-    the blocked axis the blocks are of nearly equal length (1001 rows by 1000 points: two
-    blocks of 501 and 500, not 1000 and 1).
-    """
-    for axis, length in enumerate(shape):
-        inner = math.prod(shape[axis + 1:])
-        if inner <= size:
-            pieces = math.ceil(length / max(1, size // inner))
-            return (1,) * axis + (math.ceil(length / pieces),) + tuple(shape[axis + 1:])
-    return ()
-
-
-def block_chunks(shape: tuple, block: tuple) -> list[tuple[int, int]]:
-    """The ranges ``[start, stop)`` of C-ordered point numbers that fill each zarr chunk of
-    shape ``block`` (:func:`block_shape`) of a grid of ``shape``, in order."""
-    if not shape:
-        return [(0, 1)]
-    counts = [math.ceil(n / b) for n, b in zip(shape, block)]
-    chunks = []
-    for position in np.ndindex(*counts):
-        first = [p * b for p, b in zip(position, block)]
-        last = [min((p + 1) * b, n) - 1 for p, b, n in zip(position, block, shape)]
-        chunks.append((int(np.ravel_multi_index(first, shape)),
-                       int(np.ravel_multi_index(last, shape)) + 1))
-    return chunks
-
-
-def chunks(grid: Grid, size: int) -> list[tuple[int, int]]:
-    """A zarr output's chunks of at most ``size`` points, each one zarr chunk of the store."""
-    return block_chunks(grid.shape, block_shape(grid.shape, size))
 
 
 def labelled_structure(sweep: Sweep, grid: Grid, scheduler: str, errors=()) -> xr.Dataset:
@@ -128,17 +89,13 @@ class StoreWriter:
         it) and flush their zarr chunks to the disk, so that the chunk's mark never outlives
         its values in a power loss.
 
-        Returns, for each output stored on fewer dimensions (``dependence``), the chunk's
-        :func:`dependence.first_held` points and values, for the driver to write once every
-        chunk has given its own: ``{name: (points, values)}``, one value per cell.
+        Returns ``{"firsts": {name: (points, values)}}``: for each output stored on fewer
+        dimensions (``dependence``), the chunk's :func:`dependence.first_held` points and
+        values, one per cell, for the driver to write once every chunk has given its own.
         """
         import zarr
 
-        reduced = {o.name: o for o in reduced_outputs(grid)}
-        firsts = {name: first_held(grid, output, start, stop, part["outputs"][name],
-                                   part["status"]) for name, output in reduced.items()}
-        per_point = {name: values for name, values in part["outputs"].items()
-                     if name not in reduced}
+        firsts, per_point = split_reduced(grid, start, stop, part)
         group = zarr.open_group(self.path, mode="r+", zarr_format=ZARR_FORMAT,
                                 use_consolidated=True)
         written = []
@@ -150,7 +107,7 @@ class StoreWriter:
             written.append(Path(self.path, name, ".".join(map(str, position)) or "0"))
         # A zarr chunk equal to the fill value everywhere has no file (zarr writes none).
         flush(written + sorted({path.parent for path in written}))
-        return firsts
+        return {"firsts": firsts}
 
 
 class StoreParts(Parts):
@@ -182,27 +139,19 @@ class StoreParts(Parts):
         return StoreWriter(str(self.store.absolute()))
 
     def unreadable(self, path: Path, points: int) -> str | None:
-        try:
-            found = self.load(path)
-        except (OSError, ValueError, EOFError, KeyError, zipfile.BadZipFile):
-            return "incomplete"
-        return None if sum(found[0]["status"]) == points else "not this chunk's counts"
+        return counts_unreadable(path, points)
 
     def save(self, start: int, stop: int, result: dict):
         """Mark the chunk finished, its values being in the store: keep its counts and the
         values it gives the outputs stored on fewer dimensions."""
-        arrays = {"tally": np.array(json.dumps(result["tally"]))}
-        for name, (points, values) in result["firsts"].items():
-            arrays[f"points_{name}"], arrays[f"values_{name}"] = points, values
+        arrays = saved_counts(result)
         write_durably(self.path(start, stop), lambda handle: np.savez(handle, **arrays))
 
     @staticmethod
     def load(path: Path) -> tuple[dict, dict]:
         """A mark's counts, and its ``{name: (points, values)}``."""
         with np.load(path) as data:
-            firsts = {key[len("points_"):]: (data[key], data["values_" + key[len("points_"):]])
-                      for key in data.files if key.startswith("points_")}
-            return json.loads(str(data["tally"])), firsts
+            return load_counts(data)
 
     def tally(self, model, chunks) -> tuple[dict, list, dict]:
         """The sweep's counts (as ``store.summed`` gives them) from its chunks' marks."""

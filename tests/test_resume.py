@@ -71,7 +71,7 @@ def test_a_changed_definition_discards_old_parts(tmp_path, capsys):
                                           '"points": 16, "chunk_size": 4}')
     np.savez(folder / "chunk-000000000000-000000000004.npz", status=np.zeros(4))
     assert cli.main(["run", str(definition), "-o", str(output), "--workers", "0"]) == 0
-    assert "the definition, model or package changed: discarding 1 finished chunks" in \
+    assert "the definition, model, package or storage changed: discarding 1 finished chunks" in \
         capsys.readouterr().err
     assert store.open_result(output).status.size == 16
 
@@ -320,7 +320,7 @@ def test_parts_of_another_package_version_are_discarded(tmp_path, capsys, monkey
     monkeypatch.undo()  # the package is upgraded before the run is resumed
     capsys.readouterr()
     assert cli.main(arguments) == 0
-    assert "the definition, model or package changed: discarding 4 finished chunks" in \
+    assert "the definition, model, package or storage changed: discarding 4 finished chunks" in \
         capsys.readouterr().err
 
 

@@ -151,8 +151,10 @@ def test_the_in_memory_dataset_writes_the_same_file(tmp_path):
     assert xr.open_dataset(tmp_path / "copy.nc").loaded_rollers.dtype == np.float64
 
 
-def test_an_interrupted_run_resumes_its_chunks_in_another_encoding(tmp_path, capsys,
-                                                                   monkeypatch):
+def test_an_interrupted_run_stored_otherwise_computes_its_chunks_again(tmp_path, capsys,
+                                                                       monkeypatch):
+    # The parts hold the chunks as the file stores them (encoded by the workers): written
+    # into a file stored otherwise they would be misread.
     definition = tmp_path / "d.toml"
     definition.write_text(TEXT)
     output = tmp_path / "out.nc"
@@ -167,8 +169,11 @@ def test_an_interrupted_run_resumes_its_chunks_in_another_encoding(tmp_path, cap
     monkeypatch.undo()
     capsys.readouterr()
     assert cli.main(arguments + ["--encoding", "float32"]) == 0
-    assert "resuming: 2 chunks already computed" in capsys.readouterr().err
+    assert "storage changed: discarding 2 finished chunks" in capsys.readouterr().err
     assert filters(output, "roller_load")[1] == np.float32
+    double = store.open_result(written(tmp_path, name="double"))
+    np.testing.assert_array_equal(store.open_result(output).roller_load.values,
+                                  double.roller_load.values.astype(np.float32))
 
 
 def test_outputs_are_stored_in_hdf5_chunks_of_one_sweep_chunk(tmp_path):
@@ -187,13 +192,3 @@ def test_outputs_are_stored_in_hdf5_chunks_of_one_sweep_chunk(tmp_path):
     with xr.open_dataset(path) as data:
         for name in whole.data_vars:
             np.testing.assert_array_equal(data[name].values, whole[name].values, err_msg=name)
-
-
-def test_an_hdf5_chunk_holds_about_a_sweep_chunk_of_consecutive_points():
-    from bearing_sweep.store import _hdf5_chunk
-
-    assert _hdf5_chunk((1000, 1000), 10_000) == (10, 1000)  # ten whole rows
-    assert _hdf5_chunk((1000, 1000), 500) == (1, 500)  # part of one row
-    assert _hdf5_chunk((9, 3, 2, 2), 7) == (1, 1, 2, 2)  # the whole trailing axes that fit
-    assert _hdf5_chunk((5,), 100) == (5,)  # never beyond the grid
-    assert _hdf5_chunk((), 5) == ()  # a single point

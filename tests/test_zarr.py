@@ -15,7 +15,7 @@ from bearing_sweep.dependence import InconsistentOutput
 from bearing_sweep.grid import Grid
 from bearing_sweep.parts import is_zarr
 from bearing_sweep.store import _regions
-from bearing_sweep.zarr_store import block_chunks, block_shape
+from bearing_sweep.grid import block_chunks, block_shape
 from test_conventions import assert_cf_labelled
 from test_dependence import GRID as TOY_GRID, toy  # noqa: F401  (a fixture)
 from test_outputs import no_computing, refused  # noqa: F401  (a fixture)

@@ -1,0 +1,175 @@
+"""A netCDF result's chunks encoded where they are computed, the driver writing their bytes.
+
+Each chunk of points fills one HDF5 chunk of every output stored per point and of ``status``
+(``grid.block_shape`` along the grid's axes, then the output's own dimensions whole). The
+process that computes a chunk (a dask worker, or the driver's own loop in-process) also
+encodes it as the file stores it: the stored type and fill value, an edge block padded to the
+whole HDF5 chunk with the fill value, HDF5's shuffle filter (the bytes of the values grouped by
+significance) and its deflate filter (a zlib stream at the file's level). The driver writes
+those bytes into the file unchanged (h5py's direct chunk write: HDF5 neither decompresses nor
+compresses them): no per-value work in the driver, whose single core otherwise compresses the
+whole sweep while the workers wait for it.
+
+How each variable is stored is read from the file netCDF4 has just created (its type, byte
+order, chunk shape, filters and fill value: :func:`layouts`), so that the bytes are what HDF5
+itself would have written. netCDF4 and h5py each bundle their own HDF5 library: the file is
+never open in both at once (:func:`store.result_file`). zstd, an HDF5 plugin filter, is written
+through netCDF4 as before, and so is a grid of one point (its variables are not chunked).
+
+An interrupted run keeps each chunk as the worker returned it (:class:`EncodedParts`); the
+manifest names the storage they were encoded for, so that a run storing otherwise computes them
+again rather than write them as they are.
+"""
+from __future__ import annotations
+
+import zlib
+from dataclasses import dataclass
+
+import numpy as np
+
+from .dependence import split_reduced
+from .grid import Grid
+from .parts import Parts, counts_unreadable, load_counts, saved_counts, write_durably
+from .store import stored_blocks
+
+#: The compressions whose HDF5 filters are written here (HDF5's own deflate filter, or none).
+DIRECT_COMPRESSIONS = ("none", "zlib")
+#: The filters :func:`encoded` applies, as netCDF4's ``Variable.filters()`` names them.
+KNOWN_FILTERS = ("zlib", "shuffle", "complevel")
+
+
+def writes_directly(storage, grid: Grid) -> bool:
+    """Whether a netCDF result of ``grid`` stored as ``storage`` (``storage.Storage``) has its
+    chunks encoded by the workers: with zlib or uncompressed, and on a grid with axes."""
+    return storage.compression in DIRECT_COMPRESSIONS and bool(grid.shape)
+
+
+def parts_hold(direct: bool, storage) -> str:
+    """What the parts of an interrupted netCDF run hold, for their manifest: chunks encoded
+    for ``storage`` are not another storage's."""
+    return f"hdf5 chunks, {storage.text()}" if direct else "arrays"
+
+
+@dataclass(frozen=True)
+class Layout:
+    """How one variable's HDF5 chunks are stored: the numpy type (with its byte order), the
+    chunk's shape, the fill value beyond the grid's edge, and the filters (``level``: zlib's,
+    None for none)."""
+
+    dtype: str
+    chunk: tuple
+    fill: float | int
+    shuffle: bool
+    level: int | None
+
+
+def layouts(target, names) -> dict[str, Layout]:
+    """The :class:`Layout` of each variable ``names`` of the open netCDF4.Dataset ``target``;
+    ``ValueError`` for one whose chunks :func:`encoded` cannot make (contiguous, or another
+    filter)."""
+    import netCDF4
+
+    found = {}
+    for name in names:
+        variable = target.variables[name]
+        filters = variable.filters() or {}
+        other = sorted(key for key, on in filters.items() if on and key not in KNOWN_FILTERS)
+        chunking = variable.chunking()
+        if other or chunking == "contiguous":
+            raise ValueError(f"{name}: stored {' '.join(other) or 'contiguous'}, its chunks "
+                             "cannot be written directly")
+        order = {"native": "=", "little": "<", "big": ">"}[variable.endian()]
+        fill = (variable.getncattr("_FillValue") if "_FillValue" in variable.ncattrs()
+                else netCDF4.default_fillvals[variable.dtype.str[1:]])
+        found[name] = Layout(variable.dtype.newbyteorder(order).str, tuple(chunking),
+                             np.asarray(fill).item(), bool(filters.get("shuffle")),
+                             filters["complevel"] if filters.get("zlib") else None)
+    return found
+
+
+def encoded(values: np.ndarray, layout: Layout) -> bytes:
+    """The bytes of an HDF5 chunk holding ``values`` (its first indices; the rest of the chunk
+    the fill value) as stored with ``layout``: what HDF5's filters would write."""
+    if values.shape == layout.chunk:
+        data = np.ascontiguousarray(values, dtype=layout.dtype)
+    else:  # an edge block: the part of the chunk beyond the grid is never read
+        data = np.full(layout.chunk, layout.fill, dtype=layout.dtype)
+        data[tuple(slice(0, n) for n in values.shape)] = values
+    size = data.dtype.itemsize
+    if layout.shuffle and size > 1:  # byte 0 of every value, then byte 1, ...
+        data = data.reshape(-1).view(np.uint8).reshape(-1, size).T.copy()
+    return data.tobytes() if layout.level is None else zlib.compress(data, layout.level)
+
+
+@dataclass(frozen=True)
+class ChunkEncoder:
+    """Encodes a computed chunk as the file stores it (small: it travels with every task to
+    the process that computes the chunk); ``layouts``: by variable name, from :func:`layouts`."""
+
+    layouts: dict
+
+    def write(self, grid: Grid, start: int, stop: int, part: dict) -> dict:
+        """Points ``start..stop-1`` (a computed ``part``, as ``compute.evaluate_chunk`` returns
+        it) as the driver writes them: ``{"chunks": {name: (offset, bytes)}, "firsts":
+        {name: (points, values)}}``, one HDF5 chunk per variable at ``offset`` (its first
+        index on each dimension), and the :func:`dependence.first_held` values of the outputs
+        stored on fewer dimensions."""
+        firsts, per_point = split_reduced(grid, start, stop, part)
+        chunks = {}
+        for name, index, block in stored_blocks(grid, start, stop, per_point, part["status"]):
+            layout = self.layouts[name]
+            if name in chunks or any(s.start % c for s, c in zip(index, layout.chunk)):
+                raise ValueError(f"points {start}..{stop - 1} are not one block of the grid")
+            offset = tuple(s.start for s in index) + (0,) * (len(layout.chunk) - len(index))
+            chunks[name] = (offset, encoded(block, layout))
+        return {"chunks": chunks, "firsts": firsts}
+
+
+class DirectWriter:
+    """Writes encoded chunks (:meth:`ChunkEncoder.write`) into the file at ``path``, opened
+    with h5py; the values of the outputs stored on fewer dimensions and the model's errors go
+    to ``writer`` (the ``store.ChunkWriter`` that wrote the file's structure), for its
+    ``finish``."""
+
+    def __init__(self, path, encoder: ChunkEncoder, writer):
+        import h5py
+
+        self.encoder, self.writer = encoder, writer
+        self.file = h5py.File(path, "r+")
+
+    def __enter__(self):
+        return self
+
+    def __exit__(self, *exc):
+        self.file.close()
+
+    def write(self, start: int, stop: int, part: dict):
+        """Write one chunk of points ``start..stop-1``: the bytes as they are."""
+        self.writer.errors.update(part["tally"]["errors"])
+        for name, (points, values) in part["firsts"].items():
+            self.writer.reduced[name].add_firsts(points, values)
+        for name, (offset, data) in part["chunks"].items():
+            self.file[name].id.write_direct_chunk(tuple(int(i) for i in offset), data)
+
+
+class EncodedParts(Parts):
+    """The parts of an interrupted netCDF run whose chunks are encoded by the workers: each
+    chunk's :meth:`ChunkEncoder.write` result and counts (``store.chunk_tally``), as the
+    driver writes them. The interface of :class:`parts.Parts`."""
+
+    def save(self, start: int, stop: int, result: dict):
+        arrays = saved_counts(result)
+        for name, (offset, data) in result["chunks"].items():
+            arrays[f"offset_{name}"] = np.array(offset, dtype=np.int64)
+            arrays[f"chunk_{name}"] = np.frombuffer(data, dtype=np.uint8)
+        write_durably(self.path(start, stop), lambda handle: np.savez(handle, **arrays))
+
+    def read(self, data) -> dict:
+        tally, firsts = load_counts(data)
+        chunks = {key[len("chunk_"):]: (tuple(data["offset_" + key[len("chunk_"):]].tolist()),
+                                        data[key].tobytes())
+                  for key in data.files if key.startswith("chunk_")}
+        return {"chunks": chunks, "tally": tally, "firsts": firsts}
+
+    def unreadable(self, path, points: int) -> str | None:
+        return counts_unreadable(path, points)
