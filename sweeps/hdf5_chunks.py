@@ -22,6 +22,7 @@ again rather than write them as they are.
 """
 from __future__ import annotations
 
+import time
 import zlib
 from dataclasses import dataclass
 
@@ -36,6 +37,10 @@ from .store import stored_blocks
 DIRECT_COMPRESSIONS = ("none", "zlib")
 #: The filters :func:`encoded` applies, as netCDF4's ``Variable.filters()`` names them.
 KNOWN_FILTERS = ("zlib", "shuffle", "complevel")
+#: How long [s] an opening of the file just closed is retried. A process the cluster starts
+#: meanwhile (from another thread) holds a copy of every open file until it runs its own
+#: program, and with it HDF5's lock on the file: a few milliseconds, more on a busy machine.
+REOPEN_SECONDS = 5.0
 
 
 def writes_directly(storage, grid: Grid) -> bool:
@@ -125,6 +130,19 @@ class ChunkEncoder:
         return {"chunks": chunks, "firsts": firsts}
 
 
+def reopened(open_file):
+    """``open_file()`` (the file closed a moment ago, opened again), retried for
+    ``REOPEN_SECONDS`` while it fails (HDF5 finds the file locked)."""
+    deadline = time.monotonic() + REOPEN_SECONDS
+    while True:
+        try:
+            return open_file()
+        except OSError:
+            if time.monotonic() > deadline:
+                raise
+            time.sleep(0.01)
+
+
 class DirectWriter:
     """Writes encoded chunks (:meth:`ChunkEncoder.write`) into the file at ``path``, opened
     with h5py; the values of the outputs stored on fewer dimensions and the model's errors go
@@ -135,7 +153,7 @@ class DirectWriter:
         import h5py
 
         self.encoder, self.writer = encoder, writer
-        self.file = h5py.File(path, "r+")
+        self.file = reopened(lambda: h5py.File(path, "r+"))
 
     def __enter__(self):
         return self

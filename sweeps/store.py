@@ -130,7 +130,7 @@ def result_file(sweep: Sweep, grid: Grid, path, provenance: dict, chunk_size: in
         # Never open in netCDF4 and h5py at once: each has its own HDF5 library.
         with hdf5_chunks.DirectWriter(temporary, encoder, writer) as chunks:
             yield chunks
-        with netCDF4.Dataset(temporary, "a") as target:
+        with hdf5_chunks.reopened(lambda: netCDF4.Dataset(temporary, "a")) as target:
             writer.reopen(target)
             writer.finish()
 

@@ -1,5 +1,7 @@
 """How result files store the outputs: compressed float64 reads back bit for bit, float32 on
 request, integral outputs as integers with a fill value, the [output] table and the flags."""
+import zlib
+
 import netCDF4
 import numpy as np
 import pytest
@@ -192,3 +194,151 @@ def test_outputs_are_stored_in_hdf5_chunks_of_one_sweep_chunk(tmp_path):
     with xr.open_dataset(path) as data:
         for name in whole.data_vars:
             np.testing.assert_array_equal(data[name].values, whole[name].values, err_msg=name)
+
+
+# A netCDF result's chunks are encoded (compressed) by the process that computes them and
+# written as bytes (hdf5_chunks): the file must be the one netCDF4 writes from the dataset.
+DIRECT = """
+[sweep]
+model = "crb_radial"
+bearing = "paper000-D"
+[fixed]
+crown = "4 um"
+{speed}
+[axes]
+{axes}
+{table}
+"""
+LOADS = 'radial_load = {{ start = "1 kN", stop = "5 kN", num = {} }}\n'
+CLEARANCES = 'clearance = {{ start = "0 mm", stop = "0.03 mm", num = {} }}\n'
+SPEEDS = 'speed = { values = [0, 5000], units = "rpm" }\n'
+#: Grids of 1, 2 and 3 axes, chunk sizes, [output] tables, and the HDF5 chunk each sweep chunk
+#: then fills along the grid's axes: whole rows of the last axes, of nearly equal length
+#: along the one axis they cut (5 loads by 2 points: 2, 2 and an edge block of 1).
+CASES = {
+    "1 axis, edge": (LOADS.format(5), 2, "", (2,)),
+    "2 axes, odd size, edge, float32": (LOADS.format(5) + CLEARANCES.format(3), 7,
+                                        'encoding = "float32"', (2, 3)),
+    "3 axes, edge, shuffle": (LOADS.format(3) + CLEARANCES.format(3) + SPEEDS, 5,
+                              'compression = "zlib:4"\nshuffle = true', (1, 2, 2)),
+    "3 axes, one point, uncompressed": (LOADS.format(3) + CLEARANCES.format(4) + SPEEDS, 1,
+                                        'compression = "none"', (1, 1, 1)),
+    "2 axes, larger than the grid, float32 shuffle": (
+        LOADS.format(3) + CLEARANCES.format(4), 100,
+        'encoding = "float32"\nshuffle = true', (3, 4)),
+}
+
+
+def direct_sweep(case: str):
+    axes, size, table, block = CASES[case]
+    text = DIRECT.format(speed="" if "speed" in axes else 'speed = "6000 rpm"', axes=axes,
+                         table="[output]\n" + table)
+    return spec.parse(text, "direct.toml"), size, block
+
+
+def netcdf4_written(tmp_path, sweep):
+    """The sweep's dataset in memory (``store.gather``), written by xarray and netCDF4."""
+    data = run_sweep(sweep, None, Executor(workers=0), progress=False).dataset
+    return store.write_netcdf(data, tmp_path / "netcdf4.nc")
+
+
+def assert_same_file(path, reference, block):
+    """Every variable and attribute alike, values bit for bit as stored (types, fill values,
+    filters); each output on every point of the grid, and status, in HDF5 chunks of
+    ``block`` along the grid's axes, their own dimensions whole."""
+    with netCDF4.Dataset(path) as found, netCDF4.Dataset(reference) as expected:
+        found.set_auto_maskandscale(False)
+        expected.set_auto_maskandscale(False)
+        assert ({n: d.size for n, d in found.dimensions.items()}
+                == {n: d.size for n, d in expected.dimensions.items()})
+        assert set(found.variables) == set(expected.variables)
+        grid = found["status"].dimensions
+        for name, variable in found.variables.items():
+            other = expected[name]
+            assert variable.dtype == other.dtype and variable.dimensions == other.dimensions
+            assert variable.filters() == other.filters(), name
+            attributes = {key: variable.getncattr(key) for key in variable.ncattrs()}
+            np.testing.assert_equal(attributes, {key: other.getncattr(key)
+                                                 for key in other.ncattrs()}, err_msg=name)
+            np.testing.assert_array_equal(variable[...], other[...], err_msg=name)
+            if variable.dimensions[:len(grid)] == grid and name not in found.dimensions:
+                assert variable.chunking() == list(block) + list(variable.shape[len(grid):])
+        made = ("history", "scheduler")  # when and where, not what
+        np.testing.assert_equal({k: found.getncattr(k) for k in found.ncattrs()
+                                 if k not in made},
+                                {k: expected.getncattr(k) for k in expected.ncattrs()
+                                 if k not in made})
+
+
+@pytest.mark.parametrize("case", CASES)
+def test_the_chunks_encoded_by_the_workers_make_the_file_netcdf4_writes(tmp_path, case):
+    sweep, size, block = direct_sweep(case)
+    path = tmp_path / "direct.nc"
+    run_sweep(sweep, path, Executor(workers=0), chunk_size=size, progress=False)
+    assert_same_file(path, netcdf4_written(tmp_path, sweep), block)
+    with netCDF4.Dataset(path) as data:  # folded on the speed, or a single value
+        assert data["centrifugal_force"].dimensions == (("speed",) if "speed" in
+                                                        CASES[case][0] else ())
+
+
+def test_two_workers_encode_the_same_file(tmp_path):
+    sweep, size, block = direct_sweep("3 axes, edge, shuffle")
+    with Executor(workers=2) as executor:
+        run_sweep(sweep, tmp_path / "two.nc", executor, chunk_size=size, progress=False)
+    assert_same_file(tmp_path / "two.nc", netcdf4_written(tmp_path, sweep), block)
+
+
+def test_an_interrupted_run_writes_its_encoded_chunks_on_resuming(tmp_path, capsys,
+                                                                  monkeypatch):
+    sweep, size, block = direct_sweep("2 axes, odd size, edge, float32")
+    definition = tmp_path / "direct.toml"
+    definition.write_text(sweep.text)
+    output = tmp_path / "out.nc"
+    arguments = ["run", str(definition), "-o", str(output), "--workers", "0", "--chunk-size",
+                 str(size), "--quiet"]
+
+    def interrupted(*args):  # every chunk computed, the file not yet complete
+        raise KeyboardInterrupt
+
+    monkeypatch.setattr("bearing_sweep.store.ChunkWriter.finish", interrupted)
+    # zstd's parts hold arrays (netCDF4 writes them), not chunks this file could take
+    assert cli.main(arguments + ["--compression", "zstd"]) == 130
+    monkeypatch.undo()
+    assert cli.main(arguments) == 0
+    assert "storage changed: discarding 3 finished chunks" in capsys.readouterr().err
+    monkeypatch.setattr("bearing_sweep.store.ChunkWriter.finish", interrupted)
+    assert cli.main(arguments) == 130
+    monkeypatch.undo()
+
+    def computed(*args):
+        raise AssertionError("a finished chunk computed again")
+
+    monkeypatch.setattr("bearing_sweep.compute.evaluate_chunk", computed)
+    assert cli.main(arguments) == 0
+    assert "resuming: 3 chunks already computed" in capsys.readouterr().err
+    monkeypatch.undo()
+    assert_same_file(output, netcdf4_written(tmp_path, spec.load(definition)), block)
+
+
+def test_a_chunk_leaves_its_worker_compressed_as_the_file_stores_it(tmp_path):
+    from bearing_sweep.compute import evaluate_chunk, evaluate_into, versions
+    from bearing_sweep.grid import Grid
+    from bearing_sweep.hdf5_chunks import ChunkEncoder, layouts
+
+    sweep, size, block = direct_sweep("1 axis, edge")
+    run_sweep(sweep, tmp_path / "direct.nc", Executor(workers=0), chunk_size=size,
+              progress=False)
+    with netCDF4.Dataset(tmp_path / "direct.nc") as data:
+        stored = layouts(data, [name for name, variable in data.variables.items()
+                                if variable.dimensions[:1] == ("radial_load",)
+                                and name != "radial_load"])
+    grid = Grid.from_sweep(sweep)
+    result = evaluate_into(ChunkEncoder(stored), versions(grid.model), grid, 4, 5)
+    assert set(result) == {"tally", "versions", "chunks", "firsts"}  # no values but these
+    assert set(result["firsts"]) == {"centrifugal_force", "viscosity_ratio"}  # one value each
+    offset, data = result["chunks"]["roller_load"]
+    assert offset == (4, 0)  # the last block, of one point in a chunk of two: zlib, no shuffle
+    values = np.frombuffer(zlib.decompress(data), dtype="<f8").reshape(2, -1)
+    np.testing.assert_array_equal(values[0],
+                                  evaluate_chunk(grid, 4, 5)["outputs"]["roller_load"][0])
+    assert np.isnan(values[1]).all()  # beyond the grid: the fill value, never read
