@@ -1,11 +1,12 @@
 """Finished chunks kept on disk beside a sweep's output, so that an interrupted sweep resumes.
 
 ``<output>.parts/`` holds a manifest (what the parts belong to: the definition's sha256, the
-model's and the package's versions, the grid's size and the chunk size) and one ``.npz`` file
-per finished chunk, each written atomically and flushed to the disk before it is renamed into
+model's and the package's versions, the grid's size, the chunk size and what the parts hold:
+a netCDF file's encoded chunks, ``hdf5_chunks``, for one storage) and one ``.npz`` file per
+finished chunk, each written atomically and flushed to the disk before it is renamed into
 place (a zarr output keeps its chunks' values in its store instead: ``zarr_store``). Parts of
-another definition, model or package version are discarded, with a message; a part that cannot
-be read (a power loss before it reached the disk) is computed again.
+another definition, model, package version or storage are discarded, with a message; a part
+that cannot be read (a power loss before it reached the disk) is computed again.
 A lock on ``.<output>.lock`` keeps two runs from writing the same output, and
 :func:`check_output` refuses an output path that holds something other than an earlier result.
 """
