@@ -5,7 +5,8 @@ Each chunk of points fills one HDF5 chunk of every output stored per point and o
 process that computes a chunk (a dask worker, or the driver's own loop in-process) also
 encodes it as the file stores it: the stored type and fill value, an edge block padded to the
 whole HDF5 chunk with the fill value, HDF5's shuffle filter (the bytes of the values grouped by
-significance) and its deflate filter (a zlib stream at the file's level). The driver writes
+significance), then its deflate filter (a zlib stream at the file's level) or the zstd plugin
+filter (a zstd frame, as netCDF-C's plugin writes it: ``ZSTD_compress``). The driver writes
 those bytes into the file unchanged (h5py's direct chunk write: HDF5 neither decompresses nor
 compresses them): no per-value work in the driver, whose single core otherwise compresses the
 whole sweep while the workers wait for it.
@@ -13,8 +14,8 @@ whole sweep while the workers wait for it.
 How each variable is stored is read from the file netCDF4 has just created (its type, byte
 order, chunk shape, filters and fill value: :func:`layouts`), so that the bytes are what HDF5
 itself would have written. netCDF4 and h5py each bundle their own HDF5 library: the file is
-never open in both at once (:func:`store.result_file`). zstd, an HDF5 plugin filter, is written
-through netCDF4 as before, and so is a grid of one point (its variables are not chunked).
+never open in both at once (:func:`store.result_file`). A grid of one point is written through
+netCDF4 (its variables are not chunked).
 
 An interrupted run keeps each chunk as the worker returned it (:class:`EncodedParts`); the
 manifest names the storage they were encoded for, so that a run storing otherwise computes them
@@ -33,10 +34,11 @@ from .grid import Grid
 from .parts import Parts, counts_unreadable, load_counts, saved_counts, write_durably
 from .store import stored_blocks
 
-#: The compressions whose HDF5 filters are written here (HDF5's own deflate filter, or none).
-DIRECT_COMPRESSIONS = ("none", "zlib")
-#: The filters :func:`encoded` applies, as netCDF4's ``Variable.filters()`` names them.
-KNOWN_FILTERS = ("zlib", "shuffle", "complevel")
+#: The compressions whose HDF5 filters :func:`encoded` applies, as ``storage.Storage`` and
+#: netCDF4's ``Variable.filters()`` name them (HDF5's deflate, the zstd plugin, or none).
+COMPRESSORS = ("zlib", "zstd")
+DIRECT_COMPRESSIONS = ("none",) + COMPRESSORS
+KNOWN_FILTERS = COMPRESSORS + ("shuffle", "complevel")
 #: How long [s] an opening of the file just closed is retried. A process the cluster starts
 #: meanwhile (from another thread) holds a copy of every open file until it runs its own
 #: program, and with it HDF5's lock on the file: a few milliseconds, more on a busy machine.
@@ -45,7 +47,7 @@ REOPEN_SECONDS = 5.0
 
 def writes_directly(storage, grid: Grid) -> bool:
     """Whether a netCDF result of ``grid`` stored as ``storage`` (``storage.Storage``) has its
-    chunks encoded by the workers: with zlib or uncompressed, and on a grid with axes."""
+    chunks encoded by the workers: in a compression encoded here, on a grid with axes."""
     return storage.compression in DIRECT_COMPRESSIONS and bool(grid.shape)
 
 
@@ -58,14 +60,15 @@ def parts_hold(direct: bool, storage) -> str:
 @dataclass(frozen=True)
 class Layout:
     """How one variable's HDF5 chunks are stored: the numpy type (with its byte order), the
-    chunk's shape, the fill value beyond the grid's edge, and the filters (``level``: zlib's,
-    None for none)."""
+    chunk's shape, the fill value beyond the grid's edge, and the filters: shuffle, and the
+    ``compressor`` (one of ``COMPRESSORS``, or None) at ``level``."""
 
     dtype: str
     chunk: tuple
     fill: float | int
     shuffle: bool
-    level: int | None
+    compressor: str | None
+    level: int
 
 
 def layouts(target, names) -> dict[str, Layout]:
@@ -86,9 +89,10 @@ def layouts(target, names) -> dict[str, Layout]:
         order = {"native": "=", "little": "<", "big": ">"}[variable.endian()]
         fill = (variable.getncattr("_FillValue") if "_FillValue" in variable.ncattrs()
                 else netCDF4.default_fillvals[variable.dtype.str[1:]])
+        compressor = next((name for name in COMPRESSORS if filters.get(name)), None)
         found[name] = Layout(variable.dtype.newbyteorder(order).str, tuple(chunking),
                              np.asarray(fill).item(), bool(filters.get("shuffle")),
-                             filters["complevel"] if filters.get("zlib") else None)
+                             compressor, int(filters.get("complevel", 0)))
     return found
 
 
@@ -103,7 +107,13 @@ def encoded(values: np.ndarray, layout: Layout) -> bytes:
     size = data.dtype.itemsize
     if layout.shuffle and size > 1:  # byte 0 of every value, then byte 1, ...
         data = data.reshape(-1).view(np.uint8).reshape(-1, size).T.copy()
-    return data.tobytes() if layout.level is None else zlib.compress(data, layout.level)
+    if layout.compressor == "zlib":
+        return zlib.compress(data, layout.level)
+    if layout.compressor == "zstd":  # one frame, its size in its header, as ZSTD_compress
+        import numcodecs
+
+        return numcodecs.Zstd(level=layout.level).encode(data)
+    return data.tobytes()
 
 
 @dataclass(frozen=True)

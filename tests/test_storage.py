@@ -223,6 +223,8 @@ CASES = {
                               'compression = "zlib:4"\nshuffle = true', (1, 2, 2)),
     "3 axes, one point, uncompressed": (LOADS.format(3) + CLEARANCES.format(4) + SPEEDS, 1,
                                         'compression = "none"', (1, 1, 1)),
+    "2 axes, zstd": (LOADS.format(3) + CLEARANCES.format(3), 2, 'compression = "zstd:3"',
+                     (1, 2)),
     "2 axes, larger than the grid, float32 shuffle": (
         LOADS.format(3) + CLEARANCES.format(4), 100,
         'encoding = "float32"\nshuffle = true', (3, 4)),
@@ -301,7 +303,7 @@ def test_an_interrupted_run_writes_its_encoded_chunks_on_resuming(tmp_path, caps
         raise KeyboardInterrupt
 
     monkeypatch.setattr("bearing_sweep.store.ChunkWriter.finish", interrupted)
-    # zstd's parts hold arrays (netCDF4 writes them), not chunks this file could take
+    # chunks compressed by zstd are not this file's, compressed by zlib
     assert cli.main(arguments + ["--compression", "zstd"]) == 130
     monkeypatch.undo()
     assert cli.main(arguments) == 0
