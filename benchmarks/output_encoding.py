@@ -3,7 +3,8 @@
 Baseline: the same result written as the engine wrote every file before the [output] table,
 float64 and uncompressed. The result, 1e5 points of bearing D of paper 000 (load x clearance x
 crown x speed, 60 slices, 14 rollers), is computed once; each setting then writes it through
-the engine's own path (``store.result_file``, one chunk at a time) and reads it back whole
+the engine's own path (``store.result_file``, one chunk at a time, each encoded as a worker
+encodes it) and reads it back whole
 (``store.open_result``). Times are the best of three; float64 settings must read back bit for
 bit, float32 within its rounding. Prints one row per setting, as ratios against the baseline,
 and the chosen default's size ratio (goal: at most 0.5, with writing under a tenth of the
@@ -51,11 +52,15 @@ REPEATS = 3
 
 
 def write(sweep, grid, parts, chunks, path: Path):
-    """Write the result at ``path`` through the engine's own path, one chunk at a time."""
+    """Write the result at ``path`` through the engine's own path, one chunk at a time: each
+    encoded as a worker encodes it, its bytes then written (``hdf5_chunks``)."""
     size = chunks[0][1] - chunks[0][0]
-    with store.result_file(sweep, grid, path, store.provenance("benchmark"), size) as writer:
+    with store.result_file(sweep, grid, path, store.provenance("benchmark"), size,
+                           direct=True) as writer:
         for start, stop in chunks:
-            writer.write(start, stop, parts.load(start, stop))
+            part = parts.load(start, stop)
+            writer.write(start, stop, {"tally": store.chunk_tally(grid.model, part),
+                                       **writer.encoder.write(grid, start, stop, part)})
 
 
 def measure(sweep, grid, parts, chunks, path: Path):
