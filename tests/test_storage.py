@@ -1,5 +1,6 @@
 """How result files store the outputs: compressed float64 reads back bit for bit, float32 on
 request, integral outputs as integers with a fill value, the [output] table and the flags."""
+import json
 import zlib
 
 import netCDF4
@@ -344,3 +345,27 @@ def test_a_chunk_leaves_its_worker_compressed_as_the_file_stores_it(tmp_path):
     np.testing.assert_array_equal(values[0],
                                   evaluate_chunk(grid, 4, 5)["outputs"]["roller_load"][0])
     assert np.isnan(values[1]).all()  # beyond the grid: the fill value, never read
+
+
+def test_parts_kept_by_a_version_before_encoded_chunks_are_not_read(tmp_path, capsys,
+                                                                    monkeypatch):
+    # Its parts held each chunk's arrays, under a manifest that did not say so.
+    sweep, size, block = direct_sweep("1 axis, edge")
+    definition = tmp_path / "direct.toml"
+    definition.write_text(sweep.text)
+    arguments = ["run", str(definition), "-o", str(tmp_path / "out.nc"), "--workers", "0",
+                 "--chunk-size", str(size), "--quiet"]
+
+    def interrupted(*args):
+        raise KeyboardInterrupt
+
+    monkeypatch.setattr("bearing_sweep.store.ChunkWriter.finish", interrupted)
+    assert cli.main(arguments) == 130
+    monkeypatch.undo()
+    manifest = tmp_path / "out.nc.parts" / "manifest.json"
+    earlier = json.loads(manifest.read_text())
+    assert earlier.pop("parts_hold") == "hdf5 chunks, float64, zlib level 1"
+    manifest.write_text(json.dumps(earlier))
+    capsys.readouterr()
+    assert cli.main(arguments) == 0
+    assert "storage changed: discarding 3 finished chunks" in capsys.readouterr().err
