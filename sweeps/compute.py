@@ -17,7 +17,7 @@ from dataclasses import dataclass, field
 import numpy as np
 
 from .models.registry import MODEL_ERROR, VALUES_KEPT
-from . import store, units, zarr_store
+from . import store, units
 from .grid import Grid
 from .labels import stored_unit
 from .parts import HeldChunks, OutputLock, Parts, check_output, is_zarr
@@ -452,6 +452,8 @@ def run_sweep(sweep: Sweep, output=None, executor: Executor | None = None,
             size = chunk_size or choose_chunk_size(
                 grid, executor.worker_count() if parallel else 1)
             zarr = is_zarr(output)
+            if zarr:
+                from . import zarr_store  # zarr and xarray: only for a store
             parts = HeldChunks() if output is None else (
                 zarr_store.StoreParts if zarr else Parts)(output, {
                     "definition_sha256": sweep.sha256, "values_sha256": grid.values_sha256,
