@@ -5,6 +5,7 @@ from __future__ import annotations
 import os
 import subprocess
 from contextlib import contextmanager
+from functools import lru_cache
 from importlib.metadata import PackageNotFoundError, version
 from pathlib import Path
 from typing import TYPE_CHECKING
@@ -24,6 +25,7 @@ if TYPE_CHECKING:  # xarray only where a dataset is made or read: a run writes w
     import xarray as xr
 
 
+@lru_cache(maxsize=1)  # asked for every chunk: the code a process runs does not change
 def package_version() -> str:
     try:
         return version("bearing-sweep")
