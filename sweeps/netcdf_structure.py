@@ -19,11 +19,10 @@ import numpy as np
 _FILTERS = ("compression", "complevel", "shuffle", "chunksizes")
 
 
-def write_structure(labelled, target, placeholders=frozenset()) -> dict:
+def write_structure(labelled, target, placeholders=frozenset()):
     """Write ``labelled`` into the open, empty ``netCDF4.Dataset`` ``target``, the values of
     the variables named in ``placeholders`` aside: those are created empty, for their values
-    to be written later. Returns the global attributes as written (:func:`write_attributes`
-    rewrites them)."""
+    to be written later (and the global attributes rewritten: :func:`write_attributes`)."""
     variables = {**labelled.data_vars, **labelled.coords}  # xarray's order
     sizes = {}
     for dims, values, _ in variables.values():
@@ -50,12 +49,12 @@ def write_structure(labelled, target, placeholders=frozenset()) -> dict:
         variable.setncatts(attrs)
         if name not in placeholders:
             variable[...] = values.astype(stored) if stored.kind != "U" else values
-    return write_attributes(labelled, target)
+    write_attributes(labelled, target)
 
 
-def write_attributes(labelled, target) -> dict:
+def write_attributes(labelled, target):
     """Set ``target``'s global attributes to ``labelled``'s, in their order, with xarray's
-    global ``coordinates`` where a coordinate spans no variable. Returns them."""
+    global ``coordinates`` where a coordinate spans no variable."""
     attributes = dict(labelled.attrs)
     unlisted = _non_dimension_coordinates(labelled) - {
         name for text in coordinate_lists(labelled).values() for name in text.split()}
@@ -65,7 +64,6 @@ def write_attributes(labelled, target) -> dict:
         target.delncattr(name)
     for name, value in attributes.items():
         target.setncattr(name, value)
-    return attributes
 
 
 def coordinate_lists(labelled) -> dict:
