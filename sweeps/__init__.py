@@ -5,15 +5,23 @@ a sampled result), :func:`list_models`, :func:`describe`, and :func:`plot` (:mod
 result; every mistake in what is asked is a :class:`SpecError`. The model functions are in
 :mod:`bearing_sweep.models`.
 """
-from .api import analyze, check, describe, list_models, run
 from .spec import SpecError
+
+#: Where each name of the API lives: imported when first asked for, since xarray (the API's)
+#: and matplotlib (plot's) cost more to import than a small sweep takes to run.
+_LAZY = {"run": "api", "check": "api", "analyze": "api", "list_models": "api",
+         "describe": "api", "plot": "quicklook"}
 
 
 def __getattr__(name):
-    # matplotlib costs a third of a second to import: only for who plots.
-    if name == "plot":
-        from .quicklook import plot
-        return plot
+    if name in _LAZY:
+        from importlib import import_module
+        return getattr(import_module(f".{_LAZY[name]}", __name__), name)
     raise AttributeError(f"module {__name__!r} has no attribute {name!r}")
+
+
+def __dir__():
+    return sorted(__all__)
+
 
 __all__ = ["run", "check", "analyze", "list_models", "describe", "plot", "SpecError"]

@@ -9,7 +9,7 @@ from pathlib import Path
 
 from .models.catalogue import PRESETS
 from .models.registry import all_models
-from . import api, schema, spec, store, study
+from . import schema, spec, store
 from .parts import check_output, write_durably
 from .compute import Executor, WorkerMismatch, check_scheduler_address, run_sweep
 from .dependence import InconsistentOutput
@@ -110,6 +110,8 @@ def _note(message: str):
 
 def _describe(name: str) -> str:
     """The text of the declaration :func:`bearing_sweep.describe` gives as data."""
+    from . import api
+
     model = api.describe(name)
     lines = [f"{model['name']} (version {model['version']}): {model['summary']}",
              f"Reference: {model['reference']}", "", "Inputs:"]
@@ -237,10 +239,14 @@ def main(argv=None) -> int:
                                     args.fresh, _note)
             print(summary.text())
         elif args.command == "analyze":
+            from . import api  # xarray: not for a run, which writes its file without it
+
             output = args.output or args.result.with_name(f"{args.result.stem}_analysis.nc")
             print(_indices_table(api.analyze(args.result, output=output)))
             print(f"wrote {output}")
         elif args.command == "study":
+            from . import study
+
             _check_cluster_options(args)
             folder = args.studies or study.default_studies_folder()
             chosen = study.select(folder, args.name)
@@ -251,6 +257,8 @@ def main(argv=None) -> int:
                 for one in chosen:
                     study.run_study(one, args.results, args.figures, executor, args.force)
         elif args.command == "report":
+            from . import study
+
             folder = args.studies or study.default_studies_folder()
             for path in study.write_report(study.select(folder, "all"), args.results, args.figures):
                 print(f"wrote {path}")

@@ -17,7 +17,7 @@ from dataclasses import dataclass, field
 import numpy as np
 
 from .models.registry import MODEL_ERROR, VALUES_KEPT
-from . import hdf5_chunks, store, units, zarr_store
+from . import hdf5_chunks, store, units
 from .grid import Grid
 from .labels import stored_unit
 from .parts import HeldChunks, OutputLock, Parts, check_output, is_zarr
@@ -402,10 +402,12 @@ class Progress:
 
 
 def choose_chunk_size(grid: Grid, workers: int) -> int:
-    """Eight chunks per worker to balance uneven points, each at most ``CHUNK_SECONDS``."""
+    """Chunks of at most ``CHUNK_SECONDS`` (the progress bar moves, an interruption loses
+    little), on a cluster eight per worker to balance uneven points; in-process
+    (``workers`` 0) as few as that allows: each chunk costs a model call and a write."""
     cost = grid.model.seconds_per_point
     largest = max(1, int(CHUNK_SECONDS / cost))
-    return max(1, min(largest, math.ceil(grid.size / (8 * workers))))
+    return max(1, min(largest, math.ceil(grid.size / (8 * workers)) if workers else grid.size))
 
 
 def _check_versions(found: dict, expected: dict, executor: Executor, parts: Parts):
@@ -452,8 +454,10 @@ def run_sweep(sweep: Sweep, output=None, executor: Executor | None = None,
             if parallel:
                 executor.start()
             size = chunk_size or choose_chunk_size(
-                grid, executor.worker_count() if parallel else 1)
+                grid, executor.worker_count() if parallel else 0)
             zarr = is_zarr(output)
+            if zarr:
+                from . import zarr_store  # zarr and xarray: only for a store
             # A netCDF file's chunks encoded by the workers, the driver writing their bytes.
             direct = output is not None and not zarr and hdf5_chunks.writes_directly(
                 sweep.storage, grid)

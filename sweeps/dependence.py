@@ -12,11 +12,15 @@ its values for all of them.
 """
 from __future__ import annotations
 
+from typing import TYPE_CHECKING
+
 import numpy as np
-import xarray as xr
 
 from .models.registry import STATUS_MEANINGS, VALUES_KEPT
 from .grid import Grid
+
+if TYPE_CHECKING:
+    import xarray as xr
 
 #: How closely [relative] the points of a cell must agree. The same inputs give the same bits
 #: in a pure model; the margin spares a finished sweep a failure over a last-bit difference

@@ -7,10 +7,11 @@ write (a fractional power) in SI, named in the ``comment``.
 """
 from __future__ import annotations
 
+from dataclasses import dataclass
 from datetime import datetime, timezone
+from typing import TYPE_CHECKING
 
 import numpy as np
-import xarray as xr
 
 from .models.registry import STATUS_DESCRIPTIONS, STATUS_MEANINGS
 from . import units
@@ -18,12 +19,42 @@ from .dependence import stored_dims, stored_shape
 from .grid import Grid
 from .spec import Sweep, Value
 
+if TYPE_CHECKING:
+    import xarray as xr
+
 CONVENTIONS = "CF-1.10"
+
+
+@dataclass
+class Labelled:
+    """A labelled dataset as plain data, for xarray (:meth:`dataset`) or for writing without
+    it (:mod:`netcdf_structure`): ``data_vars`` and ``coords`` map names to ``(dims, values,
+    attrs)`` in the dataset's order, ``encodings`` names to how the file stores them."""
+
+    data_vars: dict
+    coords: dict
+    attrs: dict
+    encodings: dict
+
+    def dataset(self) -> xr.Dataset:
+        """The xarray dataset, each variable with its encoding."""
+        import xarray as xr
+
+        dataset = xr.Dataset(self.data_vars, self.coords, self.attrs)
+        for name, encoding in self.encodings.items():
+            dataset[name].encoding.update(encoding)
+        return dataset
 
 
 def labelled_dataset(sweep: Sweep, grid: Grid, outputs: dict, status: np.ndarray,
                      provenance: dict, errors=()) -> xr.Dataset:
-    """The labelled dataset of a finished sweep.
+    """The labelled dataset of a finished sweep (:func:`labelled` in xarray)."""
+    return labelled(sweep, grid, outputs, status, provenance, errors).dataset()
+
+
+def labelled(sweep: Sweep, grid: Grid, outputs: dict, status: np.ndarray,
+             provenance: dict, errors=()) -> Labelled:
+    """The labelled dataset of a finished sweep, as plain data.
 
     ``outputs``: each flat over the cells of the grid's dimensions it is stored on (the
     points, as computed, or fewer for an output that depends on fewer inputs:
@@ -91,14 +122,14 @@ def labelled_dataset(sweep: Sweep, grid: Grid, outputs: dict, status: np.ndarray
     if errors:
         attrs["model_errors"] = "\n".join(sorted(set(errors)))
     attrs["fixed_inputs"] = " ".join(n for n, v in sweep.fixed.items() if v is not None)
-    dataset = xr.Dataset(data_vars, coords, attrs)
-    for name in list(dataset.coords) + attrs["fixed_inputs"].split():
-        dataset[name].encoding["_FillValue"] = None  # CF: no fill values on coordinates
+    # CF: no fill values on coordinates
+    encodings = {name: {"_FillValue": None} for name in list(coords)
+                 + attrs["fixed_inputs"].split()}
     for spec in model.outputs:  # how the file stores them (in memory: float64 and NaN)
-        dataset[spec.name].encoding.update(sweep.storage.variable_encoding(spec.dtype == "int"))
-    dataset["status"].encoding.update(sweep.storage.variable_encoding(integral=True),
-                                      dtype=np.int8, _FillValue=None)  # every point has one
-    return dataset
+        encodings[spec.name] = sweep.storage.variable_encoding(spec.dtype == "int")
+    encodings["status"] = {**sweep.storage.variable_encoding(integral=True),
+                           "dtype": np.int8, "_FillValue": None}  # every point has one
+    return Labelled(data_vars, coords, attrs, encodings)
 
 
 def stored_note(integral: bool, storage) -> str:

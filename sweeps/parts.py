@@ -181,7 +181,8 @@ class Parts:
             else:
                 count -= self._remove_unreadable(log)
                 if count:
-                    log(f"resuming: {count} chunks already computed in {self.folder}")
+                    log(f"resuming: {count} chunk{'s' * (count != 1)} already computed in "
+                        f"{self.folder}")
                 return int(found["chunk_size"])
         self.folder.mkdir(parents=True)
         text = json.dumps({**self.key, "chunk_size": chunk_size}).encode()

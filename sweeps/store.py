@@ -5,21 +5,27 @@ from __future__ import annotations
 import os
 import subprocess
 from contextlib import contextmanager
+from functools import lru_cache
 from importlib.metadata import PackageNotFoundError, version
 from pathlib import Path
+from typing import TYPE_CHECKING
 
 import numpy as np
-import xarray as xr
 
 from .models.registry import STATUS_MEANINGS
 from .dependence import reductions, stored_cells
 from .grid import Grid, block_shape
-from .labels import labelled_dataset
+from .labels import labelled, labelled_dataset
+from .netcdf_structure import write_attributes, write_structure
 from .parts import is_zarr, written_atomically
 from .spec import Sweep
 from .storage import integral_values
 
+if TYPE_CHECKING:  # xarray only where a dataset is made or read: a run writes without it
+    import xarray as xr
 
+
+@lru_cache(maxsize=1)  # asked for every chunk: the code a process runs does not change
 def package_version() -> str:
     try:
         return version("bearing-sweep")
@@ -142,27 +148,23 @@ class ChunkWriter:
         self.sweep, self.grid, self.target, self.provenance = sweep, grid, target, provenance
         self.errors = set()
         self.reduced = reductions(grid)
-        skeleton = self._skeleton()
+        structure = self._structure()
         points = block_shape(grid.shape, chunk_size)
         for name in [o.name for o in grid.model.outputs if o.name not in self.reduced] + [
                 "status"]:
-            variable = skeleton[name]
-            if variable.ndim:  # a scalar is stored whole, without chunks
-                variable.encoding["chunksizes"] = points + variable.shape[len(grid.shape):]
-        self.store = _write_structure(skeleton, target,
-                                      [o.name for o in grid.model.outputs] + ["status"])
-        # What xarray adds to the attributes (a "coordinates" list), kept by finish().
-        self.added = {name: target.getncattr(name) for name in target.ncattrs()
-                      if name not in skeleton.attrs}
+            shape = np.shape(structure.data_vars[name][1])
+            if shape:  # a scalar is stored whole, without chunks
+                structure.encodings[name]["chunksizes"] = points + shape[len(grid.shape):]
+        write_structure(structure, target, {o.name for o in grid.model.outputs} | {"status"})
 
-    def _skeleton(self) -> xr.Dataset:
+    def _structure(self):
         """The labelled dataset with placeholders for the values, which are never written."""
         grid = self.grid
         placeholders = {o.name: np.broadcast_to(np.nan, _flat_shape(grid, o))
                         for o in grid.model.outputs}
         status = np.broadcast_to(np.int8(0), (grid.size,))
-        return labelled_dataset(self.sweep, grid, placeholders, status, self.provenance,
-                                sorted(self.errors))
+        return labelled(self.sweep, grid, placeholders, status, self.provenance,
+                        sorted(self.errors))
 
     def write(self, start: int, stop: int, part: dict):
         """Write the values of points ``start..stop-1`` (a computed ``part``); those of an
@@ -176,66 +178,15 @@ class ChunkWriter:
 
     def reopen(self, target):
         """Go on with ``target``, the file opened again (its chunks written meanwhile)."""
-        self.target, self.store = target, _StructureStore(target, set())
+        self.target = target
 
     def finish(self):
         """Write the outputs stored on fewer dimensions, and the global attributes of the
-        finished sweep (its time, the model's errors) in the order xarray writes them."""
+        finished sweep (its time, the model's errors)."""
         for name, reduction in self.reduced.items():
             self.target.variables[name][...] = stored_reduction(
                 reduction, reduction.output.dtype == "int")
-        attributes = {**self._skeleton().attrs, **self.added}
-        for name in self.target.ncattrs():
-            self.target.delncattr(name)
-        self.store.set_attributes(attributes)
-
-
-def _write_structure(dataset: xr.Dataset, target, placeholders):
-    """Write ``dataset`` into the open netCDF4.Dataset ``target`` as xarray writes it, except
-    the values of the variables named in ``placeholders``: those are created empty, for
-    regions to fill, and their values (placeholders of the right shape) are never read.
-    Returns xarray's store on ``target``.
-
-    xarray would encode every value of a placeholder (a float32 copy of a whole output) and
-    write them. With dask.array's lazy arrays it would not, but xarray's own netCDF store
-    then asks dask's scheduler for a write lock, importing dask.distributed: a third of a
-    second, a quarter of a small sweep's time.
-    """
-    store = _StructureStore(target, set(placeholders))
-    dataset.dump_to_store(store, writer=_ValuesExcept(set(placeholders)))
-    return store
-
-
-class _StructureStore(xr.backends.NetCDF4DataStore):
-    """xarray's netCDF4 store on an open netCDF4.Dataset, that encodes a placeholder's first
-    value only: the encoding (type, fill value, attributes) does not depend on the size."""
-
-    def __init__(self, target, placeholders: set):
-        super().__init__(target)
-        self.placeholders = placeholders
-
-    def encode(self, variables, attributes):
-        first = {name: variable[tuple(slice(0, 1) for _ in variable.dims)]
-                 if name in self.placeholders else variable
-                 for name, variable in variables.items()}
-        encoded, attributes = super().encode(first, attributes)
-        for name in self.placeholders & set(encoded):
-            one = encoded[name]
-            encoded[name] = xr.Variable(one.dims, np.broadcast_to(one.data,
-                                                                  variables[name].shape),
-                                        one.attrs, one.encoding)
-        return encoded, attributes
-
-
-class _ValuesExcept:
-    """xarray's array writer, writing every variable's values but those of ``skipped``."""
-
-    def __init__(self, skipped: set):
-        self.skipped = skipped
-
-    def add(self, source, target, region=None):
-        if target.variable_name not in self.skipped:
-            target[region or ...] = source
+        write_attributes(self._structure(), self.target)
 
 
 def stored_blocks(grid: Grid, start: int, stop: int, outputs: dict, status: np.ndarray):
@@ -318,6 +269,8 @@ def write_netcdf(dataset: xr.Dataset, path) -> Path:
 
 def open_result(path) -> xr.Dataset:
     """Open a sweep's netCDF file (or zarr store) fully into memory (it is closed afterwards)."""
+    import xarray as xr
+
     with xr.open_dataset(path, engine=result_engine(path)) as dataset:
         return dataset.load()
 

@@ -1,13 +1,49 @@
 """Units at the boundary: parse what users write, convert to SI for the models and back."""
 from __future__ import annotations
 
+import os
 import re
+import shutil
+import sys
+import tempfile
 from functools import lru_cache
+from pathlib import Path
 
 import numpy as np
 import pint
 
-UREG = pint.UnitRegistry()
+
+def _registry(folder: Path) -> pint.UnitRegistry:
+    """pint's registry, its parsed definitions kept in ``folder`` for the next process.
+
+    Parsing pint's definitions costs a seventh of a second, every run and every worker; read
+    from pint's own cache they take a hundredth. The cache is written once, whole, into a
+    folder of its own that is then renamed into place, so a process never reads one half
+    written (pint writes its files in place); where it cannot be written (an installation
+    that is not ours to write), or not read, the definitions are parsed as before.
+    """
+    if folder.is_dir():
+        try:
+            return pint.UnitRegistry(cache_folder=folder)
+        except Exception:  # noqa: BLE001 (a cache we cannot read is one we do not use)
+            pass
+    try:
+        folder.parent.mkdir(exist_ok=True)
+        temporary = Path(tempfile.mkdtemp(prefix=folder.name, dir=folder.parent))
+    except OSError:
+        return pint.UnitRegistry()
+    try:
+        registry = pint.UnitRegistry(cache_folder=temporary)
+        os.rename(temporary, folder)  # another process may have been first: then it stays
+    except OSError:
+        pass
+    finally:
+        shutil.rmtree(temporary, ignore_errors=True)
+    return registry
+
+
+UREG = _registry(Path(__file__).parent / "__pycache__"
+                 / f"pint-{pint.__version__}.{sys.implementation.cache_tag}")
 # Engineers write rotational speeds in r/min (DIN 1301) as often as in rpm.
 UREG.define("@alias turn = r = rev")
 

@@ -3,6 +3,7 @@ coordinates, plot-friendly labels; and its numbers do not depend on the chunking
 from pathlib import Path
 
 import cf_units
+import netCDF4
 import numpy as np
 import pint_xarray  # noqa: F401  (registers the .pint accessor)
 import pytest
@@ -14,6 +15,8 @@ from bearing_sweep.testing import assert_same_numbers
 
 DEFINITIONS = Path(__file__).parent / "data" / "every_model"
 MODELS = sorted(all_models())
+#: Besides every model's sweep: a zipped axis with float32 shuffled outputs, a sampled design.
+STRUCTURES = sorted((Path(__file__).parent / "data" / "structure").glob("*.toml"))
 
 
 def test_there_is_a_definition_for_every_model():
@@ -51,20 +54,65 @@ def _udunits_si(unit: cf_units.Unit) -> cf_units.Unit:
 
 
 @pytest.fixture(scope="module")
-def files(tmp_path_factory):
-    """Each model's sweep computed whole and one point per chunk."""
+def runs(tmp_path_factory):
+    """Each model's sweep written as it computes, whole and one point per chunk, and
+    computed in memory then written by xarray."""
     folder = tmp_path_factory.mktemp("every_model")
     made = {}
     with Executor(workers=0) as executor:
-        for name in MODELS:
-            sweep = spec.load(DEFINITIONS / f"{name}.toml")
-            pair = []
+        for definition in [DEFINITIONS / f"{name}.toml" for name in MODELS] + STRUCTURES:
+            sweep, name = spec.load(definition), definition.stem
+            paths = []
             for chunk in (None, 1):
-                path = folder / f"{name}-{chunk}.nc"
-                run_sweep(sweep, path, executor, chunk_size=chunk, progress=False)
-                pair.append(store.open_result(path))
-            made[name] = pair
+                paths.append(folder / f"{name}-{chunk}.nc")
+                run_sweep(sweep, paths[-1], executor, chunk_size=chunk, progress=False)
+            in_memory = run_sweep(sweep, None, executor, progress=False).dataset
+            paths.append(store.write_netcdf(in_memory, folder / f"{name}-xarray.nc"))
+            made[name] = paths
     return made
+
+
+@pytest.fixture(scope="module")
+def files(runs):
+    """Each model's sweep computed whole and one point per chunk, opened."""
+    return {name: [store.open_result(runs[name][chunk]) for chunk in (0, 1)] for name in MODELS}
+
+
+@pytest.mark.parametrize("name", MODELS + [p.stem for p in STRUCTURES])
+def test_the_file_written_as_chunks_arrive_is_the_one_xarray_writes(runs, name):
+    streamed, _, by_xarray = runs[name]
+    ours, theirs = netcdf_layout(streamed), netcdf_layout(by_xarray)
+    assert ours.keys() == theirs.keys()
+    for key in ours:
+        assert ours[key] == theirs[key], (name, key)
+
+
+def netcdf_layout(path) -> dict:
+    """What a netCDF file holds, read without xarray, as comparable values: dimensions,
+    global attributes (but the time of writing) and each variable's type, dimensions,
+    attributes, filters, chunks (outputs' aside: they follow the sweep's chunks) and values,
+    all in the file's order."""
+    def comparable(value):
+        value = np.asarray(value)
+        if value.dtype.kind in "OUS":
+            return value.dtype.kind, value.tolist()
+        return value.dtype.str, value.shape, value.tobytes()
+
+    layout = {}
+    with netCDF4.Dataset(path) as data:
+        data.set_auto_mask(False)
+        layout["dimensions"] = [(n, len(d)) for n, d in data.dimensions.items()]
+        layout["attributes"] = [(k, comparable(data.getncattr(k))) for k in data.ncattrs()
+                                if k != "history"]
+        layout["variables"] = list(data.variables)
+        outputs = {o.name for o in all_models()[data.getncattr("model")].outputs} | {"status"}
+        for name, variable in data.variables.items():
+            layout[name] = (
+                str(variable.dtype), variable.dimensions,
+                [(k, comparable(variable.getncattr(k))) for k in variable.ncattrs()],
+                variable.filters(), None if name in outputs else variable.chunking(),
+                comparable(variable[...]))
+    return layout
 
 
 @pytest.mark.parametrize("name", MODELS)
