@@ -465,7 +465,7 @@ def run_sweep(sweep: Sweep, output=None, executor: Executor | None = None,
                    "model_version": model.version, "points": grid.size,
                    "package_version": expected["package"]}
             if output is not None and not zarr:
-                key["parts_hold"] = hdf5_chunks.parts_hold(direct, sweep.storage)
+                key["parts_hold"] = hdf5_chunks.parts_hold(direct, sweep.storage, grid)
             parts = HeldChunks() if output is None else (
                 zarr_store.StoreParts if zarr else hdf5_chunks.EncodedParts if direct
                 else Parts)(output, key)

@@ -23,13 +23,14 @@ again rather than write them as they are.
 """
 from __future__ import annotations
 
+import hashlib
 import time
 import zlib
 from dataclasses import dataclass
 
 import numpy as np
 
-from .dependence import split_reduced
+from .dependence import split_reduced, stored_dims
 from .grid import Grid
 from .parts import Parts, counts_unreadable, load_counts, saved_counts, write_durably
 from .store import stored_blocks
@@ -51,10 +52,16 @@ def writes_directly(storage, grid: Grid) -> bool:
     return storage.compression in DIRECT_COMPRESSIONS and bool(grid.shape)
 
 
-def parts_hold(direct: bool, storage) -> str:
+def parts_hold(direct: bool, storage, grid: Grid) -> str:
     """What the parts of an interrupted netCDF run hold, for their manifest: chunks encoded
-    for ``storage`` are not another storage's."""
-    return f"hdf5 chunks, {storage.text()}" if direct else "arrays"
+    for ``storage``, and for the variables the model's declaration gives (which outputs are
+    stored per point, on which dimensions, as integers or not: a digest), are not another
+    storage's nor another declaration's, even under the same model version."""
+    if not direct:
+        return "arrays"
+    declared = [(o.name, stored_dims(grid, o) + o.dims, o.dtype) for o in grid.model.outputs]
+    digest = hashlib.sha256(repr(declared).encode()).hexdigest()[:16]
+    return f"hdf5 chunks, {storage.text()}, outputs {digest}"
 
 
 @dataclass(frozen=True)

@@ -145,7 +145,10 @@ def test_a_model_whose_output_varies_along_a_dropped_axis_stops_the_sweep(toy, t
     path = tmp_path / "liar.toml"
     path.write_text(lying)
     result = tmp_path / "liar.nc"
-    assert cli.main(["run", str(path), "-o", str(result), "--workers", "0", "--quiet"]) == 1
+    # Chunks of one row of a each: the rows disagree, each alone does not (a chunk whose own
+    # points disagree is refused where it is computed, and not kept).
+    assert cli.main(["run", str(path), "-o", str(result), "--workers", "0", "--chunk-size", "4",
+                     "--quiet"]) == 1
     error = capsys.readouterr().err
     assert error.startswith("error: model 'liar', output 'product'") and error.count("\n") == 1
     assert "the computed chunks are kept" in error

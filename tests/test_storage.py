@@ -364,8 +364,39 @@ def test_parts_kept_by_a_version_before_encoded_chunks_are_not_read(tmp_path, ca
     monkeypatch.undo()
     manifest = tmp_path / "out.nc.parts" / "manifest.json"
     earlier = json.loads(manifest.read_text())
-    assert earlier.pop("parts_hold") == "hdf5 chunks, float64, zlib level 1"
+    assert earlier.pop("parts_hold").startswith("hdf5 chunks, float64, zlib level 1, outputs ")
     manifest.write_text(json.dumps(earlier))
     capsys.readouterr()
     assert cli.main(arguments) == 0
     assert "storage changed: discarding 3 finished chunks" in capsys.readouterr().err
+
+
+def test_parts_of_another_declaration_of_the_model_are_not_read(tmp_path, capsys, monkeypatch):
+    # The same model version declaring centrifugal_force on every point: the parts' chunks
+    # hold it on the speed alone, none on every point.
+    import dataclasses
+
+    sweep, size, block = direct_sweep("1 axis, edge")
+    definition = tmp_path / "direct.toml"
+    definition.write_text(sweep.text)
+    output = tmp_path / "out.nc"
+    arguments = ["run", str(definition), "-o", str(output), "--workers", "0", "--chunk-size",
+                 str(size), "--quiet"]
+
+    def interrupted(*args):
+        raise KeyboardInterrupt
+
+    monkeypatch.setattr("bearing_sweep.store.ChunkWriter.finish", interrupted)
+    assert cli.main(arguments) == 130
+    monkeypatch.undo()
+    model = registry.get_model("crb_radial")
+    outputs = tuple(dataclasses.replace(o, depends_on=None) if o.name == "centrifugal_force"
+                    else o for o in model.outputs)
+    monkeypatch.setitem(registry._MODELS, "crb_radial",
+                        registry.Model(**{**model.__dict__, "outputs": outputs}))
+    capsys.readouterr()
+    assert cli.main(arguments) == 0
+    assert "storage changed: discarding 3 finished chunks" in capsys.readouterr().err
+    with netCDF4.Dataset(output) as data:
+        assert data["centrifugal_force"].dimensions[0] == "radial_load"
+        assert not np.ma.is_masked(data["centrifugal_force"][:])
