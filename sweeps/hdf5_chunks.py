@@ -18,8 +18,9 @@ never open in both at once (:func:`store.result_file`). A grid of one point is w
 netCDF4 (its variables are not chunked).
 
 An interrupted run keeps each chunk as the worker returned it (:class:`EncodedParts`); the
-manifest names the storage they were encoded for, so that a run storing otherwise computes them
-again rather than write them as they are.
+manifest names the storage and the outputs' declaration they were encoded for
+(:func:`parts_hold`), so that a run storing otherwise computes them again rather than write
+them as they are.
 """
 from __future__ import annotations
 
@@ -96,7 +97,7 @@ def layouts(target, names) -> dict[str, Layout]:
         order = {"native": "=", "little": "<", "big": ">"}[variable.endian()]
         fill = (variable.getncattr("_FillValue") if "_FillValue" in variable.ncattrs()
                 else netCDF4.default_fillvals[variable.dtype.str[1:]])
-        compressor = next((name for name in COMPRESSORS if filters.get(name)), None)
+        compressor = next((one for one in COMPRESSORS if filters.get(one)), None)
         found[name] = Layout(variable.dtype.newbyteorder(order).str, tuple(chunking),
                              np.asarray(fill).item(), bool(filters.get("shuffle")),
                              compressor, int(filters.get("complevel", 0)))
