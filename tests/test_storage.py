@@ -291,27 +291,34 @@ def test_two_workers_encode_the_same_file(tmp_path):
     assert_same_file(tmp_path / "two.nc", netcdf4_written(tmp_path, sweep), block)
 
 
-def test_an_interrupted_run_writes_its_encoded_chunks_on_resuming(tmp_path, capsys,
-                                                                  monkeypatch):
-    sweep, size, block = direct_sweep("2 axes, odd size, edge, float32")
+def interrupted_run(tmp_path, monkeypatch, case: str, *options):
+    """Run ``case``'s sweep (:func:`direct_sweep`) with the CLI in-process, in its blocks,
+    interrupted when every chunk is computed but the file not yet complete. Returns the
+    definition, the output, the CLI's arguments (without ``options``) and the block."""
+    sweep, size, block = direct_sweep(case)
     definition = tmp_path / "direct.toml"
     definition.write_text(sweep.text)
     output = tmp_path / "out.nc"
     arguments = ["run", str(definition), "-o", str(output), "--workers", "0", "--chunk-size",
                  str(size), "--quiet"]
 
-    def interrupted(*args):  # every chunk computed, the file not yet complete
+    def interrupted(*args):
         raise KeyboardInterrupt
 
     monkeypatch.setattr("bearing_sweep.store.ChunkWriter.finish", interrupted)
+    assert cli.main(arguments + list(options)) == 130
+    monkeypatch.undo()
+    return definition, output, arguments, block
+
+
+def test_an_interrupted_run_writes_its_encoded_chunks_on_resuming(tmp_path, capsys,
+                                                                  monkeypatch):
     # chunks compressed by zstd are not this file's, compressed by zlib
-    assert cli.main(arguments + ["--compression", "zstd"]) == 130
-    monkeypatch.undo()
-    assert cli.main(arguments) == 0
+    interrupted_run(tmp_path, monkeypatch, "2 axes, odd size, edge, float32",
+                    "--compression", "zstd")
+    definition, output, arguments, block = interrupted_run(
+        tmp_path, monkeypatch, "2 axes, odd size, edge, float32")
     assert "storage changed: discarding 3 finished chunks" in capsys.readouterr().err
-    monkeypatch.setattr("bearing_sweep.store.ChunkWriter.finish", interrupted)
-    assert cli.main(arguments) == 130
-    monkeypatch.undo()
 
     def computed(*args):
         raise AssertionError("a finished chunk computed again")
@@ -350,18 +357,7 @@ def test_a_chunk_leaves_its_worker_compressed_as_the_file_stores_it(tmp_path):
 def test_parts_kept_by_a_version_before_encoded_chunks_are_not_read(tmp_path, capsys,
                                                                     monkeypatch):
     # Its parts held each chunk's arrays, under a manifest that did not say so.
-    sweep, size, block = direct_sweep("1 axis, edge")
-    definition = tmp_path / "direct.toml"
-    definition.write_text(sweep.text)
-    arguments = ["run", str(definition), "-o", str(tmp_path / "out.nc"), "--workers", "0",
-                 "--chunk-size", str(size), "--quiet"]
-
-    def interrupted(*args):
-        raise KeyboardInterrupt
-
-    monkeypatch.setattr("bearing_sweep.store.ChunkWriter.finish", interrupted)
-    assert cli.main(arguments) == 130
-    monkeypatch.undo()
+    _, _, arguments, _ = interrupted_run(tmp_path, monkeypatch, "1 axis, edge")
     manifest = tmp_path / "out.nc.parts" / "manifest.json"
     earlier = json.loads(manifest.read_text())
     assert earlier.pop("parts_hold").startswith("hdf5 chunks, float64, zlib level 1, outputs ")
@@ -376,19 +372,7 @@ def test_parts_of_another_declaration_of_the_model_are_not_read(tmp_path, capsys
     # hold it on the speed alone, none on every point.
     import dataclasses
 
-    sweep, size, block = direct_sweep("1 axis, edge")
-    definition = tmp_path / "direct.toml"
-    definition.write_text(sweep.text)
-    output = tmp_path / "out.nc"
-    arguments = ["run", str(definition), "-o", str(output), "--workers", "0", "--chunk-size",
-                 str(size), "--quiet"]
-
-    def interrupted(*args):
-        raise KeyboardInterrupt
-
-    monkeypatch.setattr("bearing_sweep.store.ChunkWriter.finish", interrupted)
-    assert cli.main(arguments) == 130
-    monkeypatch.undo()
+    _, output, arguments, _ = interrupted_run(tmp_path, monkeypatch, "1 axis, edge")
     model = registry.get_model("crb_radial")
     outputs = tuple(dataclasses.replace(o, depends_on=None) if o.name == "centrifugal_force"
                     else o for o in model.outputs)
