@@ -457,7 +457,7 @@ def run_sweep(sweep: Sweep, output=None, executor: Executor | None = None,
                 grid, executor.worker_count() if parallel else 0)
             zarr = is_zarr(output)
             if zarr:
-                from . import zarr_store  # zarr and xarray: only for a store
+                from . import zarr_store  # zarr: only for a store
             # A netCDF file's chunks encoded by the workers, the driver writing their bytes.
             direct = output is not None and not zarr and hdf5_chunks.writes_directly(
                 sweep.storage, grid)

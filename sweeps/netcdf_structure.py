@@ -34,14 +34,9 @@ def write_structure(labelled, target, placeholders=frozenset()):
     for name, (dims, values, attrs) in variables.items():
         encoding = labelled.encodings.get(name, {})
         values = np.asarray(values)
-        stored = np.dtype(encoding.get("dtype", values.dtype))
-        if "_FillValue" in encoding:
-            fill = encoding["_FillValue"]
-        else:  # xarray's default: NaN for floating-point values
-            fill = np.nan if stored.kind == "f" else None
+        stored, fill = stored_as(values, encoding)
         variable = target.createVariable(
-            name, str if stored.kind in "OU" else stored, dims,
-            fill_value=None if fill is None else stored.type(fill),
+            name, str if stored.kind in "OU" else stored, dims, fill_value=fill,
             **{key: encoding[key] for key in _FILTERS if key in encoding})
         attrs = dict(attrs)
         if name in listed:
@@ -52,18 +47,35 @@ def write_structure(labelled, target, placeholders=frozenset()):
     write_attributes(labelled, target)
 
 
+def stored_as(values: np.ndarray, encoding: dict) -> tuple:
+    """The type a variable's ``values`` are stored in and their fill value (None: none), as
+    xarray stores them: the ``encoding``'s ``dtype`` and ``_FillValue``, and NaN for
+    floating-point values without one."""
+    stored = np.dtype(encoding.get("dtype", values.dtype))
+    if "_FillValue" in encoding:
+        fill = encoding["_FillValue"]
+    else:
+        fill = np.nan if stored.kind == "f" else None
+    return stored, None if fill is None else stored.type(fill)
+
+
 def write_attributes(labelled, target):
-    """Set ``target``'s global attributes to ``labelled``'s, in their order, with xarray's
-    global ``coordinates`` where a coordinate spans no variable."""
+    """Set ``target``'s global attributes to ``labelled``'s (:func:`global_attributes`)."""
+    for name in target.ncattrs():
+        target.delncattr(name)
+    for name, value in global_attributes(labelled).items():
+        target.setncattr(name, value)
+
+
+def global_attributes(labelled) -> dict:
+    """``labelled``'s global attributes, in their order, with xarray's global
+    ``coordinates`` where a coordinate spans no variable."""
     attributes = dict(labelled.attrs)
     unlisted = _non_dimension_coordinates(labelled) - {
         name for text in coordinate_lists(labelled).values() for name in text.split()}
     if unlisted:
         attributes["coordinates"] = " ".join(sorted(unlisted))
-    for name in target.ncattrs():
-        target.delncattr(name)
-    for name, value in attributes.items():
-        target.setncattr(name, value)
+    return attributes
 
 
 def coordinate_lists(labelled) -> dict:

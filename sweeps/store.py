@@ -158,13 +158,7 @@ class ChunkWriter:
         write_structure(structure, target, {o.name for o in grid.model.outputs} | {"status"})
 
     def _structure(self):
-        """The labelled dataset with placeholders for the values, which are never written."""
-        grid = self.grid
-        placeholders = {o.name: np.broadcast_to(np.nan, _flat_shape(grid, o))
-                        for o in grid.model.outputs}
-        status = np.broadcast_to(np.int8(0), (grid.size,))
-        return labelled(self.sweep, grid, placeholders, status, self.provenance,
-                        sorted(self.errors))
+        return structure(self.sweep, self.grid, self.provenance, sorted(self.errors))
 
     def write(self, start: int, stop: int, part: dict):
         """Write the values of points ``start..stop-1`` (a computed ``part``); those of an
@@ -187,6 +181,15 @@ class ChunkWriter:
             self.target.variables[name][...] = stored_reduction(
                 reduction, reduction.output.dtype == "int")
         write_attributes(self._structure(), self.target)
+
+
+def structure(sweep: Sweep, grid: Grid, provenance: dict, errors=()):
+    """The sweep's labelled dataset (:func:`labels.labelled`) with placeholders for the
+    outputs' and the status' values, which are never written: a result's structure."""
+    placeholders = {o.name: np.broadcast_to(np.nan, _flat_shape(grid, o))
+                    for o in grid.model.outputs}
+    status = np.broadcast_to(np.int8(0), (grid.size,))
+    return labelled(sweep, grid, placeholders, status, provenance, errors)
 
 
 def stored_blocks(grid: Grid, start: int, stop: int, outputs: dict, status: np.ndarray):

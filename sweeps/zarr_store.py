@@ -30,15 +30,15 @@ from dataclasses import dataclass
 from pathlib import Path
 
 import numpy as np
-import xarray as xr
 
+from . import zarr_structure
 from .dependence import reductions, split_reduced
 from .grid import Grid, block_shape
-from .labels import labelled_dataset
+from .netcdf_structure import global_attributes, stored_as
 from .parts import (Parts, counts_unreadable, fsync_path, load_counts, saved_counts,
                     write_durably)
 from .spec import Sweep
-from .store import _flat_shape, provenance, stored_blocks, stored_reduction, summed
+from .store import provenance, stored_blocks, stored_reduction, structure, summed
 
 #: How many files a task flushes to the disk at once.
 FLUSHING_THREADS = 8
@@ -47,34 +47,20 @@ FLUSHING_THREADS = 8
 ZARR_FORMAT = 2
 
 
-def labelled_structure(sweep: Sweep, grid: Grid, scheduler: str, errors=()) -> xr.Dataset:
-    """The sweep's labelled dataset with outputs and status that have no values (lazy dask
-    arrays, never computed): what the store holds but the values."""
-    import dask.array
-
-    lazy = {o.name: dask.array.full(_flat_shape(grid, o), np.nan, chunks=-1)
-            for o in grid.model.outputs}
-    status = dask.array.zeros(grid.size, dtype=np.int8, chunks=-1)
-    return labelled_dataset(sweep, grid, lazy, status, provenance(scheduler), errors)
-
-
 def write_structure(sweep: Sweep, grid: Grid, block: tuple, scheduler: str, path: Path):
     """Write the store's structure at ``path``: coordinates, attributes, and the outputs and
     status without values, in zarr chunks of ``block`` along the grid's axes (whole along
     their own), each stored as the netCDF file stores it (``[output]``: type, fill value,
-    compression)."""
-    dataset = labelled_structure(sweep, grid, scheduler)
+    compression). Its metadata consolidated: a task reads one file, not two per variable."""
+    labelled = structure(sweep, grid, provenance(scheduler))
     sizes = dict(zip(grid.dims, block))
+    layouts = {}
     for name in [o.name for o in grid.model.outputs] + ["status"]:
-        variable = dataset[name]
-        kept = {key: value for key, value in variable.encoding.items()
-                if key in ("dtype", "_FillValue")}
-        stored = np.dtype(kept.get("dtype", variable.dtype))
-        variable.encoding = kept | sweep.storage.zarr_codecs(stored.itemsize) | {
-            "chunks": tuple(sizes.get(d, n) for d, n in zip(variable.dims, variable.shape))}
-    # The structure only: the lazy values are queued for a write that is never made. Its
-    # metadata consolidated: a task reads one file, not two per variable.
-    dataset.to_zarr(path, mode="w", compute=False, zarr_format=ZARR_FORMAT, consolidated=True)
+        dims, values, _ = labelled.data_vars[name]
+        stored, _ = stored_as(values, labelled.encodings[name])
+        layouts[name] = sweep.storage.zarr_codecs(stored.itemsize) | {
+            "chunks": tuple(sizes.get(d, n) for d, n in zip(dims, values.shape))}
+    zarr_structure.write_structure(labelled, path, layouts, ZARR_FORMAT)
 
 
 @dataclass(frozen=True)
@@ -163,9 +149,8 @@ class StoreParts(Parts):
         history), consolidate its metadata, and give it the output's name; an earlier result
         there is replaced."""
         import zarr
-        from xarray.backends.zarr import encode_zarr_attr_value
 
-        attributes = labelled_structure(sweep, grid, scheduler, errors).attrs
+        attributes = global_attributes(structure(sweep, grid, provenance(scheduler), errors))
         group = zarr.open_group(self.store, mode="r+", zarr_format=ZARR_FORMAT,
                                 use_consolidated=False)
         reduced = reductions(grid)
@@ -174,8 +159,7 @@ class StoreParts(Parts):
                 reduced[name].add_firsts(points, values)
         for name, reduction in reduced.items():
             group[name][...] = stored_reduction(reduction, reduction.output.dtype == "int")
-        group.attrs.put({key: encode_zarr_attr_value(value)
-                         for key, value in attributes.items()})
+        group.attrs.put(zarr_structure.attribute_values(attributes))
         zarr.consolidate_metadata(str(self.store), zarr_format=ZARR_FORMAT)
         flush([self.store / ".zattrs", self.store / ".zmetadata", self.store])
         replace_folder(self.store, Path(output))

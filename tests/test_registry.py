@@ -48,7 +48,7 @@ def test_a_sweep_of_one_model_imports_no_other_models_module(tmp_path):
     # (crb_radial compiles its rollers' balance with it); neither needs scipy.integrate,
     # matplotlib, scipy.stats or another model's module (each costs a fraction of a second),
     # nor, run in-process, dask.distributed; nor xarray (nor the dask.array it imports as soon
-    # as it makes a variable): the file is written with netCDF4 alone.
+    # as it makes a variable): the file is written with netCDF4 alone, a store with zarr.
     import subprocess
     import sys
 
@@ -65,9 +65,11 @@ def test_a_sweep_of_one_model_imports_no_other_models_module(tmp_path):
               "print(sorted(m for m in ('numba', 'bearing_sweep.models.cylindrical') + unwanted "
               "if m in sys.modules))\n"
               "cli.main(['run', 'd.toml', '-o', 'd.nc'])\n"
+              "print(sorted(m for m in unwanted if m in sys.modules))\n"
+              "cli.main(['run', 'h.toml', '-o', 'h.zarr'])\n"
               "print(sorted(m for m in unwanted if m in sys.modules))\n")
     done = subprocess.run([sys.executable, "-c", script], cwd=tmp_path, capture_output=True,
                           text=True, timeout=120)
     assert done.returncode == 0, done.stderr
     printed = [line for line in done.stdout.splitlines() if line.startswith("[")]
-    assert printed == ["[]", "[]"]
+    assert printed == ["[]", "[]", "[]"]
