@@ -175,8 +175,9 @@ class Parts:
             same = found is not None and {k: found.get(k) for k in self.key} == self.key
             if fresh or not same:
                 if count:
-                    log(f"{'--fresh' if fresh else 'the definition, model, package or storage changed'}: "
-                        f"discarding {count} finished chunks in {self.folder}")
+                    why = "--fresh" if fresh else (
+                        "the definition, model, package or storage changed")
+                    log(f"{why}: discarding {count} finished chunks in {self.folder}")
                 shutil.rmtree(self.folder)
             else:
                 count -= self._remove_unreadable(log)
