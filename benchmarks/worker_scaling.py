@@ -8,7 +8,8 @@ machine's speed drifts by tens of percent, so the runs alternate and the median 
 ratios is reported (goal: at least 1.8).
 
 Two workers can only be measured on two idle cores: the machine's load average is recorded
-before the runs (the benchmark adds nothing then) and after each pair (it adds at most its
+before the runs, once the minute before has passed out of it (up to 90 s: the benchmark adds
+nothing then, but a script run just before still counts), and after each pair (it adds at most its
 two workers), and the benchmark says "machine too busy to measure" when others' load exceeds
 half a core. ``python benchmarks/worker_scaling.py POINTS PAIRS`` measures another size
 (default 1e6 points, 3 pairs: about five minutes on two quiet cores at crb_radial's 6e-5 s per
@@ -62,8 +63,18 @@ def paired_times(folder: Path, points: int, pairs: int):
     return np.array(times[1]), np.array(times[2]), np.array(loads)
 
 
+def settled_load(seconds: float = 90.0) -> float:
+    """The one-minute load average once it has fallen below ``BUSY``, or after ``seconds``:
+    it still carries the minute before (a benchmark run just before this one), which would
+    count as others' load."""
+    deadline = time.monotonic() + seconds
+    while os.getloadavg()[0] > BUSY and time.monotonic() < deadline:
+        time.sleep(5)
+    return os.getloadavg()[0]
+
+
 def main(points: int = POINTS, pairs: int = PAIRS):
-    before = os.getloadavg()[0]
+    before = settled_load()
     with tempfile.TemporaryDirectory() as folder:
         one, two, loads = paired_times(Path(folder), points, pairs)
         a, b = (store.open_result(Path(folder) / f"w{w}.nc") for w in (1, 2))
