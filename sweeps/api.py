@@ -65,13 +65,16 @@ def run(definition, *, output=None, client=None, workers=None, progress=True, en
     """
     sweep = _sweep(definition)
     sweep.storage = spec.storage_options(sweep.storage, encoding, compression,
-                                         lambda key: f"{key}=")
+                                         lambda key: f"argument {key}")
+    output = _path_argument(output, "output")
+    _flag_argument(progress, "progress")
     if workers is not None and (isinstance(workers, bool) or not isinstance(workers, int)
                                 or workers < 0):
         raise SpecError(f"workers={workers!r}: expected 0 (in this process) or more workers")
     if workers is not None and client is not None:
         raise SpecError("workers and client exclude each other: the client's cluster has its "
                         "own workers")
+    _client_argument(client)
     note = (lambda message: print(message, file=sys.stderr)) if progress else None
     with Executor(workers, client=client) as executor:
         summary = run_sweep(sweep, output, executor, progress=progress, log=note)
@@ -114,7 +117,9 @@ def analyze(result, *, output=None) -> xr.Dataset:
         Not a sampled result, no such file, or an output path that must not be written.
     """
     where = "the dataset"
+    output = _path_argument(output, "output")
     if not isinstance(result, xr.Dataset):
+        result = _path_argument(result, "result", "a sampled result: an xarray.Dataset or")
         where = str(result)
         if not is_result(result):
             raise SpecError(f"{result}: no such result file")
@@ -161,6 +166,9 @@ def describe(name: str) -> dict:
     SpecError
         No model has that name (the message names the closest).
     """
+    if not isinstance(name, str):
+        raise SpecError(f"name={name!r}: expected a model's name, a string (list_models() "
+                        "gives them)")
     model = spec.find_model(name)
     function = model.function
     return {
@@ -190,3 +198,32 @@ def _sweep(definition) -> Sweep:
         return spec.load(definition)
     raise SpecError(f"a definition is TOML text, a path or a dict, not "
                     f"{type(definition).__name__}")
+
+
+def _path_argument(value, name: str, expected: str = "") -> str | None:
+    """A path given as an argument, as a string; None stays None."""
+    if value is None:
+        return None
+    if isinstance(value, os.PathLike):
+        value = os.fspath(value)
+    if not isinstance(value, str) or not value.strip():
+        raise SpecError(f"{name}={value!r}: expected {expected or 'a'} path (a str or "
+                        "os.PathLike), not " + ("an empty one" if isinstance(value, str)
+                                                else type(value).__name__))
+    return value
+
+
+def _client_argument(client):
+    if client is None:
+        return
+    if isinstance(client, str):
+        raise SpecError(f"client={client!r}: expected a dask.distributed.Client; for a "
+                        f"scheduler's address, give Client({client!r})")
+    if not all(hasattr(client, method) for method in ("submit", "scheduler_info")):
+        raise SpecError(f"client={client!r}: expected a dask.distributed.Client, not "
+                        f"{type(client).__name__}")
+
+
+def _flag_argument(value, name: str):
+    if not isinstance(value, bool):
+        raise SpecError(f"{name}={value!r}: expected True or False")

@@ -21,6 +21,7 @@ from dataclasses import replace
 from .models.catalogue import PRESETS
 from .models.registry import Input, Model, all_models
 from . import sample, units
+from .spec import AXIS_NAME, RESERVED_NAMES
 from .storage import ENCODINGS, Storage
 
 DRAFT = "http://json-schema.org/draft-07/schema#"
@@ -98,6 +99,8 @@ def _definition(model: Model) -> dict:
                 "fixed": {"type": "object", "additionalProperties": False, "properties": fixed,
                           "description": "one value for each parameter held fixed"},
                 "axes": {"type": "object", "properties": axes, "additionalProperties": zipped,
+                         "propertyNames": {"pattern": f"^{AXIS_NAME.pattern}$",
+                                           "not": {"enum": sorted(RESERVED_NAMES)}},
                          "description": "each key a dimension of the grid, in order: a "
                                         "parameter's values, or a table of zipped parameters"},
                 "sample": _sample(model),

@@ -8,6 +8,7 @@ from __future__ import annotations
 import difflib
 import hashlib
 import json
+import re
 import tomllib
 from dataclasses import dataclass, field, replace
 from pathlib import Path
@@ -21,7 +22,11 @@ from .storage import COMPRESSIONS, DEFAULT_LEVELS, ENCODINGS, Storage
 
 _RANGE_KEYS = {"start", "stop", "num", "step", "units"}
 _VALUES_KEYS = {"values", "units"}
-_RESERVED = {"status", "sample"}
+#: Names a result or its analysis uses: the status of each point, the [sample] axis and
+#: the blocks of its Saltelli design, and the dimensions of `analyze`'s output.
+RESERVED_NAMES = {"status", "sample", "saltelli_block", "statistic", "output", "input", "bound"}
+#: A name of a variable or dimension (CF conventions 2.3).
+AXIS_NAME = re.compile(r"[A-Za-z][A-Za-z0-9_]*")
 #: The keys of a [sample] table that are not sampled parameters.
 _SAMPLE_SETTINGS = ("n", "method", "seed")
 #: The keys of an [output] table.
@@ -30,6 +35,9 @@ _OUTPUT_KEYS = ("encoding", "compression", "shuffle")
 MAX_POINTS = 10**9
 #: Most values on one axis (each is validated on its own before any computing).
 MAX_AXIS_VALUES = 10**6
+#: Two values of an axis closer than this, relative to their size, are one value written
+#: twice (rounding in a unit conversion is some 1e-16; a file stores 15 digits).
+SAME_VALUE = 1e-9
 
 
 class SpecError(Exception):
@@ -108,6 +116,7 @@ def load(path) -> Sweep:
 
 def parse(text: str, where: str = "<definition>") -> Sweep:
     """Validate the sweep definition ``text``; ``where`` names it in error messages."""
+    text = text.removeprefix("\ufeff")  # the byte order mark some editors write first
     try:
         document = tomllib.loads(text)
     except tomllib.TOMLDecodeError as error:
@@ -257,8 +266,14 @@ class _Parser:
         head = self.table(document, "sweep", ("model", "bearing", "title"))
         name = head.get("model")
         if not isinstance(name, str):
-            self.fail("sweep.model", "missing: name a model, one of "
+            self.fail("sweep.model", ("missing" if name is None else f"{_written(name)} is not "
+                      "a model's name (a string)") + ": name a model, one of "
                       + ", ".join(sorted(all_models())))
+        for key in ("bearing", "title"):
+            if key in head and not isinstance(head[key], str):
+                self.fail(f"sweep.{key}", f"{_written(head[key])}: expected a string ("
+                          + ("a preset's name: `bearing-sweep presets` lists them)"
+                             if key == "bearing" else "the title of the result)"))
         try:
             model = find_model(name)
         except SpecError as error:
@@ -513,11 +528,17 @@ class _Parser:
             self.fail(key, f"unknown parameter {name!r} of model {model.name}"
                       + suggestion(name, inputs)
                       + f" (`bearing-sweep describe {model.name}` lists them)")
-        taken = {o.name for o in model.outputs} | {d for o in model.outputs for d in o.dims}
-        if name in taken | _RESERVED:
+        if not AXIS_NAME.fullmatch(name):
+            self.fail(key, f"{name!r} cannot name an axis: a name starts with a letter and "
+                      "holds letters, digits and underscores (CF conventions 2.3; netCDF and "
+                      "zarr read other characters as paths or refuse them)")
+        taken = {o.name for o in model.outputs} | {d for o in model.outputs for d in o.dims} \
+            | {f"{o.name}_units" for o in model.outputs if o.entry_units}
+        if name in taken | RESERVED_NAMES:
             self.fail(key, f"the axis name {name!r} is taken by an output or its dimension"
                       if name in taken else f"the axis name {name!r} is reserved (for the "
-                      "status of each point and the [sample] axis)")
+                      "status of each point, the [sample] axis and the analysis of a sampled "
+                      "result)")
         values = {}
         for parameter, column in raw.items():
             if parameter == "labels":
@@ -574,8 +595,13 @@ class _Parser:
         unit = raw.get("units")
         start = self.value(spec, raw["start"], f"{key}.start", unit, check_range=False)
         stop = self.value(spec, raw["stop"], f"{key}.stop", unit, check_range=False)
-        stop_shown = units.convert(stop.shown, units.parse_unit(stop.unit), units.parse_unit(
-            start.unit)) if start.unit not in ("", "1") else stop.shown
+        with np.errstate(over="ignore", invalid="ignore"):
+            stop_shown = units.convert(stop.shown, units.parse_unit(stop.unit),
+                                       units.parse_unit(start.unit)) \
+                if start.unit not in ("", "1") else stop.shown
+        if not np.isfinite(stop_shown):
+            self.fail(f"{key}.stop", f"{_written(raw['stop'])} is too large to compute with in "
+                      f"the unit of the start ({start.unit})")
         if "num" in raw:
             num = raw["num"]
             if isinstance(num, bool) or not isinstance(num, int) or num < 1:
@@ -586,8 +612,10 @@ class _Parser:
             step = self.value(spec, raw["step"], f"{key}.step", unit, check_range=False)
             step_shown = step.shown
             if start.unit not in ("", "1"):  # a step is a difference: 10 K on a degC axis
-                step_shown = units.convert(step.shown, units.as_difference(units.parse_unit(
-                    step.unit)), units.as_difference(units.parse_unit(start.unit)))
+                with np.errstate(over="ignore", invalid="ignore", under="ignore"):
+                    step_shown = units.convert(step.shown, units.as_difference(
+                        units.parse_unit(step.unit)), units.as_difference(units.parse_unit(
+                            start.unit)))
             if not step_shown > 0:
                 self.fail(f"{key}.step", "the step must be positive")
             with np.errstate(over="ignore", divide="ignore", invalid="ignore"):
@@ -609,14 +637,27 @@ class _Parser:
         first = self.value(spec, float(shown[0]), key, unit_text)
         declared = units.parse_unit(spec.unit)
         unit = units.revolutions(units.parse_unit(unit_text), declared)
-        with np.errstate(over="ignore", invalid="ignore"):
-            si = units.to_si(shown, unit)
-        if not np.all(np.isfinite(si)):
-            self.fail(key, f"a value is too large to compute with (not finite in SI units); "
-                      f"{spec.name} must be {spec.range_text()}")
+        si = self.finite_si(spec, shown, unit, key, "a value of the range")
         self.in_range(spec, units.convert(shown, unit, declared), spec.unit, key, list(shown))
         return [first] + [Value(float(a), float(b), unit_text)
                           for a, b in zip(si[1:], shown[1:])]
+
+    def finite_si(self, spec: Input, magnitude, unit, key: str, raw):
+        """``magnitude`` in ``unit`` converted to SI; a NaN, an infinity or a value whose
+        conversion overflows is refused, each for what it is."""
+        magnitude = np.asarray(magnitude, dtype=float)
+        if np.isnan(magnitude).any():
+            self.fail(key, f"{_written(raw)} is not a number (NaN); {spec.name} must be "
+                      f"{spec.range_text()}")
+        if np.isinf(magnitude).any() and not isinstance(raw, str):
+            self.fail(key, f"{_written(raw)} is infinite; {spec.name} must be "
+                      f"{spec.range_text()}")
+        with np.errstate(over="ignore", invalid="ignore"):
+            si = units.to_si(magnitude, unit)
+        if not np.all(np.isfinite(si)):
+            self.fail(key, f"{_written(raw)} is too large to compute with (not finite in SI "
+                      f"units); {spec.name} must be {spec.range_text()}")
+        return si
 
     def axis_size(self, count, key: str):
         """Refuse an axis too long to validate, from its arithmetic alone."""
@@ -625,18 +666,21 @@ class _Parser:
                       f"{MAX_AXIS_VALUES:.0e} on one axis; take fewer values or a larger step")
 
     def unique(self, values: list[Value], key: str):
-        """Refuse an axis that names one value twice ("1 kN" and "1000 N"): its index would
-        not be unique."""
-        seen = {}
-        for index, value in enumerate(values):
-            si = value.si
-            token = (si,) if isinstance(si, (str, int, float)) else (
-                np.shape(si), np.asarray(si, dtype=float).tobytes())
-            if token in seen:
+        """Refuse an axis that names one value twice ("1 kN" and "1000 N", "70 degC" and
+        "158 degF"): its index would not be unique. Quantities are compared in SI, as equal
+        within :data:`SAME_VALUE` of their size, so that two spellings of one value that
+        differ only by rounding in the conversion count as one."""
+        order = sorted(range(len(values)), key=lambda i: _order_key(values[i].si))
+        for before, after in zip(order, order[1:]):
+            first, second = values[before].si, values[after].si
+            same = first == second if isinstance(first, str) or isinstance(second, str) \
+                else abs(first - second) <= SAME_VALUE * max(abs(first), abs(second))
+            if same:
+                index, earlier = max(before, after), min(before, after)
+                value = values[index]
                 self.fail(f"{key}[{index}]", f"{_plain(value.shown)!s}"
                           f"{'' if value.unit in ('', '1') else ' ' + value.unit} is the same "
-                          f"value as {key}[{seen[token]}]: each value of an axis must differ")
-            seen[token] = index
+                          f"value as {key}[{earlier}]: each value of an axis must differ")
 
     def same_unit(self, values: list[Value]) -> list[Value]:
         """Express every value of an axis in the unit of its first value."""
@@ -685,11 +729,7 @@ class _Parser:
                 hint = " (Hz is ambiguous for a rotational speed: write rpm, r/min or 1/min)"
             self.fail(key, f"units {unit_text!r} do not fit {spec.name}, which is in units like "
                       f"{spec.unit!r}{hint}")
-        with np.errstate(over="ignore", invalid="ignore"):
-            si = units.to_si(magnitude, unit)
-        if not np.all(np.isfinite(si)):
-            self.fail(key, f"{raw!r} is too large to compute with (not finite in SI units); "
-                      f"{spec.name} must be {spec.range_text()}")
+        si = self.finite_si(spec, magnitude, unit, key, raw)
         if check_range:
             try:
                 in_declared = units.convert(magnitude, unit, declared)
@@ -869,6 +909,18 @@ def stack(values: list[Value]) -> np.ndarray:
         size = max(a.size for a in arrays)
         arrays = [np.broadcast_to(a, (size,)) for a in arrays]
     return np.stack(arrays)
+
+
+def _written(raw) -> str:
+    """A value as the definition wrote it, for a message: TOML's nan and inf by name."""
+    if isinstance(raw, float) and not np.isfinite(raw):
+        return "nan" if np.isnan(raw) else ("-inf" if raw < 0 else "inf")
+    return repr(raw) if isinstance(raw, (str, float, int)) else str(raw)
+
+
+def _order_key(si) -> tuple:
+    """Sorts an axis' values: strings (choices) apart from numbers."""
+    return (1, si, 0.0) if isinstance(si, str) else (0, "", float(si))
 
 
 def _plain(number) -> str:

@@ -54,18 +54,64 @@ class UnitError(ValueError):
     """A unit that cannot be read or does not fit; the message is for the user."""
 
 
+#: The longest unit text read, and the largest power in one: a unit that needs more is a
+#: mistake, and pint's evaluation of one ("N*N*...", "N^(2^(2^9))") recurses or never ends.
+MAX_UNIT_LENGTH = 64
+MAX_POWER = 10
+_NUMBER = r"[-+]?(?:\d+\.?\d*|\.\d+)(?:[eE][-+]?\d+)?"
+_POWER = re.compile(r"(?:\^|\*\*)\s*(?:(" + _NUMBER + r")|\(\s*(" + _NUMBER + r")\s*(?:/\s*("
+                    + _NUMBER + r")\s*)?\))(?![\w.]*\s*(?:\^|\*\*))")
+_POWER_SIGN = re.compile(r"\^|\*\*")
+
+
 def parse_unit(text: str) -> pint.Unit:
     """The pint unit for ``text`` ("mm", "N/mm^(10/9)", "rpm", "1", ...)."""
+    if not isinstance(text, str):
+        raise UnitError(f"{text!r} is not a unit: expected a string")
+    problem = _unreadable(text)
+    if problem:
+        raise UnitError(f"unknown unit {_short(text)!r} ({problem})")
     try:
         return UREG.parse_units(text)
     except (pint.errors.UndefinedUnitError, pint.errors.DefinitionSyntaxError,
-            AttributeError, TypeError, ValueError, AssertionError) as error:
-        raise UnitError(f"unknown unit {text!r}") from error
+            AttributeError, TypeError, ValueError, AssertionError, ArithmeticError,
+            RecursionError) as error:
+        raise UnitError(f"unknown unit {_short(text)!r}") from error
+
+
+def _unreadable(text: str) -> str | None:
+    """Why a unit text is refused before pint reads it, or None."""
+    if len(text) > MAX_UNIT_LENGTH:
+        return f"longer than {MAX_UNIT_LENGTH} characters"
+    powers = list(_POWER.finditer(text))
+    if len(powers) != len(_POWER_SIGN.findall(text)):
+        return "a power is a number or a (fraction), e.g. mm^2 or mm^(10/9)"
+    for power in powers:
+        numerator, denominator = float(power.group(1) or power.group(2)), power.group(3)
+        if denominator is not None and float(denominator) == 0:
+            return "a power divided by zero"
+        exponent = numerator / float(denominator) if denominator else numerator
+        if not abs(exponent) <= MAX_POWER:
+            return f"powers are at most {MAX_POWER}"
+    depth = 0
+    for character in text:
+        depth += (character == "(") - (character == ")")
+        if depth > 2:
+            return "parentheses nested too deeply"
+    return None
+
+
+def _short(text: str) -> str:
+    return text if len(text) <= 40 else text[:37] + "..."
 
 
 def split_quantity(text: str) -> tuple[float, str]:
     """Split ``"0.04 mm"`` into ``(0.04, "mm")``; the unit is ``""`` when none is written."""
     match = _QUANTITY.match(text)
+    special = re.match(r"\s*[-+]?(nan|inf)", text, re.IGNORECASE)
+    if not match and special:
+        raise UnitError(f"{text!r}: " + ("NaN is not a number" if special.group(1).lower()
+                                         == "nan" else "an infinite value is not accepted"))
     if not match:
         raise UnitError(f"{text!r} is not a number followed by a unit")
     return float(match.group(1)), match.group(2)
@@ -105,13 +151,36 @@ def revolutions(unit: pint.Unit, declared: pint.Unit) -> pint.Unit:
     return unit
 
 
+def _read_as_revolutions(unit: pint.Unit, target: pint.Unit) -> tuple[pint.Unit, pint.Unit]:
+    """``unit`` and ``target`` with a plain reciprocal time on either side read as revolutions
+    when the other is a rotational speed (:func:`revolutions`); a conversion between an
+    angle-free unit and an angular one that is still left (Hz against rpm) is refused, as
+    pint would take it for radians."""
+    unit, target = revolutions(unit, target), revolutions(target, unit)
+    if not np.isclose(_angle_power(unit), _angle_power(target)):
+        raise UnitError(f"{_shown(unit)!r} and {_shown(target)!r} differ by an angle (Hz is "
+                        "ambiguous for a rotational speed: write rpm, r/min or 1/min)")
+    return unit, target
+
+
+def _shown(unit: pint.Unit) -> str:
+    return f"{unit:~}" or "1"
+
+
 def to_si(magnitude, unit: pint.Unit):
     """``magnitude`` in ``unit``, converted to SI base units (rad/s for rpm, m for mm, ...)."""
     return UREG.Quantity(np.asarray(magnitude, dtype=float), unit).to_base_units().magnitude
 
 
 def convert(magnitude, unit: pint.Unit, target: pint.Unit):
-    """``magnitude`` in ``unit`` expressed in ``target``."""
+    """``magnitude`` in ``unit`` expressed in ``target``.
+
+    The one conversion between two units that every value passes through (what was written
+    to the declared unit, an axis' values to its first one's, a quantity to select by to
+    the stored unit): a plain reciprocal time is revolutions per that time against a
+    rotational speed on either side ("3000 1/min" is 3000 rpm), never radians.
+    """
+    unit, target = _read_as_revolutions(unit, target)
     return UREG.Quantity(np.asarray(magnitude, dtype=float), unit).to(target).magnitude
 
 

@@ -213,3 +213,26 @@ def test_chunks_run_on_a_given_client_which_stays_open(tmp_path):
         numbers = set(expected.attrs) - CIRCUMSTANCES - {
             "definition", "definition_file", "definition_sha256", "title", "scheduler"}
         assert_same_result(data, expected, numbers)
+
+
+@pytest.mark.parametrize("call, words", [
+    (lambda: bearing_sweep.run(DOCUMENT, output=5), "output=5: expected a path"),
+    (lambda: bearing_sweep.run(DOCUMENT, output=b"r.nc"), "output=b'r.nc': expected a path"),
+    (lambda: bearing_sweep.run(DOCUMENT, output=""), "not an empty one"),
+    (lambda: bearing_sweep.run(DOCUMENT, client="tcp://x"), "give Client('tcp://x')"),
+    (lambda: bearing_sweep.run(DOCUMENT, client=5), "expected a dask.distributed.Client"),
+    (lambda: bearing_sweep.run(DOCUMENT, progress="no"), "progress='no': expected True or"),
+    (lambda: bearing_sweep.run(DOCUMENT, encoding=5), "argument encoding: 5 is not accepted"),
+    (lambda: bearing_sweep.run(DOCUMENT, compression=5), "argument compression: 5"),
+    (lambda: bearing_sweep.run(DOCUMENT, workers="2"), "workers='2'"),
+    (lambda: bearing_sweep.check(5), "a definition is TOML text, a path or a dict"),
+    (lambda: bearing_sweep.describe(5), "name=5: expected a model's name"),
+    (lambda: bearing_sweep.analyze(5), "result=5: expected a sampled result"),
+    (lambda: bearing_sweep.analyze("r.nc", output=5), "output=5: expected a path")])
+def test_an_argument_of_the_wrong_type_is_one_line_before_anything_runs(call, words, tmp_path,
+                                                                     monkeypatch):
+    monkeypatch.chdir(tmp_path)
+    with pytest.raises(bearing_sweep.SpecError) as caught:
+        call()
+    assert words in str(caught.value) and "\n" not in str(caught.value)
+    assert list(tmp_path.iterdir()) == []

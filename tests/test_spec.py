@@ -235,3 +235,70 @@ def test_a_long_range_converts_at_once_exactly_as_value_by_value():
         for value in axis.values[axis.name]:
             one = checker.value(declared, value.shown, axis.name, value.unit)
             assert one.si == value.si and one.shown == value.shown
+
+
+def test_a_byte_order_mark_before_the_definition_is_read_past(tmp_path):
+    path = tmp_path / "bom.toml"
+    path.write_bytes("\ufeff".encode() + GOOD.encode())
+    with_mark, without = spec.load(path), parse(GOOD)
+    assert with_mark.sha256 == without.sha256  # the same definition, the same parts
+    assert [v.si for v in with_mark.axes[0].values["radial_load"]] == [2000.0, 4000.0, 8000.0]
+    assert main(["run", str(path), "-o", str(tmp_path / "bom.nc"), "--workers", "0",
+                 "--quiet"]) == 0
+
+
+@pytest.mark.parametrize("raw, words", [
+    ("nan", "nan is not a number (NaN)"), ("inf", "inf is infinite"),
+    ("-inf", "-inf is infinite"), ('"nan"', "'nan': NaN is not a number"),
+    ('"inf"', "'inf': an infinite value is not accepted"),
+    ('"1e400"', "'1e400' is too large to compute with")])
+def test_a_value_that_is_not_a_finite_number_is_named_for_what_it_is(raw, words):
+    with pytest.raises(SpecError) as caught:
+        parse(GOOD.replace("slices = 60", f"slices = 60\npoisson_ratio = {raw}"))
+    assert f"fixed.poisson_ratio: {words}" in str(caught.value)
+    assert "too large" not in str(caught.value) or "1e400" in raw
+
+
+@pytest.mark.parametrize("axis", ['{ values = [0, nan], units = "mm" }',
+                                  '{ start = "0 mm", stop = "nan mm", num = 3 }',
+                                  '{ start = "0 mm", stop = "1 mm", step = "nan mm" }'])
+def test_nan_on_an_axis_is_not_a_number(axis):
+    text = GOOD.replace('crown = "0.004 mm"\n', "") + f"crown = {axis}\n"
+    with pytest.raises(SpecError, match="NaN"):
+        parse(text)
+
+
+def test_a_sampled_distribution_with_nan_or_inf_is_refused():
+    for parameter in ('high = "nan mm"', 'high = "inf mm"'):
+        text = (GOOD.replace('crown = "0.004 mm"\n', "") + '[sample]\nn = 8\nmethod = "random"\n'
+                f'crown = {{ distribution = "uniform", low = "0 mm", {parameter} }}\n')
+        with pytest.raises(SpecError, match="sample.crown.high: .*(NaN|infinite)"):
+            parse(text)
+
+
+@pytest.mark.parametrize("name", ["a/b", "", "1case", "a b", "x.y", "case-2", "é"])
+def test_an_axis_name_a_file_cannot_hold_is_refused(name):
+    text = GOOD + f'[axes."{name}"]\nlabels = ["a", "b"]\neffective_length = ["9 mm", "9.6 mm"]\n'
+    with pytest.raises(SpecError, match="cannot name an axis"):
+        parse(text)
+
+
+@pytest.mark.parametrize("name", sorted(spec.RESERVED_NAMES))
+def test_an_axis_name_a_result_or_its_analysis_uses_is_refused(name):
+    text = GOOD + f'[axes.{name}]\nlabels = ["a", "b"]\neffective_length = ["9 mm", "9.6 mm"]\n'
+    with pytest.raises(SpecError, match="reserved"):
+        parse(text)
+
+
+@pytest.mark.parametrize("key, raw, words", [
+    ("model", "3", "sweep.model: 3 is not a model's name"),
+    ("model", "[\"crb_radial\"]", "is not a model's name"),
+    ("title", "{ a = 1 }", "sweep.title: {'a': 1}: expected a string"),
+    ("title", "42", "sweep.title: 42: expected a string"),
+    ("bearing", "3", "sweep.bearing: 3: expected a string")])
+def test_a_sweep_key_of_the_wrong_type_is_named(key, raw, words):
+    lines = [line for line in GOOD.splitlines() if not line.startswith(f"{key} =")]
+    lines.insert(lines.index("[sweep]") + 1, f"{key} = {raw}")
+    with pytest.raises(SpecError) as caught:
+        parse("\n".join(lines))
+    assert words in str(caught.value)
