@@ -181,3 +181,15 @@ def test_a_speed_in_1_per_min_is_computed_and_stored_as_revolutions():
     assert float(written.speed) == 6000 and written.speed.attrs["units"] == "rpm"
     assert float(written.radial_stiffness) == float(reference.radial_stiffness)
     assert float(reference.radial_stiffness) != float(result("6000 rad/s").radial_stiffness)
+
+
+@pytest.mark.parametrize("axis", [
+    {"start": "1000 rpm", "stop": "1200 1/min", "step": "100 1/min"},
+    {"start": "1000 1/min", "stop": "1200 rpm", "num": 3},
+    {"start": "1000 1/min", "stop": "20 1/s", "step": "100 r/min"},
+    {"values": [1000, 1100, 1200], "units": "1/min"}])
+def test_a_speed_range_mixing_spellings_counts_revolutions(axis):
+    sweep = spec.from_dict(_with(_document("crb_radial"), "axes", "speed", axis))
+    assert list(labels.coordinates(sweep)["speed"][1]) == pytest.approx([1000, 1100, 1200])
+    assert list(sweep.axes[-1].si["speed"]) == pytest.approx(
+        [1000 * TURN / 60, 1100 * TURN / 60, 1200 * TURN / 60], rel=1e-12)
