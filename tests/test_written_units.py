@@ -193,3 +193,36 @@ def test_a_speed_range_mixing_spellings_counts_revolutions(axis):
     assert list(labels.coordinates(sweep)["speed"][1]) == pytest.approx([1000, 1100, 1200])
     assert list(sweep.axes[-1].si["speed"]) == pytest.approx(
         [1000 * TURN / 60, 1100 * TURN / 60, 1200 * TURN / 60], rel=1e-12)
+
+
+def _pattern_sweep(column):
+    document = _document("crb_runout")
+    document["axes"] = {"form": {"labels": ["a", "b"], "roller_diameter_error": column}}
+    return spec.from_dict(document)
+
+
+def test_a_pattern_in_any_unit_is_stored_in_the_declared_unit():
+    pattern = [0.5, -1.0, 2.0] + [0.0] * 11  # um, one value per roller of the NU208 (14)
+    column = [{"values": [v / 1e3 for v in pattern], "units": "mm"},
+              [f"{v / 25.4!r} thou" if i % 2 else f"{v * 1e3!r} nm" for i, v in
+               enumerate(pattern)]]
+    sweep = _pattern_sweep(column)
+    stored = labels.coordinates(sweep)["roller_diameter_error"]
+    assert stored[0] == ("form", "roller") and stored[2]["units"] == "um"
+    for row in stored[1]:
+        assert list(row) == pytest.approx(pattern, rel=1e-12, abs=1e-15)
+    for row in sweep.axes[-1].si["roller_diameter_error"]:
+        assert list(row) == pytest.approx([v * 1e-6 for v in pattern], rel=1e-12, abs=1e-21)
+
+
+@pytest.mark.parametrize("low, high", [("1000 1/min", "2000 rpm"), ("1000 rpm", "2000 r/min"),
+                                       ("1000 min^-1", "2000 1/min")])
+def test_a_sampled_speed_is_drawn_in_revolutions_whatever_it_is_written_in(low, high):
+    document = _with(_document("crb_radial"), "axes", "speed", ["1 rpm"])
+    del document["axes"]["speed"]
+    document["sample"] = {"n": 16, "method": "random",
+                          "speed": {"distribution": "uniform", "low": low, "high": high}}
+    sweep = spec.from_dict(document)
+    drawn = labels.coordinates(sweep)["speed"][1]
+    assert 1000 <= drawn.min() and drawn.max() <= 2000 and drawn.max() - drawn.min() > 100
+    assert sweep.sampling.distributions["speed"] == "uniform(low=1000 rpm, high=2000 rpm)"
