@@ -69,7 +69,9 @@ def test_netcdf_round_trip_keeps_values_and_attributes(tmp_path):
     assert data.roller_load.dims == ("radial_load", "clearance", "slices", "arrangement", "roller")
     assert data.status.attrs["flag_meanings"] == ("converged not_converged infeasible model_error "
                                                   "out_of_validity no_root_in_range")
-    np.testing.assert_array_equal(data.status.attrs["flag_values"], [0, 1, 2, 3, 4, 5])
+    # CF bit fields (3.5): an outcome in bits 0, 1 and 3, out of validity in bit 2
+    np.testing.assert_array_equal(data.status.attrs["flag_values"], [0, 1, 2, 3, 4, 8])
+    np.testing.assert_array_equal(data.status.attrs["flag_masks"], [11, 11, 11, 11, 4, 11])
     assert data.attrs["Conventions"].startswith("CF-")
     assert data.attrs["definition"] == TEXT
     assert data.attrs["definition_sha256"] == spec.parse(TEXT).sha256
@@ -175,9 +177,14 @@ def test_points_out_of_validity_keep_their_values_and_failures_are_nan(tmp_path,
 def test_statuses_combine_by_severity():
     from bearing_sweep.models.registry import combine_status as combine
 
-    c, nc, inf, err, oov, nr = range(6)
-    assert combine([c, oov, nr, c, inf], [oov, c, oov, nc, nc]).tolist() == [oov, oov, nr, nc, nc]
-    assert combine(err, [c, nc, inf, oov, nr]).tolist() == [err] * 5
+    c, nc, inf, err, oov, nr = (registry.CONVERGED, registry.NOT_CONVERGED, registry.INFEASIBLE,
+                                registry.MODEL_ERROR, registry.OUT_OF_VALIDITY,
+                                registry.NO_ROOT_IN_RANGE)
+    # the most severe outcome; out of validity kept beside any outcome
+    assert combine([c, oov, nr, c, inf], [oov, c, oov, nc, nc]).tolist() == [oov, oov, nr | oov,
+                                                                              nc, nc]
+    assert combine(err, [c, nc, inf, oov, nr]).tolist() == [err, err, err, err | oov, err]
+    assert combine([nr | oov, nc], [c, oov]).tolist() == [nr | oov, nc | oov]
 
 
 def test_files_written_in_different_units_combine_into_one_consistent_axis(tmp_path):
