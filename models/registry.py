@@ -99,6 +99,20 @@ def known_status(status):
         status & OUTCOME_MASK, _SEVERITY)
 
 
+#: Relative rounding that a value written in a customary unit ("1000 rpm", "45 deg") may
+#: carry once converted to SI and back ("1000 rpm" reads 999.9999999999999 r/min again): a
+#: branch of a formula at a round value of an input compares with this much room.
+UNIT_ROUNDING = 1e-12
+
+
+def below(value, branch_point):
+    """Where ``value`` lies below ``branch_point`` by more than :data:`UNIT_ROUNDING`: the
+    branch "under" of a formula whose branch point is written in the input's customary unit,
+    so that an input written exactly at the branch point takes the branch "at or above" it
+    whatever rounding its conversion to SI left."""
+    return np.asarray(value) < np.asarray(branch_point) * (1.0 - UNIT_ROUNDING)
+
+
 #: Marks an input that has no default and must be given.
 REQUIRED = object()
 

@@ -25,7 +25,8 @@ from .kernels import Kernels
 from .life import roller_bearing_reference_life, tapered_equivalent_load
 from .lubrication import CELSIUS
 from .registry import (CONVERGED, INFEASIBLE, NO_ROOT_IN_RANGE, NOT_CONVERGED,
-                             OUT_OF_VALIDITY, Constraint, Input, Model, Output, combine_status)
+                       OUT_OF_VALIDITY, Constraint, Input, Model, Output, below,
+                       combine_status)
 from .solvers import solve_increasing
 
 #: Load-deflection exponent of a roller between its raceways, Q = K delta^1.11 (eq. 13-18).
@@ -176,7 +177,7 @@ def trb_load(radial_load, axial_load, roller_count, effective_length, roller_mea
     radial, axial, length, diameter, angle, given, pitch, modulus, pressure_limit = arrays[:9]
     speed, life = arrays[9], arrays[10:]
     constant = np.where(np.isnan(given), paper_contact_constant(length, diameter), given)
-    carried = (axial > 0) & (radial * np.tan(angle) <= axial)
+    carried = _carried(radial, axial, angle)
     # Start from the axial displacement of eq. 15 (all rollers equally loaded by F_a) with
     # a radial shift that keeps every roller compressed.
     sin_angle = np.sin(angle)
@@ -469,7 +470,10 @@ def _roller_balance(end: RollerEnd, cup_load, rib_load, rib_angle, half_angle, l
 
 
 def _carried(radial_load, axial_load, outer_contact_angle):
-    return (axial_load > 0) & (radial_load * np.tan(outer_contact_angle) <= axial_load)
+    # F_r tan(alpha) = F_a written exactly is carried (the rollers opposite just unload),
+    # whatever rounding the conversions of the loads and the angle left
+    return (np.asarray(axial_load) > 0) & ~below(axial_load,
+                                                 radial_load * np.tan(outer_contact_angle))
 
 
 def _cone_beneath(pitch_diameter, roller_mean_diameter):

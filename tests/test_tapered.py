@@ -268,3 +268,32 @@ def test_a_point_without_a_solution_has_no_values():
     for name, value in result.items():
         if name != "status":
             assert np.isnan(value).all(), name
+
+
+def test_fa_equal_to_fr_tan_alpha_written_exactly_is_carried():
+    # ISO-style boundary of eq. 16: F_r tan(alpha) = F_a leaves the opposite rollers just
+    # unloaded, a solution. 45 deg and two loads of 10 kN, converted as a definition's are
+    # (tan of 45 deg in radians is 0.9999999999999999, not 1).
+    from bearing_sweep import units
+
+    def si(text, unit):
+        return float(units.to_si(float(text), units.parse_unit(unit)))
+
+    load = si("10", "kN")
+    result = trb_load(load, load, 16, 21.5e-3, 13.71e-3, si("45", "deg"))
+    assert result["status"][0] == CONVERGED
+    from bearing_sweep.models.tapered import MODELS
+    carried = next(c for c in MODELS[0].constraints if "pull" in c.message)
+    assert carried.check(radial_load=load, axial_load=load,
+                         outer_contact_angle=si("45", "deg"))
+
+
+@pytest.mark.parametrize("change", [dict(oil_groove_size=1.0), dict(roller_end_radius=1e3)])
+def test_a_point_outside_validity_with_no_limit_angle_says_both(change):
+    # A groove of 1 m (or an end sphere of 1 km): the contact lies 998 mm inside the groove
+    # (edge_margin < 0, outside validity) and no rib angle of 80-90 deg puts the ellipse's
+    # edge on the groove's edge (no_root_in_range): the status holds both.
+    result = trb_rib(40e3, 27e3, **BEARING, **{**END, **change}, rib_angle=DEG(89))
+    status = int(result["status"][0])
+    assert status & OUT_OF_VALIDITY and status & ~OUT_OF_VALIDITY == NO_ROOT_IN_RANGE
+    assert np.isnan(result["limit_rib_angle"][0])
