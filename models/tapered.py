@@ -17,10 +17,10 @@ from __future__ import annotations
 
 import numpy as np
 
-from .bearing_life import (DEFAULT_CONTAMINATION_FACTOR, LIFE_INPUTS, SPEED_INPUT,
-                           life_outputs, rating_lives)
-from .contact import (APPROACH_LIMIT, ROLLER_PRESSURE_LIMIT, effective_modulus,
-                            hertz_point, line_contact_pressure)
+from .bearing_life import (DEFAULT_CONTAMINATION_FACTOR, LIFE_CONSTRAINTS, LIFE_INPUTS,
+                           SPEED_INPUT, life_outputs, rating_lives)
+from .contact import (APPROACH_LIMIT, ROLLER_PRESSURE_LIMIT, STIFFEST_SOLID, effective_modulus,
+                      hertz_point, line_contact_pressure)
 from .kernels import Kernels
 from .life import roller_bearing_reference_life, tapered_equivalent_load
 from .lubrication import CELSIUS
@@ -503,7 +503,7 @@ _CONSTANT = Input("contact_constant", "N/mm^1.11", "load-deflection constant Kne
                   "Q = Kne delta^1.11; default eq. 14, 2.89e4 l^0.82 Dw^0.11 (N, mm)",
                   default=None, minimum=0.0, exclusive_minimum=True)
 _MODULUS = Input("youngs_modulus", "GPa", "Young's modulus of rollers and rings", default=206.0,
-                 minimum=0.0, exclusive_minimum=True)
+                 minimum=0.0, exclusive_minimum=True, maximum=STIFFEST_SOLID)
 _POISSON = Input("poisson_ratio", "1", "Poisson's ratio of rollers and rings", default=0.3,
                  minimum=0.0, maximum=0.5)
 _REFERENCE = "Paper 003, Optimization of the rib angle of tapered roller bearings"
@@ -548,7 +548,7 @@ MODELS = [
         dim_sizes={"roller": "roller_count"},
         constraints=(_CARRIED, Constraint(
             ("pitch_diameter", "roller_mean_diameter"), _cone_beneath,
-            "pitch_diameter must exceed roller_mean_diameter")),
+            "pitch_diameter must exceed roller_mean_diameter")) + LIFE_CONSTRAINTS,
         # Through the engine, one core, on two cores shared with others (load average 2.4):
         # 4.2e-6 to 4.4e-6 s/point on benchmarks/declared_costs.py's grid with lives (1.3e-5
         # with the equilibrium vectorised in numpy, in blocks of 2000). Solved point by point:
