@@ -443,7 +443,7 @@ MODELS = [Model(
             "pressures and rating lives (ISO/TS 16281, ISO 281).",
     reference="Paper 001, eq. 1-10; Jones (1960); Harris & Kotzalas, Rolling Bearing Analysis; "
               "ISO/TS 16281:2008; ISO 281:2007",
-    version="5",
+    version="6",
     inputs=(
         Input("ball_count", "1", "number of balls Z", kind="count", minimum=3, maximum=1000),
         Input("ball_diameter", "mm", "ball diameter D", minimum=0.0, exclusive_minimum=True),

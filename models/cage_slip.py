@@ -545,7 +545,8 @@ MODELS = [Model(
               "oils to 1900 for perfluoropolyethers)", default=1000.0,
               minimum=OIL_DENSITIES[0], maximum=OIL_DENSITIES[1]),
         Input("pressure_viscosity", "1/GPa", "pressure-viscosity coefficient alpha (film "
-              "thickness only; 10-13)", default=11.0, minimum=0.0),
+              "thickness only; 10-13; lubricants: about 5 for water-glycols to 40 for "
+              "traction fluids)", default=11.0, minimum=0.0, maximum=100.0),
         Input("youngs_modulus", "GPa", "Young's modulus of rollers and rings", default=207.0,
               minimum=0.0, exclusive_minimum=True, maximum=STIFFEST_SOLID),
         Input("poisson_ratio", "1", "Poisson's ratio of rollers and rings", default=0.28,

@@ -21,6 +21,7 @@ from .bearing_life import (DEFAULT_CONTAMINATION_FACTOR, LIFE_CONSTRAINTS, LIFE_
                            SPEED_INPUT, life_outputs, rating_lives)
 from .contact import (APPROACH_LIMIT, ROLLER_PRESSURE_LIMIT, STIFFEST_SOLID, effective_modulus,
                       hertz_point, line_contact_pressure)
+from .geometry import elements_fit
 from .kernels import Kernels
 from .life import roller_bearing_reference_life, tapered_equivalent_load
 from .lubrication import CELSIUS
@@ -335,11 +336,8 @@ def trb_rib(radial_load, axial_load, roller_count, effective_length, roller_mean
     ----------
     .. [1] Paper 003, eq. 1-12, 19-20 and section 3.
     """
-    # The pitch diameter at the middle of the roller: from the rib's foot on the raceway line
-    # (diameter d_i) half the contact length down the cone, then half the roller across it.
-    inner_angle = np.asarray(outer_contact_angle) - 2.0 * np.asarray(roller_half_angle)
-    pitch_diameter = (np.asarray(rib_diameter) - np.asarray(effective_length) * np.sin(
-        inner_angle) + np.asarray(roller_mean_diameter) * np.cos(inner_angle))
+    pitch_diameter = rib_pitch_diameter(rib_diameter, effective_length, roller_mean_diameter,
+                                        outer_contact_angle, roller_half_angle)
     load = trb_load(radial_load, axial_load, roller_count, effective_length,
                     roller_mean_diameter, outer_contact_angle, contact_constant, pitch_diameter,
                     youngs_modulus, poisson_ratio)
@@ -480,6 +478,35 @@ def _cone_beneath(pitch_diameter, roller_mean_diameter):
     return pitch_diameter > roller_mean_diameter
 
 
+def _rollers_fit(roller_count, pitch_diameter, roller_mean_diameter):
+    return elements_fit(roller_count, pitch_diameter, roller_mean_diameter)
+
+
+def rib_pitch_diameter(rib_diameter, effective_length, roller_mean_diameter,
+                       outer_contact_angle, roller_half_angle):
+    """``d_m = d_i - l sin(beta) + D_w cos(beta)``, ``beta = alpha - 2 phi``: the pitch
+    diameter at the middle of the roller, from the rib's foot on the raceway line (diameter
+    ``d_i``) half the contact length down the cone, then half the roller across it."""
+    inner_angle = np.asarray(outer_contact_angle) - 2.0 * np.asarray(roller_half_angle)
+    return (np.asarray(rib_diameter) - np.asarray(effective_length) * np.sin(inner_angle)
+            + np.asarray(roller_mean_diameter) * np.cos(inner_angle))
+
+
+def _rib_rollers_fit(roller_count, rib_diameter, effective_length, roller_mean_diameter,
+                     outer_contact_angle, roller_half_angle):
+    return elements_fit(roller_count, rib_pitch_diameter(
+        rib_diameter, effective_length, roller_mean_diameter, outer_contact_angle,
+        roller_half_angle), roller_mean_diameter)
+
+
+def _cone_angle_positive(outer_contact_angle, roller_half_angle):
+    return 2.0 * np.asarray(roller_half_angle) < np.asarray(outer_contact_angle)
+
+
+def _large_end_larger(roller_large_diameter, roller_mean_diameter):
+    return np.asarray(roller_large_diameter) > np.asarray(roller_mean_diameter)
+
+
 def _end_sphere_fits(roller_end_radius, roller_large_diameter):
     return roller_end_radius > roller_large_diameter / 2
 
@@ -515,7 +542,7 @@ MODELS = [
         summary="Tapered roller bearing under radial and axial load: radial and axial "
                 "displacement and the load of every roller.",
         reference=_REFERENCE + ", eq. 13-18",
-        version="5",
+        version="6",
         inputs=_LOAD_INPUTS + (
             _CONSTANT,
             Input("pitch_diameter", "mm", "pitch diameter dm at the middle of the rollers, for "
@@ -548,7 +575,10 @@ MODELS = [
         dim_sizes={"roller": "roller_count"},
         constraints=(_CARRIED, Constraint(
             ("pitch_diameter", "roller_mean_diameter"), _cone_beneath,
-            "pitch_diameter must exceed roller_mean_diameter")) + LIFE_CONSTRAINTS,
+            "pitch_diameter must exceed roller_mean_diameter"), Constraint(
+            ("roller_count", "pitch_diameter", "roller_mean_diameter"), _rollers_fit,
+            "the rollers do not fit on the pitch circle: pitch_diameter * sin(180 deg / "
+            "roller_count) must exceed roller_mean_diameter")) + LIFE_CONSTRAINTS,
         # Through the engine, one core, on two cores shared with others (load average 2.4):
         # 4.2e-6 to 4.4e-6 s/point on benchmarks/declared_costs.py's grid with lives (1.3e-5
         # with the equilibrium vectorised in numpy, in blocks of 2000). Solved point by point:
@@ -567,7 +597,7 @@ MODELS = [
                 "with the conical rib, its distance from the oil groove, and the rib angle at "
                 "which the contact ellipse reaches the groove.",
         reference=_REFERENCE + ", eq. 1-12, 19-20",
-        version="2",
+        version="3",
         inputs=_LOAD_INPUTS + (
             Input("roller_large_diameter", "mm", "large-end roller diameter Dw1", minimum=0.0,
                   exclusive_minimum=True),
@@ -616,7 +646,18 @@ MODELS = [
         ),
         constraints=(_CARRIED, Constraint(
             ("roller_end_radius", "roller_large_diameter"), _end_sphere_fits,
-            "roller_end_radius must exceed half the roller_large_diameter")),
+            "roller_end_radius must exceed half the roller_large_diameter"), Constraint(
+            ("outer_contact_angle", "roller_half_angle"), _cone_angle_positive,
+            "roller_half_angle must be below half the outer_contact_angle: the cone's "
+            "raceway angle beta = alpha - 2 phi is positive in a tapered roller bearing"),
+            Constraint(("roller_large_diameter", "roller_mean_diameter"), _large_end_larger,
+                       "roller_large_diameter must exceed roller_mean_diameter: the large "
+                       "end is the larger"),
+            Constraint(("roller_count", "rib_diameter", "effective_length",
+                        "roller_mean_diameter", "outer_contact_angle", "roller_half_angle"),
+                       _rib_rollers_fit, "the rollers do not fit on the pitch circle "
+                       "(d_i - l sin(beta) + D_w cos(beta)): its chord between neighbours, "
+                       "d_m sin(180 deg / roller_count), must exceed roller_mean_diameter")),
         seconds_per_point=3.7e-4,  # benchmarks/declared_costs.py: 3.5-3.9e-4
         points_per_call=2000,
         validity="trb_load's limits for the raceways (pitch diameter from rib_diameter); the "

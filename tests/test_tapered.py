@@ -297,3 +297,23 @@ def test_a_point_outside_validity_with_no_limit_angle_says_both(change):
     status = int(result["status"][0])
     assert status & OUT_OF_VALIDITY and status & ~OUT_OF_VALIDITY == NO_ROOT_IN_RANGE
     assert np.isnan(result["limit_rib_angle"][0])
+
+
+@pytest.mark.parametrize("model, fixed, words", [
+    ("trb_rib", 'roller_half_angle = "15 deg"', "raceway angle beta"),
+    ("trb_rib", 'roller_large_diameter = "12 mm"', "large end is the larger"),
+    ("trb_rib", 'roller_count = 40', "do not fit on the pitch circle"),
+    ("trb_load", 'roller_count = 40', "do not fit on the pitch circle"),
+    ("trb_load", 'viscosity_40 = "8 mm^2/s"\nviscosity_100 = "68 mm^2/s"', "thins as it warms"),
+])
+def test_a_tapered_bearing_that_cannot_be_is_refused_before_computing(model, fixed, words):
+    # Paper 003's bearing (alpha 28 deg, phi 4 deg, Dw 13.71 mm on a pitch circle of about
+    # 80 mm: 16 rollers, room for 17) with one input made impossible.
+    from bearing_sweep import spec
+
+    preset = "paper003-table1-rib" if model == "trb_rib" else "paper003-table1"
+    angle = 'rib_angle = "89 deg"\n' if model == "trb_rib" else ""
+    text = (f'[sweep]\nmodel = "{model}"\nbearing = "{preset}"\n[fixed]\n{fixed}\n{angle}'
+            '[axes]\naxial_load = ["27 kN", "40 kN"]\n')
+    with pytest.raises(spec.SpecError, match=words):
+        spec.parse(text)
