@@ -50,11 +50,14 @@ LIFE_INPUTS = (
           label="oil viscosity at 100 degC"),
 )
 
+#: An oil's viscosities at 40 and 100 deg C in the order every oil has them.
+VISCOSITY_ORDER = Constraint(
+    ("viscosity_40", "viscosity_100"), viscosities_fall,
+    "viscosity_100 must be below viscosity_40: an oil thins as it warms (swapped, Walther's "
+    "law would make it thicken with temperature)")
 #: Conditions between the life inputs, for every model that declares :data:`LIFE_INPUTS`.
 LIFE_CONSTRAINTS = (
-    Constraint(("viscosity_40", "viscosity_100"), viscosities_fall,
-               "viscosity_100 must be below viscosity_40: an oil thins as it warms (swapped, "
-               "Walther's law would make it thicken and kappa and aISO grow with temperature)"),
+    VISCOSITY_ORDER,
     Constraint(("fatigue_load_limit", "dynamic_load_rating"),
                lambda fatigue_load_limit, dynamic_load_rating:
                fatigue_load_limit < dynamic_load_rating,

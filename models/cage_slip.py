@@ -22,9 +22,10 @@ import inspect
 
 import numpy as np
 
-from .cylindrical import crb_radial
+from .cylindrical import CLEARANCE_BELOW_ROLLER, crb_radial
+from .bearing_life import VISCOSITY_ORDER
 from .lubrication import (OIL_DENSITIES, VISCOSITY_GRADES, WALTHER_FLOOR, TractionCurve,
-                          central_film_thickness, viscosities_fall, walther_viscosity)
+                          central_film_thickness, walther_viscosity)
 from .contact import DENSEST_SOLID, STIFFEST_SOLID
 from .registry import (CONVERGED, NO_ROOT_IN_RANGE, NOT_CONVERGED, OUT_OF_VALIDITY, Constraint,
                        Input, Model, Output, combine_status)
@@ -469,10 +470,6 @@ def _contact_on_roller(effective_length, roller_length):
     return effective_length <= roller_length
 
 
-def _clearance_below_roller(clearance, roller_diameter):
-    return np.abs(clearance) < roller_diameter
-
-
 def _outer_raceway_diameter(inner_raceway_diameter, roller_diameter, clearance):
     return inner_raceway_diameter + 2.0 * roller_diameter + clearance
 
@@ -610,9 +607,7 @@ MODELS = [Model(
         Constraint(("effective_length", "roller_length"), _contact_on_roller,
                    "effective_length must not exceed roller_length: the raceway contact is "
                    "part of the roller"),
-        Constraint(("clearance", "roller_diameter"), _clearance_below_roller,
-                   "the clearance must be smaller than the roller diameter (crb_radial's "
-                   "load distribution)"),
+        CLEARANCE_BELOW_ROLLER,  # crb_radial's, whose load distribution this model takes
         Constraint(("cage_inner_diameter", "cage_outer_diameter", "inner_raceway_diameter",
                     "roller_diameter", "clearance"), _cage_between_raceways,
                    "the cage must lie between the raceways: cage_inner_diameter at least "
@@ -623,8 +618,7 @@ MODELS = [Model(
                    "the pockets do not fit: each, roller_diameter + 2 pocket_clearance wide, "
                    "must leave a cage bar before the next, whose centre lies pitch_diameter * "
                    "sin(180 deg / roller_count) away"),
-        Constraint(("viscosity_40", "viscosity_100"), viscosities_fall,
-                   "viscosity_100 must be below viscosity_40: an oil thins as it warms"),
+        VISCOSITY_ORDER,
     ),
     seconds_per_point=4.5e-3,  # benchmarks/declared_costs.py: 4.5-4.6e-3 on the studies' sweeps
     points_per_call=64,

@@ -494,6 +494,11 @@ def _solve(rollers, load, perturbation):
     return outputs
 
 
+#: A diametral clearance (or interference) smaller than the rollers.
+CLEARANCE_BELOW_ROLLER = Constraint(
+    ("clearance", "roller_diameter"), lambda clearance, roller_diameter:
+    np.abs(clearance) < roller_diameter, "the clearance must be smaller than the roller diameter")
+
 MODELS = [Model(
     name="crb_radial",
     function=crb_radial,
@@ -578,9 +583,7 @@ MODELS = [Model(
                    (misalignment == 0) | (outer_contact != "paper"),
                    "misalignment needs outer_contact 'crowned' (the paper's straight outer "
                    "contact has no tilt)"),
-        Constraint(("clearance", "roller_diameter"), lambda clearance, roller_diameter:
-                   np.abs(clearance) < roller_diameter,
-                   "the clearance must be smaller than the roller diameter"),
+        CLEARANCE_BELOW_ROLLER,
         Constraint(("roller_count", "pitch_diameter", "roller_diameter"),
                    lambda roller_count, pitch_diameter, roller_diameter:
                    elements_fit(roller_count, pitch_diameter, roller_diameter),
