@@ -284,7 +284,8 @@ class Model:
     #: model's temporaries stay small enough for the caches that workers share (crb_radial:
     #: two workers slowed each other's tasks by 40 % with 2500-point calls, 15 % with 500).
     points_per_call: int = 100_000
-    #: The limits beyond which a solved point is marked ``out_of_validity``, in words.
+    #: The limits beyond which a point is marked ``out_of_validity`` (beside its outcome), in
+    #: words, with their sources.
     validity: str = ""
     #: Values along output dimensions that a few inputs fix (``DimCoordinate``), by dimension.
     dim_coordinates: dict = field(default_factory=dict)

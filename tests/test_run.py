@@ -317,3 +317,44 @@ def test_a_cluster_is_given_a_few_chunks_per_worker_at_a_time():
             assert result["status"].size == stop - start
     assert most == CHUNKS_IN_FLIGHT
     assert sorted(received) == sorted(submitted) == [start for start, _ in chunks]
+
+
+@pytest.mark.parametrize("code", [16, -1, 10])
+def test_a_status_code_the_registry_does_not_define_is_a_model_error(tmp_path, monkeypatch,
+                                                                      code):
+    # 10 is no_root_in_range with infeasible's bit: no outcome; 16 and -1 no bit field at all.
+    model = registry.get_model("crb_radial")
+    original = model.function
+
+    def garbled(**kwargs):
+        result = original(**kwargs)
+        result["status"] = np.full(np.shape(result["status"]), code, dtype=np.int8)
+        return result
+
+    monkeypatch.setitem(registry._MODELS, "crb_radial",
+                        registry.Model(**{**model.__dict__, "function": garbled}))
+    summary, data = compute(tmp_path, "garbled")
+    assert (data.status == registry.MODEL_ERROR).all()
+    assert data.radial_stiffness.isnull().all()
+    assert f"returned status {code}" in data.attrs["model_errors"]
+
+
+def test_the_summary_counts_outcomes_and_then_the_points_out_of_validity(tmp_path,
+                                                                        monkeypatch):
+    model = registry.get_model("crb_radial")
+    original = model.function
+
+    def judged(**kwargs):  # the heavy points out of validity, their outcomes as they are
+        result = original(**kwargs)
+        heavy = np.asarray(kwargs["radial_load"]) > 6e3
+        result["status"] = registry.combine_status(
+            result["status"], np.where(heavy, registry.OUT_OF_VALIDITY, registry.CONVERGED))
+        return result
+
+    monkeypatch.setitem(registry._MODELS, "crb_radial",
+                        registry.Model(**{**model.__dict__, "function": judged}))
+    summary, data = compute(tmp_path, "judged")
+    heavy = int((data.radial_load > 6000).sum()) * data.status.size // data.radial_load.size
+    assert summary.status_counts["converged"] == data.status.size
+    assert summary.status_counts["out_of_validity"] == heavy > 0
+    assert f"({data.status.size} converged; {heavy} out_of_validity)" in summary.text()
