@@ -320,7 +320,8 @@ def _in_si(magnitude, unit):
 def test_the_reference_viscosity_at_exactly_1000_rpm_takes_the_high_speed_branch(unit):
     # ISO 281:2007 9.3.3, eq. (29) holds for n >= 1000 r/min: at n = 1000, d_m = 50 mm,
     # nu_1 = 4500 / sqrt(1000) / sqrt(50) = 20.125 mm^2/s (eq. (28) would give 20.593, and
-    # kappa 2.3 % less). "1000 rpm" reaches the model as 104.71975511965977 rad/s, 999.9999999999999 r/min.
+    # kappa 2.3 % less). "1000 rpm" reaches the model as 104.71975511965977 rad/s,
+    # 999.9999999999999 r/min.
     speed = _in_si(1000.0, unit)
     assert life.reference_viscosity(speed, 0.05) == pytest.approx(20.1246e-6, rel=1e-5)
     # just below the branch point eq. (28) holds: 45000 999^-0.83 / sqrt(50) = 20.6105
