@@ -68,7 +68,9 @@ def cage_dynamics(radial_load, speed, roller_count, inner_raceway_diameter, roll
         ``cage_centre_y`` ``(N, samples)`` [m] (geometric centre), ``whirl_speed``
         ``(N, samples)`` [m/s] (speed of the mass centre), ``whirl_deviation_ratio`` (eq. 28
         over the settled half) [-], ``roller_slip`` ``(N, samples, Z)`` [-], ``sample_time``
-        ``(N, samples)`` [s], ``status``: the steady state's where it has none to start from.
+        ``(N, samples)`` [s], ``status``: the steady state's where it has none to start from;
+        ``out_of_validity`` where the steady state is (cage_slip's validity), beside the
+        transient's own outcome.
 
     References
     ----------

@@ -433,7 +433,7 @@ MODELS = [Model(
     summary="Hertz point contact of two elastic bodies: contact ellipse, approach, maximum "
             "pressure and load-deflection constant, exact or by Hamrock and Brewe.",
     reference="Harris & Kotzalas, Rolling Bearing Analysis, ch. 6; Hamrock & Brewe (1983)",
-    version="2",
+    version="3",
     inputs=(
         Input("load", "N", "normal load Q", minimum=0.0),
         Input("curvature_1x", "1/mm", "principal curvature of body 1 in plane x (negative: "
