@@ -16,9 +16,9 @@ import functools
 
 import numpy as np
 
-from .bearing_life import (DEFAULT_CONTAMINATION_FACTOR, LIFE_INPUTS, SPEED_INPUT,
-                           life_outputs, rating_lives)
-from .contact import POINT_CONTACT_EXPONENT, hertz_point
+from .bearing_life import (DEFAULT_CONTAMINATION_FACTOR, LIFE_CONSTRAINTS, LIFE_INPUTS,
+                           SPEED_INPUT, life_outputs, rating_lives)
+from .contact import POINT_CONTACT_EXPONENT, STIFFEST_SOLID, hertz_point
 from .geometry import elements_fit
 from .kernels import Kernels
 from .life import ball_bearing_reference_life, radial_ball_equivalent_load
@@ -309,7 +309,9 @@ def ball_5dof(ball_count, ball_diameter, pitch_diameter, contact_angle,
     outside = ((pressure.max(axis=-1) > pressure_limit)
                | (approach.max(axis=-1) > MAX_APPROACH_PER_DIAMETER * diameter)
                | left_bearing | crossed.any(axis=-1))
-    status = combine_status(status, np.where(outside, OUT_OF_VALIDITY, CONVERGED))
+    # Judged on a solution only: a failed point's last iterate says nothing of the bearing.
+    status = combine_status(status, np.where(outside & (status == CONVERGED), OUT_OF_VALIDITY,
+                                             CONVERGED))
     displacement = scaled / scale
     matrix = stiffness * scale[:, :, None] * scale[:, None, :]
     outputs = {
@@ -441,7 +443,7 @@ MODELS = [Model(
             "pressures and rating lives (ISO/TS 16281, ISO 281).",
     reference="Paper 001, eq. 1-10; Jones (1960); Harris & Kotzalas, Rolling Bearing Analysis; "
               "ISO/TS 16281:2008; ISO 281:2007",
-    version="5",
+    version="6",
     inputs=(
         Input("ball_count", "1", "number of balls Z", kind="count", minimum=3, maximum=1000),
         Input("ball_diameter", "mm", "ball diameter D", minimum=0.0, exclusive_minimum=True),
@@ -456,7 +458,7 @@ MODELS = [Model(
               "preload)", default=0.0,
               label="diametral clearance"),
         Input("youngs_modulus", "GPa", "Young's modulus of balls and rings", default=207.0,
-              minimum=0.0, exclusive_minimum=True),
+              minimum=0.0, exclusive_minimum=True, maximum=STIFFEST_SOLID),
         Input("poisson_ratio", "1", "Poisson's ratio of balls and rings", default=0.3,
               minimum=0.0, maximum=0.5),
         Input("contact_constant", "N/mm^1.5", "load-deflection constant K of a ball and both "
@@ -528,7 +530,7 @@ MODELS = [Model(
                    "radial_y) is singular at every load: a tilt about the contact-cone apex "
                    "with a radial shift changes no ball's approach; hold the tilts (fixed_dofs "
                    "= [\"tilt_y\", \"tilt_z\"]) or use geometry 'jones'"),
-    ),
+    ) + LIFE_CONSTRAINTS,
     # benchmarks/declared_costs.py (the studies' sweeps, each repeated to a block): 6.1e-6 s
     # CPU a point at a load of 0.7; 1.1e-5 to 1.6e-5 with others' load of 3-4 on the two
     # cores. Compiled point by point, the model keeps few temporaries: blocks of 4096 points

@@ -13,8 +13,9 @@ import numpy as np
 
 from .life import (basic_rating_life, equivalent_reference_load, life_duration,
                    life_modification_factor, viscosity_ratio)
-from .lubrication import walther_viscosity
-from .registry import Input, Output
+from .lubrication import (VISCOSITY_GRADES, WALTHER_FLOOR, viscosities_fall,
+                          walther_viscosity)
+from .registry import Constraint, Input, Output
 
 #: ISO 281:2007 Table 13 gives 0.6 to 0.5 for "normal cleanliness" of bearings with
 #: d_m < 100 mm (filtered oil, sealed and greased for life); the lower end is the default.
@@ -40,11 +41,29 @@ LIFE_INPUTS = (
           "the viscosity ratio", default=70.0, minimum=-40.0, maximum=200.0,
           label="oil temperature"),
     Input("viscosity_40", "mm^2/s", "kinematic viscosity of the oil at 40 degC (ISO VG "
-          "grade); default: no modified life (NaN)", default=None, minimum=0.0,
-          exclusive_minimum=True, label="oil viscosity at 40 degC"),
-    Input("viscosity_100", "mm^2/s", "kinematic viscosity of the oil at 100 degC; required "
-          "with viscosity_40", default=None, minimum=0.0, exclusive_minimum=True,
+          "grade: VG 2 to VG 3200, ISO 3448); default: no modified life (NaN)", default=None,
+          minimum=VISCOSITY_GRADES[0], maximum=VISCOSITY_GRADES[1],
+          label="oil viscosity at 40 degC"),
+    Input("viscosity_100", "mm^2/s", "kinematic viscosity of the oil at 100 degC, below that "
+          "at 40 degC (Walther's law needs more than 0.3); required with viscosity_40",
+          default=None, minimum=WALTHER_FLOOR, exclusive_minimum=True,
           label="oil viscosity at 100 degC"),
+)
+
+#: An oil's viscosities at 40 and 100 deg C in the order every oil has them.
+VISCOSITY_ORDER = Constraint(
+    ("viscosity_40", "viscosity_100"), viscosities_fall,
+    "viscosity_100 must be below viscosity_40: an oil thins as it warms (swapped, Walther's "
+    "law would make it thicken with temperature)")
+#: Conditions between the life inputs, for every model that declares :data:`LIFE_INPUTS`.
+LIFE_CONSTRAINTS = (
+    VISCOSITY_ORDER,
+    Constraint(("fatigue_load_limit", "dynamic_load_rating"),
+               lambda fatigue_load_limit, dynamic_load_rating:
+               fatigue_load_limit < dynamic_load_rating,
+               "fatigue_load_limit must be below dynamic_load_rating: Cu is the load at which "
+               "the raceways reach the fatigue limit stress, 1500 MPa (ISO 281 Annex B), Cr "
+               "the load of a life of a million revolutions, at far higher stress"),
 )
 
 LIFE_OUTPUT_NAMES = ("reference_rating_life", "modified_reference_rating_life",

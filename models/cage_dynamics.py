@@ -14,11 +14,12 @@ from scipy.integrate import solve_ivp
 
 from . import cage_dynamics_rhs as rhs
 from .cage_slip import MODELS as STEADY_MODELS
+from .cage_slip import VALIDITY as STEADY_VALIDITY
 from .cage_slip import bearing_terms, cage_slip, cage_windage
-from .contact import palmgren_constant
+from .contact import DENSEST_SOLID, palmgren_constant
 from .cylindrical import crb_radial
 from .registry import (CONVERGED, NOT_CONVERGED, Constraint, DimCoordinate, Input, Model,
-                             Output)
+                       Output, VALIDITY_MASK, outcome)
 
 GRAVITY = 9.81
 _SETTLED = 0.5  # the settled part: the last half of the run
@@ -67,7 +68,9 @@ def cage_dynamics(radial_load, speed, roller_count, inner_raceway_diameter, roll
         ``cage_centre_y`` ``(N, samples)`` [m] (geometric centre), ``whirl_speed``
         ``(N, samples)`` [m/s] (speed of the mass centre), ``whirl_deviation_ratio`` (eq. 28
         over the settled half) [-], ``roller_slip`` ``(N, samples, Z)`` [-], ``sample_time``
-        ``(N, samples)`` [s], ``status``: the steady state's where it has none to start from.
+        ``(N, samples)`` [s], ``status``: the steady state's where it has none to start from;
+        ``out_of_validity`` where the steady state is (cage_slip's validity), beside the
+        transient's own outcome.
 
     References
     ----------
@@ -118,8 +121,9 @@ def _run(one, count, t, traction, point, cage_density, eccentricity, ring_mass, 
     """One point: set up, start from the steady state, integrate, sample. Returns the
     point's status and its outputs (None where there are none)."""
     steady = cage_slip(**one, roller_count=count, orbit_points=20 * count)
-    if steady["status"][0] != CONVERGED:
+    if outcome(steady["status"][0]) != CONVERGED:
         return steady["status"][0], None
+    validity = steady["status"][0] & VALIDITY_MASK  # the steady start's, carried on
     omega_c = steady["cage_speed"][0]
     ring = crb_radial(one["radial_load"], count, 2 * t["pitch_radius"], t["diameter"],
                       t["contact_length"], clearance=t["play"], slices=1, speed=t["omega_i"],
@@ -157,14 +161,14 @@ def _run(one, count, t, traction, point, cage_density, eccentricity, ring_mass, 
                          t_eval=times, args=(p, count), rtol=_RELATIVE_TOLERANCE, atol=atol,
                          jac=lambda time, y, p, count: rhs.jacobian(time, y, p, count, scale))
     if not solution.success:
-        return NOT_CONVERGED, None
+        return NOT_CONVERGED | validity, None
     y = solution.y
     cage = 4 + 3 * count
     settled = times >= _SETTLED * times[-1]
     slip = 1 - y[cage + 5] / t["omega_kin"]
     speed_of_centre = np.hypot(y[cage + 2], y[cage + 3])
     settled_speed = speed_of_centre[settled]
-    return CONVERGED, {
+    return CONVERGED | validity, {
         "cage_slip": slip, "mean_cage_slip": slip[settled].mean(), "sample_time": times,
         "cage_x": y[cage], "cage_y": y[cage + 1],
         "cage_centre_x": y[cage] - eccentricity * np.cos(y[cage + 4]),
@@ -225,6 +229,12 @@ def _has_mass(cage_width):
     return cage_width > 0
 
 
+def mass_centre_on_cage(cage_eccentricity, cage_outer_diameter):
+    """Whether the cage's mass centre lies within its outline, as any body's lies within its
+    convex hull."""
+    return cage_eccentricity < 0.5 * cage_outer_diameter
+
+
 def _samples_fit(duration, output_interval):
     return (output_interval <= duration) & (duration / output_interval <= 1e5)
 
@@ -235,11 +245,11 @@ MODELS = [Model(
     summary="Cylindrical roller bearing, planar transient: cage whirl, pocket contact, cage and "
             "roller slip in time, from the steady state.",
     reference="Paper 002, eq. 27-28 and section 3",
-    version="2",
+    version="3",
     inputs=tuple(i for i in STEADY_MODELS[0].inputs if i.name not in ("orbit_points", "branch"))
     + (
         Input("cage_density", "kg/m^3", "cage density (brass: 8600)", default=8600.0,
-              minimum=0.0, exclusive_minimum=True),
+              minimum=0.0, exclusive_minimum=True, maximum=DENSEST_SOLID),
         Input("cage_eccentricity", "mm", "distance of the cage's mass centre from its "
               "geometric centre", default=0.0, minimum=0.0,
               label="cage mass eccentricity"),
@@ -285,9 +295,13 @@ MODELS = [Model(
         ("output_interval",), _sample_times, "ms", "time since the steady start")},
     constraints=STEADY_MODELS[0].constraints + (
         Constraint(("cage_width",), _has_mass, "the transient needs a cage of some width"),
+        Constraint(("cage_eccentricity", "cage_outer_diameter"), mass_centre_on_cage,
+                   "cage_eccentricity must be below half the cage_outer_diameter: a body's "
+                   "mass centre lies within its outline"),
         Constraint(("duration", "output_interval"), _samples_fit,
                    "output_interval must not exceed duration, and at most 1e5 samples"),
     ),
     seconds_per_point=2.0,
     points_per_call=1,
+    validity="cage_slip's, for the steady state it starts from: " + STEADY_VALIDITY,
 )]

@@ -13,16 +13,17 @@ from __future__ import annotations
 import numpy as np
 
 from . import cage_dynamics_6dof_rhs as rhs
-from .cage_dynamics import GRAVITY, _samples, _samples_fit
+from .cage_dynamics import GRAVITY, _samples, _samples_fit, mass_centre_on_cage
 from .cage_dynamics_rhs import roller_loads
 from .cage_slip import MODELS as STEADY_MODELS
+from .cage_slip import VALIDITY as STEADY_VALIDITY
 from .cage_slip import bearing_terms, cage_slip, cage_windage
-from .contact import palmgren_constant
+from .contact import DENSEST_SOLID, STIFFEST_SOLID, palmgren_constant
 from .contact_laws import qin_damping_coefficient, winkler_modulus
 from .cylindrical import crb_radial
 from .profiles import slice_centres
-from .registry import (CONVERGED, NOT_CONVERGED, Constraint, DimCoordinate, Input, Model,
-                       Output)
+from .registry import (CONVERGED, NOT_CONVERGED, VALIDITY_MASK, Constraint, DimCoordinate,
+                       Input, Model, Output, outcome)
 
 _SETTLED = 0.5  # the settled part: the last half of the run
 INTEGRATORS = ("adaptive", "rk4")
@@ -265,7 +266,7 @@ def setup(one):
                        pocket_film_fill=one["pocket_film_fill"],
                        end_film_thickness=one["end_film_thickness"],
                        end_film_fill=_START_END_FILL, orbit_points=20 * count)
-    if steady["status"][0] != CONVERGED:
+    if outcome(steady["status"][0]) != CONVERGED:
         return steady["status"][0], None
     omega_c = steady["cage_speed"][0]
     ring = crb_radial(terms["load"], count, 2 * terms["pitch_radius"], terms["diameter"],
@@ -284,7 +285,8 @@ def setup(one):
     times = np.arange(int(np.floor(one["duration"] / one["output_interval"] + 1e-9)) + 1) \
         * one["output_interval"]
     return CONVERGED, dict(p=p, elements=elements, state=state, times=times, count=count,
-                           omega_kin=terms["omega_kin"], spin_kin=terms["spin_kin"])
+                           omega_kin=terms["omega_kin"], spin_kin=terms["spin_kin"],
+                           validity=steady["status"][0] & VALIDITY_MASK)
 
 
 def start(count, p, whole, steady, drop, omega_c, kinematic_spin):
@@ -360,12 +362,12 @@ def _run(one):
     if run is None:
         return status, None
     samples, arc, end, rib, events, steps, reached = integrate(run, one)
-    if not reached:
-        return NOT_CONVERGED, {"integration_steps": float(steps)}
-    return CONVERGED, dict(results(samples, run), pocket_arc_force=arc.transpose(0, 2, 1),
-                           pocket_end_clearance=end, rib_clearance=rib,
-                           pocket_arc_events=events[0], pocket_end_events=events[1],
-                           rib_events=events[2], integration_steps=float(steps))
+    if not reached:  # the steady start's validity carried on
+        return NOT_CONVERGED | run["validity"], {"integration_steps": float(steps)}
+    return CONVERGED | run["validity"], dict(
+        results(samples, run), pocket_arc_force=arc.transpose(0, 2, 1),
+        pocket_end_clearance=end, rib_clearance=rib, pocket_arc_events=events[0],
+        pocket_end_events=events[1], rib_events=events[2], integration_steps=float(steps))
 
 
 def results(samples, run):
@@ -420,6 +422,10 @@ def _arc_angles(values) -> int:
     return 2 * int(np.max(values["arc_angle_points"]))
 
 
+def _axially_on_cage(cage_axial_eccentricity, cage_width):
+    return np.abs(cage_axial_eccentricity) < 0.5 * cage_width
+
+
 def _face_fits(roller_diameter, end_chamfer):
     return end_chamfer < 0.5 * roller_diameter
 
@@ -445,7 +451,7 @@ MODELS = [Model(
             "cage with six degrees of freedom, Winkler pocket, end-face and rib contacts, cage "
             "mass eccentricity and ring misalignment (paper 002's own model).",
     reference="Paper 002, sections 1.3-1.5 (eqs. 1-26), eqs. 27-28, section 3",
-    version="1",
+    version="2",
     inputs=tuple(_PLANAR[name] for name in STEADY_INPUTS if name != "branch") + (
         _PLANAR["pocket_film_fill"],
         Input("end_film_thickness", "mm", "axial play of a roller between the ribs (Table 2: "
@@ -460,9 +466,9 @@ MODELS = [Model(
               "D/2 - chamfer (not stated)", default=0.5, minimum=0.0,
               label="roller end chamfer"),
         Input("cage_density", "kg/m^3", "cage density (brass: 8600)", default=8600.0,
-              minimum=0.0, exclusive_minimum=True),
+              minimum=0.0, exclusive_minimum=True, maximum=DENSEST_SOLID),
         Input("cage_youngs_modulus", "GPa", "cage Young's modulus (brass: 106)", default=106.0,
-              minimum=0.0, exclusive_minimum=True),
+              minimum=0.0, exclusive_minimum=True, maximum=STIFFEST_SOLID),
         Input("cage_poisson_ratio", "1", "cage Poisson's ratio (brass: 0.32)", default=0.32,
               minimum=0.0, maximum=0.49),
         Input("winkler_depth", "mm", "depth H of the Winkler layer of eq. 1 (not stated)",
@@ -567,6 +573,12 @@ MODELS = [Model(
     dim_coordinates={"elapsed_time": DimCoordinate(
         ("output_interval",), _sample_times, "ms", "time since the steady start")},
     constraints=STEADY_MODELS[0].constraints + (
+        Constraint(("cage_eccentricity", "cage_outer_diameter"), mass_centre_on_cage,
+                   "cage_eccentricity must be below half the cage_outer_diameter: a body's "
+                   "mass centre lies within its outline"),
+        Constraint(("cage_axial_eccentricity", "cage_width"), _axially_on_cage,
+                   "|cage_axial_eccentricity| must be below half the cage_width: a body's "
+                   "mass centre lies within its outline"),
         Constraint(("roller_diameter", "end_chamfer"), _face_fits,
                    "end_chamfer must be less than the roller's radius"),
         Constraint(("inner_raceway_diameter", "rib_height", "cage_inner_diameter"),
@@ -578,4 +590,5 @@ MODELS = [Model(
     ),
     seconds_per_point=30.0,  # at the default 0.05 s of bearing time (measured: 25-35 s)
     points_per_call=1,
+    validity="cage_slip's, for the steady state it starts from: " + STEADY_VALIDITY,
 )]

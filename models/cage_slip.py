@@ -22,10 +22,13 @@ import inspect
 
 import numpy as np
 
-from .cylindrical import crb_radial
-from .lubrication import TractionCurve, central_film_thickness, walther_viscosity
-from .registry import (CONVERGED, NO_ROOT_IN_RANGE, NOT_CONVERGED, Constraint, Input,
-                             Model, Output, combine_status)
+from .cylindrical import CLEARANCE_BELOW_ROLLER, crb_radial
+from .bearing_life import VISCOSITY_ORDER
+from .lubrication import (OIL_DENSITIES, VISCOSITY_GRADES, WALTHER_FLOOR, TractionCurve,
+                          central_film_thickness, walther_viscosity)
+from .contact import DENSEST_SOLID, STIFFEST_SOLID
+from .registry import (CONVERGED, NO_ROOT_IN_RANGE, NOT_CONVERGED, OUT_OF_VALIDITY, Constraint,
+                       Input, Model, Output, combine_status)
 from .solvers import solve_increasing
 
 AIR_DENSITY = 1.2  # [kg/m^3]
@@ -45,6 +48,11 @@ _SPEED_TOLERANCE = 1e-10  # of the kinematic cage speed, for the refined root
 # balances (the cage's drag plus the magnitudes of the rollers' push and pocket couples).
 _RELATIVE_RESIDUAL = 1e-6
 BRANCHES = ("high_slip", "low_slip")
+#: Largest pocket clearance and end film as a share of the roller radius: the pocket's and
+#: the ends' Couette films (Petroff's law) take the film thin against the radius, its
+#: curvature neglected (an error of the order of the ratio, Hamrock, Schmid and Jacobson,
+#: Fundamentals of Fluid Film Lubrication, 2nd ed. (2004), ch. 8, Petroff's equation) [-].
+THIN_FILM_LIMIT = 0.1
 
 
 def kinematic_cage_speed(speed, inner_raceway_diameter, outer_raceway_diameter):
@@ -124,7 +132,9 @@ def cage_slip(radial_load, speed, roller_count, inner_raceway_diameter, roller_d
         ``no_root_in_range`` where there is none (the rollers cannot drive the cage: the
         outputs that need the cage speed are NaN), ``not_converged`` where the residual is not
         small against the torques it balances; the status of the load distribution
-        (:func:`models.cylindrical.crb_radial`) is combined in.
+        (:func:`models.cylindrical.crb_radial`) is combined in, its validity with it;
+        ``out_of_validity`` also where the pocket clearance or the end film exceeds
+        :data:`THIN_FILM_LIMIT` of the roller radius (the films' thin-film form).
 
     References
     ----------
@@ -175,7 +185,9 @@ def cage_slip(radial_load, speed, roller_count, inner_raceway_diameter, roller_d
         "film_thickness": film_thickness * missing,
         "max_roller_load": balance.inner_load.max(axis=1),
         "equilibrium_count": count.astype(float),
-        "status": combine_status(status, balance.load_status).astype(np.int8),
+        "status": combine_status(status, balance.load_status, np.where(thick_films(
+            terms["diameter"], terms["pocket_clearance"], terms["end_film_thickness"]),
+            OUT_OF_VALIDITY, CONVERGED)).astype(np.int8),
     }
 
 
@@ -220,7 +232,8 @@ class _CageBalance:
                                                 * terms["contact_length"])
         self.inner_load, centrifugal, self.load_status = _orbit_loads(
             terms["load"], terms["omega_i"], roller_count, 2 * terms["pitch_radius"],
-            terms["diameter"], terms["contact_length"], terms["play"], whole_roller_density)
+            terms["diameter"], terms["contact_length"], terms["play"], whole_roller_density,
+            terms["modulus"], terms["poisson"])
         self.outer_load = self.inner_load + centrifugal[:, None]
 
     def orbit(self, omega_c, index):
@@ -330,7 +343,8 @@ def bearing_terms(radial_load, speed, roller_count, inner_raceway_diameter, roll
     viscosity = rho_oil * kinematic_viscosity
     mass = density * np.pi * radius**2 * length
     effective_density = fraction * rho_oil + (1.0 - fraction) * AIR_DENSITY
-    exposed = diameter - 0.5 * (cage_out - cage_in)  # roller height outside the cage
+    # roller height outside the cage (none where the cage fills the space between the rings)
+    exposed = np.maximum(diameter - 0.5 * (cage_out - cage_in), 0.0)
     return {
         "load": load, "omega_i": omega_i, "diameter": diameter,
         "contact_length": contact_length, "play": play, "density": density, "alpha": alpha,
@@ -347,7 +361,8 @@ def bearing_terms(radial_load, speed, roller_count, inner_raceway_diameter, roll
         "windage": 0.5 * effective_density * c_drag * contact_length * exposed
         * pitch_radius**2,
         "effective_density": effective_density, "cage_in": cage_in, "cage_out": cage_out,
-        "width": width, "pocket_clearance": c_pocket, "mu_pocket": mu_pocket,
+        "width": width, "pocket_clearance": c_pocket, "end_film_thickness": h_end,
+        "mu_pocket": mu_pocket,
         "traction": TractionCurve(mu_peak, u_peak, mu_limit),
     }
 
@@ -391,11 +406,12 @@ def cage_windage(omega_c, cage_outer_diameter, cage_width, effective_density,
 
 
 def _orbit_loads(load, omega_i, roller_count, pitch_diameter, diameter, contact_length,
-                 clearance, density):
+                 clearance, density, modulus, poisson):
     """Inner-raceway load at ``Z x 20`` orbit positions from the load line, the centrifugal
     force and the load distribution's status per point (the most severe over its cage
     positions), from the load distribution at 20 cage positions per roller pitch
-    (``crb_radial``, straight rollers)."""
+    (``crb_radial``, straight rollers, whose validity the status carries: the contact
+    pressure with these elastic constants, the rollers' approach)."""
     points = load.size
     positions = 2.0 * np.pi / roller_count * np.arange(_POSITIONS_PER_PITCH) / \
         _POSITIONS_PER_PITCH
@@ -406,7 +422,8 @@ def _orbit_loads(load, omega_i, roller_count, pitch_diameter, diameter, contact_
     result = crb_radial(repeat(load), roller_count, repeat(pitch_diameter), repeat(diameter),
                         repeat(contact_length), clearance=repeat(clearance), slices=1,
                         speed=repeat(omega_i), roller_density=repeat(density),
-                        cage_position=np.tile(positions, points))
+                        cage_position=np.tile(positions, points),
+                        youngs_modulus=repeat(modulus), poisson_ratio=repeat(poisson))
     # Roller j at cage position m sits at m + 2 pi j / Z: interleave to orbit order.
     per_roller = result["roller_load"].reshape(points, _POSITIONS_PER_PITCH, roller_count)
     inner = np.swapaxes(per_roller, 1, 2).reshape(points, -1)
@@ -449,6 +466,43 @@ def _traction_peaks(traction_peak, traction_limit):
     return traction_peak > traction_limit
 
 
+def _contact_on_roller(effective_length, roller_length):
+    return effective_length <= roller_length
+
+
+def _outer_raceway_diameter(inner_raceway_diameter, roller_diameter, clearance):
+    return inner_raceway_diameter + 2.0 * roller_diameter + clearance
+
+
+def _cage_between_raceways(cage_inner_diameter, cage_outer_diameter, inner_raceway_diameter,
+                           roller_diameter, clearance):
+    return (cage_inner_diameter >= inner_raceway_diameter) & (
+        cage_outer_diameter <= _outer_raceway_diameter(inner_raceway_diameter, roller_diameter,
+                                                       clearance))
+
+
+def _pockets_fit(pocket_clearance, roller_count, inner_raceway_diameter, roller_diameter,
+                 clearance):
+    pitch = 0.5 * (inner_raceway_diameter + _outer_raceway_diameter(
+        inner_raceway_diameter, roller_diameter, clearance))
+    return roller_diameter + 2.0 * pocket_clearance < pitch * np.sin(np.pi / roller_count)
+
+
+def thick_films(roller_diameter, pocket_clearance, end_film_thickness):
+    """Where the pocket clearance or the end film exceeds :data:`THIN_FILM_LIMIT` of the
+    roller radius, outside the thin films' validity."""
+    radius = 0.5 * np.asarray(roller_diameter)
+    return (np.asarray(pocket_clearance) > THIN_FILM_LIMIT * radius) | (
+        np.asarray(end_film_thickness) > THIN_FILM_LIMIT * radius)
+
+
+#: The validity cage_slip applies, and the transient models after it.
+VALIDITY = ("the load distribution's (crb_radial at each cage position: a roller's contact "
+            "pressure above 4000 MPa, ISO 76's reference stress for roller bearings, or its "
+            "approach above 2 % of the roller diameter); a pocket clearance or end film "
+            "thicker than 10 % of the roller radius (the pocket and end films are Petroff's "
+            "thin Couette films)")
+
 MODELS = [Model(
     name="cage_slip",
     function=cage_slip,
@@ -456,7 +510,7 @@ MODELS = [Model(
             "orbit and roller spin from traction, oil films and windage.",
     reference="Paper 002 (eq. 27, roller windage); Harris (1966); Gupta (1984); "
               "CAGE_SLIP_PHYSICS.md for the published forms and typical values",
-    version="3",
+    version="4",
     inputs=(
         Input("radial_load", "N", "radial load Fr", minimum=0.0, exclusive_minimum=True),
         Input("speed", "rpm", "inner-ring speed", minimum=0.0, exclusive_minimum=True),
@@ -475,19 +529,23 @@ MODELS = [Model(
               exclusive_minimum=True),
         Input("cage_width", "mm", "cage width (0: no cage windage)", minimum=0.0),
         Input("roller_density", "kg/m^3", "roller density", default=7820.0, minimum=0.0,
-              exclusive_minimum=True),
+              exclusive_minimum=True, maximum=DENSEST_SOLID),
         Input("oil_temperature", "degC", "oil temperature (largest single influence)",
               default=25.0, minimum=-40.0, maximum=200.0),
         Input("viscosity_40", "mm^2/s", "kinematic viscosity at 40 degC (4050-class turbine "
-              "oil: 26)", default=26.0, minimum=0.0, exclusive_minimum=True),
-        Input("viscosity_100", "mm^2/s", "kinematic viscosity at 100 degC (4050 class: 5.4)",
-              default=5.4, minimum=0.0, exclusive_minimum=True),
-        Input("oil_density", "kg/m^3", "oil density", default=1000.0, minimum=0.0,
+              "oil: 26; ISO VG 2 to VG 3200, ISO 3448)", default=26.0,
+              minimum=VISCOSITY_GRADES[0], maximum=VISCOSITY_GRADES[1]),
+        Input("viscosity_100", "mm^2/s", "kinematic viscosity at 100 degC, below that at 40 "
+              "degC (4050 class: 5.4)", default=5.4, minimum=WALTHER_FLOOR,
               exclusive_minimum=True),
+        Input("oil_density", "kg/m^3", "oil density (lubricants: about 820 for light mineral "
+              "oils to 1900 for perfluoropolyethers)", default=1000.0,
+              minimum=OIL_DENSITIES[0], maximum=OIL_DENSITIES[1]),
         Input("pressure_viscosity", "1/GPa", "pressure-viscosity coefficient alpha (film "
-              "thickness only; 10-13)", default=11.0, minimum=0.0),
+              "thickness only; 10-13; lubricants: about 5 for water-glycols to 40 for "
+              "traction fluids)", default=11.0, minimum=0.0, maximum=100.0),
         Input("youngs_modulus", "GPa", "Young's modulus of rollers and rings", default=207.0,
-              minimum=0.0, exclusive_minimum=True),
+              minimum=0.0, exclusive_minimum=True, maximum=STIFFEST_SOLID),
         Input("poisson_ratio", "1", "Poisson's ratio of rollers and rings", default=0.28,
               minimum=0.0, maximum=0.5),
         Input("traction_peak", "1", "peak traction coefficient mu_m (typical 0.05)",
@@ -546,7 +604,23 @@ MODELS = [Model(
                    "cage_outer_diameter must exceed cage_inner_diameter"),
         Constraint(("traction_peak", "traction_limit"), _traction_peaks,
                    "traction_peak must exceed traction_limit"),
+        Constraint(("effective_length", "roller_length"), _contact_on_roller,
+                   "effective_length must not exceed roller_length: the raceway contact is "
+                   "part of the roller"),
+        CLEARANCE_BELOW_ROLLER,  # crb_radial's, whose load distribution this model takes
+        Constraint(("cage_inner_diameter", "cage_outer_diameter", "inner_raceway_diameter",
+                    "roller_diameter", "clearance"), _cage_between_raceways,
+                   "the cage must lie between the raceways: cage_inner_diameter at least "
+                   "inner_raceway_diameter, cage_outer_diameter at most the outer raceway "
+                   "(inner_raceway_diameter + 2 roller_diameter + clearance)"),
+        Constraint(("pocket_clearance", "roller_count", "inner_raceway_diameter",
+                    "roller_diameter", "clearance"), _pockets_fit,
+                   "the pockets do not fit: each, roller_diameter + 2 pocket_clearance wide, "
+                   "must leave a cage bar before the next, whose centre lies pitch_diameter * "
+                   "sin(180 deg / roller_count) away"),
+        VISCOSITY_ORDER,
     ),
     seconds_per_point=4.5e-3,  # benchmarks/declared_costs.py: 4.5-4.6e-3 on the studies' sweeps
     points_per_call=64,
+    validity=VALIDITY,
 )]

@@ -188,6 +188,13 @@ def line_contact_pressure(line_load, curvature_sum, modulus):
 #: the contact is no longer elastic and Hertz's theory, on which every contact law here
 #: rests, no longer holds [Pa].
 ROLLER_PRESSURE_LIMIT = 4000e6
+#: The stiffest solid, diamond (Young's modulus 1050-1220 GPa; Klein and Cardinale, Diamond
+#: Relat. Mater. 2 (1993) 918): a rolling element or ring stiffer than it is a slip of units
+#: [GPa, the unit the models declare].
+STIFFEST_SOLID = 1220.0
+#: The densest solid, osmium (22 590 kg/m^3 at 20 deg C; Arblaster, Platinum Metals Rev. 33
+#: (1989) 14): a rolling element or cage denser than it is a slip of units [kg/m^3].
+DENSEST_SOLID = 22590.0
 BALL_PRESSURE_LIMIT = 4200e6
 #: Approach of a roller's contacts beyond which a bearing model's fixed, small-displacement
 #: geometry (contact angles, azimuths, contact on the undeformed profiles) no longer holds, as
@@ -426,7 +433,7 @@ MODELS = [Model(
     summary="Hertz point contact of two elastic bodies: contact ellipse, approach, maximum "
             "pressure and load-deflection constant, exact or by Hamrock and Brewe.",
     reference="Harris & Kotzalas, Rolling Bearing Analysis, ch. 6; Hamrock & Brewe (1983)",
-    version="2",
+    version="3",
     inputs=(
         Input("load", "N", "normal load Q", minimum=0.0),
         Input("curvature_1x", "1/mm", "principal curvature of body 1 in plane x (negative: "
@@ -437,12 +444,12 @@ MODELS = [Model(
         Input("curvature_2y", "1/mm", "principal curvature of body 2 in plane y", default=0.0),
         Input("youngs_modulus", "GPa", "Young's modulus of body 1 (and 2 unless given)",
               default=207.0, minimum=0.0, exclusive_minimum=True,
-              label="Young's modulus"),
+              label="Young's modulus", maximum=STIFFEST_SOLID),
         Input("poisson_ratio", "1", "Poisson's ratio of body 1 (and 2 unless given)",
               default=0.3, minimum=0.0, maximum=0.5,
               label="Poisson's ratio"),
         Input("youngs_modulus_2", "GPa", "Young's modulus of body 2; default: body 1's",
-              default=None, minimum=0.0, exclusive_minimum=True),
+              default=None, minimum=0.0, exclusive_minimum=True, maximum=STIFFEST_SOLID),
         Input("poisson_ratio_2", "1", "Poisson's ratio of body 2; default: body 1's",
               default=None, minimum=0.0, maximum=0.5),
         Input("formula", "", "exact: elliptic integrals; hamrock_brewe: closed-form "

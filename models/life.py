@@ -17,6 +17,8 @@ from __future__ import annotations
 
 import numpy as np
 
+from .registry import below
+
 KINDS = ("ball", "roller")
 RINGS = ("inner", "outer")
 
@@ -136,7 +138,9 @@ def radial_ball_equivalent_load(radial_load, axial_load, contact_angle, moment_l
     axial = np.abs(np.asarray(axial_load, dtype=float))
     degrees = np.degrees(np.asarray(contact_angle, dtype=float))
     angles, limit, radial_factor, axial_factor = ANGULAR_CONTACT_FACTORS.T
-    beyond = axial > np.interp(degrees, angles, limit) * radial  # F_a / F_r > e, F_r = 0 too
+    # F_a / F_r > e (F_r = 0 too); F_a / F_r = e written exactly stays at e whatever rounding
+    # the loads' and the angle's conversions left
+    beyond = below(np.interp(degrees, angles, limit) * radial, axial)
     load = np.where(beyond, np.interp(degrees, angles, radial_factor) * radial
                     + np.interp(degrees, angles, axial_factor) * axial, radial)
     tabulated = ((degrees >= angles[0] - _ANGLE_ROUNDING)
@@ -222,7 +226,8 @@ def reference_viscosity(speed, pitch_diameter):
     with np.errstate(divide="ignore"):
         slow = 45000.0 * rpm**-0.83 * millimetres**-0.5
         fast = 4500.0 * rpm**-0.5 * millimetres**-0.5
-    return np.where(rpm < 1000.0, slow, fast) * 1e-6
+    # "1000 rpm" comes back from rad/s as 999.9999999999999: it takes the standard's n >= 1000
+    return np.where(below(rpm, 1000.0), slow, fast) * 1e-6
 
 
 def viscosity_ratio(viscosity, speed, pitch_diameter):

@@ -7,6 +7,22 @@ import numpy as np
 from .solvers import solve_increasing
 
 CELSIUS = 273.15
+#: Kinematic viscosities at 40 deg C of the ISO viscosity grades, VG 2 (1.98-2.42 mm^2/s) to
+#: VG 3200 (2880-3520 mm^2/s), ISO 3448:1992 Table 1: the oils a bearing runs in [mm^2/s].
+VISCOSITY_GRADES = (1.98, 3520.0)
+#: Walther's law takes log10(log10(nu + 0.7)) with nu in mm^2/s: defined above 0.3 mm^2/s.
+WALTHER_FLOOR = 0.3
+#: Densities of lubricating oils [kg/m^3]: from light mineral oils (about 820 at 15 deg C) to
+#: perfluoropolyethers (about 1900), with room on both sides; an oil outside it is a slip of
+#: units.
+OIL_DENSITIES = (600.0, 2000.0)
+
+
+def viscosities_fall(viscosity_40, viscosity_100):
+    """Whether an oil's viscosity at 100 deg C is below that at 40 deg C, as every oil's is
+    (its viscosity falls as it warms); Walther's law through swapped values would make it
+    thicken with temperature."""
+    return np.asarray(viscosity_100) < np.asarray(viscosity_40)
 
 
 def walther_viscosity(temperature, viscosity_40, viscosity_100):

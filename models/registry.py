@@ -25,10 +25,23 @@ from typing import Callable
 
 import numpy as np
 
-#: Status codes shared by all models (netCDF ``flag_values`` / ``flag_meanings``).
-CONVERGED, NOT_CONVERGED, INFEASIBLE, MODEL_ERROR, OUT_OF_VALIDITY, NO_ROOT_IN_RANGE = range(6)
+#: Status codes shared by all models (netCDF ``flag_masks`` / ``flag_values`` /
+#: ``flag_meanings``). A point's status is a bit field: its outcome (bits 0, 1 and 3:
+#: converged, not converged, infeasible, model error or no root in range, one of them) and,
+#: apart from it, bit 2 where the point lies outside the model's stated validity, whatever its
+#: outcome: ``NO_ROOT_IN_RANGE | OUT_OF_VALIDITY`` is both. A point converged within validity
+#: is 0, as before; an earlier file's ``no_root_in_range`` was 5.
+CONVERGED, NOT_CONVERGED, INFEASIBLE, MODEL_ERROR = range(4)
+OUT_OF_VALIDITY, NO_ROOT_IN_RANGE = 4, 8
+#: The bits of a status that hold its outcome, and the one that says "outside validity".
+OUTCOME_MASK, VALIDITY_MASK = 0b1011, OUT_OF_VALIDITY
 STATUS_MEANINGS = ("converged", "not_converged", "infeasible", "model_error",
                    "out_of_validity", "no_root_in_range")
+#: Each meaning's value and mask (``status & mask == value`` where it holds), in the order of
+#: :data:`STATUS_MEANINGS`.
+STATUS_VALUES = (CONVERGED, NOT_CONVERGED, INFEASIBLE, MODEL_ERROR, OUT_OF_VALIDITY,
+                 NO_ROOT_IN_RANGE)
+STATUS_MASKS = (OUTCOME_MASK,) * 4 + (VALIDITY_MASK, OUTCOME_MASK)
 #: What each status says of a point, for ``describe``, the README and the netCDF ``comment``.
 STATUS_DESCRIPTIONS = {
     "converged": "solved; the values hold",
@@ -36,27 +49,69 @@ STATUS_DESCRIPTIONS = {
     "infeasible": "no solution exists for these inputs (e.g. a load the bearing cannot "
                   "carry); outputs are NaN",
     "model_error": "the model raised an exception for this group of points; outputs are NaN",
-    "out_of_validity": "solved, but outside the model's stated validity (its limits are in "
-                       "`bearing-sweep describe MODEL`); values kept, do not trust them",
+    "out_of_validity": "outside the model's stated validity (its limits are in "
+                       "`bearing-sweep describe MODEL`), whatever the point's other status: "
+                       "values kept where it has them, do not trust them",
     "no_root_in_range": "solved, but the root the model searches for (a limit angle, a cage "
                         "equilibrium) is not in its search range; the outputs that need it "
                         "are NaN, the others hold",
 }
-#: Statuses whose values the engine keeps; the others are NaN whatever the model returned.
-VALUES_KEPT = (CONVERGED, OUT_OF_VALIDITY, NO_ROOT_IN_RANGE)
-#: Order in which statuses of one point combine (the last named wins).
-_SEVERITY = (CONVERGED, OUT_OF_VALIDITY, NO_ROOT_IN_RANGE, INFEASIBLE, NOT_CONVERGED,
-             MODEL_ERROR)
+#: Outcomes whose values the engine keeps; the others are NaN whatever the model returned.
+VALUES_KEPT = (CONVERGED, NO_ROOT_IN_RANGE)
+#: Order in which the outcomes of one point combine (the last named wins).
+_SEVERITY = (CONVERGED, NO_ROOT_IN_RANGE, INFEASIBLE, NOT_CONVERGED, MODEL_ERROR)
 
 
 def combine_status(*codes):
-    """The status of points that went through several steps: the most severe of ``codes``
-    (arrays that broadcast), in the order converged < out_of_validity < no_root_in_range <
-    infeasible < not_converged < model_error."""
-    rank = np.argsort(_SEVERITY)  # status code -> its place in the order
-    worst = np.max([rank[np.asarray(c, dtype=np.int64)] for c in np.broadcast_arrays(*codes)],
-                   axis=0)
-    return np.asarray(_SEVERITY, dtype=np.int8)[worst]
+    """The status of points that went through several steps (arrays that broadcast): the
+    most severe outcome of ``codes``, in the order converged < no_root_in_range < infeasible
+    < not_converged < model_error, and out of validity where any of them is."""
+    codes = [np.asarray(c, dtype=np.int64) for c in np.broadcast_arrays(*codes)]
+    rank = np.full(OUTCOME_MASK + 1, len(_SEVERITY) - 1)  # an unknown outcome: model_error
+    rank[list(_SEVERITY)] = np.arange(len(_SEVERITY))
+    worst = np.max([rank[c & OUTCOME_MASK] for c in codes], axis=0)
+    outside = np.any([c & VALIDITY_MASK for c in codes], axis=0)
+    return (np.asarray(_SEVERITY, dtype=np.int8)[worst] | np.where(outside, OUT_OF_VALIDITY, 0)
+            ).astype(np.int8)
+
+
+def outcome(status):
+    """The outcome of each status (its validity bit cleared)."""
+    return np.asarray(status) & OUTCOME_MASK
+
+
+def values_kept(status):
+    """Where a status keeps the point's values (converged or no root in range, within
+    validity or not)."""
+    return np.isin(outcome(status), VALUES_KEPT)
+
+
+def out_of_validity(status):
+    """Where a status says the point lies outside the model's validity."""
+    return (np.asarray(status) & VALIDITY_MASK) != 0
+
+
+def known_status(status):
+    """Where a model's status is one this registry defines (an outcome, with or without the
+    validity bit)."""
+    status = np.asarray(status)
+    return (status >= 0) & ((status & ~(OUTCOME_MASK | VALIDITY_MASK)) == 0) & np.isin(
+        status & OUTCOME_MASK, _SEVERITY)
+
+
+#: Relative rounding that a value written in a customary unit ("1000 rpm", "45 deg") may
+#: carry once converted to SI and back ("1000 rpm" reads 999.9999999999999 r/min again): a
+#: branch of a formula at a round value of an input compares with this much room.
+UNIT_ROUNDING = 1e-12
+
+
+def below(value, branch_point):
+    """Where ``value`` lies below ``branch_point`` by more than :data:`UNIT_ROUNDING`: the
+    branch "under" of a formula whose branch point is written in the input's customary unit,
+    so that an input written exactly at the branch point takes the branch "at or above" it
+    whatever rounding its conversion to SI left."""
+    return np.asarray(value) < np.asarray(branch_point) * (1.0 - UNIT_ROUNDING)
+
 
 #: Marks an input that has no default and must be given.
 REQUIRED = object()
@@ -229,7 +284,8 @@ class Model:
     #: model's temporaries stay small enough for the caches that workers share (crb_radial:
     #: two workers slowed each other's tasks by 40 % with 2500-point calls, 15 % with 500).
     points_per_call: int = 100_000
-    #: The limits beyond which a solved point is marked ``out_of_validity``, in words.
+    #: The limits beyond which a point is marked ``out_of_validity`` (beside its outcome), in
+    #: words, with their sources.
     validity: str = ""
     #: Values along output dimensions that a few inputs fix (``DimCoordinate``), by dimension.
     dim_coordinates: dict = field(default_factory=dict)

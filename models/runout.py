@@ -22,13 +22,18 @@ from __future__ import annotations
 import numpy as np
 
 from .geometry import elements_fit
-from .registry import (CONVERGED, NOT_CONVERGED, Constraint, DimCoordinate, Input, Model,
-                             Output)
+from .registry import (CONVERGED, NOT_CONVERGED, OUT_OF_VALIDITY, Constraint, DimCoordinate,
+                       Input, Model, Output, combine_status)
 
 SPINS = ("absolute", "paper")
 ARRANGEMENTS = ("as_given", "alternating")
 _TIE = 1e-13  # [m]: lines this close count as meeting
 _ROUNDING = 1e-12  # [-]: a clearance this far below zero, relative to d_e, is zero
+#: Largest error of the linear contact conditions, as a share of the runout, or below
+#: LINEARISATION_FLOOR (a tenth of the 0.1 um to which paper 004 states runouts): where the
+#: exact gaps at the centre found vary from step to step by more, the runout is not known to
+#: that [-], [m]. Paper 004's bearing, its clearance and micrometre errors, stays below 0.002 um.
+LINEARISATION_LIMIT, LINEARISATION_FLOOR = 0.01, 1e-8
 
 
 def roller_angles(rotation, roller_count, roller_diameter, pitch_diameter, spin="absolute"):
@@ -180,7 +185,17 @@ def crb_runout(inner_raceway_diameter, outer_raceway_diameter, roller_diameter, 
         dial gauge above); ``center_x``, ``center_y`` ``(N, steps)`` [m]; ``rotation_angle``
         ``(N, steps)`` [rad]; ``assembly_order`` ``(N, Z)``: which given error each roller
         position has (1-based); ``status``: not converged where no resting position was
-        found at some step (a NaN input).
+        found at some step (a NaN input); out of validity as below.
+
+    Notes
+    -----
+    Validity: a point is ``out_of_validity`` (values kept) where, with the centre found, a
+    roller (of the upper half too) has no room between the rings (a preload the unloaded
+    model lacks); where the gaps of the resting rollers at that centre with the distances
+    between the centres not linearised vary from step to step by more than 1 % of the runout
+    and 0.01 um (the centre moves by more than micrometres against the radii: a large
+    clearance or large errors); or where a roller's or the inner raceway's profile is not
+    convex (``C (n^2 + 1) >= R``), so that a contact leaves the radius line.
 
     References
     ----------
@@ -245,14 +260,43 @@ def crb_runout(inner_raceway_diameter, outer_raceway_diameter, roller_diameter, 
     x, y = lowest_centre(slope, intercept, active)
     distance = np.hypot(x, y)
     found = np.all(np.isfinite(distance), axis=-1)
+    runout = distance.max(axis=-1) - distance.min(axis=-1)
+    # Validity. Every roller, those of the upper half too, must find room between the rings
+    # with the centre found: else the rings squeeze it, a preload the unloaded model lacks.
+    gap = room - (np.cos(azimuth) * x[..., None] + np.sin(azimuth) * y[..., None])
+    squeezed = np.any(gap < -_TIE, axis=(-2, -1))
+    # The gaps of the resting rollers at that centre with the distances between the centres
+    # not linearised: the lowest is zero in the linear model; what it is instead bounds the
+    # error of the centre's position (the second-order term |c_perp|^2 / (2 r) it drops).
+    with np.errstate(invalid="ignore"):
+        exact = np.hypot(reach * np.cos(azimuth) - x[..., None], reach * np.sin(azimuth)
+                         - y[..., None]) - reach + room
+        lowest = np.min(np.where(active, exact, np.inf), axis=-1)  # (N, S)
+        # A gap common to every step moves the centre alike and leaves the runout as it is:
+        # how much it changes from step to step bounds the runout's error.
+        linearisation = np.ptp(lowest, axis=-1)
+    inexact = linearisation > np.maximum(LINEARISATION_LIMIT * runout, LINEARISATION_FLOOR)
+    rollers_bent = _not_convex(0.5 * (diameter[:, None] + error), order[..., None],
+                               amplitude[..., None]).any(axis=-1)
+    inner_bent = _not_convex(0.5 * inner, inner_set[0][:, 0, 0], inner_set[1][:, 0, 0])
+    outside = squeezed | inexact | rollers_bent | inner_bent
     return {
-        "runout": distance.max(axis=-1) - distance.min(axis=-1),
+        "runout": runout,
         "vertical_runout": y.max(axis=-1) - y.min(axis=-1),
         "center_x": x, "center_y": y,
         "rotation_angle": np.broadcast_to(rotation, x.shape),
         "assembly_order": order_index + 1.0,
-        "status": np.where(found, CONVERGED, NOT_CONVERGED).astype(np.int8),
+        "status": combine_status(np.where(found, CONVERGED, NOT_CONVERGED),
+                                 np.where(outside, OUT_OF_VALIDITY, CONVERGED)),
     }
+
+
+def _not_convex(radius, order, amplitude):
+    """Where a profile ``r = R + sum C cos(n theta + psi)`` (``radius`` ``R``, harmonics along
+    the last axis of ``order`` and ``amplitude``) may curve the wrong way: a single harmonic
+    does at its troughs where ``C (n^2 + 1) >= R`` (for n = 1 the limacon's ``C >= R/2``), and
+    a contact there leaves the radius line the model takes it on."""
+    return np.sum(np.asarray(amplitude) * (np.asarray(order) ** 2 + 1.0), axis=-1) >= radius
 
 
 def alternating_by_size(error):
@@ -283,6 +327,28 @@ def _clearance(inner_raceway_diameter, outer_raceway_diameter, roller_diameter):
     return clearance >= -_ROUNDING * outer_raceway_diameter
 
 
+def _rollers_have_radius(roller_diameter, roller_diameter_error, roller_roundness_amplitude):
+    # Every roller's radius stays positive whatever order or phase puts its largest negative
+    # error against its deepest trough: D/2 + min(error)/2 - max(C) > 0.
+    diameter = np.asarray(roller_diameter, dtype=float)
+    error, amplitude = (np.asarray(a, dtype=float) for a in (roller_diameter_error,
+                                                             roller_roundness_amplitude))
+    error, amplitude = (a.min(axis=-1) if a.ndim > diameter.ndim else a for a in (
+        error, -amplitude))
+    return 0.5 * (diameter + error) + amplitude > 0.0
+
+
+def _raceways_have_radius(inner_raceway_diameter, outer_raceway_diameter,
+                          inner_roundness_amplitude, outer_roundness_amplitude):
+    def troughs(amplitude, reference):  # the harmonics' amplitudes summed, per point
+        amplitude = np.asarray(amplitude, dtype=float)
+        return amplitude.sum(axis=-1) if amplitude.ndim > np.ndim(reference) else amplitude
+    return (troughs(inner_roundness_amplitude, inner_raceway_diameter)
+            < 0.5 * np.asarray(inner_raceway_diameter)) & (
+        troughs(outer_roundness_amplitude, outer_raceway_diameter)
+        < 0.5 * np.asarray(outer_raceway_diameter))
+
+
 def _whole_orders(roller_roundness_order, inner_roundness_order, outer_roundness_order):
     return all(np.all(np.asarray(order) == np.round(order)) for order in (
         roller_roundness_order, inner_roundness_order, outer_roundness_order))
@@ -308,7 +374,7 @@ MODELS = [Model(
             "roundness and size errors of rollers and raceways.",
     reference="Paper 004, Influence of geometric error of rollers on rotational accuracy of "
               "cylindrical roller bearings, eq. 1-6, section 1.4",
-    version="3",
+    version="4",
     inputs=(
         Input("inner_raceway_diameter", "mm", "inner raceway diameter di", minimum=0.0,
               exclusive_minimum=True),
@@ -367,7 +433,22 @@ MODELS = [Model(
                    "unloaded"),
         Constraint(("roller_roundness_order", "inner_roundness_order", "outer_roundness_order"),
                    _whole_orders, "roundness orders must be whole numbers"),
+        Constraint(("roller_diameter", "roller_diameter_error", "roller_roundness_amplitude"),
+                   _rollers_have_radius, "a roller's radius would be negative: "
+                   "roller_roundness_amplitude must stay below (roller_diameter + "
+                   "roller_diameter_error) / 2 for every roller"),
+        Constraint(("inner_raceway_diameter", "outer_raceway_diameter",
+                    "inner_roundness_amplitude", "outer_roundness_amplitude"),
+                   _raceways_have_radius, "a raceway's radius would be negative: the sum of "
+                   "its roundness amplitudes must stay below half its diameter"),
     ),
     seconds_per_point=9e-3,  # benchmarks/declared_costs.py: 9.1-9.6e-3 on the studies' sweeps
     points_per_call=8,
+    validity="with the centre found, a roller without room between the rings (a preload: "
+             "the model is unloaded); resting rollers' gaps that vary from step to step by "
+             "more than 1 % of the runout and 0.01 um with the distances between the centres "
+             "not linearised (paper 004's linear contact conditions, section 1.4, take "
+             "micrometre errors against radii of centimetres); a roller or "
+             "inner raceway profile that is not convex, C (n^2 + 1) >= R (a contact off the "
+             "radius line)",
 )]

@@ -17,15 +17,17 @@ from __future__ import annotations
 
 import numpy as np
 
-from .bearing_life import (DEFAULT_CONTAMINATION_FACTOR, LIFE_INPUTS, SPEED_INPUT,
-                           life_outputs, rating_lives)
-from .contact import (APPROACH_LIMIT, ROLLER_PRESSURE_LIMIT, effective_modulus,
-                            hertz_point, line_contact_pressure)
+from .bearing_life import (DEFAULT_CONTAMINATION_FACTOR, LIFE_CONSTRAINTS, LIFE_INPUTS,
+                           SPEED_INPUT, life_outputs, rating_lives)
+from .contact import (APPROACH_LIMIT, ROLLER_PRESSURE_LIMIT, STIFFEST_SOLID, effective_modulus,
+                      hertz_point, line_contact_pressure)
+from .geometry import elements_fit
 from .kernels import Kernels
 from .life import roller_bearing_reference_life, tapered_equivalent_load
 from .lubrication import CELSIUS
 from .registry import (CONVERGED, INFEASIBLE, NO_ROOT_IN_RANGE, NOT_CONVERGED,
-                             OUT_OF_VALIDITY, Constraint, Input, Model, Output, combine_status)
+                       OUT_OF_VALIDITY, Constraint, Input, Model, Output, below,
+                       combine_status)
 from .solvers import solve_increasing
 
 #: Load-deflection exponent of a roller between its raceways, Q = K delta^1.11 (eq. 13-18).
@@ -176,7 +178,7 @@ def trb_load(radial_load, axial_load, roller_count, effective_length, roller_mea
     radial, axial, length, diameter, angle, given, pitch, modulus, pressure_limit = arrays[:9]
     speed, life = arrays[9], arrays[10:]
     constant = np.where(np.isnan(given), paper_contact_constant(length, diameter), given)
-    carried = (axial > 0) & (radial * np.tan(angle) <= axial)
+    carried = _carried(radial, axial, angle)
     # Start from the axial displacement of eq. 15 (all rollers equally loaded by F_a) with
     # a radial shift that keeps every roller compressed.
     sin_angle = np.sin(angle)
@@ -334,11 +336,8 @@ def trb_rib(radial_load, axial_load, roller_count, effective_length, roller_mean
     ----------
     .. [1] Paper 003, eq. 1-12, 19-20 and section 3.
     """
-    # The pitch diameter at the middle of the roller: from the rib's foot on the raceway line
-    # (diameter d_i) half the contact length down the cone, then half the roller across it.
-    inner_angle = np.asarray(outer_contact_angle) - 2.0 * np.asarray(roller_half_angle)
-    pitch_diameter = (np.asarray(rib_diameter) - np.asarray(effective_length) * np.sin(
-        inner_angle) + np.asarray(roller_mean_diameter) * np.cos(inner_angle))
+    pitch_diameter = rib_pitch_diameter(rib_diameter, effective_length, roller_mean_diameter,
+                                        outer_contact_angle, roller_half_angle)
     load = trb_load(radial_load, axial_load, roller_count, effective_length,
                     roller_mean_diameter, outer_contact_angle, contact_constant, pitch_diameter,
                     youngs_modulus, poisson_ratio)
@@ -469,11 +468,43 @@ def _roller_balance(end: RollerEnd, cup_load, rib_load, rib_angle, half_angle, l
 
 
 def _carried(radial_load, axial_load, outer_contact_angle):
-    return (axial_load > 0) & (radial_load * np.tan(outer_contact_angle) <= axial_load)
+    # F_r tan(alpha) = F_a written exactly is carried (the rollers opposite just unload),
+    # whatever rounding the conversions of the loads and the angle left
+    return (np.asarray(axial_load) > 0) & ~below(axial_load,
+                                                 radial_load * np.tan(outer_contact_angle))
 
 
 def _cone_beneath(pitch_diameter, roller_mean_diameter):
     return pitch_diameter > roller_mean_diameter
+
+
+def _rollers_fit(roller_count, pitch_diameter, roller_mean_diameter):
+    return elements_fit(roller_count, pitch_diameter, roller_mean_diameter)
+
+
+def rib_pitch_diameter(rib_diameter, effective_length, roller_mean_diameter,
+                       outer_contact_angle, roller_half_angle):
+    """``d_m = d_i - l sin(beta) + D_w cos(beta)``, ``beta = alpha - 2 phi``: the pitch
+    diameter at the middle of the roller, from the rib's foot on the raceway line (diameter
+    ``d_i``) half the contact length down the cone, then half the roller across it."""
+    inner_angle = np.asarray(outer_contact_angle) - 2.0 * np.asarray(roller_half_angle)
+    return (np.asarray(rib_diameter) - np.asarray(effective_length) * np.sin(inner_angle)
+            + np.asarray(roller_mean_diameter) * np.cos(inner_angle))
+
+
+def _rib_rollers_fit(roller_count, rib_diameter, effective_length, roller_mean_diameter,
+                     outer_contact_angle, roller_half_angle):
+    return elements_fit(roller_count, rib_pitch_diameter(
+        rib_diameter, effective_length, roller_mean_diameter, outer_contact_angle,
+        roller_half_angle), roller_mean_diameter)
+
+
+def _cone_angle_positive(outer_contact_angle, roller_half_angle):
+    return 2.0 * np.asarray(roller_half_angle) < np.asarray(outer_contact_angle)
+
+
+def _large_end_larger(roller_large_diameter, roller_mean_diameter):
+    return np.asarray(roller_large_diameter) > np.asarray(roller_mean_diameter)
 
 
 def _end_sphere_fits(roller_end_radius, roller_large_diameter):
@@ -499,7 +530,7 @@ _CONSTANT = Input("contact_constant", "N/mm^1.11", "load-deflection constant Kne
                   "Q = Kne delta^1.11; default eq. 14, 2.89e4 l^0.82 Dw^0.11 (N, mm)",
                   default=None, minimum=0.0, exclusive_minimum=True)
 _MODULUS = Input("youngs_modulus", "GPa", "Young's modulus of rollers and rings", default=206.0,
-                 minimum=0.0, exclusive_minimum=True)
+                 minimum=0.0, exclusive_minimum=True, maximum=STIFFEST_SOLID)
 _POISSON = Input("poisson_ratio", "1", "Poisson's ratio of rollers and rings", default=0.3,
                  minimum=0.0, maximum=0.5)
 _REFERENCE = "Paper 003, Optimization of the rib angle of tapered roller bearings"
@@ -511,7 +542,7 @@ MODELS = [
         summary="Tapered roller bearing under radial and axial load: radial and axial "
                 "displacement and the load of every roller.",
         reference=_REFERENCE + ", eq. 13-18",
-        version="5",
+        version="6",
         inputs=_LOAD_INPUTS + (
             _CONSTANT,
             Input("pitch_diameter", "mm", "pitch diameter dm at the middle of the rollers, for "
@@ -544,7 +575,10 @@ MODELS = [
         dim_sizes={"roller": "roller_count"},
         constraints=(_CARRIED, Constraint(
             ("pitch_diameter", "roller_mean_diameter"), _cone_beneath,
-            "pitch_diameter must exceed roller_mean_diameter")),
+            "pitch_diameter must exceed roller_mean_diameter"), Constraint(
+            ("roller_count", "pitch_diameter", "roller_mean_diameter"), _rollers_fit,
+            "the rollers do not fit on the pitch circle: pitch_diameter * sin(180 deg / "
+            "roller_count) must exceed roller_mean_diameter")) + LIFE_CONSTRAINTS,
         # Through the engine, one core, on two cores shared with others (load average 2.4):
         # 4.2e-6 to 4.4e-6 s/point on benchmarks/declared_costs.py's grid with lives (1.3e-5
         # with the equilibrium vectorised in numpy, in blocks of 2000). Solved point by point:
@@ -563,7 +597,7 @@ MODELS = [
                 "with the conical rib, its distance from the oil groove, and the rib angle at "
                 "which the contact ellipse reaches the groove.",
         reference=_REFERENCE + ", eq. 1-12, 19-20",
-        version="2",
+        version="3",
         inputs=_LOAD_INPUTS + (
             Input("roller_large_diameter", "mm", "large-end roller diameter Dw1", minimum=0.0,
                   exclusive_minimum=True),
@@ -612,7 +646,18 @@ MODELS = [
         ),
         constraints=(_CARRIED, Constraint(
             ("roller_end_radius", "roller_large_diameter"), _end_sphere_fits,
-            "roller_end_radius must exceed half the roller_large_diameter")),
+            "roller_end_radius must exceed half the roller_large_diameter"), Constraint(
+            ("outer_contact_angle", "roller_half_angle"), _cone_angle_positive,
+            "roller_half_angle must be below half the outer_contact_angle: the cone's "
+            "raceway angle beta = alpha - 2 phi is positive in a tapered roller bearing"),
+            Constraint(("roller_large_diameter", "roller_mean_diameter"), _large_end_larger,
+                       "roller_large_diameter must exceed roller_mean_diameter: the large "
+                       "end is the larger"),
+            Constraint(("roller_count", "rib_diameter", "effective_length",
+                        "roller_mean_diameter", "outer_contact_angle", "roller_half_angle"),
+                       _rib_rollers_fit, "the rollers do not fit on the pitch circle "
+                       "(d_i - l sin(beta) + D_w cos(beta)): its chord between neighbours, "
+                       "d_m sin(180 deg / roller_count), must exceed roller_mean_diameter")),
         seconds_per_point=3.7e-4,  # benchmarks/declared_costs.py: 3.5-3.9e-4
         points_per_call=2000,
         validity="trb_load's limits for the raceways (pitch diameter from rib_diameter); the "

@@ -129,7 +129,8 @@ def _describe(name: str) -> str:
         fewer = "" if o["depends_on"] is None else (
             f"; depends on {', '.join(o['depends_on']) or 'no input'} only")
         lines.append(f"  {o['name']} [{o['unit']}]{dims}: {o['meaning']}{integer}{fewer}")
-    lines.append("  status: per point, one of:")
+    lines.append("  status: per point, one outcome, and out_of_validity beside it where it "
+                 "holds:")
     lines += [f"    {status}: {text}" for status, text in model["statuses"].items()]
     if model["validity"]:
         lines.append(f"Validity (out_of_validity beyond): {model['validity']}")

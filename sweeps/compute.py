@@ -16,7 +16,7 @@ from dataclasses import dataclass, field
 
 import numpy as np
 
-from .models.registry import MODEL_ERROR, VALUES_KEPT
+from .models.registry import MODEL_ERROR, known_status, values_kept
 from . import hdf5_chunks, store, units
 from .grid import Grid
 from .labels import stored_unit
@@ -91,8 +91,13 @@ def evaluate_chunk(grid: Grid, start: int, stop: int) -> dict:
             value = _per_point(result[spec.name], members.size, len(spec.dims))
             region = (members,) + tuple(slice(0, n) for n in value.shape[1:])
             outputs[spec.name][region] = _from_si(value, spec)
-        status[members] = _per_point(result["status"], members.size, 0)
-    failed = ~np.isin(status, VALUES_KEPT)
+        returned = _per_point(result["status"], members.size, 0)
+        unknown = ~known_status(returned)
+        if unknown.any():  # a code no reader could decode: the model is wrong there
+            errors.append(f"the model returned status {returned[unknown][0]}, not a code of "
+                          "bearing_sweep.models.registry")
+        status[members] = np.where(unknown, MODEL_ERROR, returned)
+    failed = ~values_kept(status)
     for values in outputs.values():
         values[failed] = np.nan  # whatever a model left there, a failed point is NaN
     return {"outputs": outputs, "status": status, "errors": errors, "versions": versions(model)}
@@ -147,7 +152,10 @@ class Summary:
     dataset: object = None  # the result (an xarray.Dataset) of a sweep run without a file
 
     def text(self) -> str:
-        counts = ", ".join(f"{n} {name}" for name, n in self.status_counts.items() if n)
+        counts = ", ".join(f"{n} {name}" for name, n in self.status_counts.items()
+                           if n and name != "out_of_validity")
+        if self.status_counts.get("out_of_validity"):  # of those, whatever their outcome
+            counts += f"; {self.status_counts['out_of_validity']} out_of_validity"
         counts += "".join(f"; {n} {text}" for text, n in self.noted.items() if n)
         line = (f"{self.model}: {self.points} points ({counts or 'none'}) in {self.seconds:.1f} s "
                 f"on {self.scheduler} -> {self.output}")

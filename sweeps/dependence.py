@@ -16,7 +16,7 @@ from typing import TYPE_CHECKING
 
 import numpy as np
 
-from .models.registry import STATUS_MEANINGS, VALUES_KEPT
+from .models.registry import STATUS_MEANINGS, STATUS_VALUES, VALUES_KEPT, values_kept
 from .grid import Grid
 
 if TYPE_CHECKING:
@@ -70,7 +70,7 @@ def first_held(grid: Grid, output, start: int, stop: int, values: np.ndarray,
     that points ``start..stop-1`` (their ``values`` and ``status``) fall in, and its value:
     one value per cell, what :meth:`Reduction.add_firsts` takes. :class:`InconsistentOutput`
     where another held point of the cell disagrees with it."""
-    held = np.isin(status, VALUES_KEPT)
+    held = values_kept(status)
     points = np.arange(start, stop)[held]
     values = values[held]
     cells = _cells(grid, output, points)
@@ -189,7 +189,27 @@ def on_grid(data: xr.Dataset) -> xr.Dataset:
 
 
 def held_points(status: xr.DataArray) -> xr.DataArray:
-    """Where a point's values hold, from the flags of a dataset's ``status`` variable."""
-    codes = dict(zip(status.attrs["flag_meanings"].split(), status.attrs["flag_values"]))
-    return status.isin([int(codes[STATUS_MEANINGS[code]]) for code in VALUES_KEPT
-                        if STATUS_MEANINGS[code] in codes])
+    """Where a point's values hold, from the flags of a dataset's ``status`` variable (a file
+    written before statuses were bit fields kept the values of its ``out_of_validity``
+    points too)."""
+    kept = [STATUS_MEANINGS[STATUS_VALUES.index(code)] for code in VALUES_KEPT]
+    if "flag_masks" not in status.attrs:
+        kept.append("out_of_validity")
+    held = False
+    for meaning in kept:
+        held = held | flag_holds(status, meaning)
+    return held
+
+
+def flag_holds(status: xr.DataArray, meaning: str) -> xr.DataArray:
+    """Where the CF flag ``meaning`` of ``status`` holds: ``status & mask == value`` by its
+    ``flag_masks`` and ``flag_values``, or ``status == value`` where it has no masks; false
+    everywhere for a meaning it does not name."""
+    meanings = status.attrs["flag_meanings"].split()
+    if meaning not in meanings:
+        return status.copy(data=np.zeros(status.shape, dtype=bool))
+    index = meanings.index(meaning)
+    value = int(np.atleast_1d(status.attrs["flag_values"])[index])
+    if "flag_masks" in status.attrs:
+        return (status & int(np.atleast_1d(status.attrs["flag_masks"])[index])) == value
+    return status == value

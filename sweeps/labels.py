@@ -13,7 +13,7 @@ from typing import TYPE_CHECKING
 
 import numpy as np
 
-from .models.registry import STATUS_DESCRIPTIONS, STATUS_MEANINGS
+from .models.registry import STATUS_DESCRIPTIONS, STATUS_MASKS, STATUS_MEANINGS, STATUS_VALUES
 from . import units
 from .dependence import stored_dims, stored_shape
 from .grid import Grid
@@ -23,6 +23,12 @@ if TYPE_CHECKING:
     import xarray as xr
 
 CONVENTIONS = "CF-1.10"
+#: The ``comment`` of the status variable: how to read its flags, and each meaning.
+STATUS_COMMENT = (
+    "a meaning holds where status & flag_masks == flag_values (CF 3.5): each point has one "
+    "outcome (converged, not_converged, infeasible, model_error, no_root_in_range) and may "
+    "also be out_of_validity; 0 is converged within validity. " + "; ".join(
+        f"{name}: {text}" for name, text in STATUS_DESCRIPTIONS.items()))
 
 
 @dataclass
@@ -85,9 +91,11 @@ def labelled(sweep: Sweep, grid: Grid, outputs: dict, status: np.ndarray,
         data_vars[spec.name] = (dims + spec.dims, values, attrs)
     data_vars["status"] = (grid.dims, status.reshape(grid.shape), {
         "long_name": "solver status of the grid point",
-        "flag_values": np.arange(len(STATUS_MEANINGS), dtype=np.int8),
+        # CF bit fields: an outcome and, apart from it, whether the point is out of validity
+        "flag_masks": np.array(STATUS_MASKS, dtype=np.int8),
+        "flag_values": np.array(STATUS_VALUES, dtype=np.int8),
         "flag_meanings": " ".join(STATUS_MEANINGS),
-        "comment": "; ".join(f"{name}: {text}" for name, text in STATUS_DESCRIPTIONS.items()),
+        "comment": STATUS_COMMENT,
         "coverage_content_type": "qualityInformation",
     })
     data_vars.update(fixed_inputs(sweep))

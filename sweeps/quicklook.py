@@ -15,7 +15,7 @@ import numpy as np
 import xarray as xr
 from matplotlib.lines import Line2D
 
-from .dependence import on_grid
+from .dependence import flag_holds, held_points, on_grid
 from .parts import write_durably
 from .plotting import conditions, in_unit, label, plt
 from .spec import SpecError, suggestion
@@ -24,8 +24,8 @@ from .store import open_result
 #: Figure formats ``plot`` writes, with the first bytes of such a file: only a figure is ever
 #: replaced by another one.
 FORMATS = {".png": (b"\x89PNG",), ".pdf": (b"%PDF",), ".svg": (b"<?xml", b"<svg")}
-#: Statuses whose values hold (out_of_validity: kept, but ringed).
-_HOLDING = ("converged", "out_of_validity")
+#: What a point's mark code says: its values hold, hold but outside validity, or none.
+_HOLDS, _OUTSIDE, _NO_VALUE = range(3)
 #: Most lines in a panel, and most panels across or down; a longer axis is thinned.
 MOST_LINES, MOST_PANELS = 8, 4
 #: How the points whose status is not converged are marked.
@@ -90,7 +90,7 @@ def plot(result, variable: str | None = None, *, x: str | None = None, output=No
     # Axes of one value, and those beyond a panel grid, are held at their first value.
     first = {d: 0 for d in axes + categorical if d != x and (d in held or data.sizes[d] == 1)}
     values = data[variable].isel({d: 0 for d in first if d in data[variable].dims})
-    status = data["status"].isel({d: 0 for d in first if d in axes})
+    status = _marks(data["status"]).isel({d: 0 for d in first if d in axes})
     shown = {d: _shown(data[d]) for d in (x, lines, columns, rows) if d is not None}
 
     nrows, ncols = (data.sizes[rows] if rows else 1), (data.sizes[columns] if columns else 1)
@@ -98,15 +98,13 @@ def plot(result, variable: str | None = None, *, x: str | None = None, output=No
     figure, grid = plt.subplots(nrows, ncols, squeeze=False, sharex=True,
                                 sharey=not {columns, rows} & set(categorical),
                                 figsize=(4.2 * ncols + 1.2, 3.2 * nrows + 1.0))
-    meanings = status.attrs["flag_meanings"].split()
-    codes = dict(zip(meanings, np.atleast_1d(status.attrs["flag_values"])))
     for r in range(nrows):
         for c in range(ncols):
             axis = grid[r, c]
             where = {d: i for d, i in ((rows, r), (columns, c)) if d is not None}
             panel = values.isel(where)
             panel_status = status.isel({d: i for d, i in where.items() if d in status.dims})
-            _draw_panel(axis, panel, panel_status, x, lines, distributed, shown, codes)
+            _draw_panel(axis, panel, panel_status, x, lines, distributed, shown)
             axis.set_title(", ".join(_value_text(shown[d], i) for d, i in where.items()),
                            fontsize=8)
             if r == nrows - 1:
@@ -131,7 +129,7 @@ def plot(result, variable: str | None = None, *, x: str | None = None, output=No
     return figure
 
 
-def _draw_panel(axis, values, status, x, lines, distributed, shown, codes):
+def _draw_panel(axis, values, status, x, lines, distributed, shown):
     """One panel: a line (or a distribution) per value of ``lines``, failures marked."""
     positions, ticks = _positions(shown[x])
     marked = set()
@@ -154,7 +152,7 @@ def _draw_panel(axis, values, status, x, lines, distributed, shown, codes):
         marked |= _mark(axis, positions, line.transpose(x).values,
               np.broadcast_to(point_status.transpose(*[d for d in (x,) if d in
                                                        point_status.dims]).values,
-                              np.shape(positions)), codes, drawn.get_color())
+                              np.shape(positions)), drawn.get_color())
     if ticks is not None:
         axis.set_xticks(positions, ticks, rotation=20, fontsize=7)
     handles = [line for line in axis.lines if not line.get_label().startswith("_")]
@@ -166,17 +164,26 @@ def _draw_panel(axis, values, status, x, lines, distributed, shown, codes):
     axis.grid(alpha=0.3)
 
 
-def _mark(axis, positions, values, status, codes, color) -> set:
+def _marks(status: xr.DataArray) -> xr.DataArray:
+    """Each point's mark code from its status flags: ``_NO_VALUE`` where its values do not
+    all hold (not converged, infeasible, failed, or a root not in range), else ``_OUTSIDE``
+    where it is out of validity, else ``_HOLDS``."""
+    holding = held_points(status) & ~flag_holds(status, "no_root_in_range")
+    return xr.where(holding, xr.where(flag_holds(status, "out_of_validity"), _OUTSIDE, _HOLDS),
+                    _NO_VALUE)
+
+
+def _mark(axis, positions, values, marks, color) -> set:
     """Ring the points solved out of validity; mark with a cross, at the foot of the panel,
-    the points whose values do not hold (NaN: not converged, infeasible, failed). Returns the
-    kinds of mark drawn."""
+    the points whose values do not hold (NaN: not converged, infeasible, failed). ``marks``:
+    each point's code from :func:`_marks`. Returns the kinds of mark drawn."""
     drawn = set()
-    outside = status == codes.get("out_of_validity", -1)
+    outside = marks == _OUTSIDE
     if outside.any():
         axis.plot(positions[outside], values[outside], ls="none", color=color,
                   label="_out of validity", **_MARKS["out of validity"])
         drawn.add("out of validity")
-    failed = ~np.isin(status, [codes[m] for m in _HOLDING if m in codes])
+    failed = marks == _NO_VALUE
     if failed.any():
         axis.plot(positions[failed], np.zeros(failed.sum()), ls="none", color=color,
                   transform=axis.get_xaxis_transform(), clip_on=False,

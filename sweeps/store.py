@@ -12,7 +12,8 @@ from typing import TYPE_CHECKING
 
 import numpy as np
 
-from .models.registry import STATUS_MEANINGS
+from .models.registry import (OUTCOME_MASK, STATUS_MASKS, STATUS_MEANINGS, STATUS_VALUES,
+                              VALIDITY_MASK)
 from .dependence import reductions, stored_cells
 from .grid import Grid, block_shape
 from .labels import labelled, labelled_dataset
@@ -55,8 +56,12 @@ def provenance(scheduler: str) -> dict:
             "git_commit": git_commit()}
 
 
+#: How many status codes there are (the outcome and validity bits in every combination).
+STATUS_CODES = (OUTCOME_MASK | VALIDITY_MASK) + 1
+
+
 def chunk_tally(model, part: dict) -> dict:
-    """What one computed chunk counts: points by status, the model's error messages and the
+    """What one computed chunk counts: points by status code, the model's error messages and the
     points where each output the model declares ``counted`` says so, as plain lists and
     numbers (:func:`summed` adds them up)."""
     noted = {}
@@ -64,14 +69,16 @@ def chunk_tally(model, part: dict) -> dict:
         text, where = output.counted
         noted[text] = noted.get(text, 0) + int(np.count_nonzero(where(part["outputs"][
             output.name])))
-    return {"status": np.bincount(part["status"], minlength=len(STATUS_MEANINGS)).tolist(),
+    return {"status": np.bincount(part["status"], minlength=STATUS_CODES).tolist(),
             "errors": sorted(set(part["errors"])), "noted": noted}
 
 
 def summed(model, tallies) -> tuple[dict, list, dict]:
-    """The sweep's count of points by status, the model's error messages and the counts of
-    the outputs the model declares ``counted``, from its chunks' :func:`chunk_tally`."""
-    counts = np.zeros(len(STATUS_MEANINGS), dtype=np.int64)
+    """The sweep's count of points by status meaning (where each flag holds: the outcomes
+    share the points out, ``out_of_validity`` counts the points outside validity whatever their
+    outcome), the model's error messages and the counts of the outputs the model declares
+    ``counted``, from its chunks' :func:`chunk_tally`."""
+    counts = np.zeros(STATUS_CODES, dtype=np.int64)
     errors = set()
     noted = {o.counted[0]: 0 for o in model.outputs if o.counted}
     for one in tallies:
@@ -79,7 +86,10 @@ def summed(model, tallies) -> tuple[dict, list, dict]:
         errors.update(one["errors"])
         for text, count in one["noted"].items():
             noted[text] += count
-    return dict(zip(STATUS_MEANINGS, counts.tolist())), sorted(errors), noted
+    codes = np.arange(STATUS_CODES)
+    by_meaning = {meaning: int(counts[(codes & mask) == value].sum())
+                  for meaning, value, mask in zip(STATUS_MEANINGS, STATUS_VALUES, STATUS_MASKS)}
+    return by_meaning, sorted(errors), noted
 
 
 def gather(sweep: Sweep, grid: Grid, parts, chunks, scheduler: str, errors=()) -> xr.Dataset:

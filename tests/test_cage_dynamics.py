@@ -75,3 +75,34 @@ def test_the_pocket_couples_conserve_angular_momentum(pushed):
     couples = p[rhs.POCKET_FILM] * state[rollers + 2].sum()  # the film's alone
     assert abs(p[rhs.J_CAGE] * out[cage + 5]) > 0.5 * couples
     assert abs(rate) < 1e-12 * couples
+
+
+@pytest.mark.parametrize("model", ["cage_dynamics", "cage_dynamics_6dof"])
+@pytest.mark.parametrize("fixed, words", [
+    # the reproduction: a mass centre 1 m off a 59 mm cage
+    ('cage_eccentricity = "1 m"', "mass centre lies within its outline"),
+    ('cage_eccentricity = "29.5 mm"', "mass centre lies within its outline"),
+    ('pocket_clearance = "1 m"', "pockets do not fit"),
+])
+def test_a_cage_that_cannot_be_is_refused_before_computing(model, fixed, words):
+    from bearing_sweep import spec
+
+    text = (f'[sweep]\nmodel = "{model}"\nbearing = "paper002-test"\n[fixed]\n{fixed}\n'
+            'speed = "9000 rpm"\n'
+            '[axes]\nradial_load = ["400 N", "800 N"]\n')
+    with pytest.raises(spec.SpecError, match=words):
+        spec.parse(text)
+    if model == "cage_dynamics_6dof":
+        with pytest.raises(spec.SpecError, match="mass centre lies within its outline"):
+            spec.parse(text.replace(fixed, 'cage_axial_eccentricity = "-5 mm"'))
+
+
+def test_the_steady_starts_validity_is_carried_through_the_transient():
+    # A pocket clearance of 0.6 mm, 12 % of the roller radius, is beyond cage_slip's thin
+    # films: the run from that steady state is out of validity too, its values kept.
+    result = cage_dynamics(800.0, 12000 * RPM, **dict(TEST, pocket_clearance=0.6 * MM),
+                           duration=2e-3, output_interval=5e-4)
+    from bearing_sweep.models.registry import CONVERGED, OUT_OF_VALIDITY
+
+    assert result["status"].tolist() == [CONVERGED | OUT_OF_VALIDITY]
+    assert np.isfinite(result["cage_slip"]).all()

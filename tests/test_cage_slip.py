@@ -219,3 +219,48 @@ def test_the_run_summary_counts_the_points_with_several_equilibria(tmp_path):
                         progress=False)
     assert summary.noted == {"points with several stable equilibria": 1}
     assert "; 1 points with several stable equilibria" in summary.text()
+
+
+def _steady(**fixed):
+    lines = "\n".join(f'{name} = "{value}"' for name, value in fixed.items())
+    return spec.parse('[sweep]\nmodel = "cage_slip"\nbearing = "paper002-test"\n'
+                      f'[fixed]\nspeed = "9000 rpm"\n{lines}\n'
+                      '[axes]\nradial_load = ["400 N", "800 N"]\n')
+
+
+@pytest.mark.parametrize("fixed, words", [
+    # the reproductions: a contact longer than the 11 mm roller, a 1 m pocket clearance, an
+    # oil a billionth as dense as air, and the oil's viscosities swapped
+    (dict(effective_length="100 mm"), "part of the roller"),
+    (dict(pocket_clearance="1 m"), "pockets do not fit"),
+    (dict(oil_density="1e-9 kg/m^3"), "oil_density"),
+    (dict(viscosity_40="8 mm^2/s", viscosity_100="68 mm^2/s"), "thins as it warms"),
+    (dict(clearance="12 mm"), "smaller than the roller diameter"),
+    (dict(cage_outer_diameter="70 mm"), "between the raceways"),
+    (dict(cage_inner_diameter="40 mm"), "between the raceways"),
+    (dict(roller_density="7.8e6 kg/m^3"), "roller_density"),
+])
+def test_impossible_inputs_are_refused_before_computing(fixed, words):
+    with pytest.raises(spec.SpecError, match=words):
+        _steady(**fixed)
+
+
+def test_thick_films_are_out_of_validity_beside_the_other_status():
+    # A pocket clearance of 0.6 mm is 12 % of the 5 mm roller radius, beyond the thin
+    # Couette film's 10 %; at 1 N the rollers cannot drive the cage (no root): both show.
+    thick = dict(TEST, pocket_clearance=0.6 * MM)
+    result = cage_slip(np.array([1.0, 800.0]), 6000 * RPM, **thick)
+    assert result["status"].tolist() == [NO_ROOT_IN_RANGE | OUT_OF_VALIDITY,
+                                         CONVERGED | OUT_OF_VALIDITY]
+    assert np.isfinite(result["cage_slip"][1])
+    thin = cage_slip(np.array([800.0]), 6000 * RPM, **dict(TEST, pocket_clearance=0.4 * MM))
+    assert thin["status"].tolist() == [CONVERGED]
+
+
+def test_describe_states_the_validity_it_inherits_from_the_load_distribution():
+    from bearing_sweep import describe
+
+    validity = describe("cage_slip")["validity"]
+    assert "crb_radial" in validity and "4000 MPa" in validity and "10 %" in validity
+    for transient in ("cage_dynamics", "cage_dynamics_6dof"):
+        assert validity in describe(transient)["validity"]

@@ -153,3 +153,166 @@ def test_coordinates_carry_no_fill_value_and_fixed_inputs_are_not_coordinates(fi
             data[coordinate].encoding["_FillValue"] is None, coordinate
     for fixed in data.attrs["fixed_inputs"].split():
         assert fixed in data.data_vars
+
+
+#: For every model, a sweep whose last point lies outside the model's validity (values kept or
+#: not) and the other meaning its status must hold there besides ``out_of_validity``: the
+#: file shows both, never the other alone.
+OUTSIDE_VALIDITY = {
+    "ball_5dof": ('bearing = "paper001-71807AC"', 'axial_load = ["1 kN", "300 kN"]',
+                  "converged"),
+    "cage_dynamics": ('bearing = "paper002-test"\n[fixed]\nspeed = "9000 rpm"\n'
+                      'duration = "2 ms"\noutput_interval = "0.5 ms"\nradial_load = "800 N"',
+                      'pocket_clearance = ["0.1 mm", "0.6 mm"]', "converged"),
+    "cage_dynamics_6dof": ('bearing = "paper002-test"\n[fixed]\nspeed = "12000 rpm"\n'
+                           'duration = "0.2 ms"\noutput_interval = "0.1 ms"\n'
+                           'radial_load = "800 N"', 'pocket_clearance = ["0.6 mm"]',
+                           "converged"),
+    "cage_slip": ('bearing = "paper002-test"\n[fixed]\nspeed = "6000 rpm"\n'
+                  'pocket_clearance = "0.6 mm"\norbit_points = 12',
+                  'radial_load = ["1 N"]', "no_root_in_range"),
+    "crb_radial": ('bearing = "paper000-D"\n[fixed]\nradial_load = "4 kN"',
+                   'perturbation = ["0.001 mm", "1 m"]', "converged"),
+    "crb_runout": ('bearing = "paper004-NU208-1"\n[fixed]\nroller_roundness_order = 2\n'
+                   'roller_roundness_amplitude = "0.5 um"\nrevolutions = 1\n'
+                   'steps_per_revolution = 360', 'outer_raceway_diameter = ["71.555 mm", '
+                   '"100 mm"]', "converged"),
+    "hertz_point": ('[fixed]\ncurvature_1x = "0.2 1/mm"\ncurvature_1y = "0.2 1/mm"\n'
+                    'curvature_2x = "-0.19 1/mm"', 'load = ["10 N", "1 MN"]', "converged"),
+    "trb_load": ('bearing = "paper003-table1"\n[fixed]\nradial_load = "10 kN"',
+                 'axial_load = ["27 kN", "5000 kN"]', "converged"),
+    "trb_rib": ('bearing = "paper003-table1-rib"\n[fixed]\nrib_angle = "89 deg"',
+                'oil_groove_size = ["1 mm", "1 m"]', "no_root_in_range"),
+}
+
+
+def test_every_model_has_a_case_outside_its_validity():
+    assert sorted(OUTSIDE_VALIDITY) == MODELS
+
+
+@pytest.mark.parametrize("name", sorted(OUTSIDE_VALIDITY))
+def test_a_point_outside_validity_shows_it_beside_its_other_status(name, tmp_path):
+    from bearing_sweep.dependence import flag_holds
+
+    head, axis, other = OUTSIDE_VALIDITY[name]
+    sweep = spec.parse(f'[sweep]\nmodel = "{name}"\n{head}\n[axes]\n{axis}\n')
+    with Executor(workers=0) as executor:
+        run_sweep(sweep, tmp_path / "outside.nc", executor, progress=False)
+    status = store.open_result(tmp_path / "outside.nc")["status"]
+    last = status.isel({status.dims[0]: -1})
+    assert bool(flag_holds(last, "out_of_validity")), (name, int(last))
+    assert bool(flag_holds(last, other)), (name, int(last), other)
+    if status.size > 1:  # the ordinary point stays within validity
+        assert int(status.isel({status.dims[0]: 0})) == 0, name
+
+
+# -- The IOOS compliance checker, CF 1.10 ---------------------------------------------------
+#: The checker's check that raises on a string coordinate variable (a zipped axis' labels,
+#: ball_5dof's dof names, choices on an axis: CF allows them as labels); the test checks the
+#: numeric coordinates' monotonicity itself instead (CF 5: strictly monotonic).
+_STRING_COORDINATE_CRASH = "check_coordinate_variables_strict_monotonicity"
+
+
+@pytest.fixture(scope="module")
+def cf_checker(tmp_path_factory):
+    """``check(path)``: what the IOOS compliance checker's CF 1.10 suite finds wrong in a
+    netCDF file: every failed check of high (CF's "must": errors) or medium priority ("should":
+    warnings), and every check that raised. Offline: with no ``standard_name_vocabulary`` the
+    checker reads the standard-name table it ships; a download is recorded and fails the
+    test (the checker would swallow its failure), and its cache folder is a temporary one."""
+    from compliance_checker.base import BaseCheck
+    from compliance_checker.cf import util as cf_util
+    from compliance_checker.runner import CheckSuite
+
+    downloads = []
+    with pytest.MonkeyPatch.context() as patch:
+        patch.setenv("XDG_DATA_HOME", str(tmp_path_factory.mktemp("checker_cache")))
+        patch.setattr(cf_util, "download_cf_standard_name_table",
+                      lambda *args, **kwargs: downloads.append(args))
+        suite = CheckSuite()
+        suite.load_all_available_checkers()
+
+        def check(path) -> list[str]:
+            dataset = suite.load_dataset(str(path))
+            try:
+                groups, crashed = suite.run_all(dataset, ["cf:1.10"], skip_checks=[])["cf:1.10"]
+            finally:
+                dataset.close()
+            problems = []
+
+            def walk(result):
+                score = result.value
+                failed = score is not None and (score[0] < score[1] if isinstance(score, tuple)
+                                                else not score)
+                if failed and result.weight >= BaseCheck.MEDIUM:
+                    problems.append(f"{result.name}: {'; '.join(result.msgs)}")
+                for child in result.children or ():
+                    walk(child)
+
+            for group in groups:
+                walk(group)
+            for name, (error, _) in crashed.items():
+                if name == _STRING_COORDINATE_CRASH and "'str'" in str(error):
+                    problems += _unordered_numeric_coordinates(path)
+                else:
+                    problems.append(f"{name} raised {type(error).__name__}: {error}")
+            assert not downloads, "the checker went to the network for its name table"
+            return problems
+
+        yield check
+
+
+def _unordered_numeric_coordinates(path) -> list[str]:
+    """The numeric coordinate variables (named as their one dimension) that are not strictly
+    monotonic: the part of the check the string labels made the checker skip."""
+    problems = []
+    with netCDF4.Dataset(path) as data:
+        for name, variable in data.variables.items():
+            if variable.dimensions != (name,) or variable.dtype == str \
+                    or variable.dtype.kind not in "iuf" or variable.size < 2:
+                continue
+            steps = np.diff(np.asarray(variable[...], dtype=float))
+            if not ((steps > 0).all() or (steps < 0).all()):
+                problems.append(f"{name}: coordinate not strictly monotonic")
+    return problems
+
+
+@pytest.mark.parametrize("name", MODELS + [p.stem for p in STRUCTURES])
+@pytest.mark.parametrize("writer", ["streamed", "xarray"])
+def test_every_run_file_passes_the_cf_checker(runs, cf_checker, name, writer):
+    path = runs[name][0 if writer == "streamed" else 2]
+    assert cf_checker(path) == []
+
+
+#: zarr stores of runs with every kind of output: own dimensions (roller, angle), string
+#: labels and unit companions, integers, float32, a sampled design.
+ZARR_CASES = ["ball_5dof", "crb_radial", "crb_runout", "sampled", "zipped_float32"]
+
+
+@pytest.mark.parametrize("name", ZARR_CASES)
+def test_a_zarr_store_converted_by_xarray_passes_the_cf_checker(cf_checker, name, tmp_path):
+    import xarray as xr
+
+    definition = next(p for p in [*DEFINITIONS.glob("*.toml"), *STRUCTURES] if p.stem == name)
+    store_path = tmp_path / f"{name}.zarr"
+    with Executor(workers=0) as executor:
+        run_sweep(spec.load(definition), store_path, executor, progress=False)
+    # As README's "Files and the tools that read them" says to convert a store.
+    data = xr.open_zarr(store_path)
+    for variable in data.variables.values():  # zarr keeps attributes as JSON: flags to type
+        variable.attrs.update({key: np.asarray(value, variable.dtype)
+                               for key, value in variable.attrs.items()
+                               if key in ("flag_values", "flag_masks")})
+        variable.encoding.pop("compressors", None)  # zarr's codecs are not netCDF's
+    data.to_netcdf(tmp_path / f"{name}.nc",
+                   encoding={name: {"_FillValue": None} for name in data.coords})
+    data.close()
+    assert cf_checker(tmp_path / f"{name}.nc") == []
+
+
+@pytest.mark.parametrize("name", ["sampled", "sampled_lhs"])
+def test_every_analyze_output_passes_the_cf_checker(runs, cf_checker, name, tmp_path):
+    from bearing_sweep import analyze
+
+    analyze(runs[name][0], output=tmp_path / "analyzed.nc")
+    assert cf_checker(tmp_path / "analyzed.nc") == []

@@ -331,3 +331,52 @@ def test_an_unloaded_spinning_bearing_with_clearance_rests_on_its_best_roller():
                         **BEARING_D)
     assert (result["status"] == CONVERGED).all()
     assert (result["roller_load"] == 0.0).all()
+
+
+def test_a_perturbation_step_beyond_the_contact_laws_is_out_of_validity():
+    # A 1 m step took the ring a metre on: its stiffness came out 3.4 times the analytic one.
+    # The forward difference's state must hold the approach limit (2 % of D = 0.2 mm) too:
+    # 0.1 mm on top of a 4 kN approach does not.
+    from bearing_sweep.models.registry import OUT_OF_VALIDITY
+
+    result = crb_radial(4000.0, perturbation=np.array([1e-3, 0.01, 0.1]) * MM, **BEARING_D)
+    assert result["status"].tolist() == [CONVERGED, CONVERGED, CONVERGED]
+    metre = crb_radial(4000.0, perturbation=np.array([1e-3 * MM, 1.0]), **BEARING_D)
+    assert metre["status"].tolist() == [CONVERGED, OUT_OF_VALIDITY]
+    assert np.isfinite(metre["perturbation_stiffness"][1])  # kept, flagged
+
+
+def _radial(**fixed):
+    from bearing_sweep import spec
+
+    lines = "\n".join(f'{name} = "{value}"' for name, value in fixed.items())
+    return spec.parse('[sweep]\nmodel = "crb_radial"\nbearing = "paper000-D"\n'
+                      f'[fixed]\n{lines}\n[axes]\nradial_load = ["1 kN", "4 kN"]\n')
+
+
+@pytest.mark.parametrize("fixed, words", [
+    # the reproduction: nu40 = 8, nu100 = 68 gave kappa = 2.04 and aISO = 37
+    (dict(speed="3000 rpm", dynamic_load_rating="48 kN", fatigue_load_limit="6 kN",
+          viscosity_40="8 mm^2/s", viscosity_100="68 mm^2/s"), "thins as it warms"),
+    (dict(dynamic_load_rating="48 kN", fatigue_load_limit="60 kN"), "fatigue_load_limit"),
+    (dict(viscosity_40="68000 mm^2/s", viscosity_100="8 mm^2/s"), "viscosity_40"),
+    (dict(viscosity_40="68 mm^2/s", viscosity_100="0.1 mm^2/s"), "viscosity_100"),
+    (dict(roller_density="7850 g/cm^3"), "roller_density"),
+    (dict(youngs_modulus="207 TPa"), "youngs_modulus"),
+    (dict(clearance="-12 mm"), "smaller than the roller diameter"),
+])
+def test_impossible_inputs_are_refused_before_computing(fixed, words):
+    from bearing_sweep.spec import SpecError
+
+    with pytest.raises(SpecError, match=words):
+        _radial(**fixed)
+    assert _radial(speed="3000 rpm", dynamic_load_rating="48 kN", fatigue_load_limit="6 kN",
+                   viscosity_40="68 mm^2/s", viscosity_100="8.7 mm^2/s").model.name == "crb_radial"
+
+
+def test_a_preload_beyond_the_elastic_range_is_out_of_validity():
+    # A 1 mm interference squeezes every roller by 0.5 mm, 5 % of D (limit 2 %), at any load.
+    from bearing_sweep.models.registry import OUT_OF_VALIDITY
+
+    result = crb_radial(np.array([0.0, 4000.0]), clearance=-1.0 * MM, **BEARING_D)
+    assert result["status"].tolist() == [OUT_OF_VALIDITY, OUT_OF_VALIDITY]

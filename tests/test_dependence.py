@@ -186,3 +186,23 @@ def test_the_quick_look_draws_an_output_stored_on_fewer_axes_at_every_point(toy)
     assert len(lines) == 3  # one per a; a = -1 failed everywhere: no value on its line
     np.testing.assert_array_equal(lines[0].get_ydata(), [np.nan] * 4)
     np.testing.assert_array_equal(lines[1].get_ydata(), [np.nan, 2.0, 4.0, 6.0])
+
+
+@pytest.mark.parametrize("attrs, codes, held", [
+    # a file of this version: bit fields (out_of_validity beside any outcome)
+    ({"flag_masks": np.array([11, 11, 11, 11, 4, 11], np.int8),
+      "flag_values": np.array([0, 1, 2, 3, 4, 8], np.int8)},
+     [0, 4, 8, 12, 1, 5, 2, 3], [True, True, True, True, False, False, False, False]),
+    # a file written before: one code each, out_of_validity keeping its values
+    ({"flag_values": np.arange(6, dtype=np.int8)},
+     [0, 4, 5, 1, 2, 3], [True, True, True, False, False, False]),
+])
+def test_held_points_read_the_status_flags_of_either_format(attrs, codes, held):
+    from bearing_sweep.dependence import flag_holds, held_points
+
+    status = xr.DataArray(np.array(codes, np.int8), dims="point", attrs={
+        **attrs, "flag_meanings": "converged not_converged infeasible model_error "
+                                  "out_of_validity no_root_in_range"})
+    assert held_points(status).values.tolist() == held
+    outside = [c in (4, 12, 5) if "flag_masks" in attrs else c == 4 for c in codes]
+    assert flag_holds(status, "out_of_validity").values.tolist() == outside

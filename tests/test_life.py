@@ -307,3 +307,33 @@ def test_the_equivalent_load_is_nan_where_iso_281_needs_more_than_the_loads():
     # 25 deg: 1280 N as above; 40 deg, 1 <= 1.14: F_r; F_r = 0: 0.87 and 0.57 times 1000 N.
     assert load[:, 1:] == pytest.approx(np.array([[1280.0, 1000.0], [870.0, 570.0]]),
                                         rel=1e-12)
+
+
+def _in_si(magnitude, unit):
+    """A value written in ``unit`` as the engine hands it to a model: converted to SI."""
+    from bearing_sweep import units
+
+    return float(units.to_si(magnitude, units.parse_unit(unit)))
+
+
+@pytest.mark.parametrize("unit", ["rpm", "rev/min", "r/min", "turn/min"])
+def test_the_reference_viscosity_at_exactly_1000_rpm_takes_the_high_speed_branch(unit):
+    # ISO 281:2007 9.3.3, eq. (29) holds for n >= 1000 r/min: at n = 1000, d_m = 50 mm,
+    # nu_1 = 4500 / sqrt(1000) / sqrt(50) = 20.125 mm^2/s (eq. (28) would give 20.593, and
+    # kappa 2.3 % less). "1000 rpm" reaches the model as 104.71975511965977 rad/s,
+    # 999.9999999999999 r/min.
+    speed = _in_si(1000.0, unit)
+    assert life.reference_viscosity(speed, 0.05) == pytest.approx(20.1246e-6, rel=1e-5)
+    # just below the branch point eq. (28) holds: 45000 999^-0.83 / sqrt(50) = 20.6105
+    assert life.reference_viscosity(_in_si(999.0, unit), 0.05) == pytest.approx(
+        20.6105e-6, rel=1e-5)
+
+
+@pytest.mark.parametrize("angle, ratio", [(20.0, 0.57), (25.0, 0.68), (30.0, 0.80),
+                                          (40.0, 1.14), (45.0, 1.34)])
+def test_an_axial_to_radial_ratio_of_exactly_e_takes_x_1_y_0(angle, ratio):
+    # ISO 281:2007 6.2, Table 3: F_a / F_r <= e gives X = 1, Y = 0 (P = F_r), written in
+    # kN and deg as a definition would (0.68 kN is 680.0000000000001 N in floating point).
+    radial, axial = _in_si(1.0, "kN"), _in_si(ratio, "kN")
+    load = life.radial_ball_equivalent_load(radial, axial, _in_si(angle, "deg"))
+    assert load == pytest.approx(1000.0, rel=1e-12)

@@ -69,7 +69,9 @@ def test_netcdf_round_trip_keeps_values_and_attributes(tmp_path):
     assert data.roller_load.dims == ("radial_load", "clearance", "slices", "arrangement", "roller")
     assert data.status.attrs["flag_meanings"] == ("converged not_converged infeasible model_error "
                                                   "out_of_validity no_root_in_range")
-    np.testing.assert_array_equal(data.status.attrs["flag_values"], [0, 1, 2, 3, 4, 5])
+    # CF bit fields (3.5): an outcome in bits 0, 1 and 3, out of validity in bit 2
+    np.testing.assert_array_equal(data.status.attrs["flag_values"], [0, 1, 2, 3, 4, 8])
+    np.testing.assert_array_equal(data.status.attrs["flag_masks"], [11, 11, 11, 11, 4, 11])
     assert data.attrs["Conventions"].startswith("CF-")
     assert data.attrs["definition"] == TEXT
     assert data.attrs["definition_sha256"] == spec.parse(TEXT).sha256
@@ -175,9 +177,14 @@ def test_points_out_of_validity_keep_their_values_and_failures_are_nan(tmp_path,
 def test_statuses_combine_by_severity():
     from bearing_sweep.models.registry import combine_status as combine
 
-    c, nc, inf, err, oov, nr = range(6)
-    assert combine([c, oov, nr, c, inf], [oov, c, oov, nc, nc]).tolist() == [oov, oov, nr, nc, nc]
-    assert combine(err, [c, nc, inf, oov, nr]).tolist() == [err] * 5
+    c, nc, inf, err, oov, nr = (registry.CONVERGED, registry.NOT_CONVERGED, registry.INFEASIBLE,
+                                registry.MODEL_ERROR, registry.OUT_OF_VALIDITY,
+                                registry.NO_ROOT_IN_RANGE)
+    # the most severe outcome; out of validity kept beside any outcome
+    assert combine([c, oov, nr, c, inf], [oov, c, oov, nc, nc]).tolist() == [oov, oov, nr | oov,
+                                                                              nc, nc]
+    assert combine(err, [c, nc, inf, oov, nr]).tolist() == [err, err, err, err | oov, err]
+    assert combine([nr | oov, nc], [c, oov]).tolist() == [nr | oov, nc | oov]
 
 
 def test_files_written_in_different_units_combine_into_one_consistent_axis(tmp_path):
@@ -310,3 +317,44 @@ def test_a_cluster_is_given_a_few_chunks_per_worker_at_a_time():
             assert result["status"].size == stop - start
     assert most == CHUNKS_IN_FLIGHT
     assert sorted(received) == sorted(submitted) == [start for start, _ in chunks]
+
+
+@pytest.mark.parametrize("code", [16, -1, 10])
+def test_a_status_code_the_registry_does_not_define_is_a_model_error(tmp_path, monkeypatch,
+                                                                      code):
+    # 10 is no_root_in_range with infeasible's bit: no outcome; 16 and -1 no bit field at all.
+    model = registry.get_model("crb_radial")
+    original = model.function
+
+    def garbled(**kwargs):
+        result = original(**kwargs)
+        result["status"] = np.full(np.shape(result["status"]), code, dtype=np.int8)
+        return result
+
+    monkeypatch.setitem(registry._MODELS, "crb_radial",
+                        registry.Model(**{**model.__dict__, "function": garbled}))
+    summary, data = compute(tmp_path, "garbled")
+    assert (data.status == registry.MODEL_ERROR).all()
+    assert data.radial_stiffness.isnull().all()
+    assert f"returned status {code}" in data.attrs["model_errors"]
+
+
+def test_the_summary_counts_outcomes_and_then_the_points_out_of_validity(tmp_path,
+                                                                        monkeypatch):
+    model = registry.get_model("crb_radial")
+    original = model.function
+
+    def judged(**kwargs):  # the heavy points out of validity, their outcomes as they are
+        result = original(**kwargs)
+        heavy = np.asarray(kwargs["radial_load"]) > 6e3
+        result["status"] = registry.combine_status(
+            result["status"], np.where(heavy, registry.OUT_OF_VALIDITY, registry.CONVERGED))
+        return result
+
+    monkeypatch.setitem(registry._MODELS, "crb_radial",
+                        registry.Model(**{**model.__dict__, "function": judged}))
+    summary, data = compute(tmp_path, "judged")
+    heavy = int((data.radial_load > 6000).sum()) * data.status.size // data.radial_load.size
+    assert summary.status_counts["converged"] == data.status.size
+    assert summary.status_counts["out_of_validity"] == heavy > 0
+    assert f"({data.status.size} converged; {heavy} out_of_validity)" in summary.text()

@@ -3,7 +3,7 @@ import numpy as np
 import pytest
 from scipy.optimize import minimize
 
-from bearing_sweep.models.registry import CONVERGED, NOT_CONVERGED
+from bearing_sweep.models.registry import CONVERGED, NOT_CONVERGED, OUT_OF_VALIDITY
 from bearing_sweep.models.runout import crb_runout, roller_angles
 
 MM, UM = 1e-3, 1e-6
@@ -187,3 +187,64 @@ def test_selective_assembly_alternates_the_rollers_by_size_with_their_roundness(
                           roller_roundness_amplitude=amplitude, roller_roundness_phase=phase,
                           **settings)
     assert as_given["runout"][0] != by_hand["runout"][0]
+
+
+def _definition(**fixed):
+    from bearing_sweep import spec
+
+    lines = "\n".join(f'{name} = "{value}"' for name, value in fixed.items())
+    return spec.parse('[sweep]\nmodel = "crb_runout"\nbearing = "paper004-NU208-1"\n'
+                      f"[fixed]\n{lines}\n[axes]\nphase_seed = [0, 1]\n")
+
+
+@pytest.mark.parametrize("fixed, words", [
+    # the reproduction: a 10 mm amplitude on a 5.5 mm roller radius
+    (dict(roller_roundness_order=2, roller_roundness_amplitude="10 mm"), "roller's radius"),
+    (dict(roller_diameter_error="-11 mm"), "roller's radius"),
+    (dict(inner_roundness_order=3, inner_roundness_amplitude="25 mm"), "raceway's radius"),
+])
+def test_a_profile_with_a_negative_radius_is_refused_before_computing(fixed, words):
+    from bearing_sweep.spec import SpecError
+
+    with pytest.raises(SpecError, match=words):
+        _definition(**fixed)
+
+
+def test_a_large_clearance_puts_the_point_out_of_validity():
+    # Outer raceway 100 mm on NU208 (a radial clearance of 14 mm): the centre drops by
+    # millimetres and the distances the linear contact conditions take vary by about 0.3 um
+    # from step to step, against a runout of 1.8 um (paper 004 section 1.4: micrometre
+    # errors against radii of centimetres). The same errors in the real bearing hold.
+    waviness = dict(roller_roundness_order=2.0, roller_roundness_amplitude=0.5 * UM,
+                    steps_per_revolution=360)
+    wide = crb_runout(**{**NU208, "outer_raceway_diameter": 100 * MM}, **waviness)
+    assert wide["status"][0] == OUT_OF_VALIDITY and np.isfinite(wide["runout"][0])
+    assert crb_runout(**NU208, **waviness)["status"][0] == CONVERGED
+
+
+def test_a_roller_without_room_between_the_rings_is_out_of_validity():
+    # No clearance and one roller 2 um oversize: wherever it passes over the top it is
+    # squeezed between the rings, a preload the unloaded model does not hold.
+    tight = {**NU208, "outer_raceway_diameter": (49.481 + 2 * 10.998) * MM}
+    error = np.zeros(14)
+    error[0] = 2 * UM
+    squeezed = crb_runout(**tight, roller_diameter_error=error, steps_per_revolution=90)
+    assert squeezed["status"][0] == OUT_OF_VALIDITY
+    undersize = crb_runout(**tight, roller_diameter_error=-error, steps_per_revolution=90)
+    assert undersize["status"][0] == CONVERGED
+
+
+def test_a_profile_that_is_not_convex_is_out_of_validity():
+    # r = R + C cos(30 theta) curves inwards at its troughs where 901 C >= R (5.499 mm):
+    # 6.5 um does, 5.5 um does not (nor does paper 004's 0.5 um roundness).
+    for amplitude, status in ((6.5 * UM, OUT_OF_VALIDITY), (5.5 * UM, CONVERGED)):
+        result = crb_runout(**NU208, roller_roundness_order=30.0,
+                            roller_roundness_amplitude=amplitude, steps_per_revolution=360)
+        assert result["status"][0] == status, amplitude
+
+
+def test_describe_states_the_validity_it_applies():
+    from bearing_sweep import describe
+
+    validity = describe("crb_runout")["validity"]
+    assert "preload" in validity and "1 %" in validity and "convex" in validity

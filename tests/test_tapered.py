@@ -268,3 +268,52 @@ def test_a_point_without_a_solution_has_no_values():
     for name, value in result.items():
         if name != "status":
             assert np.isnan(value).all(), name
+
+
+def test_fa_equal_to_fr_tan_alpha_written_exactly_is_carried():
+    # ISO-style boundary of eq. 16: F_r tan(alpha) = F_a leaves the opposite rollers just
+    # unloaded, a solution. 45 deg and two loads of 10 kN, converted as a definition's are
+    # (tan of 45 deg in radians is 0.9999999999999999, not 1).
+    from bearing_sweep import units
+
+    def si(text, unit):
+        return float(units.to_si(float(text), units.parse_unit(unit)))
+
+    load = si("10", "kN")
+    result = trb_load(load, load, 16, 21.5e-3, 13.71e-3, si("45", "deg"))
+    assert result["status"][0] == CONVERGED
+    from bearing_sweep.models.tapered import MODELS
+    carried = next(c for c in MODELS[0].constraints if "pull" in c.message)
+    assert carried.check(radial_load=load, axial_load=load,
+                         outer_contact_angle=si("45", "deg"))
+
+
+@pytest.mark.parametrize("change", [dict(oil_groove_size=1.0), dict(roller_end_radius=1e3)])
+def test_a_point_outside_validity_with_no_limit_angle_says_both(change):
+    # A groove of 1 m (or an end sphere of 1 km): the contact lies 998 mm inside the groove
+    # (edge_margin < 0, outside validity) and no rib angle of 80-90 deg puts the ellipse's
+    # edge on the groove's edge (no_root_in_range): the status holds both.
+    result = trb_rib(40e3, 27e3, **BEARING, **{**END, **change}, rib_angle=DEG(89))
+    status = int(result["status"][0])
+    assert status & OUT_OF_VALIDITY and status & ~OUT_OF_VALIDITY == NO_ROOT_IN_RANGE
+    assert np.isnan(result["limit_rib_angle"][0])
+
+
+@pytest.mark.parametrize("model, fixed, words", [
+    ("trb_rib", 'roller_half_angle = "15 deg"', "raceway angle beta"),
+    ("trb_rib", 'roller_large_diameter = "12 mm"', "large end is the larger"),
+    ("trb_rib", 'roller_count = 40', "do not fit on the pitch circle"),
+    ("trb_load", 'roller_count = 40', "do not fit on the pitch circle"),
+    ("trb_load", 'viscosity_40 = "8 mm^2/s"\nviscosity_100 = "68 mm^2/s"', "thins as it warms"),
+])
+def test_a_tapered_bearing_that_cannot_be_is_refused_before_computing(model, fixed, words):
+    # Paper 003's bearing (alpha 28 deg, phi 4 deg, Dw 13.71 mm on a pitch circle of about
+    # 80 mm: 16 rollers, room for 17) with one input made impossible.
+    from bearing_sweep import spec
+
+    preset = "paper003-table1-rib" if model == "trb_rib" else "paper003-table1"
+    angle = 'rib_angle = "89 deg"\n' if model == "trb_rib" else ""
+    text = (f'[sweep]\nmodel = "{model}"\nbearing = "{preset}"\n[fixed]\n{fixed}\n{angle}'
+            '[axes]\naxial_load = ["27 kN", "40 kN"]\n')
+    with pytest.raises(spec.SpecError, match=words):
+        spec.parse(text)
