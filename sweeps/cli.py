@@ -140,8 +140,13 @@ def _describe(name: str) -> str:
 def _indices_table(analyzed) -> str:
     """The Sobol' indices of a Saltelli design, an output a block, or the sample count."""
     if "first_order" not in analyzed:
-        return f"statistics of {analyzed.attrs['sample_size']} samples of each output"
-    lines = ["first-order / total Sobol index [95 % interval] of each output:"]
+        count, drawn = analyzed.attrs["samples_analyzed"], analyzed.attrs.get("sample_size")
+        return f"statistics of {count} samples of each output" + (
+            f" (a selection of the {drawn} drawn)" if drawn not in (None, count) else "")
+    replicates = int(analyzed.attrs.get("sample_replicates", 1))
+    lines = ["first-order / total Sobol index [95 % interval] of each output:" if replicates > 1
+             else "first-order / total Sobol index of each output (no interval: a design of one "
+                  "replicate, from an earlier version; run it again for intervals):"]
     for output in analyzed.output.values:
         failed = int(analyzed.failed_evaluations.sel(output=output).sum())
         if analyzed.first_order.sel(output=output).isnull().all():
