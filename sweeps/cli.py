@@ -56,7 +56,8 @@ def _parser() -> argparse.ArgumentParser:
     analyze.add_argument("result", type=Path, help="a netCDF file (or zarr store) of a sweep with "
                          "[sample]")
     analyze.add_argument("-o", "--output", type=Path, metavar="OUT",
-                         help="the netCDF file to write (default RESULT_analysis.nc beside it)")
+                         help="the netCDF file (.nc) or zarr store (.zarr) to write (default "
+                              "RESULT_analysis.nc beside it)")
 
     run_study = commands.add_parser("study", help="run a paper's sweeps (missing or stale) and "
                                     "draw its figures")

@@ -2,6 +2,8 @@
 the design's replicates), a design taken in its order whatever the rows' order and refused
 when it is not whole, one line for a result it cannot read, and its output in the format its
 name says, CF-labelled."""
+import math
+
 import numpy as np
 import pytest
 import xarray as xr
@@ -251,3 +253,56 @@ def test_statistics_of_a_selection_in_any_order_are_those_of_its_samples(capsys,
         capsys.readouterr().out
     refused(xr.concat([data, data.isel(sample=[7])], "sample", data_vars="all"),
             "sample 7 appears 2 times: the same sample repeated, or samples of several draws")
+
+
+# -- the output: the format its name says, CF-labelled ---------------------------------------------
+@pytest.fixture(scope="module")
+def results(tmp_path_factory):
+    """A result of every design, with and without another axis (crb_radial's roller_load
+    has a dimension of its own)."""
+    folder = tmp_path_factory.mktemp("designs")
+    made = {}
+    for method in sample.METHODS:
+        for axes in ("", "[axes]\nslices = [20, 30]"):
+            path = folder / f"{method}{'-axes' if axes else ''}.nc"
+            bearing_sweep.run(sampled(method, axes), output=path, workers=0,
+                              progress=False).close()
+            made[path.stem] = path
+    return made
+
+
+def test_an_analysis_of_every_design_reads_back_as_netcdf_and_zarr(results, tmp_path):
+    for name, path in results.items():
+        for suffix, engine in ((".nc", "netcdf4"), (".zarr", "zarr"), (".ZARR", "zarr")):
+            output = tmp_path / f"{name}_analysis{suffix}"
+            analyzed = bearing_sweep.analyze(path, output=output)
+            assert output.is_dir() == (engine == "zarr"), output
+            with xr.open_dataset(output, engine=engine) as written:
+                xr.testing.assert_identical(written.load(), analyzed)
+            assert_cf_labelled(analyzed)
+            for variable in {**analyzed.coords, **analyzed.data_vars}.values():
+                if "flag_values" in variable.attrs:  # CF 3.5: of the variable's type
+                    assert np.asarray(variable.attrs["flag_values"]).dtype == variable.dtype
+            assert set(analyzed.valid_samples.attrs) == {"long_name", "units", "comment"}
+            assert analyzed.roller_load.dims[-1] == "roller"
+        assert ("first_order" in analyzed) == name.startswith("saltelli")
+        assert list(tmp_path.glob(".*")) == []  # nothing left beside the outputs
+
+
+def test_an_output_whose_name_says_another_format_is_refused(results, tmp_path, capsys):
+    result = results["random"]
+    for output in ("analysis.h5", "analysis.csv", "analysis", ".zarr"):
+        with pytest.raises(SpecError, match="an analysis is written as a netCDF file "
+                                            r"\(\.nc, \.nc4\) or a zarr store \(\.zarr\)"):
+            bearing_sweep.analyze(result, output=tmp_path / output)
+        assert cli.main(["analyze", str(result), "-o", str(tmp_path / output)]) == 2
+        assert len(capsys.readouterr().err.strip().splitlines()) == 1
+    with pytest.raises(SpecError, match="output=5: expected the path"):
+        bearing_sweep.analyze(result, output=5)
+    with pytest.raises(SpecError, match="result=5: expected a dataset"):
+        bearing_sweep.analyze(5)
+    assert list(tmp_path.iterdir()) == []
+    assert cli.main(["analyze", str(result), "-o", str(tmp_path / "a.zarr")]) == 0
+    assert (tmp_path / "a.zarr" / ".zmetadata").is_file()
+    assert math.isfinite(float(xr.open_dataset(tmp_path / "a.zarr", engine="zarr")
+                               .radial_stiffness.sel(statistic="mean")))
