@@ -8,13 +8,14 @@ from __future__ import annotations
 
 import os
 import sys
+from pathlib import Path
 
 import xarray as xr
 
 from .models.registry import REQUIRED, STATUS_DESCRIPTIONS, all_models
-from . import spec
+from . import spec, zarr_store
 from .compute import Executor, run_sweep
-from .parts import check_output
+from .parts import ZARR_SUFFIX, check_output, is_zarr
 from .spec import SpecError, Sweep
 from .store import is_result, open_result, result_engine, write_netcdf
 
@@ -101,7 +102,8 @@ def analyze(result, *, output=None) -> xr.Dataset:
     result : xarray.Dataset, str or os.PathLike
         A result of a definition with a ``[sample]`` table, or its netCDF file or zarr store.
     output : str or os.PathLike, optional
-        A netCDF file to write the analysis to, atomically, as ``bearing-sweep analyze -o``.
+        Where to write the analysis, atomically, as ``bearing-sweep analyze -o``: a netCDF
+        file (a path ending in ``.nc`` or ``.nc4``) or a zarr store (``.zarr``).
 
     Returns
     -------
@@ -118,6 +120,8 @@ def analyze(result, *, output=None) -> xr.Dataset:
     """
     where = "the dataset"
     output = _path_argument(output, "output")
+    if output is not None:
+        _check_analysis_output(output)
     if not isinstance(result, xr.Dataset):
         result = _path_argument(result, "result", "a sampled result: an xarray.Dataset or")
         where = str(result)
@@ -135,9 +139,25 @@ def analyze(result, *, output=None) -> xr.Dataset:
     from . import analysis  # its scipy.stats only for who analyses
 
     analyzed = analysis.analyze(result, where)
-    if output is not None:
+    if is_zarr(output):
+        zarr_store.write_dataset(analyzed, output)
+    elif output is not None:
         write_netcdf(analyzed, output)
     return analyzed
+
+
+#: The suffixes (in any case) of an analysis' output: a netCDF file, or a zarr store.
+ANALYSIS_SUFFIXES = (".nc", ".nc4", ZARR_SUFFIX)
+
+
+def _check_analysis_output(output):
+    """Refuse an analysis output whose suffix names another format than the one it would be
+    written in."""
+    suffix = Path(output).suffix
+    if suffix.lower() not in ANALYSIS_SUFFIXES:
+        raise SpecError(f"{output}: an analysis is written as a netCDF file (.nc, .nc4) or a "
+                        "zarr store (.zarr), as the suffix says; "
+                        + (f"not {suffix}" if suffix else "this name has none"))
 
 
 def list_models() -> list[dict]:

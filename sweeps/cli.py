@@ -56,7 +56,8 @@ def _parser() -> argparse.ArgumentParser:
     analyze.add_argument("result", type=Path, help="a netCDF file (or zarr store) of a sweep with "
                          "[sample]")
     analyze.add_argument("-o", "--output", type=Path, metavar="OUT",
-                         help="the netCDF file to write (default RESULT_analysis.nc beside it)")
+                         help="the netCDF file (.nc) or zarr store (.zarr) to write (default "
+                              "RESULT_analysis.nc beside it)")
 
     run_study = commands.add_parser("study", help="run a paper's sweeps (missing or stale) and "
                                     "draw its figures")
@@ -141,8 +142,13 @@ def _describe(name: str) -> str:
 def _indices_table(analyzed) -> str:
     """The Sobol' indices of a Saltelli design, an output a block, or the sample count."""
     if "first_order" not in analyzed:
-        return f"statistics of {analyzed.attrs['sample_size']} samples of each output"
-    lines = ["first-order / total Sobol index [95 % interval] of each output:"]
+        count, drawn = analyzed.attrs["samples_analyzed"], analyzed.attrs.get("sample_size")
+        return f"statistics of {count} samples of each output" + (
+            f" (a selection of the {drawn} drawn)" if drawn not in (None, count) else "")
+    replicates = int(analyzed.attrs.get("sample_replicates", 1))
+    lines = ["first-order / total Sobol index [95 % interval] of each output:" if replicates > 1
+             else "first-order / total Sobol index of each output (no interval: a design of one "
+                  "replicate, from an earlier version; run it again for intervals):"]
     for output in analyzed.output.values:
         failed = int(analyzed.failed_evaluations.sel(output=output).sum())
         if analyzed.first_order.sel(output=output).isnull().all():

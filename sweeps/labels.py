@@ -17,6 +17,7 @@ from .models.registry import STATUS_DESCRIPTIONS, STATUS_MASKS, STATUS_MEANINGS,
 from . import units
 from .dependence import stored_dims, stored_shape
 from .grid import Grid
+from .sample import saltelli_rows
 from .spec import Sweep, Value
 
 if TYPE_CHECKING:
@@ -125,6 +126,8 @@ def labelled(sweep: Sweep, grid: Grid, outputs: dict, status: np.ndarray,
         attrs.update(sample_method=sweep.sampling.method, sample_size=sweep.sampling.n,
                      sample_seed=sweep.sampling.seed,
                      sample_inputs=" ".join(sweep.sampling.distributions))
+        if sweep.sampling.blocks:
+            attrs["sample_replicates"] = sweep.sampling.replicates
     if provenance.get("git_commit"):
         attrs["git_commit"] = provenance["git_commit"]
     if errors:
@@ -198,19 +201,27 @@ def coordinates(sweep: Sweep) -> dict:
                 attrs["distribution"] = sampling.distributions[name]
             coords[name] = ((axis.name,) + extra, declared_values(sweep, name, values), attrs)
         if sampling is not None and sampling.blocks:
-            coords["saltelli_block"] = saltelli_block(sampling)
+            coords.update(saltelli_coordinates(sampling))
     return coords
 
 
-def saltelli_block(sampling) -> tuple:
+def saltelli_coordinates(sampling) -> dict:
     """The block of Saltelli's design each sample belongs to, as CF flags: A, B, then A
-    with one input's values taken from B, for each sampled input (``n`` samples each)."""
-    return (("sample",), np.repeat(np.arange(len(sampling.blocks), dtype=np.int8), sampling.n),
-            {"long_name": "block of the Saltelli design",
-             "flag_values": np.arange(len(sampling.blocks), dtype=np.int8),
-             "flag_meanings": " ".join(sampling.blocks),
-             "comment": "A and B: independent samples; AB_<input>: A with that input's values "
-                        "from B (Saltelli et al. 2010, doi:10.1016/j.cpc.2009.09.018)"})
+    with one input's values taken from B, for each sampled input (``replicates * n`` samples
+    each); and its replicate, an independent scrambling (``sample.saltelli_rows``)."""
+    block, replicate = saltelli_rows(sampling.n, len(sampling.blocks) - 2, sampling.replicates)
+    return {"saltelli_block": (("sample",), block.astype(np.int8), {
+                "long_name": "block of the Saltelli design",
+                "flag_values": np.arange(len(sampling.blocks), dtype=np.int8),
+                "flag_meanings": " ".join(sampling.blocks),
+                "comment": "A and B: independent samples; AB_<input>: A with that input's "
+                           "values from B (Saltelli et al. 2010, doi:10.1016/j.cpc.2009.09.018)"}),
+            "saltelli_replicate": (("sample",), replicate.astype(np.int8), {
+                "long_name": "replicate of the Saltelli design", "units": "1",
+                "comment": f"numbered from 0: each of the {sampling.replicates} replicates is an "
+                           f"independent scrambling of the Sobol' sequence of the "
+                           f"{sampling.n} base samples; the spread of their estimates gives "
+                           "the Sobol' indices' intervals"})}
 
 
 def fixed_inputs(sweep: Sweep) -> dict:

@@ -124,8 +124,9 @@ OUTPUT = {"type": "object", "additionalProperties": False,
 def _sample(model: Model) -> dict:
     """The [sample] table: its settings, and a distribution for each sampled parameter."""
     settings = {
-        "n": {"type": "integer", "minimum": 1, "description": "number of samples (Saltelli: "
-              "base samples; sobol and saltelli: a power of 2)"},
+        "n": {"type": "integer", "minimum": 1, "description": "number of samples (saltelli: "
+              f"base samples of each of its {sample.SALTELLI_REPLICATES} replicates, at least "
+              f"{sample.SALTELLI_MIN_N}; sobol and saltelli: a power of 2)"},
         "method": {"enum": list(sample.METHODS), "description": "the design of the samples"},
         "seed": {"type": "integer", "minimum": 0, "default": 0,
                  "description": "the same seed draws the same samples"}}

@@ -76,11 +76,13 @@ class Sampling:
     """How the ``sample`` axis was drawn, for the file's attributes and ``analyze``."""
 
     method: str
-    n: int  # samples asked for; Saltelli's design holds n * (inputs + 2)
+    n: int  # samples asked for; Saltelli's design holds replicates * n * (inputs + 2)
     seed: int
     distributions: dict  # sampled input -> its distribution in words, in the declared unit
-    #: Saltelli's design: the name of each block of ``n`` samples (A, B, AB_<input>...).
+    #: Saltelli's design: the name of each block of ``replicates * n`` samples (A, B,
+    #: AB_<input>...), and its independent scramblings (``sample.saltelli_blocks``).
     blocks: tuple[str, ...] | None = None
+    replicates: int = 1
 
 
 @dataclass
@@ -408,6 +410,11 @@ class _Parser:
         if isinstance(seed, bool) or not isinstance(seed, int) or seed < 0:
             self.fail("sample.seed", f"{seed!r}: expected an integer >= 0 (the same seed draws "
                       "the same samples)")
+        if method == "saltelli" and n < sample.SALTELLI_MIN_N:
+            self.fail("sample.n", f"{n}: a saltelli design needs at least "
+                      f"{sample.SALTELLI_MIN_N} base samples (each of its "
+                      f"{sample.SALTELLI_REPLICATES} replicates needs so many for Sobol' "
+                      "indices whose intervals hold)")
         if method in sample.POWER_OF_TWO and n & (n - 1):
             below = 1 << (n.bit_length() - 1)
             self.fail("sample.n", f"{n}: a {method} design needs a power of 2 (its balance "
@@ -415,7 +422,8 @@ class _Parser:
         if not sampled:
             self.fail("sample", "no parameter to sample: give at least one, e.g. radial_load = "
                       "{ distribution = \"uniform\", low = \"1 kN\", high = \"8 kN\" }")
-        size = n * (len(sampled) + 2) if method == "saltelli" else n
+        replicates = sample.SALTELLI_REPLICATES if method == "saltelli" else 1
+        size = n * replicates * (len(sampled) + 2) if method == "saltelli" else n
         if size > MAX_AXIS_VALUES:
             self.fail("sample.n", f"{n}: the design would have {size} samples, more than "
                       f"{MAX_AXIS_VALUES:.0e}")
@@ -423,7 +431,7 @@ class _Parser:
                          for name, raw in sampled.items()}
         widths = [self.sampled_length(model, model.input(name), fixed) for name in sampled]
         if method == "saltelli":
-            cube = sample.saltelli_blocks(n, widths, seed)
+            cube = sample.saltelli_blocks(n, widths, seed, replicates)
         else:
             cube = sample.unit_hypercube(method, n, sum(widths), seed)
         values, column = {}, 0
@@ -438,7 +446,8 @@ class _Parser:
                                   spec.unit) for s, d in zip(si, drawn)]
         blocks = tuple(sample.block_meanings(list(sampled))) if method == "saltelli" else None
         sampling = Sampling(method, n, seed, {name: d.text(model.input(name).unit)
-                                              for name, d in distributions.items()}, blocks)
+                                              for name, d in distributions.items()}, blocks,
+                            replicates)
         return Axis("sample", values, list(range(size))), sampling
 
     def distribution(self, spec: Input, raw: dict, key: str) -> sample.Distribution:

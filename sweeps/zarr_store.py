@@ -177,6 +177,22 @@ def replace_folder(folder: Path, path: Path):
     shutil.rmtree(old, ignore_errors=True)
 
 
+def write_dataset(dataset, path):
+    """Write an xarray ``dataset`` (an analysis) as a zarr store at ``path``, of the format a
+    run's store has, its metadata consolidated: built beside it, flushed to the disk and
+    renamed into place as :func:`replace_folder` does (an earlier store there is replaced);
+    nothing is left beside it if the writing fails."""
+    path = Path(path)
+    path.parent.mkdir(parents=True, exist_ok=True)
+    temporary = path.with_name(f".{path.name}.{os.getpid()}.tmp")
+    try:
+        dataset.to_zarr(temporary, mode="w", zarr_format=ZARR_FORMAT, consolidated=True)
+        flush([*temporary.rglob("*"), temporary])
+        replace_folder(temporary, path)
+    finally:
+        shutil.rmtree(temporary, ignore_errors=True)
+
+
 def flush(paths):
     """fsync every file and folder in ``paths``, all at once: the filesystem's journal then
     commits them together (one at a time, a chunk's took longer than writing it)."""

@@ -212,7 +212,8 @@ def _tolerances(results, figures):
         axis.set_xticks(axis.get_xticks(), [_SHORT[name] for name in analysis.input.values])
         axis.set_title(text, fontsize=9)
     figure.suptitle(conditions(data, "roller_count", "roller_roundness_order", width=None)
-                    + f"; n = {data.attrs['sample_size']} (Saltelli)", fontsize=9)
+                    + f"; Saltelli, {data.attrs['sample_replicates']} replicates of n = "
+                    f"{data.attrs['sample_size']}", fontsize=9)
     figure.tight_layout()
     save(figure, figures, "tolerances.png")
 
