@@ -35,7 +35,7 @@ def _parser() -> argparse.ArgumentParser:
     run = commands.add_parser("run", help="compute a sweep definition into a netCDF file or a "
                               "zarr store")
     run.add_argument("definition", type=Path, help="the sweep definition (TOML)")
-    run.add_argument("-o", "--output", type=Path,
+    run.add_argument("-o", "--output",  # as written: a trailing / says "a folder"
                      help="netCDF file to write (default results/<definition name>.nc), or a "
                           "zarr store (a path ending in .zarr) that each worker writes into")
     run.add_argument("--chunk-size", type=int, metavar="POINTS",

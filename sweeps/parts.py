@@ -5,15 +5,20 @@ model's and the package's versions, the grid's size, the chunk size and what the
 a netCDF file's encoded chunks, ``hdf5_chunks``, for one storage) and one ``.npz`` file per
 finished chunk, each written atomically and flushed to the disk before it is renamed into
 place (a zarr output keeps its chunks' values in its store instead: ``zarr_store``). Parts of
-another definition, model, package version or storage are discarded, with a message; a part
-that cannot be read (a power loss before it reached the disk) is computed again.
-A lock on ``.<output>.lock`` keeps two runs from writing the same output, and
+another definition, model, package version or storage are discarded, with a message, and so
+is a folder whose manifest is not one this program writes; a part that cannot be read (a power
+loss before it reached the disk) is computed again, and a file in the folder that is no part of
+the run is removed, with a message.
+A lock on ``.<output>.lock`` keeps two runs from writing the same output; the run that holds it
+removes the temporary files that a killed run left (:func:`remove_stale_temporaries`), and
 :func:`check_output` refuses an output path that holds something other than an earlier result.
 """
 from __future__ import annotations
 
+import errno
 import json
 import os
+import re
 import shutil
 import stat
 import zipfile
@@ -42,6 +47,11 @@ class UnreadablePart(OSError):
 NETCDF_SIGNATURES = (b"CDF\x01", b"CDF\x02", b"CDF\x05", b"\x89HDF\r\n\x1a\n")
 #: The suffix of an output written as a zarr store (a folder) rather than a netCDF file.
 ZARR_SUFFIX = ".zarr"
+#: Names that are only a suffix: a hidden file, not a result with a name.
+BARE_SUFFIXES = (ZARR_SUFFIX, ".nc")
+#: The errors of a file that cannot be written on (a full disk or quota, a file larger than
+#: the process may write, a disk failing or read-only).
+WRITING_ERRORS = (errno.ENOSPC, errno.EFBIG, errno.EDQUOT, errno.EIO, errno.EROFS)
 
 
 def is_zarr(output) -> bool:
@@ -60,6 +70,7 @@ def check_output(output, definition=None):
     folder, a device, a pipe, a symbolic link, another program's file) raises
     :class:`UnsafeOutput`; nothing is opened but a regular file's first bytes and header.
     """
+    _check_name(output)
     output = Path(output)
     try:
         found = output.lstat()
@@ -79,7 +90,17 @@ def check_output(output, definition=None):
             raise UnsafeOutput(f"{output}: exists and is not a zarr store written by "
                                f"bearing-sweep ({reason}); refusing to replace it (remove it or "
                                "choose another output)")
-        return
+        # A reader of a store reads each chunk by its path when asked for it, and a chunk
+        # missing reads as the fill value: whatever replaced the store, a reader that has it
+        # open would read the new run's values (or fill values) under the coordinates it
+        # read from the old one.
+        raise UnsafeOutput(f"{output}: holds an earlier zarr store of bearing-sweep, which is "
+                           "never replaced (a reader that has it open would read the new "
+                           "values under its old coordinates): remove it first (close its "
+                           "readers, then rm -r it) or choose another output")
+    if kind == "regular file" and is_zarr(output):
+        raise UnsafeOutput(f"{output}: exists and is a file; a .zarr output is a zarr store, a "
+                           "folder: refusing to replace it (choose another output)")
     if kind != "regular file":
         raise UnsafeOutput(f"{output}: exists and is {kind}, not an earlier result; refusing to "
                            "replace it (choose another output)")
@@ -88,6 +109,43 @@ def check_output(output, definition=None):
         raise UnsafeOutput(f"{output}: exists and is not a netCDF file written by bearing-sweep "
                            f"({reason}); refusing to replace it (remove it or choose another "
                            "output)")
+
+
+def _check_name(output):
+    """Refuse an output name that does not say plainly what it is: only a suffix (``.zarr``,
+    ``.nc``: a hidden file), a name ending in a dot (which some filesystems drop: ``x.zarr.``
+    would be a netCDF file there, a store elsewhere), or a netCDF name ending in a separator
+    (a folder, where a netCDF result is a file)."""
+    text = os.fspath(output)
+    name = Path(text).name
+    if name.lower() in BARE_SUFFIXES:
+        kind = "store" if is_zarr(f"x{name}") else "file"
+        raise UnsafeOutput(f"{text}: is only a suffix; name the {kind}, as result{name}")
+    if name.endswith(".") and name.strip("."):
+        raise UnsafeOutput(f"{text}: ends in a dot, which some filesystems drop; name it "
+                           f"{name.rstrip('.')} (a .zarr store or a netCDF file)")
+    separators = (os.sep, os.altsep) if os.altsep else (os.sep,)
+    if text.endswith(separators) and name not in ("", ".", "..") and not is_zarr(text):
+        raise UnsafeOutput(f"{text}: names a folder (it ends in {text[-1]}), and a netCDF "
+                           f"result is a file: name it {name} (a folder is written only as a "
+                           "zarr store, a name ending in .zarr)")
+
+
+def check_parts_folder(output):
+    """Refuse (:class:`UnsafeOutput`) a run's output whose parts folder (:class:`Parts`: it is
+    emptied and removed once the run is complete) exists and is not a folder (a file, a
+    link)."""
+    output = Path(output)
+    folder = output.with_name(output.name + ".parts")
+    try:
+        kind = _file_kind(folder.lstat().st_mode)
+    except OSError:
+        return
+    if kind != "a folder":
+        kind = "a file" if kind == "regular file" else kind
+        raise UnsafeOutput(f"{folder}: exists and is {kind}, not the folder of an interrupted "
+                           f"run's parts of {output.name}; refusing to use it (remove it or "
+                           "choose another output)")
 
 
 def _check_folder(output: Path):

@@ -19,7 +19,7 @@ of the outputs on fewer axes), written once the worker has written the chunk's v
 flushed them to the disk: an interrupted run resumes from the chunks so marked. At the end
 the global attributes are completed (model errors, scheduler, history), the metadata
 consolidated, and the store renamed to the output: a store found at the output path is always
-complete.
+complete, and never replaced (a reader reads a store's chunks by their paths as it needs them).
 """
 from __future__ import annotations
 

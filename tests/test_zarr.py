@@ -156,14 +156,13 @@ def test_values_of_another_version_are_never_written(tmp_path, monkeypatch):
     assert not list((tmp_path / "out.zarr.parts").glob("chunk-*"))
 
 
-def test_the_command_and_the_api_write_a_store_and_replace_their_own(tmp_path, capsys):
+def test_the_command_and_the_api_write_a_store(tmp_path, capsys):
     definition = tmp_path / "d.toml"
     definition.write_text(DEFINITION)
     output = tmp_path / "out.zarr"
-    for _ in range(2):  # the second run replaces the first's store
-        assert cli.main(["run", str(definition), "-o", str(output), "--workers", "0",
-                         "--quiet"]) == 0
-        assert f"-> {output}" in capsys.readouterr().out
+    assert cli.main(["run", str(definition), "-o", str(output), "--workers", "0",
+                     "--quiet"]) == 0
+    assert f"-> {output}" in capsys.readouterr().out
     by_command = store.open_result(output)
     assert by_command.status.shape == (3, 4, 2)
     with bearing_sweep.run(definition, output=tmp_path / "api.zarr", workers=0,
@@ -171,6 +170,28 @@ def test_the_command_and_the_api_write_a_store_and_replace_their_own(tmp_path, c
         xr.testing.assert_identical(without_provenance(by_api.load()),
                                     without_provenance(by_command))
     assert sorted(p.name for p in tmp_path.iterdir()) == ["api.zarr", "d.toml", "out.zarr"]
+
+
+def test_a_store_open_in_a_reader_is_never_replaced_under_it(tmp_path, capsys, monkeypatch):
+    # A reader reads a store's chunks by their paths when it needs them, and a chunk that
+    # is not there as the fill value (NaN, and "converged" for status): replaced by any
+    # means, the store would give the reader the new run's values (or fill values) under
+    # the coordinates it read from the old one.
+    definition = tmp_path / "def.toml"
+    definition.write_text(DEFINITION)
+    output = tmp_path / "r.zarr"
+    run_sweep(spec.load(definition), output, Executor(workers=0), progress=False)
+    reader = xr.open_dataset(output, engine="zarr")
+    expected = store.open_result(output)
+    monkeypatch.setattr("bearing_sweep.compute.evaluate_chunk", None)  # refused before it
+    definition.write_text(DEFINITION.replace('stop = "6 kN"', 'stop = "9 kN"'))
+    err = refused(tmp_path, capsys, output, definition)
+    assert "holds an earlier zarr store of bearing-sweep, which is never replaced" in err
+    assert "remove it first (close its readers, then rm -r it) or choose another output" in err
+    xr.testing.assert_identical(reader.load(), expected)  # coordinates and values of one run
+    reader.close()
+    with pytest.raises(spec.SpecError, match="never replaced"):
+        bearing_sweep.run(definition, output=output, workers=0, progress=False)
 
 
 def test_a_folder_that_is_not_our_store_is_refused(tmp_path, capsys, no_computing):  # noqa: F811
