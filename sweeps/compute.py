@@ -233,8 +233,10 @@ class Executor:
     ``client`` is an existing ``dask.distributed.Client`` to compute on (left open: it is the
     caller's); ``scheduler`` connects to a running dask.distributed scheduler; ``workers=0``
     computes in-process; ``workers=N`` uses a LocalCluster of N single-threaded processes; by
-    default a sweep worth it gets a LocalCluster of two, and a small one runs in-process. A
-    cluster is started on first need and kept for later sweeps.
+    default a sweep worth it gets a LocalCluster of two, and a small one runs in-process (a
+    local cluster never has more workers than the cores nor than the sweep's chunks:
+    :meth:`plan`). A cluster is started on first need and kept for later sweeps; one that
+    cannot start is a :class:`ClusterFailure`.
     """
 
     def __init__(self, workers: int | None = None, scheduler: str | None = None,
