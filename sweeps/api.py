@@ -14,7 +14,7 @@ import xarray as xr
 
 from .models.registry import REQUIRED, STATUS_DESCRIPTIONS, all_models
 from . import spec, zarr_store
-from .compute import Executor, run_sweep
+from .compute import RESULT_COMPLETE, Executor, Interrupts, run_sweep
 from .parts import ZARR_SUFFIX, check_output, is_zarr
 from .spec import SpecError, Sweep
 from .store import is_result, open_result, result_engine, write_netcdf
@@ -61,8 +61,16 @@ def run(definition, *, output=None, client=None, workers=None, progress=True, en
     Raises
     ------
     SpecError
-        A mistake in the definition or the arguments, found before any computing; nothing
-        is written.
+        A mistake in the definition or the arguments (an output path that must not be
+        written: an earlier zarr store, which is never replaced), found before any computing;
+        nothing is written.
+    OSError
+        A failure of the machine: a full disk, a result the disk cannot hold
+        (:class:`~bearing_sweep.footprint.InsufficientSpace`, before computing, or once the
+        first chunks show it), another run writing ``output``; the finished chunks are kept.
+    RuntimeError
+        A local cluster that cannot start (:class:`~bearing_sweep.compute.ClusterFailure`),
+        workers of another version.
     """
     sweep = _sweep(definition)
     sweep.storage = spec.storage_options(sweep.storage, encoding, compression,
@@ -77,13 +85,18 @@ def run(definition, *, output=None, client=None, workers=None, progress=True, en
                         "own workers")
     _client_argument(client)
     note = (lambda message: print(message, file=sys.stderr)) if progress else None
-    with Executor(workers, client=client) as executor:
-        summary = run_sweep(sweep, output, executor, progress=progress, log=note)
-    if progress:
-        print(summary.text(), file=sys.stderr)
-    if output is None:
-        return summary.dataset
-    return xr.open_dataset(output, engine=result_engine(output))
+    # A Ctrl-C once the result is in place waits for the cleanup: the result is complete.
+    with Interrupts() as interrupts:
+        with Executor(workers, client=client) as executor:
+            summary = run_sweep(sweep, output, executor, progress=progress, log=note,
+                                interrupts=interrupts)
+        if progress:
+            print(summary.text(), file=sys.stderr)
+            if interrupts.ignored:
+                print(RESULT_COMPLETE, file=sys.stderr)
+        if output is None:
+            return summary.dataset
+        return xr.open_dataset(output, engine=result_engine(output))
 
 
 def check(definition) -> None:

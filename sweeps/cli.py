@@ -12,7 +12,8 @@ from .models.catalogue import PRESETS
 from .models.registry import all_models
 from . import schema, spec, store
 from .parts import check_output, write_durably
-from .compute import Executor, WorkerMismatch, check_scheduler_address, run_sweep
+from .compute import (RESULT_COMPLETE, ClusterFailure, Executor, Interrupts, WorkerMismatch,
+                      check_scheduler_address, run_sweep)
 from .dependence import InconsistentOutput
 from .spec import SpecError
 
@@ -35,7 +36,7 @@ def _parser() -> argparse.ArgumentParser:
     run = commands.add_parser("run", help="compute a sweep definition into a netCDF file or a "
                               "zarr store")
     run.add_argument("definition", type=Path, help="the sweep definition (TOML)")
-    run.add_argument("-o", "--output", type=Path,
+    run.add_argument("-o", "--output",  # as written: a trailing / says "a folder"
                      help="netCDF file to write (default results/<definition name>.nc), or a "
                           "zarr store (a path ending in .zarr) that each worker writes into")
     run.add_argument("--chunk-size", type=int, metavar="POINTS",
@@ -212,6 +213,7 @@ def _our_schema(path: Path) -> bool:
 
 def main(argv=None) -> int:
     args = _parser().parse_args(argv)
+    interrupts = Interrupts()  # of a run: once its result is in place, it is complete
     try:
         if args.command == "models":
             for model in all_models().values():
@@ -242,10 +244,13 @@ def main(argv=None) -> int:
             sweep = spec.load(args.definition)
             sweep.storage = spec.storage_options(sweep.storage, args.encoding, args.compression)
             output = args.output or Path("results") / f"{args.definition.stem}.nc"
-            with Executor(args.workers, args.scheduler) as executor:
-                summary = run_sweep(sweep, output, executor, args.chunk_size, not args.quiet,
-                                    args.fresh, _note)
-            print(summary.text())
+            with interrupts:
+                with Executor(args.workers, args.scheduler) as executor:
+                    summary = run_sweep(sweep, output, executor, args.chunk_size,
+                                        not args.quiet, args.fresh, _note, interrupts)
+                print(summary.text())
+                if interrupts.ignored:
+                    _note(RESULT_COMPLETE)
         elif args.command == "analyze":
             from . import api  # xarray: not for a run, which writes its file without it
 
@@ -273,7 +278,7 @@ def main(argv=None) -> int:
     except SpecError as error:
         print(f"error: {error}", file=sys.stderr)
         return USAGE_ERROR
-    except WorkerMismatch as error:  # the cluster, not the user's input, is at fault
+    except (WorkerMismatch, ClusterFailure) as error:  # the cluster, not the input, is at fault
         print(f"error: {error}", file=sys.stderr)
         return 1
     except InconsistentOutput as error:  # the model's declaration, not the input, is at fault
@@ -288,6 +293,9 @@ def main(argv=None) -> int:
               file=sys.stderr)
         return 1
     except KeyboardInterrupt:
+        if interrupts.result_in_place:  # after the run's own cleanup: the result is complete
+            print(RESULT_COMPLETE, file=sys.stderr)
+            return 0
         print("interrupted: the finished chunks are kept; run the same command again to resume",
               file=sys.stderr)
         return 130

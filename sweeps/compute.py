@@ -6,6 +6,7 @@ import functools
 import itertools
 import logging
 import math
+import os
 import signal
 import socket
 import sys
@@ -18,9 +19,10 @@ import numpy as np
 
 from .models.registry import MODEL_ERROR, known_status, values_kept
 from . import hdf5_chunks, store, units
-from .grid import Grid
+from .footprint import Footprint, InsufficientSpace
+from .grid import Grid, block_shape
 from .labels import stored_unit
-from .parts import HeldChunks, OutputLock, Parts, check_output, is_zarr
+from .parts import HeldChunks, OutputLock, Parts, check_output, check_parts_folder, is_zarr
 from .spec import SpecError, Sweep
 
 #: Below this estimated single-core time [s] a sweep runs in-process: starting a cluster
@@ -35,10 +37,25 @@ CHUNK_SECONDS = 1.0
 CHUNKS_IN_FLIGHT = 4
 #: How long to wait for a scheduler given by ``--scheduler`` to answer [s].
 CONNECT_SECONDS = 10.0
+#: The size of the local cluster when none is asked for.
+DEFAULT_WORKERS = 2
 
 
 class WorkerMismatch(RuntimeError):
     """A worker runs another version of the package or the model; the message is for the user."""
+
+
+class ClusterFailure(RuntimeError):
+    """The cluster could not start, or lost a worker for good; the message is for the user."""
+
+
+def available_cores() -> int:
+    """The cores this process may run on (its CPU affinity where the system says, as a batch
+    scheduler sets it, otherwise the machine's)."""
+    try:
+        return len(os.sched_getaffinity(0))
+    except AttributeError:  # macOS and Windows have no affinity call
+        return os.cpu_count() or 1
 
 
 def versions(model) -> dict:
@@ -224,8 +241,10 @@ class Executor:
     ``client`` is an existing ``dask.distributed.Client`` to compute on (left open: it is the
     caller's); ``scheduler`` connects to a running dask.distributed scheduler; ``workers=0``
     computes in-process; ``workers=N`` uses a LocalCluster of N single-threaded processes; by
-    default a sweep worth it gets a LocalCluster of two, and a small one runs in-process. A
-    cluster is started on first need and kept for later sweeps.
+    default a sweep worth it gets a LocalCluster of two, and a small one runs in-process (a
+    local cluster never has more workers than the cores nor than the sweep's chunks:
+    :meth:`plan`). A cluster is started on first need and kept for later sweeps; one that
+    cannot start is a :class:`ClusterFailure`.
     """
 
     def __init__(self, workers: int | None = None, scheduler: str | None = None,
@@ -235,6 +254,7 @@ class Executor:
         self.given = client is not None  # the caller's: used, never closed
         self.cluster = None
         self.starting = None  # a local cluster starting in the background (a Future)
+        self.size = None  # the local cluster's worker processes, once planned (:meth:`plan`)
 
     def __enter__(self):
         return self
@@ -269,7 +289,29 @@ class Executor:
     def worker_count(self) -> int:
         if self.scheduler or self.given:
             return max(1, len(self.connect().scheduler_info()["workers"]))
-        return self.workers or 2
+        return self.size or min(self.workers or DEFAULT_WORKERS, available_cores())
+
+    def plan(self, grid: Grid, chunk_size: int | None, log):
+        """Size the local cluster for ``grid`` (in chunks of ``chunk_size`` points, or as
+        :func:`choose_chunk_size` chooses): the workers asked for (default two), but no more
+        than the cores this process may use (each worker is one single-threaded process:
+        more would only share them; a line to ``log`` says so) nor than the sweep has
+        chunks. A cluster already started for an earlier sweep grows if this one needs
+        more. An external cluster (``scheduler``, ``client``) is the caller's to size."""
+        if self.scheduler or self.given:
+            return
+        asked = self.workers or DEFAULT_WORKERS
+        cores = available_cores()
+        block = block_shape(grid.shape, chunk_size or choose_chunk_size(grid, min(asked, cores)))
+        chunks = math.prod(math.ceil(n / b) for n, b in zip(grid.shape, block))  # as Grid.chunks
+        count = max(1, min(asked, cores, chunks))
+        if self.workers and self.workers > cores:
+            log(f"{self.workers} workers asked for, {cores} core{'s' * (cores != 1)} "
+                f"available to this process: a local cluster of {count} "
+                f"worker{'s' * (count != 1)} (--scheduler runs on a larger cluster)")
+        if self.cluster is not None and count > (self.size or 0):
+            self.cluster.scale(count)
+        self.size = max(count, self.size or 0)
 
     def start(self):
         """Begin connecting: a local cluster starts in a background thread (its processes
@@ -320,10 +362,18 @@ class Executor:
             # The preload runs this module's dask_setup in every worker process,
             # restarted ones too. The cluster's own logs are not for the user: what
             # goes wrong reaches the summary or the command's one line of error.
-            self.cluster = LocalCluster(n_workers=self.workers or 2, threads_per_worker=1,
-                                        processes=True, dashboard_address=":0",
-                                        silence_logs=logging.CRITICAL, preload=[__name__])
-        self.client = Client(self.cluster, set_as_default=False)
+            count = self.worker_count()
+            try:
+                self.cluster = LocalCluster(n_workers=count, threads_per_worker=1,
+                                            processes=True, dashboard_address=":0",
+                                            silence_logs=logging.CRITICAL, preload=[__name__])
+                self.client = Client(self.cluster, set_as_default=False)
+            except Exception as error:  # dask's own traceback is not for the user
+                reason = (str(error).splitlines() or [type(error).__name__])[0]
+                raise ClusterFailure(
+                    f"the local dask cluster of {count} worker{'s' * (count != 1)} could not "
+                    f"start ({reason}); --workers 0 (workers=0 in Python) computes in this "
+                    "process") from None
 
     def describe(self, parallel: bool) -> str:
         if not parallel:
@@ -343,7 +393,7 @@ class Executor:
             for start, stop in chunks:
                 yield start, stop, task(grid, start, stop)
             return
-        from distributed import as_completed
+        from distributed import KilledWorker, as_completed
 
         client = self.connect()
         # A few chunks per worker in flight, the next submitted as one finishes: the driver
@@ -366,7 +416,14 @@ class Executor:
                 finished = as_completed(first)
                 for future in finished:
                     start, stop = futures.pop(future)
-                    result = future.result()
+                    try:
+                        result = future.result()
+                    except KilledWorker:  # dask's message is a paragraph
+                        raise ClusterFailure(
+                            f"the workers that computed points {start}..{stop - 1} died doing "
+                            "it, as often as dask retries; the finished chunks are kept: run "
+                            "the same command again, or with --workers 0 to compute in this "
+                            "process") from None
                     # Let the worker drop it: held futures keep every result in the cluster.
                     future.release()
                     following = next(waiting, None)
@@ -432,9 +489,59 @@ def _check_versions(found: dict, expected: dict, executor: Executor, parts: Part
         f"{expected['model']}): install the same on every worker{kept}")
 
 
+#: What a run says of a Ctrl-C that came once its result was in place (:class:`Interrupts`).
+RESULT_COMPLETE = "interrupt ignored: the result was already complete"
+
+
+class Interrupts:
+    """Ctrl-C (SIGINT) during a run, in the main thread. Until the result is about to take its
+    name it stops the run as usual (``KeyboardInterrupt``: the finished chunks are kept);
+    from :meth:`result_taking_its_name` on, the result is complete, and an interrupt is
+    recorded (:attr:`ignored`) instead: the short cleanup that follows (the parts removed,
+    the cluster closed, the summary) finishes, and the caller says that the result is
+    complete rather than that it was interrupted. Elsewhere than in the main thread, or
+    where SIGINT is ignored (a job in the background), nothing changes."""
+
+    def __init__(self):
+        self.result_in_place = False
+        self.ignored = False
+        self.previous = None
+
+    def __enter__(self):
+        if threading.current_thread() is threading.main_thread():
+            previous = signal.getsignal(signal.SIGINT)
+            if callable(previous):
+                self.previous = previous
+                signal.signal(signal.SIGINT, self._interrupted)
+        return self
+
+    def __exit__(self, *exc):
+        if self.previous is not None:
+            signal.signal(signal.SIGINT, self.previous)
+            self.previous = None
+
+    def _interrupted(self, signum, frame):
+        if self.result_in_place:
+            self.ignored = True
+            return
+        self.previous(signum, frame)
+
+    def result_taking_its_name(self):
+        """Called once the result is complete on the disk, just before its rename."""
+        self.result_in_place = True
+
+
+def _stored_bytes(result: dict) -> int | None:
+    """The bytes a computed chunk takes in the result (encoded for a netCDF file, or written
+    into a zarr store); None for values not yet encoded."""
+    if "chunks" in result:
+        return sum(len(data) for _, data in result["chunks"].values())
+    return result.get("stored_bytes")
+
+
 def run_sweep(sweep: Sweep, output=None, executor: Executor | None = None,
               chunk_size: int | None = None, progress: bool = True, fresh: bool = False,
-              log=None) -> Summary:
+              log=None, interrupts: Interrupts | None = None) -> Summary:
     """Compute ``sweep`` and write its netCDF file atomically at ``output``, or, when
     ``output`` is None, return its dataset in :attr:`Summary.dataset` without a file.
 
@@ -445,21 +552,30 @@ def run_sweep(sweep: Sweep, output=None, executor: Executor | None = None,
     in ``.zarr`` is a zarr store that each chunk is written into by the worker that computes
     it (:mod:`zarr_store`). A cluster, when the sweep is worth one, starts while the parts
     are looked at and the file's structure is written. ``log`` receives messages for the user
-    (resuming, discarding).
+    (resuming, discarding, and with ``progress`` the estimate of a long or large run:
+    :mod:`footprint`). A result the disk cannot hold raises
+    :class:`footprint.InsufficientSpace`. ``interrupts``: the caller's :class:`Interrupts`,
+    entered by the caller for as long as it has cleanup to do after the run (by default the
+    run's own).
     """
     if output is not None:
         check_output(output, sweep.path)
+        check_parts_folder(output)
     own = executor is None
     executor = executor or Executor()
     log = log or (lambda message: None)
+    guard = Interrupts() if interrupts is None else contextlib.nullcontext()
+    interrupts = guard if interrupts is None else interrupts
+    interrupts.result_in_place = False
     began = time.monotonic()
     try:
-        with OutputLock(output) if output is not None else contextlib.nullcontext():
+        with guard, OutputLock(output) if output is not None else contextlib.nullcontext():
             grid = Grid.from_sweep(sweep)
             model = grid.model
             expected = versions(model)
             parallel = executor.parallel(grid)
             if parallel:
+                executor.plan(grid, chunk_size, log)
                 executor.start()
             size = chunk_size or choose_chunk_size(
                 grid, executor.worker_count() if parallel else 0)
@@ -477,7 +593,7 @@ def run_sweep(sweep: Sweep, output=None, executor: Executor | None = None,
             parts = HeldChunks() if output is None else (
                 zarr_store.StoreParts if zarr else hdf5_chunks.EncodedParts if direct
                 else Parts)(output, key)
-            size = parts.open(size, fresh, log)
+            size = parts.open(size, fresh, log, grid.chunks)
             chunks = grid.chunks(size)
             scheduler = executor.describe(parallel)
             task = None
@@ -486,9 +602,12 @@ def run_sweep(sweep: Sweep, output=None, executor: Executor | None = None,
                 task = functools.partial(evaluate_into, parts.writer, expected)
             done = parts.finished()
             todo = [chunk for chunk in chunks if chunk not in done]
+            footprint = None if output is None else _footprint(
+                sweep, grid, output, todo, executor, parallel, parts, done, progress, log)
             tallies = []
             with contextlib.nullcontext() if output is None or zarr else store.result_file(
-                    sweep, grid, output, store.provenance(scheduler), size, direct) as writer:
+                    sweep, grid, output, store.provenance(scheduler), size, direct,
+                    interrupts.result_taking_its_name) as writer:
                 if direct:  # each chunk encoded by the process that computes it
                     task = functools.partial(evaluate_into, writer.encoder, expected)
 
@@ -502,13 +621,18 @@ def run_sweep(sweep: Sweep, output=None, executor: Executor | None = None,
                         finished(start, stop, parts.load(start, stop))
                 bar = Progress(grid.size, model.name, progress)
                 bar.advance(sum(stop - start for start, stop in done))
+                kept = len(done)
                 try:
                     for start, stop, result in executor.map(grid, todo, parallel, task):
                         _check_versions(result.pop("versions"), expected, executor, parts)
                         parts.save(start, stop, result)
+                        kept += 1
+                        stored = _stored_bytes(result)
                         if not zarr:  # a zarr chunk is in the store, its counts in its mark
                             finished(start, stop, result)
                         bar.advance(stop - start)
+                        if footprint is not None and stored is not None:
+                            footprint.check(stop - start, stored, kept)
                 finally:
                     bar.close()
                 counts, errors, noted = (parts.tally(model, chunks) if zarr
@@ -519,7 +643,8 @@ def run_sweep(sweep: Sweep, output=None, executor: Executor | None = None,
                 else:
                     check_output(output, sweep.path)  # nothing has taken its place meanwhile
                     if zarr:
-                        parts.finish(sweep, grid, chunks, output, scheduler, errors)
+                        parts.finish(sweep, grid, chunks, output, scheduler, errors,
+                                     interrupts.result_taking_its_name)
             parts.remove()
         return Summary(model.name, grid.size, counts, time.monotonic() - began,
                        "(in memory)" if output is None else str(output), scheduler, errors, noted,
@@ -527,3 +652,23 @@ def run_sweep(sweep: Sweep, output=None, executor: Executor | None = None,
     finally:
         if own:
             executor.close()
+
+
+def _footprint(sweep, grid, output, todo, executor, parallel, parts, done, progress, log):
+    """The run's :class:`footprint.Footprint`: a result stored uncompressed that the disk
+    cannot hold is refused before any computing (the parts folder made for it removed, if it
+    holds no finished chunk), and with ``progress`` a long or large run says what it will
+    take."""
+    workers = executor.worker_count() if parallel else 1
+    footprint = Footprint.of(sweep, grid, output, sum(stop - start for start, stop in todo),
+                             workers, netcdf=not is_zarr(output))
+    try:
+        footprint.refuse_if_too_large()
+    except InsufficientSpace:
+        if not done:  # nothing computed: nothing is left of the run
+            parts.remove()
+        raise
+    if progress and footprint.announced():
+        log(footprint.text(grid.model.name, f"{workers} worker{'s' * (workers != 1)}"
+                           if parallel else "one core, in this process"))
+    return footprint

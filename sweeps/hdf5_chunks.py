@@ -34,7 +34,7 @@ import numpy as np
 from .dependence import split_reduced, stored_dims
 from .grid import Grid
 from .parts import Parts, counts_unreadable, load_counts, saved_counts, write_durably
-from .store import stored_blocks
+from .store import closed_after, stored_blocks, writing
 
 #: The compressions whose HDF5 filters :func:`encoded` applies, as ``storage.Storage`` and
 #: netCDF4's ``Variable.filters()`` name them (HDF5's deflate, the zstd plugin, or none).
@@ -171,13 +171,16 @@ class DirectWriter:
         import h5py
 
         self.encoder, self.writer = encoder, writer
-        self.file = reopened(lambda: h5py.File(path, "r+"))
+        with writing(writer.output):
+            self.file = reopened(lambda: h5py.File(path, "r+"))
 
     def __enter__(self):
+        self.closing = closed_after(self.file, self.writer.output)
+        self.closing.__enter__()
         return self
 
     def __exit__(self, *exc):
-        self.file.close()
+        return self.closing.__exit__(*exc)
 
     def write(self, start: int, stop: int, part: dict):
         """Write one chunk of points ``start..stop-1``: the bytes as they are."""
@@ -185,7 +188,8 @@ class DirectWriter:
         for name, (points, values) in part["firsts"].items():
             self.writer.reduced[name].add_firsts(points, values)
         for name, (offset, data) in part["chunks"].items():
-            self.file[name].id.write_direct_chunk(tuple(int(i) for i in offset), data)
+            with writing(self.writer.output):
+                self.file[name].id.write_direct_chunk(tuple(int(i) for i in offset), data)
 
 
 class EncodedParts(Parts):

@@ -5,15 +5,20 @@ model's and the package's versions, the grid's size, the chunk size and what the
 a netCDF file's encoded chunks, ``hdf5_chunks``, for one storage) and one ``.npz`` file per
 finished chunk, each written atomically and flushed to the disk before it is renamed into
 place (a zarr output keeps its chunks' values in its store instead: ``zarr_store``). Parts of
-another definition, model, package version or storage are discarded, with a message; a part
-that cannot be read (a power loss before it reached the disk) is computed again.
-A lock on ``.<output>.lock`` keeps two runs from writing the same output, and
+another definition, model, package version or storage are discarded, with a message, and so
+is a folder whose manifest is not one this program writes; a part that cannot be read (a power
+loss before it reached the disk) is computed again, and a file in the folder that is no part of
+the run is removed, with a message.
+A lock on ``.<output>.lock`` keeps two runs from writing the same output; the run that holds it
+removes the temporary files that a killed run left (:func:`remove_stale_temporaries`), and
 :func:`check_output` refuses an output path that holds something other than an earlier result.
 """
 from __future__ import annotations
 
+import errno
 import json
 import os
+import re
 import shutil
 import stat
 import zipfile
@@ -42,6 +47,11 @@ class UnreadablePart(OSError):
 NETCDF_SIGNATURES = (b"CDF\x01", b"CDF\x02", b"CDF\x05", b"\x89HDF\r\n\x1a\n")
 #: The suffix of an output written as a zarr store (a folder) rather than a netCDF file.
 ZARR_SUFFIX = ".zarr"
+#: Names that are only a suffix: a hidden file, not a result with a name.
+BARE_SUFFIXES = (ZARR_SUFFIX, ".nc")
+#: The errors of a file that cannot be written on (a full disk or quota, a file larger than
+#: the process may write, a disk failing or read-only).
+WRITING_ERRORS = (errno.ENOSPC, errno.EFBIG, errno.EDQUOT, errno.EIO, errno.EROFS)
 
 
 def is_zarr(output) -> bool:
@@ -60,6 +70,7 @@ def check_output(output, definition=None):
     folder, a device, a pipe, a symbolic link, another program's file) raises
     :class:`UnsafeOutput`; nothing is opened but a regular file's first bytes and header.
     """
+    _check_name(output)
     output = Path(output)
     try:
         found = output.lstat()
@@ -79,7 +90,17 @@ def check_output(output, definition=None):
             raise UnsafeOutput(f"{output}: exists and is not a zarr store written by "
                                f"bearing-sweep ({reason}); refusing to replace it (remove it or "
                                "choose another output)")
-        return
+        # A reader of a store reads each chunk by its path when asked for it, and a chunk
+        # missing reads as the fill value: whatever replaced the store, a reader that has it
+        # open would read the new run's values (or fill values) under the coordinates it
+        # read from the old one.
+        raise UnsafeOutput(f"{output}: holds an earlier zarr store of bearing-sweep, which is "
+                           "never replaced (a reader that has it open would read the new "
+                           "values under its old coordinates): remove it first (close its "
+                           "readers, then rm -r it) or choose another output")
+    if kind == "regular file" and is_zarr(output):
+        raise UnsafeOutput(f"{output}: exists and is a file; a .zarr output is a zarr store, a "
+                           "folder: refusing to replace it (choose another output)")
     if kind != "regular file":
         raise UnsafeOutput(f"{output}: exists and is {kind}, not an earlier result; refusing to "
                            "replace it (choose another output)")
@@ -88,6 +109,43 @@ def check_output(output, definition=None):
         raise UnsafeOutput(f"{output}: exists and is not a netCDF file written by bearing-sweep "
                            f"({reason}); refusing to replace it (remove it or choose another "
                            "output)")
+
+
+def _check_name(output):
+    """Refuse an output name that does not say plainly what it is: only a suffix (``.zarr``,
+    ``.nc``: a hidden file), a name ending in a dot (which some filesystems drop: ``x.zarr.``
+    would be a netCDF file there, a store elsewhere), or a netCDF name ending in a separator
+    (a folder, where a netCDF result is a file)."""
+    text = os.fspath(output)
+    name = Path(text).name
+    if name.lower() in BARE_SUFFIXES:
+        kind = "store" if is_zarr(f"x{name}") else "file"
+        raise UnsafeOutput(f"{text}: is only a suffix; name the {kind}, as result{name}")
+    if name.endswith(".") and name.strip("."):
+        raise UnsafeOutput(f"{text}: ends in a dot, which some filesystems drop; name it "
+                           f"{name.rstrip('.')} (a .zarr store or a netCDF file)")
+    separators = (os.sep, os.altsep) if os.altsep else (os.sep,)
+    if text.endswith(separators) and name not in ("", ".", "..") and not is_zarr(text):
+        raise UnsafeOutput(f"{text}: names a folder (it ends in {text[-1]}), and a netCDF "
+                           f"result is a file: name it {name} (a folder is written only as a "
+                           "zarr store, a name ending in .zarr)")
+
+
+def check_parts_folder(output):
+    """Refuse (:class:`UnsafeOutput`) a run's output whose parts folder (:class:`Parts`: it is
+    emptied and removed once the run is complete) exists and is not a folder (a file, a
+    link)."""
+    output = Path(output)
+    folder = output.with_name(output.name + ".parts")
+    try:
+        kind = _file_kind(folder.lstat().st_mode)
+    except OSError:
+        return
+    if kind != "a folder":
+        kind = "a file" if kind == "regular file" else kind
+        raise UnsafeOutput(f"{folder}: exists and is {kind}, not the folder of an interrupted "
+                           f"run's parts of {output.name}; refusing to use it (remove it or "
+                           "choose another output)")
 
 
 def _check_folder(output: Path):
@@ -160,51 +218,84 @@ class Parts:
 
     #: The suffix of a finished chunk's file.
     suffix = ".npz"
+    #: What the folder holds besides the finished chunks' files.
+    own_entries = ("manifest.json",)
 
     def __init__(self, output, key: dict):
         output = Path(output)
         self.folder = output.with_name(output.name + ".parts")
         self.key = key
 
-    def open(self, chunk_size: int, fresh: bool, log) -> int:
-        """Prepare the folder; return the chunk size to use (a resumed sweep keeps its own)."""
+    def open(self, chunk_size: int, fresh: bool, log, chunks_of=None) -> int:
+        """Prepare the folder; return the chunk size to use (a resumed sweep keeps its own).
+
+        ``chunks_of(size)`` gives the ``(start, stop)`` of every chunk of the sweep in chunks
+        of ``size`` points: a file in the folder that is none of them is removed (with a line
+        to ``log``), as is a part that cannot be read.
+        """
         manifest = self.folder / "manifest.json"
         if self.folder.exists():
-            found = _read_json(manifest)
+            found, damage = _read_manifest(manifest, self.key)
             count = self.count()
-            same = found is not None and {k: found.get(k) for k in self.key} == self.key
-            if fresh or not same:
-                if count:
+            if fresh or damage or found != {**self.key, "chunk_size": found["chunk_size"]}:
+                if damage:
+                    log(f"{damage} in {self.folder}: discarding the folder"
+                        + (f" and its {count} finished chunks" if count else ""))
+                elif count:
                     why = "--fresh" if fresh else (
                         "the definition, model, package or storage changed")
                     log(f"{why}: discarding {count} finished chunks in {self.folder}")
                 shutil.rmtree(self.folder)
             else:
-                count -= self._remove_unreadable(log)
+                size = found["chunk_size"]
+                count = self._remove_unusable(log, set(chunks_of(size)) if chunks_of else None)
                 if count:
                     log(f"resuming: {count} chunk{'s' * (count != 1)} already computed in "
                         f"{self.folder}")
-                return int(found["chunk_size"])
+                return size
         self.folder.mkdir(parents=True)
         text = json.dumps({**self.key, "chunk_size": chunk_size}).encode()
         write_durably(manifest, lambda handle: handle.write(text))
         return chunk_size
 
-    def _remove_unreadable(self, log) -> int:
-        """Remove the parts that cannot be read (they are computed again), with one line to
-        ``log``; return how many."""
-        unreadable = []
-        for path in sorted(self.folder.glob(f"chunk-*{self.suffix}")):
-            _, start, stop = path.stem.split("-")
-            reason = self.unreadable(path, int(stop) - int(start))
+    def _remove_unusable(self, log, chunks: set | None) -> int:
+        """Remove from the folder what is no finished chunk of this run (``chunks``: the
+        ``(start, stop)`` of each, None: any), with one line to ``log`` for the files that
+        are neither ours nor readable, and the temporary files a killed run left (the run
+        holds the output's lock: no other run writes them), quietly; return how many
+        finished chunks are left."""
+        unreadable, stray, left = [], [], 0
+        for entry in sorted(self.folder.iterdir()):
+            if entry.name in self.own_entries:
+                continue
+            bounds = self.bounds(entry.name)
+            if bounds is None or (chunks is not None and bounds not in chunks):
+                if not _TEMPORARY.fullmatch(entry.name):
+                    stray.append(entry.name)
+                _remove(entry)
+                continue
+            reason = self.unreadable(entry, bounds[1] - bounds[0])
             if reason:
-                unreadable.append(f"{path.name} ({reason})")
-                path.unlink(missing_ok=True)
-        if unreadable:
-            more = f" and {len(unreadable) - 1} more" if len(unreadable) > 1 else ""
-            log(f"unreadable part {unreadable[0]}{more} in {self.folder}: computing "
-                f"{'them' if more else 'it'} again")
-        return len(unreadable)
+                unreadable.append(f"{entry.name} ({reason})")
+                _remove(entry)
+            else:
+                left += 1
+        for found, what, then in ((unreadable, "unreadable part", "computing {} again"),
+                                  (stray, "a file that is no part of this run,",
+                                   "removed {}")):
+            if found:
+                more = f" and {len(found) - 1} more" if len(found) > 1 else ""
+                log(f"{what} {found[0]}{more} in {self.folder}: "
+                    + then.format("them" if more else "it"))
+        return left
+
+    def bounds(self, name: str) -> tuple[int, int] | None:
+        """The ``(start, stop)`` of the finished chunk whose file is named ``name``, or None
+        for a name :meth:`path` does not give."""
+        found = re.fullmatch(rf"chunk-(\d{{12}})-(\d{{12}}){re.escape(self.suffix)}", name)
+        if found is None or int(found[1]) >= int(found[2]):
+            return None
+        return int(found[1]), int(found[2])
 
     def unreadable(self, path: Path, points: int) -> str | None:
         """Why the finished chunk at ``path`` cannot be used, or None."""
@@ -212,15 +303,12 @@ class Parts:
 
     def count(self) -> int:
         """How many finished chunks are on disk."""
-        return len(list(self.folder.glob(f"chunk-*{self.suffix}")))
+        return len(self.finished())
 
     def finished(self) -> set:
         """``(start, stop)`` of every chunk on disk."""
-        done = set()
-        for path in self.folder.glob(f"chunk-*{self.suffix}"):
-            _, start, stop = path.stem.split("-")
-            done.add((int(start), int(stop)))
-        return done
+        found = (self.bounds(path.name) for path in self.folder.glob(f"chunk-*{self.suffix}"))
+        return {bounds for bounds in found if bounds is not None}
 
     def path(self, start: int, stop: int) -> Path:
         return self.folder / f"chunk-{start:012d}-{stop:012d}{self.suffix}"
@@ -262,7 +350,7 @@ class HeldChunks:
     def __init__(self):
         self.chunks = {}
 
-    def open(self, chunk_size: int, fresh: bool, log) -> int:
+    def open(self, chunk_size: int, fresh: bool, log, chunks_of=None) -> int:
         return chunk_size
 
     def finished(self) -> set:
@@ -298,6 +386,7 @@ class OutputLock:
         except filelock.Timeout:
             raise OutputBusy(f"{self.output}: another bearing-sweep run is writing this output; "
                              "wait for it to finish or choose another -o") from None
+        remove_stale_temporaries(self.output)
         return self
 
     def __exit__(self, *exc):
@@ -313,6 +402,62 @@ def _read_json(path: Path):
         return json.loads(path.read_text())
     except (OSError, ValueError):
         return None
+
+
+def _read_manifest(path: Path, key: dict) -> tuple:
+    """A parts folder's manifest at ``path`` and what makes it other than a manifest this
+    program writes with ``key``, in words (None for one it writes, of this run or of
+    another)."""
+    try:
+        found = json.loads(path.read_text())
+    except (OSError, ValueError):
+        return None, "no readable manifest"
+    return found, _manifest_damage(found, key)
+
+
+def _manifest_damage(found, key: dict) -> str | None:
+    if not isinstance(found, dict):
+        kind = {list: "an array", str: "a string", type(None): "null", bool: "a boolean"}.get(
+            type(found), "a number")
+        return f"a manifest holding {kind}, not an object"
+    size = found.get("chunk_size")
+    if isinstance(size, bool) or not isinstance(size, int) or size < 1:
+        return f"a manifest whose chunk_size is {size!r}, not a positive integer"
+    if "definition_sha256" not in found or not set(found) <= set(key) | {"chunk_size"}:
+        return "a manifest with keys this version of bearing-sweep does not write"
+    return None
+
+
+#: A temporary file of :func:`written_atomically`: ``.<name>.<process id>.tmp``.
+_TEMPORARY = re.compile(r"\..+\.\d+\.tmp")
+
+
+def _remove(path: Path):
+    if path.is_dir() and not path.is_symlink():
+        shutil.rmtree(path)
+    else:
+        path.unlink(missing_ok=True)
+
+
+def remove_stale_temporaries(output) -> list[str]:
+    """Remove the temporary files of ``output`` (``.<name>.<process id>.tmp``, beside it) that
+    a run killed while writing it left. Called by the holder of the output's lock
+    (:class:`OutputLock`): every writer of such a file holds the lock as long as the file
+    exists, and a process's lock dies with it, however it ends, so none of them is being
+    written (on this host or another sharing the folder, whatever became of the process
+    id). Returns their names."""
+    output = Path(output)
+    ours = re.compile(rf"\.{re.escape(output.name)}\.\d+\.tmp")
+    removed = []
+    try:
+        entries = list(os.scandir(output.parent))
+    except OSError:  # no folder yet: nothing left there
+        return removed
+    for entry in entries:
+        if ours.fullmatch(entry.name) and entry.is_file(follow_symlinks=False):
+            Path(entry.path).unlink(missing_ok=True)
+            removed.append(entry.name)
+    return removed
 
 
 def _unreadable(path: Path, points: int) -> str | None:
@@ -364,27 +509,37 @@ def write_durably(path: Path, write):
 
 
 @contextmanager
-def written_atomically(path):
+def written_atomically(path, before_rename=None):
     """A temporary path beside ``path`` for the block to write; when the block ends without
-    an error it takes ``path``'s place (:func:`replace_durably`), otherwise it is removed.
-    An existing file at ``path`` stays intact until then; the folder is made if need be."""
+    an error it takes ``path``'s place (:func:`replace_durably`; ``before_rename()`` is
+    called just before), otherwise it is removed. An existing file at ``path`` stays intact
+    until then; the folder is made if need be. An ``OSError`` of writing that names no file
+    (a full disk met by a library writing the temporary file: ``WRITING_ERRORS``) names
+    ``path``."""
     path = Path(path)
     path.parent.mkdir(parents=True, exist_ok=True)
     temporary = path.with_name(f".{path.name}.{os.getpid()}.tmp")
     try:
         yield temporary
-        replace_durably(temporary, path)
+        replace_durably(temporary, path, before_rename)
+    except OSError as error:
+        if error.filename is not None or error.errno not in WRITING_ERRORS:
+            raise
+        raise OSError(error.errno, os.strerror(error.errno), str(path)) from None
     finally:
         if temporary.exists():
             temporary.unlink()
 
 
-def replace_durably(temporary: Path, path: Path):
+def replace_durably(temporary: Path, path: Path, before_rename=None):
     """Rename the finished ``temporary`` to ``path`` so that a power loss leaves the old file
     or the new one, never a renamed but empty one: the data reaches the disk before the
-    rename, and the rename then too."""
+    rename, and the rename then too. ``before_rename()``, if given, is called once the data
+    is on the disk, just before the rename."""
     with open(temporary, "rb+") as handle:
         os.fsync(handle.fileno())
+    if before_rename is not None:
+        before_rename()
     os.replace(temporary, path)
     fsync_path(path.parent)
 

@@ -2,7 +2,10 @@
 or gathered in memory; its provenance (package version, git commit)."""
 from __future__ import annotations
 
+import contextlib
+import errno
 import os
+import re
 import subprocess
 from contextlib import contextmanager
 from functools import lru_cache
@@ -18,7 +21,7 @@ from .dependence import reductions, stored_cells
 from .grid import Grid, block_shape
 from .labels import labelled, labelled_dataset
 from .netcdf_structure import write_attributes, write_structure
-from .parts import is_zarr, written_atomically
+from .parts import OutputLock, is_zarr, written_atomically
 from .spec import Sweep
 from .storage import integral_values
 
@@ -110,7 +113,7 @@ def gather(sweep: Sweep, grid: Grid, parts, chunks, scheduler: str, errors=()) -
 
 @contextmanager
 def result_file(sweep: Sweep, grid: Grid, path, provenance: dict, chunk_size: int,
-                direct: bool = False):
+                direct: bool = False, before_rename=None):
     """Write the sweep's netCDF file at ``path`` as its chunks (of ``chunk_size`` points)
     arrive; yields a :class:`ChunkWriter`, or with ``direct`` an
     :class:`hdf5_chunks.DirectWriter` of the chunks the workers encode (its ``encoder``).
@@ -129,14 +132,20 @@ def result_file(sweep: Sweep, grid: Grid, path, provenance: dict, chunk_size: in
     bytes written as they are (:mod:`hdf5_chunks`), the file opened with h5py meanwhile and
     with netCDF4 again for :meth:`ChunkWriter.finish`; otherwise netCDF4 writes the values and
     the file is flushed after each sweep chunk, so that HDF5 compresses each chunk once.
+
+    A failure of HDF5 or netCDF to write the file (a full disk) is an ``OSError`` naming
+    ``path`` (:func:`writing`), never hidden by the file's failure to close after it.
+    ``before_rename()``: called just before the complete file takes its name.
     """
     import netCDF4
 
     from . import hdf5_chunks
 
-    with written_atomically(path) as temporary:
-        with netCDF4.Dataset(temporary, "w") as target:
-            writer = ChunkWriter(sweep, grid, target, provenance, chunk_size)
+    with written_atomically(path, before_rename) as temporary:
+        with writing(path):
+            opened = netCDF4.Dataset(temporary, "w")
+        with closed_after(opened, path) as target:
+            writer = ChunkWriter(sweep, grid, target, provenance, chunk_size, path)
             if not direct:
                 yield writer
                 writer.finish()
@@ -146,16 +155,51 @@ def result_file(sweep: Sweep, grid: Grid, path, provenance: dict, chunk_size: in
         # Never open in netCDF4 and h5py at once: each has its own HDF5 library.
         with hdf5_chunks.DirectWriter(temporary, encoder, writer) as chunks:
             yield chunks
-        with hdf5_chunks.reopened(lambda: netCDF4.Dataset(temporary, "a")) as target:
+        with writing(path):
+            opened = hdf5_chunks.reopened(lambda: netCDF4.Dataset(temporary, "a"))
+        with closed_after(opened, path) as target:
             writer.reopen(target)
             writer.finish()
+
+
+@contextmanager
+def writing(output):
+    """The block's failures of HDF5 or netCDF writing the file of ``output`` (``OSError``,
+    ``RuntimeError``: a full disk, a file larger than the process may write) as one
+    ``OSError`` naming ``output``, in the words of its errno where they give one."""
+    try:
+        yield
+    except (OSError, RuntimeError) as error:
+        code = error.errno if isinstance(getattr(error, "errno", None), int) else None
+        if not code or code < 0:  # netCDF's own codes are negative; HDF5 says it in words
+            found = re.search(r"errno = (\d+)", str(error))
+            code = int(found[1]) if found else None
+        text = os.strerror(code) if code else (str(error).splitlines() or ["not written"])[0]
+        raise OSError(code or errno.EIO, text, str(output)) from None
+
+
+@contextmanager
+def closed_after(opened, output):
+    """``opened`` (a netCDF4 or h5py file) for the block, closed after it. A failure of the
+    block is not hidden by the file's failure to close after it (HDF5 cannot flush to a full
+    disk either); a failure to close it otherwise is one of :func:`writing`."""
+    try:
+        yield opened
+    except BaseException:
+        with contextlib.suppress(Exception):
+            opened.close()
+        raise
+    with writing(output):
+        opened.close()
 
 
 class ChunkWriter:
     """Writes a sweep's chunks into the netCDF file :func:`result_file` opened."""
 
-    def __init__(self, sweep: Sweep, grid: Grid, target, provenance: dict, chunk_size: int):
+    def __init__(self, sweep: Sweep, grid: Grid, target, provenance: dict, chunk_size: int,
+                 output=None):
         self.sweep, self.grid, self.target, self.provenance = sweep, grid, target, provenance
+        self.output = output  # the result's path, for the message of a failure to write
         self.errors = set()
         self.reduced = reductions(grid)
         structure = self._structure()
@@ -177,8 +221,10 @@ class ChunkWriter:
         for name, index, block in stored_blocks(
                 self.grid, start, stop, _per_point_outputs(part, self.reduced, start, stop),
                 part["status"]):
-            self.target.variables[name][index or ...] = block
-        self.target.sync()  # the HDF5 chunks this completed are compressed now, not at the end
+            with writing(self.output):
+                self.target.variables[name][index or ...] = block
+        with writing(self.output):
+            self.target.sync()  # the HDF5 chunks this completed are compressed now
 
     def reopen(self, target):
         """Go on with ``target``, the file opened again (its chunks written meanwhile)."""
@@ -188,9 +234,12 @@ class ChunkWriter:
         """Write the outputs stored on fewer dimensions, and the global attributes of the
         finished sweep (its time, the model's errors)."""
         for name, reduction in self.reduced.items():
-            self.target.variables[name][...] = stored_reduction(
-                reduction, reduction.output.dtype == "int")
-        write_attributes(self._structure(), self.target)
+            values = stored_reduction(reduction, reduction.output.dtype == "int")
+            with writing(self.output):
+                self.target.variables[name][...] = values
+        structure = self._structure()
+        with writing(self.output):
+            write_attributes(structure, self.target)
 
 
 def structure(sweep: Sweep, grid: Grid, provenance: dict, errors=()):
@@ -273,8 +322,9 @@ def _regions(shape: tuple, start: int, stop: int, offset: int = 0):
 
 def write_netcdf(dataset: xr.Dataset, path) -> Path:
     """Write ``dataset`` to ``path`` atomically: an existing file at ``path`` stays intact
-    until the new one is complete."""
-    with written_atomically(path) as temporary:
+    until the new one is complete. The output's lock is held meanwhile (another run writing
+    it is refused; the temporary files of a writer killed before are removed)."""
+    with OutputLock(path), written_atomically(path) as temporary, writing(path):
         # As each variable's encoding says (a sweep's outputs: its [output] table).
         dataset.to_netcdf(temporary, engine="netcdf4")
     return Path(path)

@@ -19,7 +19,7 @@ of the outputs on fewer axes), written once the worker has written the chunk's v
 flushed them to the disk: an interrupted run resumes from the chunks so marked. At the end
 the global attributes are completed (model errors, scheduler, history), the metadata
 consolidated, and the store renamed to the output: a store found at the output path is always
-complete.
+complete, and never replaced (a reader reads a store's chunks by their paths as it needs them).
 """
 from __future__ import annotations
 
@@ -38,7 +38,7 @@ from .netcdf_structure import global_attributes, stored_as
 from .parts import (Parts, counts_unreadable, fsync_path, load_counts, saved_counts,
                     write_durably)
 from .spec import Sweep
-from .store import provenance, stored_blocks, stored_reduction, structure, summed
+from .store import provenance, stored_blocks, stored_reduction, structure, summed, writing
 
 #: How many files a task flushes to the disk at once.
 FLUSHING_THREADS = 8
@@ -66,34 +66,41 @@ def write_structure(sweep: Sweep, grid: Grid, block: tuple, scheduler: str, path
 @dataclass(frozen=True)
 class StoreWriter:
     """Writes a computed chunk into its region of the store at ``path`` (small: it travels
-    with every task to the worker that computes it)."""
+    with every task to the worker that computes it); a failure to write it (a full disk) is
+    an ``OSError`` naming ``output``, the store's name once complete."""
 
     path: str
+    output: str
 
     def write(self, grid: Grid, start: int, stop: int, part: dict) -> dict:
         """Write points ``start..stop-1`` (a computed ``part``, as ``evaluate_chunk`` returns
         it) and flush their zarr chunks to the disk, so that the chunk's mark never outlives
         its values in a power loss.
 
-        Returns ``{"firsts": {name: (points, values)}}``: for each output stored on fewer
-        dimensions (``dependence``), the chunk's :func:`dependence.first_held` points and
-        values, one per cell, for the driver to write once every chunk has given its own.
+        Returns ``{"firsts": {name: (points, values)}, "stored_bytes": int}``: for each
+        output stored on fewer dimensions (``dependence``), the chunk's
+        :func:`dependence.first_held` points and values, one per cell, for the driver to
+        write once every chunk has given its own; and the size of the zarr chunks written.
         """
         import zarr
 
         firsts, per_point = split_reduced(grid, start, stop, part)
-        group = zarr.open_group(self.path, mode="r+", zarr_format=ZARR_FORMAT,
-                                use_consolidated=True)
+        with writing(self.output):
+            group = zarr.open_group(self.path, mode="r+", zarr_format=ZARR_FORMAT,
+                                    use_consolidated=True)
         written = []
         for name, index, block in stored_blocks(grid, start, stop, per_point, part["status"]):
             array = group[name]
-            array[index or ...] = block.astype(array.dtype, copy=False)
+            with writing(self.output):
+                array[index or ...] = block.astype(array.dtype, copy=False)
             position = [s.start // c for s, c in zip(index, array.chunks)]
             position += [0] * (array.ndim - len(position))
             written.append(Path(self.path, name, ".".join(map(str, position)) or "0"))
         # A zarr chunk equal to the fill value everywhere has no file (zarr writes none).
-        flush(written + sorted({path.parent for path in written}))
-        return {"firsts": firsts}
+        with writing(self.output):
+            flush(written + sorted({path.parent for path in written}))
+        return {"firsts": firsts,
+                "stored_bytes": sum(path.stat().st_size for path in written if path.exists())}
 
 
 class StoreParts(Parts):
@@ -103,8 +110,11 @@ class StoreParts(Parts):
     dimensions (one per cell, :meth:`StoreWriter.write`). The interface of
     :class:`parts.Parts`, which it extends."""
 
+    own_entries = Parts.own_entries + ("store.zarr", ".store.zarr.tmp")
+
     def __init__(self, output, key: dict):
         super().__init__(output, key)
+        self.output = str(output)
         self.store = self.folder / "store.zarr"
 
     def prepare(self, sweep: Sweep, grid: Grid, chunk_size: int, scheduler: str):
@@ -116,13 +126,15 @@ class StoreParts(Parts):
             marker.unlink()  # the values they vouch for went with the store
         temporary = self.folder / ".store.zarr.tmp"
         shutil.rmtree(temporary, ignore_errors=True)
-        write_structure(sweep, grid, block_shape(grid.shape, chunk_size), scheduler, temporary)
-        flush([temporary, *temporary.rglob("*")])
+        with writing(self.output):
+            write_structure(sweep, grid, block_shape(grid.shape, chunk_size), scheduler,
+                            temporary)
+            flush([temporary, *temporary.rglob("*")])
         os.replace(temporary, self.store)
 
     @property
     def writer(self) -> StoreWriter:
-        return StoreWriter(str(self.store.absolute()))
+        return StoreWriter(str(self.store.absolute()), self.output)
 
     def unreadable(self, path: Path, points: int) -> str | None:
         return counts_unreadable(path, points)
@@ -143,11 +155,13 @@ class StoreParts(Parts):
         """The sweep's counts (as ``store.summed`` gives them) from its chunks' marks."""
         return summed(model, (self.load(self.path(start, stop))[0] for start, stop in chunks))
 
-    def finish(self, sweep: Sweep, grid: Grid, chunks, output, scheduler: str, errors=()):
+    def finish(self, sweep: Sweep, grid: Grid, chunks, output, scheduler: str, errors=(),
+               before_rename=None):
         """Write the outputs stored on fewer dimensions from the ``chunks``' marks, complete
         the store's global attributes (as the netCDF file's: model errors, scheduler,
-        history), consolidate its metadata, and give it the output's name; an earlier result
-        there is replaced."""
+        history), consolidate its metadata, and give it the output's name (calling
+        ``before_rename()`` just before), where nothing is (``parts.check_output`` refuses
+        an earlier store: it is never replaced)."""
         import zarr
 
         attributes = global_attributes(structure(sweep, grid, provenance(scheduler), errors))
@@ -157,24 +171,17 @@ class StoreParts(Parts):
         for start, stop in chunks:
             for name, (points, values) in self.load(self.path(start, stop))[1].items():
                 reduced[name].add_firsts(points, values)
-        for name, reduction in reduced.items():
-            group[name][...] = stored_reduction(reduction, reduction.output.dtype == "int")
-        group.attrs.put(zarr_structure.attribute_values(attributes))
-        zarr.consolidate_metadata(str(self.store), zarr_format=ZARR_FORMAT)
-        flush([self.store / ".zattrs", self.store / ".zmetadata", self.store])
-        replace_folder(self.store, Path(output))
-
-
-def replace_folder(folder: Path, path: Path):
-    """Rename ``folder`` to ``path``. A folder already at ``path`` is moved aside first and
-    removed after, so that a store found at ``path`` is always whole (in a power loss between
-    the two renames the old one is left at ``.<name>.<pid>.old``)."""
-    old = path.with_name(f".{path.name}.{os.getpid()}.old")
-    if os.path.lexists(path):
-        os.replace(path, old)
-    os.replace(folder, path)
-    fsync_path(path.parent)
-    shutil.rmtree(old, ignore_errors=True)
+        with writing(self.output):
+            for name, reduction in reduced.items():
+                group[name][...] = stored_reduction(reduction, reduction.output.dtype == "int")
+            group.attrs.put(zarr_structure.attribute_values(attributes))
+            zarr.consolidate_metadata(str(self.store), zarr_format=ZARR_FORMAT)
+            flush([self.store / ".zattrs", self.store / ".zmetadata", self.store])
+        if before_rename is not None:
+            before_rename()
+        # Fails where something holds the name (but an empty folder): nothing is replaced.
+        os.replace(self.store, output)
+        fsync_path(Path(output).parent)
 
 
 def write_dataset(dataset, path):

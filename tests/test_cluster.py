@@ -1,5 +1,7 @@
 """A sweep on an external dask.distributed cluster gives the local result."""
 import contextlib
+import os
+import re
 import socket
 import subprocess
 import sys
@@ -172,3 +174,119 @@ def test_an_unreachable_scheduler_is_one_line_within_seconds(tmp_path):
     assert f"--scheduler {address}: cannot reach it: Connection refused" in done.stderr
     assert seconds < 15
     assert not (tmp_path / "remote.nc").exists()
+
+
+def test_a_local_cluster_that_cannot_start_is_one_line_with_the_way_out(tmp_path):
+    # As an unprivileged user whose dask scratch folder cannot be made; here, the temporary
+    # folder dask makes it in is a file.
+    (tmp_path / "def.toml").write_text(DEFINITION)
+    (tmp_path / "scratch").write_text("a file, not a folder")
+    done = subprocess.run([sys.executable, "-m", "bearing_sweep", "run", "def.toml", "-o",
+                           "out.nc", "--workers", "2", "--quiet"], cwd=tmp_path,
+                          capture_output=True, text=True, timeout=300,
+                          env=os.environ | {"DASK_TEMPORARY_DIRECTORY": str(tmp_path / "scratch")})
+    assert done.returncode == 1, done.stderr
+    assert done.stderr.count("\n") == 1 and "Traceback" not in done.stderr, done.stderr
+    assert done.stderr.startswith("error: the local dask cluster of 2 workers could not start (")
+    assert "Not a directory" in done.stderr
+    assert done.stderr.endswith("--workers 0 (workers=0 in Python) computes in this process\n")
+    assert not (tmp_path / "out.nc").exists() and not list(tmp_path.glob(".out.nc.*.tmp"))
+
+
+def test_any_failure_to_start_the_cluster_is_one_line(tmp_path, capsys, monkeypatch):
+    import distributed
+
+    from bearing_sweep import api, cli, spec
+    from bearing_sweep.compute import ClusterFailure
+
+    def failing(*args, **kwargs):
+        raise TimeoutError("Nanny failed to start in 60 s\nand a second line")
+
+    monkeypatch.setattr(distributed, "LocalCluster", failing)
+    (tmp_path / "def.toml").write_text(DEFINITION)
+    assert cli.main(["run", str(tmp_path / "def.toml"), "-o", str(tmp_path / "out.nc"),
+                     "--workers", "2", "--quiet"]) == 1
+    assert capsys.readouterr().err == (
+        "error: the local dask cluster of 2 workers could not start (Nanny failed to start in "
+        "60 s); --workers 0 (workers=0 in Python) computes in this process\n")
+    with pytest.raises(ClusterFailure, match="workers=0 in Python"):
+        api.run(spec.load(tmp_path / "def.toml").text, workers=1, progress=False)
+
+
+def test_a_thousand_workers_asked_for_start_no_more_than_the_cores(tmp_path, capsys,
+                                                                   monkeypatch):
+    # The cluster is not started here: what it would be started with is recorded (a test
+    # that failed would otherwise start a thousand processes).
+    import distributed
+
+    from bearing_sweep import cli
+
+    started = []
+
+    def recorded(**kwargs):
+        started.append(kwargs["n_workers"])
+        raise RuntimeError("recorded")
+
+    monkeypatch.setattr(distributed, "LocalCluster", recorded)
+    (tmp_path / "def.toml").write_text(DEFINITION.replace("num = 10", "num = 1").replace(
+        "num = 5", "num = 3"))  # 3 points
+    cores = len(os.sched_getaffinity(0))
+    for asked, chunk, expected in ((1000, [], min(cores, 3)), (1000, ["--chunk-size", "2"],
+                                                                  min(cores, 2))):
+        assert cli.main(["run", str(tmp_path / "def.toml"), "-o", str(tmp_path / "out.nc"),
+                         "--workers", str(asked), "--quiet", *chunk]) == 1
+        err = capsys.readouterr().err.splitlines()
+        assert err[0] == (f"1000 workers asked for, {cores} core{'s' * (cores != 1)} available "
+                          f"to this process: a local cluster of {expected} "
+                          f"worker{'s' * (expected != 1)} (--scheduler runs on a larger cluster)")
+        assert started.pop() == expected
+
+
+@pytest.mark.slow
+def test_no_more_workers_than_cores_nor_than_chunks(tmp_path, capsys, monkeypatch):
+    from bearing_sweep import cli
+
+    (tmp_path / "def.toml").write_text(DEFINITION)  # 50 points
+    common = ["run", str(tmp_path / "def.toml"), "--quiet"]
+    monkeypatch.setattr("bearing_sweep.compute.available_cores", lambda: 1)
+    assert cli.main(common + ["-o", str(tmp_path / "few.nc"), "--workers", "2"]) == 0
+    out, err = capsys.readouterr()
+    assert err == ("2 workers asked for, 1 core available to this process: a local cluster of "
+                   "1 worker (--scheduler runs on a larger cluster)\n")
+    assert "on dask LocalCluster (1 single-threaded worker processes)" in out
+    monkeypatch.undo()
+    # one chunk of 50 points: one worker, whatever the cores
+    assert cli.main(common + ["-o", str(tmp_path / "one.nc"), "--workers", "2", "--chunk-size",
+                              "100"]) == 0
+    out, err = capsys.readouterr()
+    assert "on dask LocalCluster (1 single-threaded worker processes)" in out and not err
+    np.testing.assert_array_equal(store.open_result(tmp_path / "one.nc").radial_stiffness,
+                                  store.open_result(tmp_path / "few.nc").radial_stiffness)
+
+
+def dies(**inputs):
+    """A model whose every call kills the process that runs it."""
+    os._exit(1)
+
+
+@pytest.mark.slow
+def test_workers_that_keep_dying_are_one_line(tmp_path, capsys, monkeypatch):
+    import dask
+
+    import bearing_sweep.models.registry as registry
+    from bearing_sweep import cli
+
+    model = registry.get_model("crb_radial")
+    monkeypatch.setitem(registry._MODELS, "crb_radial",
+                        registry.Model(**{**model.__dict__, "function": dies}))
+    (tmp_path / "def.toml").write_text(DEFINITION)
+    with dask.config.set({"distributed.scheduler.allowed-failures": 0}):  # at the first death
+        code = cli.main(["run", str(tmp_path / "def.toml"), "-o", str(tmp_path / "out.nc"),
+                         "--workers", "1", "--quiet"])
+    err = capsys.readouterr().err
+    assert code == 1 and err.count("\n") == 1, err
+    assert re.fullmatch(r"error: the workers that computed points \d+\.\.\d+ died doing it, as "
+                        r"often as dask retries; the finished chunks are kept: .*\n", err), err
+    assert err.endswith("run the same command again, or with --workers 0 to compute in this "
+                        "process\n")
+    assert not (tmp_path / "out.nc").exists()

@@ -5,6 +5,7 @@ written. The device case is played by stand-ins inside tmp_path (a named pipe, a
 link); /dev/null itself is only looked at, with every way of writing made to fail first.
 """
 import os
+import re
 import stat
 import subprocess
 import sys
@@ -13,6 +14,7 @@ import textwrap
 import netCDF4
 import pytest
 
+import bearing_sweep
 from bearing_sweep import cli, parts, store
 from test_cli import DEFINITION  # a four-point sweep
 
@@ -146,3 +148,42 @@ def test_study_refuses_a_result_path_that_is_not_a_result(tmp_path):
     assert "results/tiny/loads.nc: exists and is not a netCDF file" in done.stderr
     assert (tmp_path / "results" / "tiny" / "loads.nc").read_text() == "my own notes"
     assert not (tmp_path / "figures").exists()
+
+
+#: Output names that do not say plainly what they are, and what the refusal says.
+ODD_NAMES = {".zarr": "is only a suffix; name the store, as result.zarr",
+             ".ZARR": "is only a suffix; name the store, as result.ZARR",
+             ".nc": "is only a suffix; name the file, as result.nc",
+             "deeper/.zarr/": "is only a suffix; name the store",
+             "x.zarr.": "ends in a dot, which some filesystems drop; name it x.zarr",
+             "x.nc..": "ends in a dot, which some filesystems drop; name it x.nc",
+             "x.": "ends in a dot",
+             "x.nc/": "names a folder (it ends in /), and a netCDF result is a file: name it x.nc",
+             "results/": "names a folder"}
+
+
+@pytest.mark.parametrize("name", ODD_NAMES)
+def test_an_odd_output_name_is_refused(tmp_path, capsys, no_computing, name):
+    err = refused(tmp_path, capsys, f"{tmp_path}/{name}")
+    assert f"{tmp_path}/{name}: {ODD_NAMES[name]}" in err
+    with pytest.raises(parts.UnsafeOutput, match=re.escape(ODD_NAMES[name])):
+        bearing_sweep.run(DEFINITION, output=f"{tmp_path}/{name}", workers=0, progress=False)
+
+
+def test_a_store_is_named_by_its_suffix_in_any_case_with_or_without_a_slash(tmp_path, capsys):
+    (tmp_path / "def.toml").write_text(DEFINITION)
+    for name in ("upper.ZARR", "slashed.zarr/"):
+        assert cli.main(["run", str(tmp_path / "def.toml"), "-o", f"{tmp_path}/{name}",
+                         "--workers", "0", "--quiet"]) == 0
+    capsys.readouterr()
+    for name in ("upper.ZARR", "slashed.zarr"):
+        assert (tmp_path / name / ".zgroup").is_file()
+        assert store.open_result(tmp_path / name).status.shape == (2, 2)
+
+
+def test_a_file_where_a_store_goes_is_refused(tmp_path, capsys, no_computing):
+    # our own netCDF file under a store's name: a store is a folder, never written over a file
+    with netCDF4.Dataset(tmp_path / "ours.zarr", "w") as ours:
+        ours.source = "bearing-sweep 0.1.0"
+    err = refused(tmp_path, capsys, tmp_path / "ours.zarr")
+    assert "ours.zarr: exists and is a file; a .zarr output is a zarr store, a folder" in err

@@ -1,13 +1,16 @@
 """Interrupted sweeps resume, a killed worker costs a retry, a busy or broken output is a clear
 error that leaves any earlier result intact."""
 import errno
+import json
 import os
 import re
+import resource
 import signal
 import subprocess
 import sys
 import threading
 import time
+from pathlib import Path
 
 import numpy as np
 import pytest
@@ -62,6 +65,56 @@ def test_a_killed_run_resumes_where_it_stopped(tmp_path):
     same_data(store.open_result(tmp_path / "out.nc"), store.open_result(tmp_path / "whole.nc"))
 
 
+@pytest.mark.parametrize("output", ["k.nc", "k.zarr"])
+def test_a_killed_run_leaves_nothing_that_the_next_run_does_not_clear(tmp_path, output):
+    (tmp_path / "slow.toml").write_text(SLOW)
+    common = ["--workers", "0", "--chunk-size", "1000", "--quiet"]
+    first = cli_run("slow.toml", "-o", output, *common, cwd=tmp_path)
+    parts = tmp_path / f"{output}.parts"
+    deadline = time.monotonic() + 120
+    while len(list(parts.glob("chunk-*.npz"))) < 3 and time.monotonic() < deadline:
+        time.sleep(0.05)
+    first.send_signal(signal.SIGKILL)
+    first.wait()
+    if output == "k.nc":  # the file being written, beside the output
+        assert list(tmp_path.glob(f".k.nc.{first.pid}.tmp"))
+    second = cli_run("slow.toml", "-o", output, *common, cwd=tmp_path)
+    _, err = second.communicate(timeout=300)
+    assert second.returncode == 0, err
+    assert sorted(p.name for p in tmp_path.iterdir()) == [output, "slow.toml"]
+
+
+def test_only_our_stale_temporaries_are_removed(tmp_path, capsys):
+    definition = tmp_path / "d.toml"
+    definition.write_text(SLOW.replace("num = 200", "num = 2"))
+    output = tmp_path / "k.nc"
+    stale = [tmp_path / ".k.nc.123.tmp", tmp_path / f".k.nc.{os.getpid()}.tmp"]
+    others = [tmp_path / name for name in (".k.nc.notes.tmp", ".other.nc.123.tmp",
+                                           ".k.nc.123.tmp.bak", "k.nc.123.tmp", ".k.nc.12a.tmp")]
+    with OutputLock(output):  # a run writing it: its temporaries are not stale
+        for path in stale + others:
+            path.write_bytes(b"some bytes")
+        (tmp_path / ".k.nc.456.tmp").mkdir()  # a folder: not a file we write
+        assert cli.main(["run", str(definition), "-o", str(output), "--workers", "0"]) == 1
+        assert all(path.exists() for path in stale)
+    assert cli.main(["run", str(definition), "-o", str(output), "--workers", "0"]) == 0
+    assert not any(path.exists() for path in stale)
+    assert all(path.read_bytes() == b"some bytes" for path in others)
+    assert (tmp_path / ".k.nc.456.tmp").is_dir()
+
+
+def test_writing_an_analysis_removes_its_stale_temporaries_too(tmp_path):
+    import xarray as xr
+
+    output = tmp_path / "r_analysis.nc"
+    stale = tmp_path / ".r_analysis.nc.99999999.tmp"
+    stale.write_bytes(b"half an analysis")
+    store.write_netcdf(xr.Dataset({"x": ("t", [1.0, 2.0])}), output)
+    assert sorted(p.name for p in tmp_path.iterdir()) == ["r_analysis.nc"]
+    with OutputLock(output), pytest.raises(OutputBusy):  # and two writers do not mix
+        store.write_netcdf(xr.Dataset({"x": ("t", [3.0])}), output)
+
+
 def test_a_changed_definition_discards_old_parts(tmp_path, capsys):
     definition = tmp_path / "d.toml"
     definition.write_text(SLOW.replace("num = 200", "num = 4"))
@@ -106,6 +159,83 @@ def test_a_full_disk_leaves_the_earlier_result(tmp_path, capsys, monkeypatch):
     assert code == 1 and "No space left on device" in err and "left as it was" in err
     assert output.read_bytes() == before
     assert not list(tmp_path.glob(".out.nc.*.tmp"))
+
+
+def file_size_limited(limit: int):
+    """For a child process: no file of it may grow beyond ``limit`` bytes, writing beyond it
+    failing with EFBIG (SIGXFSZ ignored), as a full disk fails the write that meets it."""
+
+    def apply():
+        resource.setrlimit(resource.RLIMIT_FSIZE, (limit, limit))
+        signal.signal(signal.SIGXFSZ, signal.SIG_IGN)
+
+    return apply
+
+
+#: 10 000 points in parts of 1000: each part is written, the whole result is not (netCDF:
+#: 1.8 MB compressed, 4.4 MB uncompressed); a zarr chunk of 1000 points uncompressed holds
+#: 110 kB of roller loads.
+FULL = {"netCDF, compressed": ("out.nc", [], 1_000_000),
+        "netCDF, uncompressed": ("out.nc", ["--compression", "none"], 1_000_000),
+        "zarr": ("out.zarr", ["--compression", "none"], 50_000)}
+
+
+@pytest.mark.parametrize("case", FULL)
+def test_a_disk_full_while_writing_is_one_line_and_loses_nothing(tmp_path, case):
+    output, options, limit = FULL[case]
+    (tmp_path / "d.toml").write_text(SLOW.replace("num = 200", "num = 100"))
+    common = ["run", "d.toml", "--workers", "0", "--chunk-size", "1000", "--quiet", *options]
+    # An earlier result, beside a netCDF output or where it goes (a store is never replaced)
+    earlier = subprocess.run([sys.executable, "-m", "bearing_sweep", *common, "-o",
+                              "out.nc" if output == "out.zarr" else output, "--fresh"],
+                             cwd=tmp_path, capture_output=True, text=True, timeout=300)
+    assert earlier.returncode == 0, earlier.stderr
+    before = {p.name: p.read_bytes() for p in tmp_path.glob("out.nc")}
+    full = subprocess.run([sys.executable, "-m", "bearing_sweep", *common, "-o", output],
+                          cwd=tmp_path, capture_output=True, text=True, timeout=300,
+                          preexec_fn=file_size_limited(limit))
+    assert full.returncode == 1, full.stderr
+    assert full.stderr == (f"error: {output}: File too large; any earlier result is left as it "
+                           "was\n")
+    assert {p.name: p.read_bytes() for p in tmp_path.glob("out.nc")} == before
+    assert not (tmp_path / output).exists() or output == "out.nc"
+    assert not list(tmp_path.glob(".*.tmp"))  # the temporary file is removed
+    kept = list((tmp_path / f"{output}.parts").glob("chunk-*.npz"))
+    # The chunks computed are kept, nothing is lost (a store's first chunk is too large to
+    # write: none is finished)
+    assert kept or output == "out.zarr"
+    again = subprocess.run([sys.executable, "-m", "bearing_sweep", *common, "-o", output],
+                           cwd=tmp_path, capture_output=True, text=True, timeout=300)
+    assert again.returncode == 0, again.stderr
+    assert not kept or re.search(rf"resuming: {len(kept)} chunks? already computed",
+                                 again.stderr)
+    whole = subprocess.run([sys.executable, "-m", "bearing_sweep", *common, "-o", "whole.nc"],
+                           cwd=tmp_path, capture_output=True, text=True, timeout=300)
+    assert whole.returncode == 0, whole.stderr
+    same_data(store.open_result(tmp_path / output), store.open_result(tmp_path / "whole.nc"))
+
+
+def test_a_writer_that_cannot_close_after_a_failure_does_not_hide_it(tmp_path):
+    # HDF5 flushes a file as it closes it: on a full disk the close fails too, and used to
+    # raise its own error ("Can't decrement id ref count") over the one that said why.
+    from bearing_sweep.store import closed_after
+
+    class Unclosable:
+        def close(self):
+            raise RuntimeError("Can't decrement id ref count (unable to extend file properly, "
+                               "errno = 28, error message = 'No space left on device')")
+
+    with pytest.raises(OSError, match="first failure"):
+        with closed_after(Unclosable(), tmp_path / "out.nc"):
+            raise OSError(errno.ENOSPC, "first failure")
+    with pytest.raises(KeyboardInterrupt):
+        with closed_after(Unclosable(), tmp_path / "out.nc"):
+            raise KeyboardInterrupt
+    with pytest.raises(OSError) as failed:  # alone, its failure names the file and the errno
+        with closed_after(Unclosable(), tmp_path / "out.nc"):
+            pass
+    assert (failed.value.errno, failed.value.strerror, failed.value.filename) == (
+        errno.ENOSPC, os.strerror(errno.ENOSPC), str(tmp_path / "out.nc"))
 
 
 def test_an_unwritable_folder_is_one_line(tmp_path, capsys):
@@ -183,6 +313,113 @@ def test_a_part_emptied_by_a_power_loss_is_computed_again(tmp_path, capsys, monk
     whole = tmp_path / "whole.nc"
     assert cli.main(["run", str(definition), "-o", str(whole), "--workers", "0"]) == 0
     same_data(store.open_result(output), store.open_result(whole))
+
+
+def interrupted_parts(tmp_path, monkeypatch, capsys):
+    """The CLI's arguments of a run of 400 points in 4 chunks, interrupted once every chunk is
+    computed, and its parts folder; and the file of the same run uninterrupted."""
+    definition = tmp_path / "d.toml"
+    definition.write_text(SLOW.replace("num = 200", "num = 20"))
+    arguments = ["run", str(definition), "-o", str(tmp_path / "out.nc"), "--workers", "0",
+                 "--chunk-size", "100", "--quiet"]
+    whole = tmp_path / "whole.nc"
+    assert cli.main(arguments[:3] + [str(whole)] + arguments[4:]) == 0
+
+    def interrupted(*args):  # every chunk is computed, the file not yet written
+        raise KeyboardInterrupt
+
+    with monkeypatch.context() as patched:
+        patched.setattr("bearing_sweep.store.ChunkWriter.finish", interrupted)
+        assert cli.main(arguments) == 130
+    capsys.readouterr()
+    parts = tmp_path / "out.nc.parts"
+    assert len(list(parts.glob("chunk-*.npz"))) == 4
+    return arguments, parts, whole
+
+
+#: Manifests that no version of the program writes, and what the line says of each.
+DAMAGED_MANIFESTS = {
+    "a list": (lambda found: [1, 2], "a manifest holding an array, not an object"),
+    "chunk_size 0": (lambda found: found | {"chunk_size": 0},
+                     "a manifest whose chunk_size is 0, not a positive integer"),
+    "chunk_size negative": (lambda found: found | {"chunk_size": -100}, "chunk_size is -100"),
+    "chunk_size a string": (lambda found: found | {"chunk_size": "100"}, "chunk_size is '100'"),
+    "chunk_size a float": (lambda found: found | {"chunk_size": 100.0}, "chunk_size is 100.0"),
+    "chunk_size true": (lambda found: found | {"chunk_size": True}, "chunk_size is True"),
+    "no chunk_size": (lambda found: {k: v for k, v in found.items() if k != "chunk_size"},
+                      "chunk_size is None"),
+    "an empty object": (lambda found: {}, "chunk_size is None"),
+    "a number": (lambda found: 100, "a manifest holding a number, not an object"),
+    "null": (lambda found: None, "a manifest holding null, not an object"),
+    "a string": (lambda found: "manifest", "a manifest holding a string, not an object"),
+    "a key of its own": (lambda found: found | {"notes": "mine"},
+                         "a manifest with keys this version of bearing-sweep does not write"),
+    "no definition": (lambda found: {"chunk_size": 100},
+                      "a manifest with keys this version of bearing-sweep does not write"),
+    "not JSON": ("{chunk_size: 100", "no readable manifest"),
+    "missing": (None, "no readable manifest"),
+}
+
+
+@pytest.mark.parametrize("case", DAMAGED_MANIFESTS)
+def test_a_damaged_manifest_discards_the_parts_with_a_line(tmp_path, monkeypatch, capsys, case):
+    arguments, parts, whole = interrupted_parts(tmp_path, monkeypatch, capsys)
+    manifest = parts / "manifest.json"
+    damage, said = DAMAGED_MANIFESTS[case]
+    if damage is None:
+        manifest.unlink()
+    elif isinstance(damage, str):
+        manifest.write_text(damage)
+    else:
+        manifest.write_text(json.dumps(damage(json.loads(manifest.read_text()))))
+    assert cli.main(arguments) == 0
+    err = capsys.readouterr().err
+    assert err.count("\n") == 1 and said in err, err
+    assert err.endswith(f" in {parts}: discarding the folder and its 4 finished chunks\n")
+    assert not parts.exists()
+    same_data(store.open_result(tmp_path / "out.nc"), store.open_result(whole))
+
+
+def test_files_that_are_no_part_of_the_run_are_removed_with_a_line(tmp_path, monkeypatch,
+                                                                   capsys):
+    arguments, parts, whole = interrupted_parts(tmp_path, monkeypatch, capsys)
+    kept = sorted(p.name for p in parts.iterdir())
+    np.savez(parts / "chunk-abc.npz", status=np.zeros(4))  # no chunk's name
+    np.savez(parts / "chunk-000000000000-000000000050.npz", status=np.zeros(50))  # not a chunk
+    np.savez(parts / "chunk-000000000100-000000000100.npz", status=np.zeros(0))  # empty
+    (parts / "notes.txt").write_text("a note")
+    (parts / "chunk-000000000400-000000000500.npz").mkdir()  # beyond the grid, a folder
+    (parts / ".chunk-000000000000-000000000100.npz.1234.tmp").write_bytes(b"half")  # ours
+    assert cli.main(arguments) == 0
+    err = capsys.readouterr().err.splitlines()
+    assert err == [f"a file that is no part of this run, chunk-000000000000-000000000050.npz "
+                   f"and 4 more in {parts}: removed them",
+                   f"resuming: 4 chunks already computed in {parts}"]
+    assert kept == ["chunk-000000000000-000000000100.npz", "chunk-000000000100-000000000200.npz",
+                    "chunk-000000000200-000000000300.npz", "chunk-000000000300-000000000400.npz",
+                    "manifest.json"]
+    assert not parts.exists()
+    same_data(store.open_result(tmp_path / "out.nc"), store.open_result(whole))
+
+
+@pytest.mark.parametrize("kind", ["a file", "a link to a folder"])
+def test_a_parts_folder_that_is_not_a_folder_is_refused(tmp_path, capsys, kind):
+    definition = tmp_path / "d.toml"
+    definition.write_text(SLOW.replace("num = 200", "num = 2"))
+    parts = tmp_path / "out.nc.parts"
+    if kind == "a file":
+        parts.write_text("someone's notes")
+    else:
+        (tmp_path / "theirs").mkdir()
+        (tmp_path / "theirs" / "data.txt").write_text("someone's data")
+        parts.symlink_to(tmp_path / "theirs")
+    before = sorted(str(p) for p in tmp_path.rglob("*"))
+    code = cli.main(["run", str(definition), "-o", str(tmp_path / "out.nc"), "--workers", "0"])
+    err = capsys.readouterr().err
+    assert code == 2 and err.count("\n") == 1, err
+    assert f"{parts}: exists and is {'a file' if kind == 'a file' else 'a symbolic link'}"\
+        f", not the folder of an interrupted run's parts of out.nc" in err
+    assert sorted(str(p) for p in tmp_path.rglob("*")) == before
 
 
 def test_parts_and_the_result_reach_the_disk_before_they_are_renamed(tmp_path, monkeypatch):
@@ -293,6 +530,89 @@ def test_ctrl_c_on_the_local_cluster_is_one_line_and_resumes(tmp_path):
     assert again.returncode == 0, err
     assert re.search(rf"resuming: {kept} chunks? already computed", err)
     assert "on dask LocalCluster (2 single-threaded worker processes)" in out
+
+
+def interrupt():
+    """A Ctrl-C: SIGINT to this process, handled as it would be from the terminal."""
+    os.kill(os.getpid(), signal.SIGINT)
+
+
+def interrupted_in(monkeypatch, target: str, when=lambda *args: True):
+    """Send SIGINT from within ``target`` (a dotted name), before it does its work, when
+    ``when(*its arguments)``."""
+    module, name = target.rsplit(".", 1)
+    import importlib
+
+    try:
+        owner = importlib.import_module(module)
+    except ModuleNotFoundError:  # a method: module.Class.name
+        module, cls = module.rsplit(".", 1)
+        owner = getattr(importlib.import_module(module), cls)
+    original = getattr(owner, name)
+
+    def patched(*args, **kwargs):
+        if when(*args):
+            interrupt()
+        return original(*args, **kwargs)
+
+    monkeypatch.setattr(owner, name, patched)
+
+
+#: Where a Ctrl-C may come once the result has its name: the folder's fsync that makes the
+#: rename durable, the parts' removal, the cluster's closing, the summary.
+AFTER_THE_RENAME = {
+    "netCDF, the rename's fsync": ("k.nc", "bearing_sweep.parts.fsync_path",
+                                   lambda tmp_path: lambda path: Path(path) == tmp_path),
+    "zarr, the rename's fsync": ("k.zarr", "bearing_sweep.zarr_store.fsync_path",
+                                 lambda tmp_path: lambda path: Path(path) == tmp_path),
+    "the parts removed": ("k.nc", "bearing_sweep.parts.Parts.remove", None),
+    "zarr, the parts removed": ("k.zarr", "bearing_sweep.parts.Parts.remove", None),
+    "the cluster closed": ("k.nc", "bearing_sweep.compute.Executor.close", None),
+    "the summary": ("k.nc", "bearing_sweep.compute.Summary.text", None),
+}
+
+
+@pytest.mark.parametrize("case", AFTER_THE_RENAME)
+def test_ctrl_c_once_the_result_is_in_place_says_it_is_complete(tmp_path, capsys, monkeypatch,
+                                                                case):
+    output, target, when = AFTER_THE_RENAME[case]
+    definition = tmp_path / "d.toml"
+    definition.write_text(SLOW.replace("num = 200", "num = 3"))
+    interrupted_in(monkeypatch, target, *([when(tmp_path)] if when else []))
+    code = cli.main(["run", str(definition), "-o", str(tmp_path / output), "--workers", "0",
+                     "--chunk-size", "3", "--quiet"])
+    out, err = capsys.readouterr()
+    assert code == 0, err
+    assert err == "interrupt ignored: the result was already complete\n"
+    assert f"9 points (9 converged)" in out
+    assert store.open_result(tmp_path / output).status.shape == (3, 3)
+    assert sorted(p.name for p in tmp_path.iterdir()) == ["d.toml", output]
+    assert signal.getsignal(signal.SIGINT) is signal.default_int_handler
+
+
+def test_ctrl_c_before_the_rename_still_keeps_the_chunks(tmp_path, capsys, monkeypatch):
+    definition = tmp_path / "d.toml"
+    definition.write_text(SLOW.replace("num = 200", "num = 3"))
+    interrupted_in(monkeypatch, "bearing_sweep.store.ChunkWriter.finish")
+    code = cli.main(["run", str(definition), "-o", str(tmp_path / "k.nc"), "--workers", "0",
+                     "--chunk-size", "3", "--quiet"])
+    assert code == 130
+    assert capsys.readouterr().err == ("interrupted: the finished chunks are kept; run the same "
+                                       "command again to resume\n")
+    assert len(list((tmp_path / "k.nc.parts").glob("chunk-*.npz"))) == 3
+    assert not (tmp_path / "k.nc").exists()
+
+
+def test_the_api_too_finishes_a_run_whose_result_is_in_place(tmp_path, capsys, monkeypatch):
+    import bearing_sweep
+
+    interrupted_in(monkeypatch, "bearing_sweep.parts.Parts.remove")
+    with bearing_sweep.run(SLOW.replace("num = 200", "num = 3"), output=tmp_path / "k.nc",
+                           workers=0) as data:
+        assert data.status.shape == (3, 3)
+    assert capsys.readouterr().err.endswith("interrupt ignored: the result was already "
+                                            "complete\n")
+    assert signal.getsignal(signal.SIGINT) is signal.default_int_handler
 
 
 def test_a_part_damaged_after_the_run_began_is_removed_with_one_clear_error(tmp_path):

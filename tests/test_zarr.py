@@ -2,6 +2,7 @@
 chunking and the workers, each chunk written by its worker, resumable, never left half."""
 import json
 import math
+from pathlib import Path
 
 import numpy as np
 import pytest
@@ -100,13 +101,12 @@ def test_the_output_table_stores_alike_in_both_formats(tmp_path):
     assert (stored["compressor"]["id"], stored["compressor"]["level"]) == ("zstd", 5)
 
 
-def test_an_interrupted_zarr_run_resumes_with_only_what_is_missing(tmp_path, monkeypatch):
-    sweep = spec.parse(DEFINITION, "three_axes.toml")
-    output = tmp_path / "out.zarr"
+def interrupted_store(monkeypatch, sweep, output, computed: list):
+    """Run ``sweep`` into the store ``output`` in chunks of 3 points, interrupted when 3 are
+    computed (their sizes in ``computed``); its parts folder."""
     import bearing_sweep.compute as compute
 
     original = compute.evaluate_chunk
-    computed = []
 
     def interrupted(grid, start, stop):
         if len(computed) == 3:
@@ -114,10 +114,20 @@ def test_an_interrupted_zarr_run_resumes_with_only_what_is_missing(tmp_path, mon
         computed.append(stop - start)
         return original(grid, start, stop)
 
-    monkeypatch.setattr(compute, "evaluate_chunk", interrupted)
-    with pytest.raises(KeyboardInterrupt):
+    with monkeypatch.context() as patched, pytest.raises(KeyboardInterrupt):
+        patched.setattr(compute, "evaluate_chunk", interrupted)
         run_sweep(sweep, output, Executor(workers=0), chunk_size=3, progress=False)
-    parts = tmp_path / "out.zarr.parts"
+    return Path(f"{output}.parts")
+
+
+def test_an_interrupted_zarr_run_resumes_with_only_what_is_missing(tmp_path, monkeypatch):
+    sweep = spec.parse(DEFINITION, "three_axes.toml")
+    output = tmp_path / "out.zarr"
+    import bearing_sweep.compute as compute
+
+    original = compute.evaluate_chunk
+    computed = []
+    parts = interrupted_store(monkeypatch, sweep, output, computed)
     assert not output.exists() and (parts / "store.zarr").is_dir()
     assert len(list(parts.glob("chunk-*.npz"))) == 3
 
@@ -135,6 +145,30 @@ def test_an_interrupted_zarr_run_resumes_with_only_what_is_missing(tmp_path, mon
     assert summary.status_counts["converged"] == 24 and not parts.exists()
     run_sweep(sweep, tmp_path / "whole.nc", Executor(workers=0), progress=False)
     assert_same_result(tmp_path / "whole.nc", output)
+
+
+def test_a_store_s_parts_keep_the_store_and_lose_what_is_not_theirs(tmp_path, monkeypatch):
+    sweep = spec.parse(DEFINITION, "three_axes.toml")
+    output = tmp_path / "out.zarr"
+    parts = interrupted_store(monkeypatch, sweep, output, [])
+    (parts / "chunk-abc.npz").write_bytes(b"not a mark")
+    (parts / "notes.txt").write_text("a note")
+    messages = []
+    run_sweep(sweep, output, Executor(workers=0), progress=False, log=messages.append)
+    assert messages == [f"a file that is no part of this run, chunk-abc.npz and 1 more in "
+                        f"{parts}: removed them", f"resuming: 3 chunks already computed in "
+                        f"{parts}"]
+    run_sweep(sweep, tmp_path / "whole.nc", Executor(workers=0), progress=False)
+    assert_same_result(tmp_path / "whole.nc", output)
+    # a damaged manifest: the folder, its store with it, is discarded
+    again = interrupted_store(monkeypatch, sweep, tmp_path / "again.zarr", [])
+    (again / "manifest.json").write_text('{"chunk_size": 0}')
+    messages.clear()
+    run_sweep(sweep, tmp_path / "again.zarr", Executor(workers=0), progress=False,
+              log=messages.append)
+    assert messages == ["a manifest whose chunk_size is 0, not a positive integer in "
+                        f"{again}: discarding the folder and its 3 finished chunks"]
+    assert_same_result(tmp_path / "whole.nc", tmp_path / "again.zarr")
 
 
 def test_values_of_another_version_are_never_written(tmp_path, monkeypatch):
@@ -156,14 +190,13 @@ def test_values_of_another_version_are_never_written(tmp_path, monkeypatch):
     assert not list((tmp_path / "out.zarr.parts").glob("chunk-*"))
 
 
-def test_the_command_and_the_api_write_a_store_and_replace_their_own(tmp_path, capsys):
+def test_the_command_and_the_api_write_a_store(tmp_path, capsys):
     definition = tmp_path / "d.toml"
     definition.write_text(DEFINITION)
     output = tmp_path / "out.zarr"
-    for _ in range(2):  # the second run replaces the first's store
-        assert cli.main(["run", str(definition), "-o", str(output), "--workers", "0",
-                         "--quiet"]) == 0
-        assert f"-> {output}" in capsys.readouterr().out
+    assert cli.main(["run", str(definition), "-o", str(output), "--workers", "0",
+                     "--quiet"]) == 0
+    assert f"-> {output}" in capsys.readouterr().out
     by_command = store.open_result(output)
     assert by_command.status.shape == (3, 4, 2)
     with bearing_sweep.run(definition, output=tmp_path / "api.zarr", workers=0,
@@ -171,6 +204,28 @@ def test_the_command_and_the_api_write_a_store_and_replace_their_own(tmp_path, c
         xr.testing.assert_identical(without_provenance(by_api.load()),
                                     without_provenance(by_command))
     assert sorted(p.name for p in tmp_path.iterdir()) == ["api.zarr", "d.toml", "out.zarr"]
+
+
+def test_a_store_open_in_a_reader_is_never_replaced_under_it(tmp_path, capsys, monkeypatch):
+    # A reader reads a store's chunks by their paths when it needs them, and a chunk that
+    # is not there as the fill value (NaN, and "converged" for status): replaced by any
+    # means, the store would give the reader the new run's values (or fill values) under
+    # the coordinates it read from the old one.
+    definition = tmp_path / "def.toml"
+    definition.write_text(DEFINITION)
+    output = tmp_path / "r.zarr"
+    run_sweep(spec.load(definition), output, Executor(workers=0), progress=False)
+    reader = xr.open_dataset(output, engine="zarr")
+    expected = store.open_result(output)
+    monkeypatch.setattr("bearing_sweep.compute.evaluate_chunk", None)  # refused before it
+    definition.write_text(DEFINITION.replace('stop = "6 kN"', 'stop = "9 kN"'))
+    err = refused(tmp_path, capsys, output, definition)
+    assert "holds an earlier zarr store of bearing-sweep, which is never replaced" in err
+    assert "remove it first (close its readers, then rm -r it) or choose another output" in err
+    xr.testing.assert_identical(reader.load(), expected)  # coordinates and values of one run
+    reader.close()
+    with pytest.raises(spec.SpecError, match="never replaced"):
+        bearing_sweep.run(definition, output=output, workers=0, progress=False)
 
 
 def test_a_folder_that_is_not_our_store_is_refused(tmp_path, capsys, no_computing):  # noqa: F811
