@@ -440,8 +440,8 @@ def _remove(path: Path):
 
 
 def remove_stale_temporaries(output) -> list[str]:
-    """Remove the temporary files of ``output`` (``.<name>.<process id>.tmp``, beside it) that
-    a run killed while writing it left. Called by the holder of the output's lock
+    """Remove the temporary files of ``output`` (``.<name>.<process id>.tmp``, beside it, a
+    file or a zarr store's folder) that a run killed while writing it left. Called by the holder of the output's lock
     (:class:`OutputLock`): every writer of such a file holds the lock as long as the file
     exists, and a process's lock dies with it, however it ends, so none of them is being
     written (on this host or another sharing the folder, whatever became of the process
@@ -454,9 +454,15 @@ def remove_stale_temporaries(output) -> list[str]:
     except OSError:  # no folder yet: nothing left there
         return removed
     for entry in entries:
-        if ours.fullmatch(entry.name) and entry.is_file(follow_symlinks=False):
+        if not ours.fullmatch(entry.name) or entry.is_symlink():
+            continue
+        if entry.is_dir():  # only a zarr store's is a folder (an analysis written as one)
+            if not is_zarr(output):
+                continue
+            shutil.rmtree(entry.path, ignore_errors=True)
+        else:
             Path(entry.path).unlink(missing_ok=True)
-            removed.append(entry.name)
+        removed.append(entry.name)
     return removed
 
 

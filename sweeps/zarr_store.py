@@ -35,7 +35,7 @@ from . import zarr_structure
 from .dependence import reductions, split_reduced
 from .grid import Grid, block_shape
 from .netcdf_structure import global_attributes, stored_as
-from .parts import (Parts, counts_unreadable, fsync_path, load_counts, saved_counts,
+from .parts import (OutputLock, Parts, counts_unreadable, fsync_path, load_counts, saved_counts,
                     write_durably)
 from .spec import Sweep
 from .store import provenance, stored_blocks, stored_reduction, structure, summed, writing
@@ -186,18 +186,21 @@ class StoreParts(Parts):
 
 def write_dataset(dataset, path):
     """Write an xarray ``dataset`` (an analysis) as a zarr store at ``path``, of the format a
-    run's store has, its metadata consolidated: built beside it, flushed to the disk and
-    renamed into place as :func:`replace_folder` does (an earlier store there is replaced);
-    nothing is left beside it if the writing fails."""
+    run's store has, its metadata consolidated: built beside it while the output's lock is
+    held, flushed to the disk and renamed to ``path``, where nothing is (an earlier store is
+    never replaced, as a run's is not); nothing is left beside it if the writing fails."""
     path = Path(path)
     path.parent.mkdir(parents=True, exist_ok=True)
     temporary = path.with_name(f".{path.name}.{os.getpid()}.tmp")
-    try:
-        dataset.to_zarr(temporary, mode="w", zarr_format=ZARR_FORMAT, consolidated=True)
-        flush([*temporary.rglob("*"), temporary])
-        replace_folder(temporary, path)
-    finally:
-        shutil.rmtree(temporary, ignore_errors=True)
+    with OutputLock(path):
+        try:
+            with writing(path):
+                dataset.to_zarr(temporary, mode="w", zarr_format=ZARR_FORMAT, consolidated=True)
+                flush([*temporary.rglob("*"), temporary])
+            os.replace(temporary, path)  # fails where something holds the name
+            fsync_path(path.parent)
+        finally:
+            shutil.rmtree(temporary, ignore_errors=True)
 
 
 def flush(paths):

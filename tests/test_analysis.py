@@ -297,9 +297,9 @@ def test_an_output_whose_name_says_another_format_is_refused(results, tmp_path, 
             bearing_sweep.analyze(result, output=tmp_path / output)
         assert cli.main(["analyze", str(result), "-o", str(tmp_path / output)]) == 2
         assert len(capsys.readouterr().err.strip().splitlines()) == 1
-    with pytest.raises(SpecError, match="output=5: expected the path"):
+    with pytest.raises(SpecError, match="output=5: expected a path"):
         bearing_sweep.analyze(result, output=5)
-    with pytest.raises(SpecError, match="result=5: expected a dataset"):
+    with pytest.raises(SpecError, match="result=5: expected a sampled result"):
         bearing_sweep.analyze(5)
     assert list(tmp_path.iterdir()) == []
     assert cli.main(["analyze", str(result), "-o", str(tmp_path / "a.zarr")]) == 0

@@ -661,3 +661,20 @@ def test_parts_of_other_input_values_are_not_resumed(tmp_path):
     moved = Grid.from_sweep(spec.parse(text))
     moved.axis_values["radial_load"] = (0, moved.axis_values["radial_load"][1] * (1 + 1e-15))
     assert moved.values_sha256 != grid.values_sha256
+
+
+def test_an_analysis_store_left_half_written_is_removed_by_the_next_writer(tmp_path):
+    import xarray as xr
+
+    from bearing_sweep import zarr_store
+
+    output = tmp_path / "r_analysis.zarr"
+    stale = tmp_path / ".r_analysis.zarr.99999999.tmp"
+    (stale / "x").mkdir(parents=True)
+    (stale / "x" / "0").write_bytes(b"half a chunk")
+    zarr_store.write_dataset(xr.Dataset({"x": ("t", [1.0, 2.0])}), output)
+    assert sorted(p.name for p in tmp_path.iterdir()) == ["r_analysis.zarr"]
+    with xr.open_dataset(output, engine="zarr") as written:
+        assert list(written.x.values) == [1.0, 2.0]
+    with OutputLock(output), pytest.raises(OutputBusy):  # and two writers do not mix
+        zarr_store.write_dataset(xr.Dataset({"x": ("t", [3.0])}), tmp_path / "r_analysis.zarr")
