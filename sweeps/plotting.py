@@ -6,6 +6,7 @@ they were (a notebook goes on drawing its own figures).
 """
 from __future__ import annotations
 
+import re
 from pathlib import Path
 
 import numpy as np
@@ -31,13 +32,21 @@ def shown_unit(unit: str) -> str:
     return _SHOWN_UNITS.get(unit, unit)
 
 
+#: How a file names, in a variable's ``comment``, the SI unit of values that have no
+#: ``units`` attribute (a fractional power: labels.described writes it).
+_SI_UNIT = re.compile(r"Units: (\S+) \(SI\)")
+
+
 def label(variable: xr.DataArray, long: bool = False) -> str:
     """Axis label: the variable's name and units; ``long``: its ``long_name`` instead of its
-    name, no unit for a number, "SI" for a variable stored without ``units``."""
+    name, no unit for a number; for a variable stored without ``units`` (N/m^1.5, which
+    UDUNITS cannot write) the SI unit its ``comment`` names, else "SI"."""
     if not long:
         return f"{variable.name.replace('_', ' ')} [{shown_unit(variable.attrs['units'])}]"
     name = variable.attrs.get("long_name", variable.name.replace("_", " "))
-    unit = variable.attrs.get("units", "1" if variable.dtype.kind in "OUS" else "SI")
+    named = _SI_UNIT.search(variable.attrs.get("comment", ""))
+    unit = variable.attrs.get("units", "1" if variable.dtype.kind in "OUS" else
+                              named.group(1) if named else "SI")
     return name if unit == "1" else f"{name} [{shown_unit(unit)}]"
 
 
@@ -169,7 +178,7 @@ def sobol_bars(axis, analysis: xr.Dataset, output: str, **where):
         axis.bar(place + shift, values, width=0.4, label=text,
                  yerr=[values - low, high - values], capsize=3)
     axis.set_xticks(place, [n.replace("_", " ") for n in inputs])
-    axis.set(ylabel=f"Sobol index of {output.replace('_', ' ')}")
+    axis.set(xlabel="sampled input", ylabel=f"Sobol index of {output.replace('_', ' ')}")
     axis.axhline(0.0, color="k", lw=0.5)
     axis.legend(fontsize=7)
 
