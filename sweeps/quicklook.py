@@ -12,6 +12,7 @@ single value, an output without any value) is a :class:`SpecError` saying why.
 """
 from __future__ import annotations
 
+import textwrap
 from pathlib import Path
 
 import numpy as np
@@ -112,30 +113,40 @@ def plot(result, variable: str | None = None, *, x: str | None = None, output=No
 
     nrows, ncols = (data.sizes[rows] if rows else 1), (data.sizes[columns] if columns else 1)
     # Panels of an output's entries (dof: a translation, a tilt) may differ in unit and scale.
-    figure, grid = subplots(nrows, ncols, squeeze=False, sharex=True,
-                            sharey=not {columns, rows} & set(categorical),
-                            figsize=(4.2 * ncols + 1.2, 3.2 * nrows + 1.0))
+    shared = not {columns, rows} & set(categorical)
+    key = _key_width(data, lines, shown)
+    figure, grid = subplots(nrows, ncols, squeeze=False, sharex=True, sharey=shared,
+                            figsize=(4.2 * ncols + 1.2 + key, 3.2 * nrows + 1.0))
     meanings = status.attrs["flag_meanings"].split()
     codes = dict(zip(meanings, np.atleast_1d(status.attrs["flag_values"])))
-    scatter = along == _SAMPLE  # samples: points, in no order to join
+    # Samples are in no order, labels (geometry: jones, fixed_angle) have nothing between
+    # them: points, not joined.
+    scatter = along == _SAMPLE or data[x].dtype.kind in "OUS"
+    marked = set()
     for r in range(nrows):
         for c in range(ncols):
             axis = grid[r, c]
             where = {d: i for d, i in ((rows, r), (columns, c)) if d is not None}
             panel = values.isel(where)
             panel_status = status.isel({d: i for d, i in where.items() if d in status.dims})
-            _draw_panel(axis, panel, panel_status, x, along, lines, distributed, shown, codes,
-                        data, scatter)
+            marked |= _draw_panel(axis, panel, panel_status, x, along, lines, distributed,
+                                  shown, codes, data, scatter)
             axis.set_title(", ".join(_value_text(data, d, i) for d, i in where.items()),
                            fontsize=8)
             if r == nrows - 1:
                 axis.set_xlabel(label(shown[x], long=True))
-            if c == 0:
-                axis.set_ylabel(label(values, long=True) + (
-                    f"\nmean; band: least to largest over {', '.join(distributed)}"
-                    if distributed else ""))
+            if c == 0 or not shared:
+                axis.set_ylabel(_y_label(data, variable, panel, distributed))
+    # One legend for every panel (each draws the same lines), beside them, not over the data.
+    handles = [line for line in grid[0, 0].lines if not line.get_label().startswith("_")]
+    handles += [Line2D([], [], ls="none", color="grey", **_MARKS[kind], label=kind)
+                for kind in _MARKS if kind in marked]
+    if handles:
+        figure.legend(handles=handles, fontsize=7, title_fontsize=7, loc="center left",
+                      bbox_to_anchor=(1 - key / figure.get_figwidth(), 0.5),
+                      title=label(shown[lines], long=True) if lines else None)
     figure.suptitle(_title(data, held, single, thinned, along, x, figure), fontsize=8)
-    figure.tight_layout()
+    figure.tight_layout(rect=(0, 0, 1 - key / figure.get_figwidth(), 1))
     if output is not None:
         _write(figure, output)
     return figure
@@ -157,12 +168,14 @@ def _title(data, held, single, thinned, along, x, figure) -> str:
                         if drawn else ""))
     width = int(14 * figure.get_figwidth())  # characters of the title's font across the figure
     return "\n".join(t for t in (data.attrs.get("title", ""),
-                                  conditions(data, *fixed, width=width), ", ".join(notes)) if t)
+                                  conditions(data, *fixed, width=width),
+                                  textwrap.fill(", ".join(notes), width)) if t)
 
 
 def _draw_panel(axis, values, status, x, along, lines, distributed, shown, codes, data,
                 scatter):
-    """One panel: a line (or a distribution) per value of ``lines``, failures marked."""
+    """One panel: a line (or a distribution) per value of ``lines``, failures marked.
+    Returns the kinds of mark drawn."""
     positions, ticks = _positions(shown[x])
     marked = set()
     style = {"marker": "o", "ms": 3} if len(positions) <= 40 or scatter else {}
@@ -198,13 +211,36 @@ def _draw_panel(axis, values, status, x, along, lines, distributed, shown, codes
                   ha="center", va="center", fontsize=8, color="0.4")
     if ticks is not None:
         axis.set_xticks(positions, ticks, rotation=20, fontsize=7)
-    handles = [line for line in axis.lines if not line.get_label().startswith("_")]
-    handles += [Line2D([], [], ls="none", color="grey", **_MARKS[kind], label=kind)
-                for kind in _MARKS if kind in marked]
-    if handles:
-        axis.legend(handles=handles, fontsize=7, title_fontsize=7,
-                    title=label(shown[lines], long=True) if lines else None)
     axis.grid(alpha=0.3)
+    return marked
+
+
+def _key_width(data, lines, shown) -> float:
+    """About how wide [in] the legend beside the panels is: its longest text (a value of
+    ``lines``, its title, a mark's name) in 7-point type."""
+    texts = ["no value (status)"] + ([label(shown[lines], long=True)] + [
+        _value_text(data, lines, i, named=False) for i in range(data.sizes[lines])]
+        if lines else [])
+    return 0.5 + 0.065 * max(len(t) for t in texts)
+
+
+def _y_label(data, variable: str, panel, distributed: list) -> str:
+    """The label of a panel's y axis: the output's name and unit (an output whose entries
+    each have their own unit, as a displacement's translations and tilts: the unit of the
+    panel's entry), and what a band means, wrapped to the panel's height."""
+    values = data[variable]
+    units = data.get(values.attrs.get("ancillary_variables", ""))
+    if "units" not in values.attrs and units is not None and units.dtype.kind in "OUS":
+        entry = units.sel({d: panel[d] for d in units.dims if d in panel.coords
+                           and panel[d].ndim == 0})
+        if entry.size == 1:
+            values = values.assign_attrs(units=str(entry.values))
+    text = label(values, long=True)
+    if distributed:
+        text += ("; mean, and band from the least to the largest over "
+                 + ", ".join(data[d].attrs.get("long_name", d.replace("_", " "))
+                             for d in distributed))
+    return textwrap.fill(text, 45)
 
 
 def _mark(axis, positions, values, status, codes, color) -> set:

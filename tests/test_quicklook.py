@@ -53,11 +53,12 @@ def test_two_axes_a_line_per_value_labels_and_conditions(results, tmp_path):
     figure = plot(results["crb_radial"], output=tmp_path / "f.png")
     data = open_result(results["crb_radial"])
     [axis] = figure.axes
+    [legend] = figure.legends  # beside the panels, not over the data
     assert len(axis.lines) == data.sizes["clearance"]
     assert axis.get_xlabel() == f"{data.radial_load.attrs['long_name']} [kN]"  # as written
     first = data["radial_displacement"]
     assert axis.get_ylabel() == f"{first.attrs['long_name']} [{first.attrs['units']}]"
-    assert [t.get_text() for t in axis.get_legend().get_texts()] == ["0 mm", "0.03 mm"]
+    assert [t.get_text() for t in legend.get_texts()] == ["0 mm", "0.03 mm"]
     np.testing.assert_allclose(axis.lines[0].get_xdata(), [0.5, 3.375, 6.25, 9.125, 12])
     np.testing.assert_allclose(axis.lines[1].get_ydata(),
                                data["radial_displacement"].isel(clearance=1).values)
@@ -69,8 +70,9 @@ def test_two_axes_a_line_per_value_labels_and_conditions(results, tmp_path):
 
 
 def test_one_axis_one_line(results):
-    [axis] = plot(results["hertz"]).axes
-    assert len(axis.lines) == 1 and axis.get_legend() is None
+    figure = plot(results["hertz"])
+    [axis] = figure.axes
+    assert len(axis.lines) == 1 and not figure.legends
     assert axis.get_xlabel().endswith("[N]")
 
 
@@ -152,8 +154,8 @@ def test_a_long_axis_of_lines_is_thinned_evenly(results):
                          attrs=data.radial_load.attrs)  # ten loads, in N, written in kN
     data = data.isel(radial_load=[0, 1, 2, 3, 4, 0, 1, 2, 3, 4]).assign_coords(
         radial_load=loads)
-    [axis] = plot(data, x="clearance").axes
-    assert [t.get_text() for t in axis.get_legend().get_texts()] == [
+    [legend] = plot(data, x="clearance").legends
+    assert [t.get_text() for t in legend.get_texts()] == [
         f"{v:g} kN" for v in (1, 2, 4, 5, 6, 7, 9, 10)]
 
 
@@ -294,8 +296,8 @@ poisson_ratio = [0.3, 0.29]
     done = cli("run", tmp_path / "zip.toml", "-o", tmp_path / "zip.nc", "--workers", "0",
                "--quiet")
     assert done.returncode == 0, done.stderr
-    [axis] = plot(tmp_path / "zip.nc").axes
-    assert [t.get_text() for t in axis.get_legend().get_texts()] == [
+    [legend] = plot(tmp_path / "zip.nc").legends
+    assert [t.get_text() for t in legend.get_texts()] == [
         "curvature 2y = 0 1/mm, poisson ratio = 0.3",
         "curvature 2y = 0.01 1/mm, poisson ratio = 0.29"]
     [axis] = plot(tmp_path / "zip.nc", x="poisson_ratio").axes
@@ -390,3 +392,40 @@ def test_plotting_changes_no_global_state_and_leaves_pyplot_alone(results, tmp_p
                  f"    xarray.open_dataset({result!r}).close()")
     assert changes(statement, tmp_path, libraries) == {"loggers": {}, "pyplot used": False}
     assert (tmp_path / "f.png").read_bytes().startswith(b"\x89PNG")
+
+
+# -- a quick look reads at a glance ------------------------------------------------------------
+
+@pytest.mark.parametrize("name, variable, x", [
+    ("crb_radial", None, None), ("crb_radial", "roller_load", None),
+    ("crb_radial", "roller_load", "roller"), ("ball_5dof", "axial_displacement", None),
+    ("ball_5dof", "displacement", None), ("ball_5dof", "axial_displacement", "geometry"),
+    ("hertz", None, None)])
+def test_a_quick_look_reads_at_a_glance(results, name, variable, x):
+    """Every panel labelled with units, none blank, no legend over data, no overlapping
+    ticks or text off the figure (a quick look shows the labels a user wrote: names are
+    theirs)."""
+    from bearing_sweep.figure_checks import figure_problems
+
+    assert figure_problems(plot(results[name], variable, x=x), names=False) == []
+
+
+@pytest.mark.parametrize("shape", ["sampled", "axis_zarr"])
+def test_a_quick_look_of_every_shape_reads_at_a_glance(shapes, shape):
+    from bearing_sweep.figure_checks import figure_problems
+
+    assert figure_problems(plot(shapes[shape]), names=False) == []
+
+
+def test_entries_in_units_of_their_own_are_labelled_with_each_entry_unit(results):
+    """A displacement's translations are in m and its tilts in rad (displacement_units): a
+    panel per entry, each labelled with its own unit."""
+    data = open_result(results["ball_5dof"]).isel(geometry=[0], fixed_dofs=[0])
+    figure = plot(data, "displacement")  # load along x, a line per other load, dof across
+    by_entry = {axis.get_title(): axis.get_ylabel() for axis in figure.axes}
+    units = dict(zip(data.dof.values, data.displacement_units.values))
+    shown = [title for title in by_entry if title.startswith("dof = ")]
+    assert len(shown) == 4  # a panel per entry (at most four across)
+    for title in shown:
+        entry = title.removeprefix("dof = ").split(",")[0]
+        assert by_entry[title].endswith(f"[{units[entry]}]"), (title, by_entry[title])
