@@ -354,10 +354,20 @@ changed["pyplot used"] = "matplotlib.pyplot" in sys.modules
 print(json.dumps(changed))
 '''
 
-IMPORTS = ["import bearing_sweep", "import bearing_sweep.api", "import bearing_sweep.plotting",
-           "import bearing_sweep.quicklook", "import bearing_sweep.study",
-           "import bearing_sweep.cli", "import bearing_sweep; bearing_sweep.plot",
-           "import bearing_sweep; bearing_sweep.run"]
+def _engine_modules() -> list[str]:
+    import pkgutil
+
+    import bearing_sweep
+
+    return sorted(m.name for m in pkgutil.walk_packages(bearing_sweep.__path__, "bearing_sweep.")
+                  if not m.name.endswith("__main__"))  # that one runs the program
+
+
+#: The package, each module of the engine, and the API's names imported when first asked for.
+#: Not the models: cage_dynamics and cage_dynamics_6dof import scipy.integrate, whose own
+#: import adds filters for scipy's own warnings (SpecialFunctionWarning), as for any user.
+IMPORTS = (["import bearing_sweep"] + [f"import {name}" for name in _engine_modules()]
+           + ["import bearing_sweep; bearing_sweep.plot", "import bearing_sweep; bearing_sweep.run"])
 STUDIES = Path(__file__).resolve().parents[1] / "studies"
 
 
