@@ -261,8 +261,8 @@ def main(argv=None) -> int:
             from . import study
 
             _check_cluster_options(args)
-            folder = args.studies or study.default_studies_folder()
-            chosen = study.select(folder, args.name)
+            chosen = study.select(args.studies or study.default_studies_folder(), args.name)
+            study.check_folders(chosen, args.results, args.figures)
             for one in chosen:  # every result it may write, before any computing
                 for definition in one.definitions:
                     check_output(one.result(args.results, definition), definition)
@@ -272,8 +272,9 @@ def main(argv=None) -> int:
         elif args.command == "report":
             from . import study
 
-            folder = args.studies or study.default_studies_folder()
-            for path in study.write_report(study.select(folder, "all"), args.results, args.figures):
+            chosen = study.select(args.studies or study.default_studies_folder(), "all")
+            study.check_folders(chosen, args.results, args.figures)
+            for path in study.write_report(chosen, args.results, args.figures):
                 print(f"wrote {path}")
     except SpecError as error:
         print(f"error: {error}", file=sys.stderr)

@@ -1,17 +1,20 @@
-"""Small helpers that the studies' figure scripts share: open a result, label, draw, save."""
+"""Small helpers that the studies' figure scripts share: open a result, label, draw, save.
+
+Figures are drawn on :class:`matplotlib.figure.Figure` objects, never through pyplot: the
+user's backend, pyplot's list of open figures and every other setting of matplotlib stay as
+they were (a notebook goes on drawing its own figures).
+"""
 from __future__ import annotations
 
+import re
 from pathlib import Path
 
-import matplotlib
+import numpy as np
+import xarray as xr
+from matplotlib.figure import Figure
 
-matplotlib.use("Agg")
-import matplotlib.pyplot as plt  # noqa: E402
-import numpy as np  # noqa: E402
-import xarray as xr  # noqa: E402
-
-from . import units  # noqa: E402
-from .store import open_result  # noqa: E402
+from . import units
+from .store import open_result
 
 
 def result(results: Path, name: str) -> xr.Dataset:
@@ -19,14 +22,32 @@ def result(results: Path, name: str) -> xr.Dataset:
     return open_result(Path(results) / f"{name}.nc")
 
 
+#: How a figure writes the units whose UDUNITS names read as words.
+_SHOWN_UNITS = {"percent": "%", "degree": "deg"}
+
+
+def shown_unit(unit: str) -> str:
+    """``unit`` as a figure writes it: ``"%"`` for ``"percent"``, ``"deg"`` for
+    ``"degree"``, any other as it is."""
+    return _SHOWN_UNITS.get(unit, unit)
+
+
+#: How a file names, in a variable's ``comment``, the SI unit of values that have no
+#: ``units`` attribute (a fractional power: labels.described writes it).
+_SI_UNIT = re.compile(r"Units: (\S+) \(SI\)")
+
+
 def label(variable: xr.DataArray, long: bool = False) -> str:
     """Axis label: the variable's name and units; ``long``: its ``long_name`` instead of its
-    name, no unit for a number, "SI" for a variable stored without ``units``."""
+    name, no unit for a number; for a variable stored without ``units`` (N/m^1.5, which
+    UDUNITS cannot write) the SI unit its ``comment`` names, else "SI"."""
     if not long:
-        return f"{variable.name.replace('_', ' ')} [{variable.attrs['units']}]"
+        return f"{variable.name.replace('_', ' ')} [{shown_unit(variable.attrs['units'])}]"
     name = variable.attrs.get("long_name", variable.name.replace("_", " "))
-    unit = variable.attrs.get("units", "1" if variable.dtype.kind in "OUS" else "SI")
-    return name if unit == "1" else f"{name} [{unit}]"
+    named = _SI_UNIT.search(variable.attrs.get("comment", ""))
+    unit = variable.attrs.get("units", "1" if variable.dtype.kind in "OUS" else
+                              named.group(1) if named else "SI")
+    return name if unit == "1" else f"{name} [{shown_unit(unit)}]"
 
 
 def family(axis, x, y, over: str, label: str, plot: str = "plot", **settings):
@@ -39,11 +60,20 @@ def family(axis, x, y, over: str, label: str, plot: str = "plot", **settings):
     axis.grid(alpha=0.3)
 
 
-def save(figure, figures: Path, name: str):
-    """Write ``figure`` as ``figures/name`` and free it."""
-    figure.tight_layout()
+def subplots(nrows: int = 1, ncols: int = 1, *, figsize=None, **settings):
+    """A new figure and its axes, as ``matplotlib.pyplot.subplots`` gives them (``settings``:
+    ``sharex``, ``squeeze``, ``subplot_kw``, ``gridspec_kw``, ...), but outside pyplot: no
+    backend is chosen or changed, and the figure is freed with its last reference."""
+    figure = Figure(figsize=figsize)
+    return figure, figure.subplots(nrows, ncols, **settings)
+
+
+def save(figure, figures: Path, name: str, tight: bool = True):
+    """Write ``figure`` as ``figures/name``, laid out tight unless ``tight`` is false (polar
+    axes, whose labels tight_layout does not see)."""
+    if tight:
+        figure.tight_layout()
     figure.savefig(Path(figures) / name, dpi=110)
-    plt.close(figure)
 
 
 def at(data, method=None, **where):
@@ -119,8 +149,8 @@ def conditions(data: xr.Dataset, *names: str, width: int | None = 80, preset: bo
             variable = in_unit(variable, unit)
         low, high = float(variable.min()), float(variable.max())
         shown = f"{low:g}" if low == high else f"{low:g} to {high:g}"
-        shown_unit = "" if unit == "1" else " " + {"degree": "deg"}.get(unit, unit)
-        parts.append(f"{name.replace('_', ' ')} = {shown}{shown_unit}")
+        parts.append(f"{name.replace('_', ' ')} = {shown}"
+                     + ("" if unit == "1" else " " + shown_unit(unit)))
     bearing = data.attrs.get("bearing") if preset else None
     if bearing:
         parts = [f"{bearing}:" + (f" {parts[0]}" if parts else ""), *parts[1:]]
@@ -148,7 +178,7 @@ def sobol_bars(axis, analysis: xr.Dataset, output: str, **where):
         axis.bar(place + shift, values, width=0.4, label=text,
                  yerr=[values - low, high - values], capsize=3)
     axis.set_xticks(place, [n.replace("_", " ") for n in inputs])
-    axis.set(ylabel=f"Sobol index of {output.replace('_', ' ')}")
+    axis.set(xlabel="sampled input", ylabel=f"Sobol index of {output.replace('_', ' ')}")
     axis.axhline(0.0, color="k", lw=0.5)
     axis.legend(fontsize=7)
 

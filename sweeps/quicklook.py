@@ -1,14 +1,18 @@
 """A quick look at any result: one output against one axis, without writing a figure script.
 
-``plot(result)`` draws the first output against the first axis, a line per value of the next
-axis and a panel per value of the one after (rows for a fourth); further axes are held at their
-first value. Points whose status says the values do not hold are marked on the axis, points
-solved outside the model's validity ringed. An output with its own entries (per roller, per
-ball, along a rotation) is drawn as their distribution: the mean and the band from the least
-to the largest entry. The inputs the sweep held fixed are the figure's conditions.
+``plot(result)`` draws the first output against the first axis that has more than one value, a
+line per value of the next axis and a panel per value of the one after (rows for a fourth);
+further axes are held at their first value. A sampled result is drawn against its first drawn
+input, a point per sample. Points whose status says the values do not hold are marked on the
+axis, points solved outside the model's validity ringed. An output with its own entries (per
+roller, per ball, along a rotation) is drawn as their distribution: the mean and the band from
+the least to the largest entry; a result of a single point draws such an output along its
+entries. The inputs the sweep held fixed are the figure's conditions. What cannot be drawn (a
+single value, an output without any value) is a :class:`SpecError` saying why.
 """
 from __future__ import annotations
 
+import textwrap
 from pathlib import Path
 
 import numpy as np
@@ -16,8 +20,9 @@ import xarray as xr
 from matplotlib.lines import Line2D
 
 from .dependence import flag_holds, held_points, on_grid
-from .parts import write_durably
-from .plotting import conditions, in_unit, label, plt
+from .models.registry import get_model
+from .parts import is_zarr, write_durably
+from .plotting import conditions, in_unit, label, shown_unit, subplots
 from .spec import SpecError, suggestion
 from .store import open_result
 
@@ -31,6 +36,8 @@ MOST_LINES, MOST_PANELS = 8, 4
 #: How the points whose status is not converged are marked.
 _MARKS = {"out of validity": {"marker": "o", "ms": 9, "mfc": "none"},
           "no value (status)": {"marker": "x", "ms": 7}}
+#: The dimension of a sampled result's samples.
+_SAMPLE = "sample"
 
 
 def plot(result, variable: str | None = None, *, x: str | None = None, output=None):
@@ -39,48 +46,59 @@ def plot(result, variable: str | None = None, *, x: str | None = None, output=No
     Parameters
     ----------
     result : str, pathlib.Path or xarray.Dataset
-        A netCDF file written by ``bearing-sweep run``, or such a dataset.
+        A netCDF file (or zarr store) written by ``bearing-sweep run``, or such a dataset.
     variable : str, optional
-        The output to draw (default: the model's first output).
+        The output to draw (default: the model's first output; for a result of a single
+        point, the first output with entries of its own).
     x : str, optional
-        The axis along the figure's x axis: a sweep axis, or a dimension of the output's
-        own (``angle``, ``roller``). Default: the first sweep axis.
+        The axis along the figure's x axis: a sweep axis, an input of a zipped axis or drawn
+        by ``[sample]``, or a dimension of the output's own (``angle``, ``roller``). Default:
+        the first sweep axis of more than one value (a sampled result: its first drawn
+        input, a point per sample; a single point: the output's first own dimension).
     output : str or pathlib.Path, optional
         Write the figure there too (PNG, PDF or SVG, by its suffix).
 
     Returns
     -------
     matplotlib.figure.Figure
+        Drawn outside pyplot (no backend is chosen or changed): a notebook shows it as a
+        cell's value; ``figure.savefig`` writes it.
 
     Raises
     ------
     bearing_sweep.spec.SpecError
-        For an unknown variable or axis (with the closest name), or an output path that
-        must not be written (see :func:`check_figure_path`).
+        For an unknown variable or axis (with the closest name), a variable that is not an
+        output, an output with nothing to draw (one value, no value at any point), or an
+        output path that must not be written (see :func:`check_figure_path`).
     """
+    source = "the dataset" if isinstance(result, xr.Dataset) else str(result)
     data = result if isinstance(result, xr.Dataset) else _open(result)
     if "status" not in data or "flag_meanings" not in data["status"].attrs:
-        raise SpecError(f"{result if not isinstance(result, xr.Dataset) else 'the dataset'}: "
-                        "not a result of bearing-sweep run (it has no status variable)")
+        raise SpecError(f"{source}: not a result of bearing-sweep run (it has no status "
+                        "variable)")
     data = on_grid(data)  # an output stored on fewer axes than the grid: at every point
-    outputs = [n for n, v in data.data_vars.items()
-               if v.attrs.get("coverage_content_type") == "modelResult"]
+    outputs = _outputs(data, declared=not isinstance(result, xr.Dataset) and is_zarr(result))
     axes = list(data["status"].dims)
-    variable = _choose(variable or outputs[0], outputs, "output")
+    variable = _output(data, variable, outputs, axes, source)
     values = data[variable]
+    if not values.notnull().any():
+        raise SpecError(f"{source}: {variable} has no value at any point "
+                        f"({_statuses(data['status'])}): nothing to draw")
     own = [d for d in values.dims if d not in axes]
     # Labelled entries of an output's own (dof: axial, radial_y, ...) are categories, to be
     # told apart like axes; numbered ones (roller 1..Z, an angle) form a distribution.
     categorical = [d for d in own if data[d].dtype.kind in "OUS"]
     distributed = [d for d in own if d not in categorical]
-    x = _choose(x or axes[0], axes + own, "axis")
-    if x in distributed:
-        distributed.remove(x)
+    x = _choose_x(data, x, axes, own, variable)
+    along = data[x].dims[0]  # the dimension x lies along: a zipped or sampled input's axis
+    if along in distributed:
+        distributed.remove(along)
     if output is not None:
         output = check_figure_path(output, None if isinstance(result, xr.Dataset) else result)
-    rest = [d for d in axes + categorical if d != x and data.sizes[d] > 1]
+    rest = [d for d in axes + categorical if d != along and data.sizes[d] > 1]
     lines, columns, rows = (rest + [None] * 3)[:3]
     held = rest[3:]
+    single = [d for d in axes + categorical if d != along and data.sizes[d] == 1]
     thinned = []  # a legend of a hundred lines reads as none: a few values, evenly spaced
     for dim, most in ((lines, MOST_LINES), (columns, MOST_PANELS), (rows, MOST_PANELS)):
         if dim is not None and data.sizes[dim] > most:
@@ -88,80 +106,139 @@ def plot(result, variable: str | None = None, *, x: str | None = None, output=No
             data = data.isel({dim: np.unique(np.linspace(0, data.sizes[dim] - 1, most)
                                              .round().astype(int))})
     # Axes of one value, and those beyond a panel grid, are held at their first value.
-    first = {d: 0 for d in axes + categorical if d != x and (d in held or data.sizes[d] == 1)}
+    first = {d: 0 for d in held + single}
     values = data[variable].isel({d: 0 for d in first if d in data[variable].dims})
-    status = _marks(data["status"]).isel({d: 0 for d in first if d in axes})
+    status = data["status"].isel({d: 0 for d in first if d in axes})
     shown = {d: _shown(data[d]) for d in (x, lines, columns, rows) if d is not None}
 
     nrows, ncols = (data.sizes[rows] if rows else 1), (data.sizes[columns] if columns else 1)
     # Panels of an output's entries (dof: a translation, a tilt) may differ in unit and scale.
-    figure, grid = plt.subplots(nrows, ncols, squeeze=False, sharex=True,
-                                sharey=not {columns, rows} & set(categorical),
-                                figsize=(4.2 * ncols + 1.2, 3.2 * nrows + 1.0))
+    shared = not {columns, rows} & set(categorical)
+    key = _key_width(data, lines, shown)
+    figure, grid = subplots(nrows, ncols, squeeze=False, sharex=True, sharey=shared,
+                            figsize=(4.2 * ncols + 1.2 + key, 3.2 * nrows + 1.0))
+    # Samples are in no order, labels (geometry: jones, fixed_angle) have nothing between
+    # them: points, not joined.
+    scatter = along == _SAMPLE or data[x].dtype.kind in "OUS"
+    marked = set()
     for r in range(nrows):
         for c in range(ncols):
             axis = grid[r, c]
             where = {d: i for d, i in ((rows, r), (columns, c)) if d is not None}
             panel = values.isel(where)
             panel_status = status.isel({d: i for d, i in where.items() if d in status.dims})
-            _draw_panel(axis, panel, panel_status, x, lines, distributed, shown)
-            axis.set_title(", ".join(_value_text(shown[d], i) for d, i in where.items()),
+            marked |= _draw_panel(axis, panel, panel_status, x, along, lines, distributed,
+                                  shown, data, scatter)
+            axis.set_title(", ".join(_value_text(data, d, i) for d, i in where.items()),
                            fontsize=8)
             if r == nrows - 1:
                 axis.set_xlabel(label(shown[x], long=True))
-            if c == 0:
-                axis.set_ylabel(label(values, long=True) + (
-                    f"\nmean; band: least to largest over {', '.join(distributed)}"
-                    if distributed else ""))
-    # What the user chose (a preset, [fixed]) is the figure's condition; the model's defaults
-    # are many (30 for cage_slip) and named once, in the file.
-    fixed = [n for n in data.attrs.get("fixed_inputs", "").split()
-             if n in data and data[n].attrs.get("origin") != "default"]
-    held_text = ", ".join([_value_text(_shown(data[d]), 0) + " (first of "
-                           f"{data.sizes[d]})" for d in held] + thinned)
-    width = int(14 * figure.get_figwidth())  # characters of the title's font across the figure
-    figure.suptitle("\n".join(t for t in (data.attrs.get("title", ""),
-                                          conditions(data, *fixed, width=width), held_text)
-                              if t), fontsize=8)
-    figure.tight_layout()
+            if c == 0 or not shared:
+                axis.set_ylabel(_y_label(data, variable, panel, distributed))
+    # One legend for every panel (each draws the same lines), beside them, not over the data.
+    handles = [line for line in grid[0, 0].lines if not line.get_label().startswith("_")]
+    handles += [Line2D([], [], ls="none", color="grey", **_MARKS[kind], label=kind)
+                for kind in _MARKS if kind in marked]
+    if handles:
+        figure.legend(handles=handles, fontsize=7, title_fontsize=7, loc="center left",
+                      bbox_to_anchor=(1 - key / figure.get_figwidth(), 0.5),
+                      title=label(shown[lines], long=True) if lines else None)
+    figure.suptitle(_title(data, held, single, thinned, along, x, figure), fontsize=8)
+    figure.tight_layout(rect=(0, 0, 1 - key / figure.get_figwidth(), 1))
     if output is not None:
         _write(figure, output)
     return figure
 
 
-def _draw_panel(axis, values, status, x, lines, distributed, shown):
-    """One panel: a line (or a distribution) per value of ``lines``, failures marked."""
+def _title(data, held, single, thinned, along, x, figure) -> str:
+    """The result's title, what the user chose (a preset, [fixed]) and the axes the figure
+    does not show. The model's defaults are many (30 for cage_slip) and named once, in the
+    file."""
+    fixed = [n for n in data.attrs.get("fixed_inputs", "").split()
+             if n in data and data[n].attrs.get("origin") != "default"]
+    notes = [_value_text(data, d, 0) for d in single]
+    notes += [_value_text(data, d, 0) + f" (first of {data.sizes[d]})" for d in held]
+    notes += thinned
+    if along == _SAMPLE:
+        drawn = [n for n in data.attrs.get("sample_inputs", "").split() if n in data and n != x]
+        notes.append(f"{data.sizes[_SAMPLE]} samples ({data.attrs.get('sample_method', 'drawn')})"
+                     + (f"; {', '.join(n.replace('_', ' ') for n in drawn)} drawn as well"
+                        if drawn else ""))
+    width = int(14 * figure.get_figwidth())  # characters of the title's font across the figure
+    return "\n".join(t for t in (data.attrs.get("title", ""),
+                                  conditions(data, *fixed, width=width),
+                                  textwrap.fill(", ".join(notes), width)) if t)
+
+
+def _draw_panel(axis, values, status, x, along, lines, distributed, shown, data, scatter):
+    """One panel: a line (or a distribution) per value of ``lines``, failures marked.
+    Returns the kinds of mark drawn."""
     positions, ticks = _positions(shown[x])
     marked = set()
-    style = {"marker": "o", "ms": 3} if len(positions) <= 40 else {}  # dots while they read
+    style = {"marker": "o", "ms": 3} if len(positions) <= 40 or scatter else {}
+    if scatter:
+        style["ls"] = "none"
     for index in range(values.sizes[lines] if lines else 1):
         line = values.isel({lines: index}) if lines else values
         point_status = status.isel({lines: index}) if lines in status.dims else status
-        name = _value_text(shown[lines], index, named=False) if lines else None
+        point_marks = _marks(point_status)
+        name = _value_text(data, lines, index, named=False) if lines else None
         if distributed:
-            low, high = line.min(distributed), line.max(distributed)
-            mean = line.mean(distributed)
-            drawn, = axis.plot(positions, mean.transpose(x).values, label=name,
-                               **style)
-            axis.fill_between(positions, low.transpose(x).values, high.transpose(x).values,
-                              color=drawn.get_color(), alpha=0.2, lw=0)
-            line = mean
+            low, high = (v.transpose(along).values for v in (line.min(distributed),
+                                                              line.max(distributed)))
+            line = line.mean(distributed)
+            drawn, = axis.plot(positions, line.transpose(along).values, label=name, **style)
+            if scatter:
+                axis.vlines(positions, low, high, color=drawn.get_color(), alpha=0.3)
+            else:
+                axis.fill_between(positions, low, high, color=drawn.get_color(), alpha=0.2,
+                                  lw=0)
         else:
-            drawn, = axis.plot(positions, line.transpose(x).values, label=name,
-                               **style)
-        marked |= _mark(axis, positions, line.transpose(x).values,
-              np.broadcast_to(point_status.transpose(*[d for d in (x,) if d in
-                                                       point_status.dims]).values,
-                              np.shape(positions)), drawn.get_color())
+            drawn, = axis.plot(positions, line.transpose(along).values, label=name, **style)
+        shown_values = line.transpose(along).values
+        if len(positions) == 1 and np.isfinite(shown_values[0]):  # a lone point: its value
+            axis.annotate(f"{shown_values[0]:.4g}", (positions[0], shown_values[0]),
+                          xytext=(5, 3), textcoords="offset points", fontsize=7,
+                          color=drawn.get_color())
+        marked |= _mark(axis, positions, shown_values,
+                        np.broadcast_to(point_marks.transpose(
+                            *[d for d in (along,) if d in point_marks.dims]).values,
+                            np.shape(positions)), drawn.get_color())
+    if not values.notnull().any():  # say so, rather than leave a blank panel
+        axis.text(0.5, 0.5, f"no value here\n({_statuses(status)})", transform=axis.transAxes,
+                  ha="center", va="center", fontsize=8, color="0.4")
     if ticks is not None:
         axis.set_xticks(positions, ticks, rotation=20, fontsize=7)
-    handles = [line for line in axis.lines if not line.get_label().startswith("_")]
-    handles += [Line2D([], [], ls="none", color="grey", **_MARKS[kind], label=kind)
-                for kind in _MARKS if kind in marked]
-    if handles:
-        axis.legend(handles=handles, fontsize=7, title_fontsize=7,
-                    title=label(shown[lines], long=True) if lines else None)
     axis.grid(alpha=0.3)
+    return marked
+
+
+def _key_width(data, lines, shown) -> float:
+    """About how wide [in] the legend beside the panels is: its longest text (a value of
+    ``lines``, its title, a mark's name) in 7-point type."""
+    texts = ["no value (status)"] + ([label(shown[lines], long=True)] + [
+        _value_text(data, lines, i, named=False) for i in range(data.sizes[lines])]
+        if lines else [])
+    return 0.5 + 0.065 * max(len(t) for t in texts)
+
+
+def _y_label(data, variable: str, panel, distributed: list) -> str:
+    """The label of a panel's y axis: the output's name and unit (an output whose entries
+    each have their own unit, as a displacement's translations and tilts: the unit of the
+    panel's entry), and what a band means, wrapped to the panel's height."""
+    values = data[variable]
+    units = data.get(values.attrs.get("ancillary_variables", ""))
+    if "units" not in values.attrs and units is not None and units.dtype.kind in "OUS":
+        entry = units.sel({d: panel[d] for d in units.dims if d in panel.coords
+                           and panel[d].ndim == 0})
+        if entry.size == 1:
+            values = values.assign_attrs(units=str(entry.values))
+    text = label(values, long=True)
+    if distributed:
+        text += ("; mean, and band from the least to the largest over "
+                 + ", ".join(data[d].attrs.get("long_name", d.replace("_", " "))
+                             for d in distributed))
+    return textwrap.fill(text, 45)
 
 
 def _marks(status: xr.DataArray) -> xr.DataArray:
@@ -192,6 +269,78 @@ def _mark(axis, positions, values, marks, color) -> set:
     return drawn
 
 
+def _statuses(status: xr.DataArray) -> str:
+    """How many points have each status flag: ``"3 not converged, 2 infeasible"`` (a point
+    out of validity counts once for its outcome and once for that)."""
+    counts = {meaning: int(flag_holds(status, meaning).sum())
+              for meaning in status.attrs["flag_meanings"].split()}
+    return ", ".join(f"{n} {meaning.replace('_', ' ')}" for meaning, n in counts.items() if n)
+
+
+def _outputs(data, declared: bool = False) -> list[str]:
+    """The result's outputs, in the file's order (a netCDF file's is the model's), or with
+    ``declared`` in the order the model declares them (a zarr store lists its variables by
+    name; this imports the model)."""
+    found = [n for n, v in data.data_vars.items()
+             if v.attrs.get("coverage_content_type") == "modelResult"]
+    try:
+        order = [o.name for o in get_model(data.attrs.get("model", "")).outputs] \
+            if declared else found
+    except KeyError:  # a model not installed here: the file's order
+        return found
+    return sorted(found, key=lambda n: order.index(n) if n in order else len(order))
+
+
+def _output(data, variable, outputs: list, axes: list, source: str) -> str:
+    """The output to draw: ``variable``, or the default; a SpecError for a name that is no
+    output, and for an output of a single point that is one value."""
+    with_entries = [n for n in outputs if data[n].dims]
+    if variable is None:
+        if axes or not with_entries:
+            variable = outputs[0]
+        else:  # a single point: the first output that has something to draw along
+            return with_entries[0]
+    if variable not in outputs and variable in data.variables:
+        raise SpecError(f"{source}: {variable!r} is {_kind(data, variable, axes)}, not an "
+                        f"output (outputs: {', '.join(outputs)})")
+    variable = _choose(variable, outputs, "output")
+    if not data[variable].dims:
+        value = data[variable]
+        unit = value.attrs.get("units", "1")
+        raise SpecError(
+            f"{source}: a single point (the sweep has no axes): {variable} is one value, "
+            f"{float(value):g}{'' if unit == '1' else ' ' + unit}, with nothing to draw it "
+            "against" + (f"; outputs with entries of their own: {', '.join(with_entries)}"
+                         if with_entries else ""))
+    return variable
+
+
+def _kind(data, name: str, axes: list) -> str:
+    """What a variable of a result that is not an output is, in words."""
+    if name == "status":
+        return "the status of each point"
+    if name in data.coords and set(data[name].dims) <= set(axes):
+        return "a sweep axis (draw against it with --x)"
+    if name in data.attrs.get("fixed_inputs", "").split():
+        return "an input the sweep holds fixed"
+    return "not an output of the model"
+
+
+def _choose_x(data, x, axes: list, own: list, variable: str) -> str:
+    """The name along the figure's x axis: ``x``, or the default (see :func:`plot`)."""
+    along_axes = [n for n, c in data.coords.items() if n not in data.dims and c.ndim == 1
+                  and c.dims[0] in axes and c.dtype.kind in "fiu"]  # zipped, drawn inputs
+    if x is None:
+        drawn = [n for n in data.attrs.get("sample_inputs", "").split() if n in along_axes]
+        longer = [d for d in axes if data.sizes[d] > 1]
+        x = (drawn[0] if _SAMPLE in axes and drawn else
+             longer[0] if longer else axes[0] if axes else own[0])
+    if x in data.dims and x not in axes + own:
+        raise SpecError(f"{variable} has no dimension {x!r} (its dimensions: "
+                        f"{', '.join(data[variable].dims)})")
+    return _choose(x, axes + own + along_axes, "axis")
+
+
 def _positions(coordinate: xr.DataArray):
     """Where the values of ``coordinate`` go on the x axis, and tick labels for names."""
     if coordinate.dtype.kind in "OUS":
@@ -207,13 +356,23 @@ def _shown(coordinate: xr.DataArray) -> xr.DataArray:
     return coordinate
 
 
-def _value_text(coordinate: xr.DataArray, index: int, named: bool = True) -> str:
-    """``"clearance = 0.03 mm"``, or ``"0.03 mm"`` unless ``named``."""
-    value = coordinate.values[index]
-    unit = coordinate.attrs.get("units", "1")
-    shown = f"{value:g}" if isinstance(value, (float, np.floating)) else str(value)
-    shown += "" if unit == "1" else f" {unit}"
-    return f"{coordinate.name.replace('_', ' ')} = {shown}" if named else shown
+def _value_text(data, dim: str, index: int, named: bool = True) -> str:
+    """``"clearance = 0.03 mm"``, or ``"0.03 mm"`` unless ``named``; for a zipped axis (its
+    values numbered), the values of its inputs: ``"crown = 2 um, slices = 30"``."""
+    inputs = [n for n, c in data.coords.items() if n != dim and c.dims == (dim,)]
+    if dim == _SAMPLE or not inputs or data[dim].dtype.kind in "OUS":
+        inputs, named = [dim], named
+    else:
+        named = True  # a zipped axis' number says nothing: its inputs are named
+    texts = []
+    for name in inputs:
+        coordinate = _shown(data[name])
+        value = coordinate.values[index]
+        unit = coordinate.attrs.get("units", "1")
+        shown = f"{value:g}" if isinstance(value, (float, np.floating)) else str(value)
+        shown += "" if unit == "1" else f" {shown_unit(unit)}"
+        texts.append(f"{name.replace('_', ' ')} = {shown}" if named else shown)
+    return ", ".join(texts)
 
 
 def _open(path) -> xr.Dataset:

@@ -9,6 +9,7 @@ studies are data for the engine (installed with it as package data).
 from __future__ import annotations
 
 import importlib.util
+import os
 import tomllib
 from dataclasses import dataclass
 from pathlib import Path
@@ -68,20 +69,78 @@ def default_studies_folder() -> Path:
     return Path(studies.__file__).resolve().parent
 
 
+#: What a folder of studies holds, for the messages that find none in one.
+LAYOUT = ("a folder of studies holds a folder per study, each with its sweep definitions "
+          "(*.toml) and figures.py")
+#: What each folder option names, for the messages that refuse one.
+_PURPOSE = {"--results": "the folder of the studies' results",
+            "--figures": "the folder of the studies' figures and report pages"}
+
+
 def find_studies(folder: Path) -> dict[str, Study]:
     return {p.parent.name: Study(p.parent.name, p.parent)
             for p in sorted(Path(folder).glob("*/figures.py"))}
 
 
 def select(folder: Path, name: str) -> list[Study]:
+    """The study ``name`` of ``folder`` (``"all"``: each of them); a :class:`SpecError` for
+    a folder that is none or holds no study, an unknown name, a study without sweeps."""
+    folder = Path(folder)
+    if not folder.is_dir():
+        raise SpecError(f"{folder}: {'is not a' if os.path.lexists(folder) else 'no such'} "
+                        f"folder of studies (--studies: {LAYOUT})")
     studies = find_studies(folder)
-    if name == "all":
-        return list(studies.values())
-    if name not in studies:
+    if not studies:
+        raise SpecError(f"{folder}: holds no study (--studies: {LAYOUT})")
+    if name != "all" and name not in studies:
         raise SpecError(f"study {name!r}: no such study in {folder}"
                         + spec_module.suggestion(name, studies) + " (studies: "
                         + ", ".join(sorted(studies) + ["all"]) + ")")
-    return [studies[name]]
+    chosen = list(studies.values()) if name == "all" else [studies[name]]
+    for study in chosen:
+        if not study.definitions:
+            raise SpecError(f"{study.folder}: study {study.name} has no sweep definitions "
+                            f"(*.toml) ({LAYOUT})")
+    return chosen
+
+
+def check_folders(studies: list[Study], results: Path, figures: Path) -> None:
+    """Refuse, before any sweep is computed, what would stop the studies afterwards: a
+    ``results`` or ``figures`` folder (or a study's folder in them) that is not a folder and
+    cannot be made one, a figure's path that is not a file, a figure script that does not
+    load. Each is a :class:`SpecError` of one line."""
+    for option, root in (("--results", Path(results)), ("--figures", Path(figures))):
+        for folder in (root, *(root / study.name for study in studies)):
+            _check_folder(folder, option)
+    for study in studies:
+        try:
+            module = study.figures_module()
+            names = list(module.FIGURES)
+        except Exception as error:  # the study's own code: whatever it raises, in a line
+            text = str(error).splitlines()[0] if str(error) else ""
+            raise SpecError(f"{study.folder / 'figures.py'}: does not load: "
+                            f"{type(error).__name__}{': ' + text if text else ''}") from None
+        for name in names:
+            path = Path(figures) / study.name / name
+            if os.path.lexists(path) and (path.is_symlink() or not path.is_file()):
+                raise SpecError(f"{path}: exists and is not a file; refusing to replace it "
+                                f"with the figure (--figures: {_PURPOSE['--figures']})")
+
+
+def _check_folder(folder: Path, option: str):
+    """``folder`` is a folder, or can be made: its nearest existing ancestor is a writable
+    folder."""
+    ancestor = folder
+    while not os.path.lexists(ancestor) and ancestor != ancestor.parent:
+        ancestor = ancestor.parent
+    purpose = f"({option}: {_PURPOSE[option]})"
+    if not ancestor.is_dir():
+        problem = ("is not a folder" if ancestor == folder
+                   else f"cannot be made: {ancestor} is not a folder")
+        raise SpecError(f"{folder}: {problem} {purpose}")
+    if not os.access(ancestor, os.W_OK | os.X_OK):
+        raise SpecError(f"{folder}: cannot be written: permission denied on {ancestor} "
+                        f"{purpose}")
 
 
 def is_stale(definition: Path, result: Path, sweep) -> bool:

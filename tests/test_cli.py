@@ -4,6 +4,7 @@ import sys
 import textwrap
 from pathlib import Path
 
+import pytest
 import xarray as xr
 
 BIN = Path(sys.executable).parent
@@ -105,3 +106,70 @@ def test_study_runs_what_is_stale_draws_and_reports(tmp_path):
     assert "[tiny](tiny/README.md): 1 of 1 comparable stated numbers agree" in index
     missing = cli("study", "nothing", cwd=tmp_path)
     assert missing.returncode == 2 and "no such study" in missing.stderr
+
+
+STUDIES = Path(__file__).resolve().parents[1] / "studies"
+
+
+def _mistaken_folders(tmp_path, case):
+    """The options of `study` or `report` for one mistaken folder, over the real studies."""
+    (tmp_path / "notes.txt").write_text("not a folder")
+    (tmp_path / "empty").mkdir()
+    options = {"--studies": STUDIES, "--results": tmp_path / "results",
+               "--figures": tmp_path / "figures"}
+    mistake = {"figures_file": ("--figures", tmp_path / "notes.txt"),
+               "figures_under_a_file": ("--figures", tmp_path / "notes.txt" / "figures"),
+               "results_file": ("--results", tmp_path / "notes.txt"),
+               "studies_file": ("--studies", tmp_path / "notes.txt"),
+               "studies_empty": ("--studies", tmp_path / "empty"),
+               "studies_missing": ("--studies", tmp_path / "nowhere")}[case]
+    options[mistake[0]] = mistake[1]
+    return [str(part) for option in options.items() for part in option], mistake[1]
+
+
+@pytest.mark.parametrize("command", ["study", "report"])
+@pytest.mark.parametrize("case", ["figures_file", "figures_under_a_file", "results_file",
+                                  "studies_file", "studies_empty", "studies_missing"])
+def test_a_mistaken_folder_is_one_line_before_anything_is_computed(tmp_path, command, case):
+    options, named = _mistaken_folders(tmp_path, case)
+    before = sorted(p.name for p in tmp_path.iterdir())
+    args = ["study", "tapered_rib", "--workers", "0"] if command == "study" else ["report"]
+    done = cli(*args, *options, cwd=tmp_path)
+    assert done.returncode == 2 and done.stderr.count("\n") == 1, done.stderr
+    assert done.stderr.startswith(f"error: {named}: ") and "Traceback" not in done.stderr
+    assert done.stdout == ""  # no sweep run, nothing drawn or written
+    assert sorted(p.name for p in tmp_path.iterdir()) == before
+    if case.startswith("studies_"):  # says what a folder of studies holds
+        assert "figures.py" in done.stderr and "*.toml" in done.stderr
+
+
+def test_study_all_in_an_empty_folder_is_an_error(tmp_path):
+    (tmp_path / "studies").mkdir()
+    done = cli("study", "all", "--workers", "0", cwd=tmp_path)  # ./studies: the default
+    assert done.returncode == 2, done.stderr
+    assert done.stderr == ("error: studies: holds no study (--studies: a folder of studies "
+                           "holds a folder per study, each with its sweep definitions (*.toml) "
+                           "and figures.py)\n")
+
+
+def _tiny_study(tmp_path, figures_py: str, definitions: bool = True):
+    study = tmp_path / "studies" / "tiny"
+    study.mkdir(parents=True)
+    if definitions:
+        (study / "loads.toml").write_text(DEFINITION)
+    (study / "figures.py").write_text(textwrap.dedent(figures_py))
+
+
+@pytest.mark.parametrize("case", ["figure_is_a_folder", "script_fails", "no_definitions"])
+def test_what_would_stop_a_study_after_its_sweeps_is_refused_before_them(tmp_path, case):
+    _tiny_study(tmp_path, 'FIGURES = {"k.png": "stiffness"}\n' if case != "script_fails"
+                else "import no_such_module_anywhere\n", definitions=case != "no_definitions")
+    if case == "figure_is_a_folder":
+        (tmp_path / "figures" / "tiny" / "k.png").mkdir(parents=True)
+    done = cli("study", "tiny", "--workers", "0", cwd=tmp_path)
+    assert done.returncode == 2 and done.stderr.count("\n") == 1, done.stderr
+    assert {"figure_is_a_folder": "k.png: exists and is not a file",
+            "script_fails": "figures.py: does not load: ModuleNotFoundError",
+            "no_definitions": "study tiny has no sweep definitions (*.toml)"}[case] \
+        in done.stderr
+    assert not (tmp_path / "results").exists()  # nothing computed

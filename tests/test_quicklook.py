@@ -53,11 +53,12 @@ def test_two_axes_a_line_per_value_labels_and_conditions(results, tmp_path):
     figure = plot(results["crb_radial"], output=tmp_path / "f.png")
     data = open_result(results["crb_radial"])
     [axis] = figure.axes
+    [legend] = figure.legends  # beside the panels, not over the data
     assert len(axis.lines) == data.sizes["clearance"]
     assert axis.get_xlabel() == f"{data.radial_load.attrs['long_name']} [kN]"  # as written
     first = data["radial_displacement"]
     assert axis.get_ylabel() == f"{first.attrs['long_name']} [{first.attrs['units']}]"
-    assert [t.get_text() for t in axis.get_legend().get_texts()] == ["0 mm", "0.03 mm"]
+    assert [t.get_text() for t in legend.get_texts()] == ["0 mm", "0.03 mm"]
     np.testing.assert_allclose(axis.lines[0].get_xdata(), [0.5, 3.375, 6.25, 9.125, 12])
     np.testing.assert_allclose(axis.lines[1].get_ydata(),
                                data["radial_displacement"].isel(clearance=1).values)
@@ -69,8 +70,9 @@ def test_two_axes_a_line_per_value_labels_and_conditions(results, tmp_path):
 
 
 def test_one_axis_one_line(results):
-    [axis] = plot(results["hertz"]).axes
-    assert len(axis.lines) == 1 and axis.get_legend() is None
+    figure = plot(results["hertz"])
+    [axis] = figure.axes
+    assert len(axis.lines) == 1 and not figure.legends
     assert axis.get_xlabel().endswith("[N]")
 
 
@@ -152,6 +154,288 @@ def test_a_long_axis_of_lines_is_thinned_evenly(results):
                          attrs=data.radial_load.attrs)  # ten loads, in N, written in kN
     data = data.isel(radial_load=[0, 1, 2, 3, 4, 0, 1, 2, 3, 4]).assign_coords(
         radial_load=loads)
-    [axis] = plot(data, x="clearance").axes
-    assert [t.get_text() for t in axis.get_legend().get_texts()] == [
+    [legend] = plot(data, x="clearance").legends
+    assert [t.get_text() for t in legend.get_texts()] == [
         f"{v:g} kN" for v in (1, 2, 4, 5, 6, 7, 9, 10)]
+
+
+# -- results of every shape: something meaningful drawn, or one line saying why not ---------
+
+SINGLE_POINT = ONE_AXIS.replace('[axes]\nload = ["10 N", "500 N", "3 kN"]', 'load = "500 N"')
+SAMPLED = ONE_AXIS.replace('[axes]\nload = ["10 N", "500 N", "3 kN"]', """[sample]
+n = 12
+method = "random"
+load = { distribution = "uniform", low = "10 N", high = "3 kN" }""")
+
+
+@pytest.fixture(scope="module")
+def shapes(tmp_path_factory):
+    """Real results of the shapes a quick look must handle: a single point (netCDF and zarr),
+    a sampled result, one axis (zarr)."""
+    folder = tmp_path_factory.mktemp("shapes")
+    paths = {}
+    for name, text, suffix in (("single", SINGLE_POINT, ".nc"), ("single_zarr", SINGLE_POINT,
+                                                                  ".zarr"),
+                               ("sampled", SAMPLED, ".nc"), ("axis_zarr", ONE_AXIS, ".zarr")):
+        (folder / f"{name}.toml").write_text(text)
+        paths[name] = folder / f"{name}{suffix}"
+        done = cli("run", folder / f"{name}.toml", "-o", paths[name], "--workers", "0",
+                   "--quiet")
+        assert done.returncode == 0, done.stderr
+    return paths
+
+
+def drawn_lines(axis):
+    """The data lines of a panel (not the marks of failed points)."""
+    return [line for line in axis.lines
+            if line.get_label() not in ("_out of validity", "_no value")]
+
+
+def test_every_panel_shows_data_or_says_it_has_none(results):
+    """No blank panel: a panel whose points all failed says so."""
+    data = open_result(results["ball_5dof"])
+    variable = data["axial_displacement"].copy()
+    variable[{"geometry": 0, "fixed_dofs": 1}] = np.nan  # one panel without any value
+    figure = plot(data.assign(axial_displacement=variable), "axial_displacement")
+    empty = 0
+    for axis in figure.axes:
+        finite = any(np.isfinite(np.asarray(line.get_ydata(), dtype=float)).any()
+                     for line in drawn_lines(axis))
+        said = any(text.get_text().startswith("no value here") for text in axis.texts)
+        assert finite != said, axis.get_title()
+        empty += said
+    assert empty == 1
+
+
+@pytest.mark.parametrize("result", ["single", "single_zarr"])
+def test_a_single_point_of_one_value_is_one_line_exit_2(shapes, tmp_path, result):
+    before = sorted(p.name for p in shapes[result].parent.iterdir())
+    done = cli("plot", shapes[result], "max_pressure")
+    assert done.returncode == 2 and done.stderr.count("\n") == 1, done.stderr
+    assert "a single point (the sweep has no axes): max_pressure is one value" in done.stderr
+    assert "MPa" in done.stderr and "Traceback" not in done.stderr
+    default = cli("plot", shapes[result])  # the first output: one value too
+    assert default.returncode == 2 and default.stderr.count("\n") == 1, default.stderr
+    assert sorted(p.name for p in shapes[result].parent.iterdir()) == before
+
+
+def test_a_single_point_draws_an_output_along_its_own_entries(results):
+    """A result of one point (every axis gone) draws, by default, the first output with
+    entries of its own along them: the load of each roller against the roller's number."""
+    data = open_result(results["crb_radial"])
+    point = data.isel(radial_load=2, clearance=1)
+    point["status"] = point["status"].copy()
+    assert point["status"].dims == ()
+    [axis] = plot(point).axes
+    [line] = drawn_lines(axis)
+    np.testing.assert_array_equal(line.get_xdata(), data.roller.values)
+    np.testing.assert_allclose(line.get_ydata(), point.roller_load.values)
+    assert axis.get_xlabel().startswith(data.roller.attrs["long_name"])
+    with pytest.raises(SpecError, match="one value.*outputs with entries of their own: "
+                                        "roller_load"):
+        plot(point, "radial_stiffness")
+    with pytest.raises(SpecError, match="radial_stiffness has no dimension 'roller'"):
+        plot(data, "radial_stiffness", x="roller")
+
+
+def test_an_output_without_any_value_is_one_line_naming_the_statuses(results, tmp_path):
+    data = open_result(results["hertz"])
+    data["semi_major"][:] = np.nan
+    data["status"][:] = [1, 1, 2]  # not converged, not converged, infeasible
+    with pytest.raises(SpecError, match=r"semi_major has no value at any point \(2 not "
+                                        r"converged, 1 infeasible\): nothing to draw"):
+        plot(data, "semi_major")
+    data.to_netcdf(tmp_path / "failed.nc")
+    done = cli("plot", tmp_path / "failed.nc", "semi_major")
+    assert done.returncode == 2 and done.stderr.count("\n") == 1, done.stderr
+    assert not (tmp_path / "failed.png").exists()
+
+
+@pytest.mark.parametrize("name, kind", [("status", "the status of each point"),
+                                        ("load", "a sweep axis"),
+                                        ("curvature_1x", "an input the sweep holds fixed")])
+def test_a_variable_that_is_not_an_output_is_named_for_what_it_is(results, name, kind):
+    with pytest.raises(SpecError, match=f"'{name}' is {kind}.*not an output \\(outputs: "
+                                        "semi_major, "):
+        plot(results["hertz"], name)
+    done = cli("plot", results["hertz"], name)
+    assert done.returncode == 2 and done.stderr.count("\n") == 1 and kind in done.stderr
+
+
+def test_a_sampled_result_is_a_point_per_sample_against_a_drawn_input(shapes):
+    data = open_result(shapes["sampled"])
+    figure = plot(data)
+    [axis] = figure.axes
+    [points] = drawn_lines(axis)
+    assert points.get_linestyle() == "None"  # samples are in no order: not joined
+    np.testing.assert_allclose(points.get_xdata(), data["load"].values)
+    np.testing.assert_allclose(points.get_ydata(), data.semi_major.values)
+    assert axis.get_xlabel() == data["load"].attrs["long_name"] + " [N]"
+    assert "12 samples (random)" in figure._suptitle.get_text()
+    [axis] = plot(data, x="sample").axes  # the sample number, if asked for
+    np.testing.assert_array_equal(drawn_lines(axis)[0].get_xdata(), np.arange(12))
+
+
+def test_an_axis_of_one_value_is_named_and_a_lone_point_labelled(results):
+    data = open_result(results["crb_radial"]).isel(radial_load=[3])
+    figure = plot(data)
+    [axis] = figure.axes
+    assert axis.get_xlabel().startswith(data.clearance.attrs["long_name"])  # the longer axis
+    assert "radial load = 9.125 kN" in figure._suptitle.get_text()  # the axis of one value
+    [axis] = plot(data, x="radial_load").axes
+    values = [float(data.radial_displacement.isel(clearance=c, radial_load=0)) for c in (0, 1)]
+    assert sorted(t.get_text() for t in axis.texts) == sorted(f"{v:.4g}" for v in values)
+
+
+def test_a_zipped_axis_is_shown_by_the_values_of_its_inputs(tmp_path):
+    (tmp_path / "zip.toml").write_text(ONE_AXIS.replace('curvature_2y = "0 1/mm"\n', "") + """
+[axes.case]
+curvature_2y = ["0 1/mm", "0.01 1/mm"]
+poisson_ratio = [0.3, 0.29]
+""")
+    done = cli("run", tmp_path / "zip.toml", "-o", tmp_path / "zip.nc", "--workers", "0",
+               "--quiet")
+    assert done.returncode == 0, done.stderr
+    [legend] = plot(tmp_path / "zip.nc").legends
+    assert [t.get_text() for t in legend.get_texts()] == [
+        "curvature 2y = 0 1/mm, poisson ratio = 0.3",
+        "curvature 2y = 0.01 1/mm, poisson ratio = 0.29"]
+    [axis] = plot(tmp_path / "zip.nc", x="poisson_ratio").axes
+    np.testing.assert_allclose(drawn_lines(axis)[0].get_xdata(), [0.3, 0.29])
+
+
+def test_a_zarr_store_plots_as_a_file_does(shapes, tmp_path):
+    done = cli("plot", shapes["axis_zarr"], "-o", tmp_path / "z.png")
+    assert done.returncode == 0, done.stderr
+    assert (tmp_path / "z.png").read_bytes().startswith(b"\x89PNG")
+    [axis] = plot(shapes["axis_zarr"]).axes
+    # the model's first output, though a zarr store lists its variables by name
+    assert axis.get_ylabel().startswith(open_result(shapes["axis_zarr"])
+                                        .semi_major.attrs["long_name"])
+
+
+# -- the user's matplotlib, warnings and logging are theirs -----------------------------------
+
+#: Runs a statement in a fresh interpreter whose user chose a backend ("pdf", as a notebook
+#: chooses its inline one) and prints what the statement changed in matplotlib's settings,
+#: the warnings filters and the logging configuration, and whether it used pyplot.
+GLOBAL_STATE = r'''
+import json, logging, sys, warnings
+import matplotlib
+matplotlib.rcParams["backend"] = "pdf"
+
+
+def loggers():
+    every = {"root": logging.root, **logging.root.manager.loggerDict}
+    return {name: (log.level, [type(h).__name__ for h in log.handlers], log.propagate,
+                   log.disabled) for name, log in every.items()
+            if isinstance(log, logging.Logger)}
+
+
+def state():
+    return {"rcParams": {k: repr(v) for k, v in matplotlib.rcParams.items()},
+            "warnings.filters": repr(warnings.filters),
+            "logging.disable": logging.root.manager.disable}
+
+
+exec(sys.argv[2] if len(sys.argv) > 2 else "")  # what the libraries do on their own
+before, before_loggers = state(), loggers()
+exec(sys.argv[1])
+after, after_loggers = state(), loggers()
+changed = {key: (before[key], after[key]) for key in before if before[key] != after[key]}
+# A library may add its own logger with a NullHandler (pint does); nothing else.
+quiet = (logging.NOTSET, [], True, False)
+changed["loggers"] = {
+    name: (before_loggers.get(name), value) for name, value in after_loggers.items()
+    if value != before_loggers.get(name, value)
+    or (name not in before_loggers and (value[0], [h for h in value[1] if h != "NullHandler"],
+                                        *value[2:]) != quiet)}
+changed["pyplot used"] = "matplotlib.pyplot" in sys.modules
+print(json.dumps(changed))
+'''
+
+def _engine_modules() -> list[str]:
+    import pkgutil
+
+    import bearing_sweep
+
+    return sorted(m.name for m in pkgutil.walk_packages(bearing_sweep.__path__, "bearing_sweep.")
+                  if not m.name.endswith("__main__"))  # that one runs the program
+
+
+#: The package, each module of the engine, and the API's names imported when first asked for.
+#: Not the models: cage_dynamics and cage_dynamics_6dof import scipy.integrate, whose own
+#: import adds filters for scipy's own warnings (SpecialFunctionWarning), as for any user.
+IMPORTS = (["import bearing_sweep"] + [f"import {name}" for name in _engine_modules()]
+           + ["import bearing_sweep; bearing_sweep.plot", "import bearing_sweep; bearing_sweep.run"])
+STUDIES = Path(__file__).resolve().parents[1] / "studies"
+
+
+def changes(statement: str, cwd, libraries: str = "") -> dict:
+    """What ``statement`` changes, in a fresh process, after ``libraries`` ran."""
+    import json
+
+    done = subprocess.run([sys.executable, "-c", GLOBAL_STATE, statement, libraries],
+                          cwd=cwd, capture_output=True, text=True, timeout=300)
+    assert done.returncode == 0, done.stderr
+    return json.loads(done.stdout.splitlines()[-1])
+
+
+@pytest.mark.parametrize("statement", IMPORTS + [
+    pytest.param(f"from bearing_sweep.study import find_studies; "
+                 f"find_studies({str(STUDIES)!r})[{name!r}].figures_module()",
+                 id=f"studies/{name}/figures.py")
+    for name in sorted(p.parent.name for p in STUDIES.glob("*/figures.py"))])
+def test_importing_changes_no_global_state(statement, tmp_path):
+    """No import of the package, its modules or a study's figure script changes the user's
+    matplotlib backend or settings, warnings filters or logging (each in a fresh process)."""
+    assert changes(statement, tmp_path) == {"loggers": {}, "pyplot used": False}
+
+
+def test_plotting_changes_no_global_state_and_leaves_pyplot_alone(results, tmp_path):
+    result, figure = str(results["crb_radial"]), str(tmp_path / "f.png")
+    statement = f"import bearing_sweep; bearing_sweep.plot({result!r}, output={figure!r})"
+    # scipy.special, pint and xarray's open_dataset add (or move to the front) warnings
+    # filters of their own, for their own warnings, whoever calls them: they run first (the
+    # second opening after the backends the first loaded), and the plot must add nothing.
+    libraries = ("import pint, scipy.special, xarray\nfor _ in range(2):\n"
+                 f"    xarray.open_dataset({result!r}).close()")
+    assert changes(statement, tmp_path, libraries) == {"loggers": {}, "pyplot used": False}
+    assert (tmp_path / "f.png").read_bytes().startswith(b"\x89PNG")
+
+
+# -- a quick look reads at a glance ------------------------------------------------------------
+
+@pytest.mark.parametrize("name, variable, x", [
+    ("crb_radial", None, None), ("crb_radial", "roller_load", None),
+    ("crb_radial", "roller_load", "roller"), ("ball_5dof", "axial_displacement", None),
+    ("ball_5dof", "displacement", None), ("ball_5dof", "axial_displacement", "geometry"),
+    ("hertz", None, None)])
+def test_a_quick_look_reads_at_a_glance(results, name, variable, x):
+    """Every panel labelled with units, none blank, no legend over data, no overlapping
+    ticks or text off the figure (a quick look shows the labels a user wrote: names are
+    theirs)."""
+    from bearing_sweep.figure_checks import figure_problems
+
+    assert figure_problems(plot(results[name], variable, x=x), names=False) == []
+
+
+@pytest.mark.parametrize("shape", ["sampled", "axis_zarr"])
+def test_a_quick_look_of_every_shape_reads_at_a_glance(shapes, shape):
+    from bearing_sweep.figure_checks import figure_problems
+
+    assert figure_problems(plot(shapes[shape]), names=False) == []
+
+
+def test_entries_in_units_of_their_own_are_labelled_with_each_entry_unit(results):
+    """A displacement's translations are in m and its tilts in rad (displacement_units): a
+    panel per entry, each labelled with its own unit."""
+    data = open_result(results["ball_5dof"]).isel(geometry=[0], fixed_dofs=[0])
+    figure = plot(data, "displacement")  # load along x, a line per other load, dof across
+    by_entry = {axis.get_title(): axis.get_ylabel() for axis in figure.axes}
+    units = dict(zip(data.dof.values, data.displacement_units.values))
+    shown = [title for title in by_entry if title.startswith("dof = ")]
+    assert len(shown) == 4  # a panel per entry (at most four across)
+    for title in shown:
+        entry = title.removeprefix("dof = ").split(",")[0]
+        assert by_entry[title].endswith(f"[{units[entry]}]"), (title, by_entry[title])

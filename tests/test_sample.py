@@ -352,7 +352,7 @@ def test_the_schema_accepts_a_sample_table_and_refuses_an_unknown_distribution()
 
 
 def test_the_figure_helpers_draw_indices_and_distributions(ishigami_model, tmp_path):
-    from bearing_sweep.plotting import histogram, plt, sobol_bars
+    from bearing_sweep.plotting import histogram, sobol_bars, subplots
 
     data = bearing_sweep.run("""
 [sweep]
@@ -364,13 +364,12 @@ x1 = { distribution = "uniform", low = -3, high = 3 }
 x2 = { distribution = "uniform", low = -3, high = 3 }
 x3 = { distribution = "uniform", low = -3, high = 3 }
 """, workers=0, progress=False)
-    figure, (left, right) = plt.subplots(1, 2)
+    figure, (left, right) = subplots(1, 2)
     sobol_bars(left, bearing_sweep.analyze(data), "y")
     histogram(right, data, "x1")
     assert len(left.patches) == 6  # first-order and total bars of three inputs
     # A and B only: 8 replicates of 32 base samples each
     assert sum(p.get_height() for p in right.patches) == 2 * sample.SALTELLI_REPLICATES * 32
-    plt.close(figure)
 
 
 def test_a_pattern_no_count_sizes_draws_one_value_for_all_its_entries():

@@ -2,11 +2,11 @@
 from the netCDF results only."""
 from pathlib import Path
 
-import matplotlib.pyplot as plt
 import numpy as np
 
 from bearing_sweep import units
-from bearing_sweep.plotting import at, conditions, histogram, in_unit, label, result, save
+from bearing_sweep.plotting import (at, conditions, histogram, in_unit, label, result, save,
+                                    subplots)
 from bearing_sweep.study import Study, agreement
 
 FIGURES = {
@@ -34,6 +34,9 @@ _FORMS = {"jones": "Jones, tilts held", "fixed_angle": "fixed angle (paper), til
           "jones_free_tilt": "Jones, free to tilt"}
 _PAIRS = (("axial", "radial_y"), ("radial_y", "tilt_z"), ("radial_z", "tilt_y"),
           ("axial", "tilt_z"))
+#: The degrees of freedom as the paper writes them (eq. 10): x axial, y and z radial.
+_DOF = {"axial": r"$\delta_x$", "radial_y": r"$\delta_y$", "radial_z": r"$\delta_z$",
+        "tilt_y": r"$\theta_y$", "tilt_z": r"$\theta_z$"}
 
 
 def draw(results: Path, figures: Path):
@@ -53,7 +56,7 @@ _SHOWN = {"axial_displacement": "um", "radial_displacement": "um", "axial_stiffn
 
 def _axial(results, figures):
     data, hertz = result(results, "fig06_07_axial"), result(results, "fig06_07_axial_hertz")
-    figure, axes = plt.subplots(1, 2, figsize=(9, 3.9))
+    figure, axes = subplots(1, 2, figsize=(9, 3.9))
     for axis, name in zip(axes, ("axial_displacement", "axial_stiffness")):
         for form in data.form.values:
             axis.plot(data.axial_load, in_unit(data[name].sel(form=form), _SHOWN[name]), "o-",
@@ -70,7 +73,7 @@ def _axial(results, figures):
 
 def _radial(results, figures):
     data = result(results, "fig08_09_radial")
-    figure, axes = plt.subplots(1, 2, figsize=(9, 3.9))
+    figure, axes = subplots(1, 2, figsize=(9, 3.9))
     for axis, name in zip(axes, ("radial_displacement", "radial_stiffness")):
         for form in data.form.values:
             axis.plot(data.radial_load, in_unit(data[name].sel(form=form), _SHOWN[name]), "o-",
@@ -105,22 +108,24 @@ def _coupling(matrix, row: str, column: str):
 def _cross_terms(results, figures):
     data = result(results, "fig08_09_radial")
     matrix = _in_si(data)
-    figure, axes = plt.subplots(1, 2, figsize=(9, 3.9), sharey=True)
+    figure, axes = subplots(1, 2, figsize=(9, 3.9), sharey=True)
     for axis, form in zip(axes, ("jones_free_tilt", "jones")):
         for row, column in _PAIRS:
             axis.plot(data.radial_load, _coupling(matrix.sel(form=form), row,
-                                                  column), "o-", ms=2, label=f"{row} - {column}")
+                                                  column), "o-", ms=2,
+                      label=f"{_DOF[row]} with {_DOF[column]}")
         axis.set(xlabel=label(data.radial_load), title=_FORMS[form])
         axis.grid(alpha=0.3)
     axes[0].set_ylabel(r"coupling $K_{ij} / \sqrt{K_{ii} K_{jj}}$")
-    axes[1].legend(fontsize=7, loc="center left", bbox_to_anchor=(1.02, 0.5))
+    axes[1].legend(fontsize=8, loc="center left", bbox_to_anchor=(1.02, 0.5),
+                   title="coupling of", title_fontsize=8)
     figure.suptitle(_radial_conditions(data), fontsize=9)
     save(figure, figures, "cross_terms.png")
 
 
 def _geometry(results, figures):
     axial, radial = result(results, "fig06_07_axial"), result(results, "fig08_09_radial")
-    figure, axes = plt.subplots(1, 3, figsize=(12, 3.6))
+    figure, axes = subplots(1, 3, figsize=(12, 3.6))
     for name, data, load, axis in (("axial_stiffness", axial, axial.axial_load, axes[0]),
                                    ("radial_stiffness", radial, radial.radial_load, axes[1])):
         ratio = data[name].sel(form="fixed_angle") / data[name].sel(form="jones")
@@ -146,7 +151,7 @@ def _geometry(results, figures):
 def _contact_constant(results, figures):
     data = result(results, "contact_constant")
     constant = data.hertz_contact_constant
-    figure, axis = plt.subplots(figsize=(5.5, 3.8))
+    figure, axis = subplots(figsize=(5.5, 3.8))
     for outer in data.outer_curvature_ratio.values:
         axis.plot(data.inner_curvature_ratio,
                   _per_m(constant.sel(outer_curvature_ratio=outer)) / 1e10,
@@ -184,34 +189,36 @@ def unstated_reach(results: Path) -> dict:
 def _unstated(results, figures):
     data = result(results, "unstated_inputs")
     reach = unstated_reach(results)
-    figure, (left, middle, right) = plt.subplots(1, 3, figsize=(13, 3.9))
+    figure, (left, middle, right) = subplots(1, 3, figsize=(13, 4.6))
     constant, agrees = reach.pop("contact_constant")
     scaled = (constant / 1e10).assign_attrs(units="1e10 N/m^1.5", long_name="Hertz K")
     histogram(left, scaled.to_dataset(name="K"), "K", bins=30)
     left.axvspan((_PAPER_CONSTANT - 1.06e9) / 1e10, (_PAPER_CONSTANT + 1.06e9) / 1e10,
-                 color="C2", alpha=0.3, label="paper's K within tolerance")
+                 color="C2", alpha=0.3, label="paper's K (Table 1)\nwithin tolerance")
     left.set(xlabel=r"Hertz contact constant K [1e10 N/m$^{1.5}$]")
-    left.set_title(f"within tolerance: {100 * agrees.mean():.0f} % of the samples", fontsize=8)
-    left.legend(fontsize=7)
+    left.set_title(f"K within tolerance: {100 * agrees.mean():.0f} % of the samples",
+                   fontsize=8)
+    left.legend(fontsize=7, loc="upper center")
     shown = middle.scatter(data.inner_curvature_ratio, data.outer_curvature_ratio,
                            c=scaled.values, s=4)
-    figure.colorbar(shown, ax=middle, label=r"K [1e10 N/m$^{1.5}$]")
-    middle.set(xlabel="inner curvature ratio fi", ylabel="outer curvature ratio fo")
-    middle.set_title("Hertz K over the drawn ratios (contact_constant.png: K against fi)",
-                     fontsize=8)
+    figure.colorbar(shown, ax=middle, label=r"Hertz K [1e10 N/m$^{1.5}$]")
+    middle.set(xlabel="inner groove curvature ratio fi", ylabel="outer groove curvature ratio fo")
+    middle.set_title("Hertz K over the drawn curvature ratios", fontsize=8)
     edges = np.linspace(min(float(r.min()) for r, _ in reach.values()) - 0.01,
                         max(float(r.max()) for r, _ in reach.values()) + 0.01, 50)
     for name, (rise, agrees) in reach.items():
         form = name.removeprefix("radial_stiffness_rises_")
         histogram(right, rise.to_dataset(name="rise"), "rise", bins=edges,
-                  style={"alpha": 0.7, "label": f"{_FORMS[form]}: rises in "
-                         f"{100 * agrees.mean():.0f} %"})
+                  style={"alpha": 0.7, "label": f"{_FORMS[form]}:\nrises in "
+                         f"{100 * agrees.mean():.0f} % of the samples"})
     right.axvline(1.0, color="k", ls=":")
-    right.set(xlabel="radial stiffness at 3000 N / at 500 N")
-    right.legend(fontsize=7)
+    right.set(xlabel="radial stiffness at 3000 N / at 500 N (> 1: rises)")
+    right.set_title("Does the radial stiffness rise with load (as the paper states)?",
+                    fontsize=8)
+    # Below the panel: a bar of all the samples in one bin stands above any corner.
+    right.legend(fontsize=7, loc="upper center", bbox_to_anchor=(0.5, -0.2), ncol=2)
     figure.suptitle(conditions(data, "axial_load", "contact_constant", width=None)
-                    + "; fi, fo, clearance drawn (Latin hypercube)", fontsize=9)
-    figure.tight_layout()
+                    + "; drawn (Latin hypercube): fi, fo, clearance", fontsize=9)
     save(figure, figures, "unstated_inputs.png")
 
 

@@ -5,13 +5,15 @@ section 3.1's cases again with a thin pocket film (``eccentricity_thin_film``), 
 pocket arcs can touch dry.
 Results are selected by quantity (``at``) and shown in the units chosen here (``in_unit``),
 whatever units the files store them in."""
+import textwrap
 from pathlib import Path
 
-import matplotlib.pyplot as plt
+import matplotlib
 import numpy as np
-from matplotlib.colors import TwoSlopeNorm
+from matplotlib.colors import ListedColormap, Normalize, TwoSlopeNorm
+from matplotlib.ticker import MaxNLocator
 
-from bearing_sweep.plotting import at, conditions, in_unit, label, result, save
+from bearing_sweep.plotting import at, conditions, in_unit, label, result, save, subplots
 
 #: The paper's eccentricity cases (e_r, e_a), in the order of its legends.
 CASES = (("0 mm", "0 mm"), ("2 mm", "0 mm"), ("0 mm", "2 mm"), ("2 mm", "2 mm"))
@@ -39,16 +41,18 @@ FIGURES = {
                                         "element over the settled half, in the pocket with "
                                         "the largest force, for the four eccentricities "
                                         "(arc elements 1 and 16: the arcs' edges at the cage "
-                                        "bore, 8 and 9: at its outside diameter).",
+                                        "bore, 8 and 9: at its outside diameter); a run "
+                                        "whose arcs never touch dry says so in its panel "
+                                        "(the flooded film carries the rollers).",
     "fig24_end_clearance_eccentricity.png": "Fig. 24: smallest gap between the roller end "
                                             "faces and their pockets' end faces over the "
                                             "settled half and all rollers, e_r = e_a = 2 mm "
-                                            "(negative: dry contact; blank: no cage face "
+                                            "(negative: dry contact; grey: no cage face "
                                             "there). The face seen along the roller's axis, "
                                             "0 deg radially outwards.",
     "fig25_rib_clearance_eccentricity.png": "Fig. 25: smallest gap between the roller end "
                                             "faces and the inner ring's ribs, same run and "
-                                            "view (blank: above the rib).",
+                                            "view (grey: above the rib).",
     "fig26_whirl_misalignment.png": "Fig. 26: path of the cage's geometric centre over the "
                                     "settled half, aligned and with the inner ring turned "
                                     "1 deg about X and about Y; sigma_b of the mass centre "
@@ -98,9 +102,17 @@ def _misalignment(results):
 
 
 def _name(case) -> str:
+    """A run's name as the paper writes it: its radial and axial cage mass eccentricity, or
+    its misalignment."""
     if isinstance(case, tuple):
-        return f"e_r = {case[0]}, e_a = {case[1]}"
+        return f"$e_r$ = {case[0]}, $e_a$ = {case[1]}"
     return MISALIGNED.get(case, case)
+
+
+def _sigma(run) -> str:
+    """Eq. 28's speed deviation ratio of the mass centre and of the geometric centre."""
+    return (rf"$\sigma_b$ = {float(run.whirl_deviation_ratio):.3f} (mass centre), "
+            f"{float(run.centre_whirl_deviation_ratio):.3f} (geometric)")
 
 
 def _settled(run):
@@ -113,8 +125,10 @@ def _film(data) -> str:
     return "flooded pocket film" if share == 1 else f"{share:.0%} of the pocket arcs under oil"
 
 
-def _title(data, what: str) -> str:
-    return conditions(data, "radial_load", "speed", width=None) + "; " + what
+def _title(data, what: str, figure=None) -> str:
+    """The conditions of a run and what the figure shows, wrapped to ``figure``'s width."""
+    text = conditions(data, "radial_load", "speed", width=None) + "; " + what
+    return text if figure is None else textwrap.fill(text, int(13 * figure.get_figwidth()))
 
 
 def draw(results: Path, figures: Path):
@@ -144,15 +158,14 @@ def draw(results: Path, figures: Path):
 
 def _orbits(runs: dict, data, figures: Path, file: str):
     """One panel per run: the geometric centre's path over the settled half, in um."""
-    figure, axes = plt.subplots(1, len(runs), figsize=(3.6 * len(runs), 3.9))
+    figure, axes = subplots(1, len(runs), figsize=(3.9 * len(runs), 3.9))
     for axis, (case, run) in zip(axes, runs.items()):
         keep = _settled(run)
         x, y = in_unit(run.cage_x, "um"), in_unit(run.cage_y, "um")
         axis.plot(x.values[keep], y.values[keep], lw=0.5)
-        axis.set(xlabel=label(x), ylabel=label(y),
-                 title=f"{_name(case)}\nsigma_b = {float(run.whirl_deviation_ratio):.3f} "
-                       f"(mass), {float(run.centre_whirl_deviation_ratio):.3f} (geom.)")
-        axis.title.set_fontsize(9)
+        axis.set(xlabel=label(x, long=True), ylabel=label(y, long=True),
+                 title=f"{_name(case)}\n{_sigma(run)}")
+        axis.title.set_fontsize(8)
         axis.set_aspect("equal", adjustable="datalim")
         axis.grid(alpha=0.3)
     figure.suptitle(_title(data, "geometric centre of the cage, settled half"), fontsize=9)
@@ -167,7 +180,7 @@ def _histories(runs: dict, data, figures: Path, suffix: str, legend: str):
              ("roller_skew", "deg", "skew", f"roller {ROLLER}: skew"),
              ("roller_tilt", "deg", "tilt", f"roller {ROLLER}: tilt"))
     for number, (variable, unit, name, what) in zip(numbers, shown):
-        figure, axis = plt.subplots(figsize=(7, 3.9))
+        figure, axis = subplots(figsize=(8.6, 3.9))
         for case, run in runs.items():
             values = run[variable]
             if "roller" in values.dims:
@@ -176,7 +189,8 @@ def _histories(runs: dict, data, figures: Path, suffix: str, legend: str):
             time = in_unit(run.elapsed_time, "ms")
             axis.plot(time, values, lw=0.6, label=_name(case))
         axis.set(xlabel=f"{_TIME} [ms]", ylabel=f"{what} [{unit}]")
-        axis.legend(fontsize=7, title=legend, title_fontsize=7)
+        axis.legend(fontsize=7, title=legend, title_fontsize=7, loc="center left",
+                    bbox_to_anchor=(1.02, 0.5))  # beside the histories, not over them
         axis.grid(alpha=0.3)
         axis.set_title(_title(data, what), fontsize=9)
         save(figure, figures, f"fig{number}_{name}_{suffix}.png")
@@ -184,50 +198,62 @@ def _histories(runs: dict, data, figures: Path, suffix: str, legend: str):
 
 def _arc_maps(runs: dict, data, figures: Path, file: str):
     """Per run: the pocket whose arc saw the largest dry force, its elements' largest forces
-    over arc elements (across the arcs) x axial elements."""
-    figure, axes = plt.subplots(1, len(runs), figsize=(3.8 * len(runs) + 1, 3.6),
-                                squeeze=False)
+    over arc elements (across the arcs) x axial elements; a run whose arcs never touched dry
+    says so in its panel (the oil film carried the rollers: there is no force to map)."""
+    figure, axes = subplots(1, len(runs), figsize=(3.8 * len(runs) + 1, 3.6), squeeze=False)
     for axis, (case, run) in zip(axes[0], runs.items()):
         force = in_unit(run.pocket_arc_force, "N")
         peak = force.max(["arc_axial", "arc_angle"])
+        if float(peak.max()) <= 0:
+            axis.text(0.5, 0.5, "no dry contact\non any pocket arc\nin the settled half:\n"
+                      "the oil film carries\nthe rollers", transform=axis.transAxes,
+                      ha="center", va="center", fontsize=10)
+            axis.set(xticks=[], yticks=[], title=_name(case))
+            axis.title.set_fontsize(9)
+            continue
         pocket = int(peak.idxmax("roller"))
         one = force.sel(roller=pocket).transpose("arc_axial", "arc_angle")
         image = axis.pcolormesh(one.arc_angle, one.arc_axial, one, shading="nearest",
-                                cmap="magma_r", vmin=0, vmax=max(float(one.max()), 1.0))
+                                cmap="magma_r", vmin=0, vmax=float(one.max()))
         figure.colorbar(image, ax=axis, label="largest dry force [N]")
-        contact = "" if float(one.max()) > 0 else "\n(no dry arc contact)"
         half = one.arc_angle.size // 2  # the arcs' outer edges meet in the middle
-        axis.set(xlabel=f"arc element across both arcs\n({half}, {half + 1}: at the cage's "
-                        "outside diameter)", ylabel="axial element",
-                 title=f"{_name(case)}, pocket {pocket}{contact}")
+        axis.set(xlabel=f"arc element number across both arcs\n({half}, {half + 1}: at the "
+                        "cage's outside diameter)", ylabel="axial element number",
+                 title=f"{_name(case)}, pocket {pocket}")
+        axis.xaxis.set_major_locator(MaxNLocator(integer=True))
         axis.title.set_fontsize(9)
-    figure.suptitle(_title(data, f"pocket arcs, settled half; {_film(data)}"), fontsize=9)
+    figure.suptitle(_title(data, f"pocket arcs, settled half; {_film(data)}", figure),
+                    fontsize=9)
     save(figure, figures, file)
 
 
 #: The bars of the flooded-against-thin-film summary: output, unit, panel title.
 _SUMMARY = (("mean_cage_slip", "%", "mean cage slip [%]"),
             ("mean_roller_slip", "%", "mean roller slip [%]"),
-            ("whirl_deviation_ratio", "1", "sigma_b, mass centre"),
-            ("centre_whirl_deviation_ratio", "1", "sigma_b, geometric centre"),
+            ("whirl_deviation_ratio", "1", r"$\sigma_b$ of the mass centre"),
+            ("centre_whirl_deviation_ratio", "1", r"$\sigma_b$ of the geometric centre"),
             ("pocket_arc_events", "1", "dry pocket-arc contacts begun"))
 
 
 def _film_summary(flooded: dict, thin: dict, data, figures: Path, file: str):
-    """Grouped bars: each eccentricity case's settled numbers, flooded beside thin film."""
-    figure, axes = plt.subplots(1, len(_SUMMARY), figsize=(3.3 * len(_SUMMARY), 3.8))
+    """Grouped bars: each eccentricity case's settled numbers, flooded beside thin film, each
+    bar with its value (a bar of a thousandth is not seen)."""
+    figure, axes = subplots(1, len(_SUMMARY), figsize=(3.3 * len(_SUMMARY), 4.0))
     place, width = np.arange(len(CASES)), 0.38
     for axis, (name, unit, what) in zip(axes, _SUMMARY):
         for shift, (film, runs) in zip((-width / 2, width / 2),
                                        (("flooded", flooded), ("thin film", thin))):
-            axis.bar(place + shift, [float(in_unit(runs[c][name], unit)) for c in CASES],
-                     width, label=film)
+            bars = axis.bar(place + shift, [float(in_unit(runs[c][name], unit)) for c in CASES],
+                            width, label=film)
+            axis.bar_label(bars, fmt=lambda v: f"{v:.0f}" if abs(v) >= 100 else f"{v:.3g}",
+                           fontsize=6, rotation=90, padding=2)
         axis.set_xticks(place, [f"{c[0].split()[0]}, {c[1].split()[0]}" for c in CASES],
                         fontsize=7)
-        axis.set(xlabel="e_r, e_a [mm]", title=what)
-        axis.title.set_fontsize(9)
+        axis.set(xlabel="$e_r$, $e_a$ [mm]", ylabel=what)
+        axis.margins(y=0.25)  # room for the values above the bars
         axis.grid(alpha=0.3, axis="y")
-    axes[0].legend(fontsize=7)
+    handles, names = axes[0].get_legend_handles_labels()
+    figure.legend(handles, names, fontsize=8, loc="upper right", ncol=2)
     figure.suptitle(_title(data, f"settled half; thin film: {_film(data)}"), fontsize=9)
     save(figure, figures, file)
 
@@ -243,28 +269,58 @@ def _face_map(run, variable: str, figures: Path, file: str, case: str):
     rings, angles = gap.face_ring.size, gap.face_angle.size
     ring_edges = radius * np.sqrt(np.arange(rings + 1) / rings)
     angle_edges = 2 * np.pi * np.arange(angles + 1) / angles
-    # Red below zero (dry contact) and blue above, each side on its own scale: a contact of
-    # tenths of a micrometre stays visible beside gaps of micrometres.
     low, high = (float(f(gap)) if np.isfinite(gap).any() else 0.0 for f in (np.nanmin,
                                                                               np.nanmax))
-    scale = TwoSlopeNorm(vcenter=0.0, vmin=min(low, -1e-3), vmax=max(high, 1e-3))
-    figure, axes = plt.subplots(1, 2, figsize=(10, 4.6), subplot_kw={"projection": "polar"},
-                                gridspec_kw={"wspace": 0.45})
+    colours, scale, ticks = _gap_scale(low, high)
+    figure, axes = subplots(1, 2, figsize=(10, 5.2), subplot_kw={"projection": "polar"})
+    figure.subplots_adjust(left=0.04, right=0.8, top=0.8, bottom=0.2, wspace=0.35)
+    # Few round radii, on a spoke between the angle labels: five sqrt-spaced rings overlap.
+    radii = [r for r in MaxNLocator(3).tick_values(0, radius) if 0 < r <= radius]
     for axis, end in zip(axes, gap.end.values):
         one = gap.sel(end=end).transpose("face_ring", "face_angle")
         image = axis.pcolormesh(angle_edges, ring_edges, np.ma.masked_invalid(one.values),
-                                cmap="RdBu", norm=scale)
-        axis.set_title(f"{end} end (smallest {float(one.min()):.3g} um)", fontsize=9)
-        axis.set_yticks(ring_edges[1:])
-        axis.set_yticklabels([f"{r:.1f} mm" for r in ring_edges[1:]], fontsize=6)
+                                cmap=colours, norm=scale)
+        axis.set_title(f"{end} end: smallest {float(one.min()):.3g} um", fontsize=9, pad=14)
+        axis.set_ylim(0, radius)
+        axis.set_facecolor("0.8")  # where the face has no counterpart: apart from a small gap
+        axis.set_yticks(radii, [f"{r:g} mm" for r in radii], fontsize=7)
+        axis.set_rlabel_position(112.5)
+        for text in axis.get_yticklabels():  # legible over the colours
+            text.set_bbox({"facecolor": "white", "alpha": 0.7, "linewidth": 0, "pad": 1})
         axis.tick_params(axis="x", labelsize=7)
-    ticks = [scale.vmin, scale.vmin / 2, 0.0, scale.vmax / 2, scale.vmax]
-    figure.colorbar(image, ax=axes, label=f"{variable.replace('_', ' ')} [um]", shrink=0.8,
-                    ticks=ticks, format="%.2g")
+    bar = figure.colorbar(image, cax=figure.add_axes((0.85, 0.25, 0.02, 0.5)), ticks=ticks)
+    bar.set_label(f"{run[variable].attrs['long_name']} [um]\n(below 0: overlap, dry contact)",
+                  fontsize=8)
+    bar.ax.tick_params(labelsize=7)
+    counterpart = "the pocket's end face" if variable == "pocket_end_clearance" else "the rib"
+    figure.text(0.42, 0.04,
+                "Each roller end face seen along the roller's axis: angle from the radial "
+                "direction (0 deg: radially outwards),\nradius from the roller's axis (face "
+                f"radius {radius:.2g} mm). Red: the face overlaps {counterpart} (dry contact); "
+                f"blue: a gap;\ngrey: {counterpart} does not reach there.",
+                ha="center", fontsize=7.5)
     figure.suptitle(_title(run, f"{case}; smallest over rollers and the settled half"),
                     fontsize=9)
-    figure.savefig(Path(figures) / file, dpi=110)  # tight_layout does not suit polar axes
-    plt.close(figure)
+    save(figure, figures, file, tight=False)  # tight_layout does not suit polar axes
+
+
+def _gap_scale(low: float, high: float):
+    """Colours, scale and colour-bar ticks of a gap from ``low`` to ``high`` [um]: red below
+    zero (dry contact) and blue above, each side on its own scale, so that a contact of
+    tenths of a micrometre stays visible beside gaps of micrometres; a side the map does not
+    reach is left out of the bar."""
+    colours = matplotlib.colormaps["RdBu"]
+    if low < 0 < high:
+        ticks = [t for side in ((low, 0.0), (0.0, high))
+                 for t in MaxNLocator(3).tick_values(*side) if low <= t <= high]
+        return colours, TwoSlopeNorm(vcenter=0.0, vmin=low, vmax=high), sorted(set(ticks))
+    if high <= 0:  # every element touches: the red half
+        low = min(low, -1e-3)
+        half, side = ListedColormap(colours(np.linspace(0.0, 0.5, 128))), (low, 0.0)
+    else:  # no element touches: the blue half
+        half, side = ListedColormap(colours(np.linspace(0.5, 1.0, 128))), (0.0, high)
+    ticks = [t for t in MaxNLocator(4).tick_values(*side) if side[0] <= t <= side[1]]
+    return half, Normalize(*side), ticks
 
 
 # -- the stated conclusions, as numbers

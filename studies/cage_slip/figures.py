@@ -4,10 +4,10 @@ states its conditions; results are selected by quantity (``at``), whatever unit 
 is stored in."""
 from pathlib import Path
 
-import matplotlib.pyplot as plt
 import numpy as np
 
-from bearing_sweep.plotting import at, family, label, result, save
+from bearing_sweep.plotting import (at, conditions, family, label, result, save, shown_unit,
+                                    subplots)
 
 FIGURES = {
     "fig17_load_speed.png": "Fig. 17: steady cage slip of the test bearing against radial load "
@@ -36,15 +36,10 @@ FIGURES = {
 }
 
 
-def conditions(data, *more) -> str:
-    """One line of a result's conditions: its bearing, and speed, load, oil temperature and
-    cage eccentricity where the result holds them fixed (each in its stored unit)."""
-    parts = [data.attrs.get("bearing", "")]
-    for name, prefix in (("speed", ""), ("radial_load", ""), ("oil_temperature", "oil "),
-                         ("cage_eccentricity", "cage eccentricity ")):
-        if name in data.coords and data[name].ndim == 0:
-            parts.append(f"{prefix}{float(data[name]):g} {data[name].attrs.get('units', '')}")
-    return ", ".join(p for p in (*parts, *more) if p)
+def _title(data, *names, note: str = "") -> str:
+    """A result's bearing and the inputs ``names`` it holds fixed, as read from the file, then
+    ``note``."""
+    return conditions(data, *names, width=None) + (f"; {note}" if note else "")
 
 
 def draw(results: Path, figures: Path):
@@ -52,42 +47,47 @@ def draw(results: Path, figures: Path):
     _fig17(results, figures)
 
     orbit = result(results, "roller_slip_orbit")
-    figure, axis = plt.subplots(figsize=(6, 3.8))
+    figure, axis = subplots(figsize=(6, 3.8))
     for load in orbit.radial_load.values:
         point = orbit.sel(radial_load=load)
         angle = (point.orbit_angle + 180) % 360 - 180
         order = np.argsort(angle.values)
         axis.plot(angle.values[order], point.roller_slip.values[order],
                   label=f"{load:g} {orbit.radial_load.attrs['units']}")
-    axis.set(xlabel="orbit position from the load line [deg]", ylabel=label(orbit.roller_slip),
-             title=conditions(orbit, "steady"))
+    axis.set(xlabel="orbit position from the load line [deg]",
+             ylabel=label(orbit.roller_slip, long=True),
+             title=_title(orbit, "speed", "oil_temperature", note="steady model"))
     axis.title.set_fontsize(9)
     axis.legend(fontsize=7, title="radial load", title_fontsize=7)
     axis.grid(alpha=0.3)
     save(figure, figures, "roller_slip_orbit.png")
 
     spin = result(results, "nu2330_spin")
-    figure, axis = plt.subplots(figsize=(5.5, 3.8))
-    axis.plot(spin.oil_temperature, spin.roller_spin_ratio, "o-", ms=3)
-    for value in (84.6, 82.7):
-        axis.axhline(value, ls=":", color="k", lw=1)
-    axis.set(xlabel=label(spin.oil_temperature), ylabel=label(spin.roller_spin_ratio),
-             title=conditions(spin, "steady"))
+    figure, axis = subplots(figsize=(6.8, 3.8))
+    axis.plot(spin.oil_temperature, spin.roller_spin_ratio, "o-", ms=3, label="ours (steady)")
+    for value, text, style in ((84.6, "paper, simulated", ":"), (82.7, "paper, measured",
+                                                                  "--")):
+        axis.axhline(value, ls=style, color="k", lw=1, label=f"{text}: {value:g} %")
+    axis.set(xlabel=label(spin.oil_temperature, long=True),
+             ylabel=label(spin.roller_spin_ratio, long=True),
+             title=_title(spin, "radial_load", "speed", note="Fig. 13 of paper 002"))
     axis.title.set_fontsize(9)
+    axis.legend(fontsize=7, loc="center right")
     axis.grid(alpha=0.3)
     save(figure, figures, "nu2330_spin.png")
 
-    figure, axes = plt.subplots(1, 3, figsize=(13, 4.1), sharey=True)
+    figure, axes = subplots(1, 3, figsize=(13, 4.1), sharey=True)
     for axis, (name, variable) in zip(axes, (("temperature", "oil_temperature"),
                                              ("traction", "traction_peak_speed"),
                                              ("oil_fraction", "oil_fraction"))):
         data = result(results, f"sensitivity_{name}")
         family(axis, data[variable], data.cage_slip, "radial_load",
-               "{:g} " + data.radial_load.attrs["units"], xlabel=label(data[variable]),
-               yscale="log")
-    axes[0].set_ylabel(label(data.cage_slip))
-    figure.suptitle(conditions(data, "each input at its default where not on the x axis, "
-                               "steady, high-slip branch"), fontsize=9)
+               "{:g} " + data.radial_load.attrs["units"],
+               xlabel=label(data[variable], long=True), yscale="log")
+        axis.get_legend().set_title("radial load", prop={"size": 7})
+    axes[0].set_ylabel(label(data.cage_slip, long=True))
+    figure.suptitle(_title(data, "speed", note="each input at its default where not on the x "
+                           "axis; steady model, high-slip branch"), fontsize=9)
     save(figure, figures, "sensitivity.png")
     _transient(results, figures)
 
@@ -95,7 +95,7 @@ def draw(results: Path, figures: Path):
 def _fig17(results: Path, figures: Path):
     data = result(results, "fig17_load_speed")
     load = data.radial_load
-    figure, axis = plt.subplots(figsize=(6.5, 4.4))
+    figure, axis = subplots(figsize=(6.5, 4.4))
     for index, speed in enumerate(("6000 rpm", "9000 rpm", "12000 rpm")):
         colour = f"C{index}"
         high, low = (at(data, speed=speed, branch=b) for b in ("high_slip", "low_slip"))
@@ -109,8 +109,9 @@ def _fig17(results: Path, figures: Path):
     axis.plot([], [], "k-", lw=1.2, label="high-slip branch (from rest)")
     axis.plot([], [], "k--", lw=1.2, label="low-slip branch")
     axis.fill_between([], [], color="grey", alpha=0.3, label="two stable equilibria")
-    axis.set(xlabel=label(load), ylabel=label(data.cage_slip), yscale="log",
-             title=conditions(data, "steady; Fig. 17 of paper 002"))
+    axis.set(xlabel=label(load, long=True), ylabel=label(data.cage_slip, long=True),
+             yscale="log", title=_title(data, "oil_temperature",
+                                        note="steady model; Fig. 17 of paper 002"))
     axis.title.set_fontsize(9)
     axis.legend(fontsize=7)
     axis.grid(alpha=0.3)
@@ -120,15 +121,16 @@ def _fig17(results: Path, figures: Path):
 def _transient(results: Path, figures: Path):
     steady = at(result(results, "fig17_load_speed"), branch="high_slip")
     data = result(results, "fig17_transient")
-    figure, axis = plt.subplots(figsize=(5.5, 3.8))
+    figure, axis = subplots(figsize=(5.5, 3.8))
     for index, speed in enumerate(data.speed.values):
         text = f"{speed:g} {data.speed.attrs['units']}"
         axis.plot(steady.radial_load, at(steady, speed=text).cage_slip, color=f"C{index}",
                   label=f"{text}, steady")
         axis.plot(data.radial_load, at(data, speed=text).mean_cage_slip, "o",
                   color=f"C{index}", label=f"{text}, transient")
-    axis.set(xlabel=label(data.radial_load), ylabel=label(data.mean_cage_slip), yscale="log",
-             title=conditions(data, f"{float(data.duration):g} s runs"))
+    axis.set(xlabel=label(data.radial_load, long=True),
+             ylabel=label(data.mean_cage_slip, long=True), yscale="log",
+             title=_title(data, "duration", note="transient: settled mean"))
     axis.title.set_fontsize(9)
     axis.legend(fontsize=7)
     axis.grid(alpha=0.3)
@@ -136,13 +138,13 @@ def _transient(results: Path, figures: Path):
 
     runs = result(results, "fig18_20_eccentricity")
     settled = runs.sample_time >= 0.5 * runs.sample_time.max()
-    figure, axes = plt.subplots(1, 2, figsize=(10.5, 4.3),
+    figure, axes = subplots(1, 2, figsize=(10.5, 4.3),
                                 gridspec_kw={"width_ratios": [1, 1.4]})
     for index, eccentricity in enumerate(("0 mm", "2 mm")):
         run = at(runs, cage_eccentricity=eccentricity)
         keep = at(settled, cage_eccentricity=eccentricity).values
         ratio = float(run.whirl_deviation_ratio)
-        name = f"eccentricity {eccentricity}, sigma_b = {ratio:.3f}"
+        name = rf"{eccentricity}: $\sigma_b$ = {ratio:.3f}"
         axes[0].plot(run.cage_centre_x.values[keep], run.cage_centre_y.values[keep], lw=0.5,
                      color=f"C{index}", alpha=0.8, label=name)
         speed = run.whirl_speed.values[keep]
@@ -153,26 +155,29 @@ def _transient(results: Path, figures: Path):
     axes[0].set_aspect("equal", adjustable="datalim")
     axes[1].set(xlabel=label(runs.sample_time), ylabel="mass centre speed / its mean",
                 title="speed of the cage's mass centre (eq. 28)")
-    axes[1].legend(fontsize=7, loc="upper right")
+    axes[0].legend(fontsize=7, title="cage mass eccentricity", title_fontsize=7,
+                   loc="upper right")  # the path keeps to the middle of its panel
     for axis in axes:
         axis.title.set_fontsize(9)
         axis.grid(alpha=0.3)
-    figure.suptitle(conditions(runs, "planar transient, settled half of "
-                               f"{float(runs.duration):g} s"), fontsize=9)
+    figure.suptitle(_title(runs, "radial_load", "speed", "duration",
+                           note="planar transient, settled half"), fontsize=9)
     save(figure, figures, "fig18_whirl.png")
 
-    figure, axes = plt.subplots(1, 2, figsize=(10, 4.1))
+    figure, axes = subplots(1, 2, figsize=(10, 4.1))
     for eccentricity in runs.cage_eccentricity.values:
         run = runs.sel(cage_eccentricity=eccentricity)
         text = f"{eccentricity:g} {runs.cage_eccentricity.attrs['units']}"
         axes[0].plot(run.sample_time, run.cage_slip, lw=0.8, label=text)
         axes[1].plot(run.sample_time, run.roller_slip.sel(roller=1), lw=0.8, label=text)
-    axes[0].set(xlabel=label(runs.sample_time), ylabel=label(runs.cage_slip))
-    axes[1].set(xlabel=label(runs.sample_time), ylabel="roller 1: " + label(runs.roller_slip))
+    axes[0].set(xlabel=label(runs.sample_time), ylabel=label(runs.cage_slip, long=True))
+    axes[1].set(xlabel=label(runs.sample_time), ylabel="roller 1: spin slip "
+                f"[{shown_unit(runs.roller_slip.attrs['units'])}]")
     for axis in axes:
-        axis.legend(fontsize=7, title="cage eccentricity")
         axis.grid(alpha=0.3)
-    figure.suptitle(conditions(runs, "planar transient"), fontsize=9)
+    axes[1].legend(fontsize=7, title="cage mass eccentricity", title_fontsize=7,
+                   loc="center left", bbox_to_anchor=(1.02, 0.5))  # beside the histories
+    figure.suptitle(_title(runs, "radial_load", "speed", note="planar transient"), fontsize=9)
     save(figure, figures, "fig19_20_histories.png")
 
 

@@ -3,10 +3,11 @@ of the papers' bearings against clearance, crown, preload and axial load, from t
 results only."""
 from pathlib import Path
 
-import matplotlib.pyplot as plt
 import numpy as np
+from matplotlib.ticker import LogLocator, NullFormatter, StrMethodFormatter
 
-from bearing_sweep.plotting import at, conditions, family, in_unit, label, result, save
+from bearing_sweep.plotting import (at, conditions, family, in_unit, label, result, save,
+                                    subplots)
 
 FIGURES = {
     "clearance.png": "Bearing D (paper 000): ISO/TS 16281 reference life L10r (solid) and "
@@ -31,6 +32,7 @@ FIGURES = {
 }
 
 _LIFE_UNIT = "Mturn"  # millions of revolutions, the unit of both standards
+_LIFE_SHOWN = "$10^6$ rev"  # the same, as the standards write it
 
 
 def draw(results: Path, figures: Path):
@@ -54,7 +56,7 @@ def _life(variable):
 def _clearance(results, figures):
     data = _in_kn(result(results, "clearance"))
     data = data.assign_coords(clearance=in_unit(data.clearance, "um"))
-    figure, (left, right) = plt.subplots(1, 2, figsize=(10, 4.2))
+    figure, (left, right) = subplots(1, 2, figsize=(10, 4.2))
     for index, load in enumerate(data.radial_load.values):
         point = data.sel(radial_load=load)
         colour = f"C{index}"
@@ -65,7 +67,7 @@ def _clearance(results, figures):
         left.semilogy(point.clearance[best], reference[best], "o", color=colour)
         right.plot(point.clearance, in_unit(point.largest_contact_pressure, "MPa"), "-",
                    color=colour, label=f"Fr = {load:g} kN")
-    left.set(xlabel=label(data.clearance), ylabel=f"rating life [{_LIFE_UNIT}]",
+    left.set(xlabel=label(data.clearance), ylabel=f"rating life [{_LIFE_SHOWN}]",
              title="L10r (solid), L10 (dashed)")
     right.set(xlabel=label(data.clearance), ylabel="largest contact pressure [MPa]",
               title="Largest contact pressure")
@@ -83,7 +85,7 @@ def _crown(results, figures):
     data = _in_kn(result(results, "crown"))
     data = data.assign_coords(crown=in_unit(data.crown, "um"),
                               misalignment=in_unit(data.misalignment, "mrad"))
-    figure, (left, right) = plt.subplots(1, 2, figsize=(11.5, 4.4))
+    figure, (left, right) = subplots(1, 2, figsize=(11.5, 4.4))
     for index, tilt in enumerate(data.misalignment.values):
         for style, load in zip(("-", "--"), data.radial_load.values):
             point = data.sel(misalignment=tilt, radial_load=load)
@@ -94,7 +96,7 @@ def _crown(results, figures):
             left.semilogy(point.crown[best], life[best], "o", color=f"C{index}")
             right.plot(point.crown, in_unit(point.largest_contact_pressure, "MPa"), style,
                        color=f"C{index}", label=text)
-    left.set(xlabel=label(data.crown), ylabel=f"reference rating life L10r [{_LIFE_UNIT}]",
+    left.set(xlabel=label(data.crown), ylabel=f"reference rating life L10r [{_LIFE_SHOWN}]",
              title="L10r (dots: the longest)")
     right.set(xlabel=label(data.crown), ylabel="largest contact pressure [MPa]",
               title="Largest contact pressure")
@@ -112,13 +114,13 @@ def _preload(results, figures):
     data = result(results, "preload_71807ac")
     data = data.assign_coords(axial_load=in_unit(data.axial_load, "N"),
                               radial_load=in_unit(data.radial_load, "N"))
-    figure, (left, right) = plt.subplots(1, 2, figsize=(10, 4.2))
+    figure, (left, right) = subplots(1, 2, figsize=(10, 4.2))
     for index, load in enumerate(data.radial_load.values):
         point = data.sel(radial_load=load)
         left.semilogy(point.axial_load, _life(point.reference_rating_life), "-",
                       color=f"C{index}", label=f"Fr = {load:g} N")
         left.semilogy(point.axial_load, _life(point.basic_rating_life), "--", color=f"C{index}")
-    left.set(xlabel=label(data.axial_load), ylabel=f"rating life [{_LIFE_UNIT}]",
+    left.set(xlabel=label(data.axial_load), ylabel=f"rating life [{_LIFE_SHOWN}]",
              title="L10r (solid), L10 (dashed)")
     left.legend(fontsize=7)
     left.grid(alpha=0.3)
@@ -139,15 +141,16 @@ def _load_ratio(data):
 def _tapered(results, figures):
     data = result(results, "tapered")
     ratio = _load_ratio(data)
-    figure, (left, right) = plt.subplots(1, 2, figsize=(10, 4.2))
+    figure, (left, right) = subplots(1, 2, figsize=(10, 4.2))
     left.semilogy(ratio, _life(data.reference_rating_life), "-", label="L10r (ISO/TS 16281)")
     left.semilogy(ratio, _life(data.basic_rating_life), "--", label="L10 (ISO 281)")
     angle = float(in_unit(data.outer_contact_angle, "rad"))
-    for value, text in ((np.tan(angle), "tan(alpha)"), (1.5 * np.tan(angle), "e = 1.5 tan(alpha)")):
+    for value, text in ((np.tan(angle), r"$\tan\alpha$"),
+                        (1.5 * np.tan(angle), r"$e = 1.5 \tan\alpha$")):
         left.axvline(value, color="k", lw=0.8, ls=":")
         left.annotate(text, (value, 0.02), xycoords=("data", "axes fraction"), fontsize=7,
                       rotation=90, ha="right")
-    left.set(xlabel="Fa/Fr", ylabel=f"rating life [{_LIFE_UNIT}]", title="Rating lives")
+    left.set(xlabel="Fa/Fr", ylabel=f"rating life [{_LIFE_SHOWN}]", title="Rating lives")
     left.legend(fontsize=7)
     right.plot(ratio, in_unit(data.largest_contact_pressure, "MPa"), color="C0")
     right.set(xlabel="Fa/Fr", title="Largest contact pressure and loaded rollers")
@@ -173,16 +176,20 @@ def _modified(results, figures):
     data = _in_kn(result(results, "modified_life"))
     data = data.assign_coords(oil_temperature=in_unit(data.oil_temperature, "degC"))
     warm = at(data, oil_temperature="70 degC")
-    figure, (left, right) = plt.subplots(1, 2, figsize=(10, 4.2))
+    figure, (left, right) = subplots(1, 2, figsize=(10, 4.2))
     for name, text, style in _MODIFIED:
         left.loglog(warm.radial_load, _life(warm[name]), style, label=text)
-    left.set(xlabel=label(data.radial_load), ylabel=f"rating life [{_LIFE_UNIT}]",
-             title=f"Oil at 70 degC (kappa = {float(warm.viscosity_ratio.max()):.2f})")
+    left.set(xlabel=label(data.radial_load), ylabel=f"rating life [{_LIFE_SHOWN}]",
+             title=rf"Oil at 70 degC ($\kappa$ = {float(warm.viscosity_ratio.max()):.2f})")
     left.legend(fontsize=7)
     left.grid(alpha=0.3, which="both")
     family(right, data.radial_load, data.life_modification_factor, "oil_temperature",
            "oil at {:g} degC", plot="semilogy", xlabel=label(data.radial_load),
            ylabel="life modification factor aISO of L10rm", title="aISO (capped at 50)")
+    for scale in (left.xaxis, right.yaxis):  # 1, 2, 5, 10 on a log scale: not 10^0, 10^1
+        scale.set_major_locator(LogLocator(subs=(1, 2, 5)))
+        scale.set_major_formatter(StrMethodFormatter("{x:g}"))
+        scale.set_minor_formatter(NullFormatter())
     figure.suptitle(conditions(data, "speed", "clearance", "crown", "contamination_factor",
                                "fatigue_load_limit", "viscosity_40", "viscosity_100",
                                width=110, fatigue_load_limit="kN", crown="um"), fontsize=9)

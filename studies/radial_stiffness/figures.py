@@ -1,8 +1,8 @@
 """Paper 000's trend figures (Figs. 6-14) and its stated numbers, from the netCDF results only."""
 from pathlib import Path
 
-import matplotlib.pyplot as plt
 import numpy as np
+from matplotlib.patches import Patch
 
 from bearing_sweep.plotting import at as _at
 from bearing_sweep.plotting import histogram as _histogram
@@ -12,6 +12,7 @@ from bearing_sweep.plotting import in_unit as _in_unit
 from bearing_sweep.plotting import label as _label
 from bearing_sweep.plotting import result as _open
 from bearing_sweep.plotting import save as _save
+from bearing_sweep.plotting import subplots
 from bearing_sweep.study import Study, agreement
 
 FIGURES = {
@@ -56,6 +57,11 @@ _UNSTATED = {"crown_consistent": ("crown_0", "crown_3.2um"),
              "crown_paper": ("crown_0_paper", "crown_3.2um_paper"),
              "clearance_6kN": ("6kN_Pd_0", "6kN_Pd_40um"),
              "clearance_8kN": ("8kN_Pd_0", "8kN_Pd_40um")}
+#: What each of them changes, as a figure names it.
+_UNSTATED_TITLES = {"crown_consistent": "crown 0 to 3.2 um at 4 kN",
+                    "crown_paper": "crown 0 to 3.2 um at 4 kN, eq. 6 and 9",
+                    "clearance_6kN": "clearance Pd 0 to 40 um at 6 kN",
+                    "clearance_8kN": "clearance Pd 0 to 40 um at 8 kN"}
 
 
 def draw(results: Path, figures: Path):
@@ -74,6 +80,8 @@ def draw(results: Path, figures: Path):
 
 
 _STIFFNESS_LABEL = "radial stiffness [1e5 N/mm]"
+#: The slicing of each ``form``, as a figure names it.
+_SLICING = {"consistent": "consistent slicing", "paper": "the paper's slicing (eq. 6, 9)"}
 
 
 def _stiffness(variable):
@@ -92,7 +100,7 @@ def _title(axis, heading: str, data, *names, **shown_in):
 
 def _bearing_a(results, figures):
     data = _in_kn(_open(results, "fig06_bearing_a"))
-    figure, axis = plt.subplots(figsize=(5, 3.6))
+    figure, axis = subplots(figsize=(5, 3.6))
     axis.plot(data.radial_load, _stiffness(data.radial_stiffness), "o-", ms=3)
     axis.set(xlabel=_label(data.radial_load), ylabel=_STIFFNESS_LABEL)
     _title(axis, "Bearing A (Table 1)", data, "speed", "clearance", "crown", "slices")
@@ -102,7 +110,7 @@ def _bearing_a(results, figures):
 
 def _bearing_b(results, figures):
     data = _in_kn(_open(results, "fig07_bearing_b"))
-    figure, axis = plt.subplots(figsize=(5, 3.6))
+    figure, axis = subplots(figsize=(5, 3.6))
     _family(axis, data.radial_load, _stiffness(data.radial_stiffness), "length", "{}",
             xlabel=_label(data.radial_load), ylabel=_STIFFNESS_LABEL)
     _title(axis, "Bearing B (Table 2), effective length l", data, "speed", "clearance",
@@ -113,7 +121,7 @@ def _bearing_b(results, figures):
 def _bearing_c(results, figures):
     data = _open(results, "fig08_bearing_c")
     step = float(_in_unit(data.perturbation, "mm"))
-    figure, axis = plt.subplots(figsize=(5, 3.6))
+    figure, axis = subplots(figsize=(5, 3.6))
     axis.plot(data.speed, _stiffness(data.radial_stiffness),
               label="implicit differentiation (eq. 16)")
     axis.plot(data.speed, _stiffness(data.perturbation_stiffness), "--",
@@ -129,12 +137,12 @@ def _crown(results, figures):
     data = _open(results, "fig09_crown")
     data = data.assign_coords(crown=_in_unit(data.crown, "um"))
     displacement = _in_unit(data.radial_displacement, "um")
-    figure, axes = plt.subplots(2, 2, figsize=(9, 6.6), sharex=True)
+    figure, axes = subplots(2, 2, figsize=(9, 6.6), sharex=True)
     for row, form in enumerate(data.form.values):
         _family(axes[row, 0], data.crown, displacement.sel(form=form), "slices", "k = {}",
-                ylabel=_label(displacement), title=f"{form} slicing: displacement")
+                ylabel=_label(displacement), title=f"{_SLICING[form]}: displacement")
         _family(axes[row, 1], data.crown, _stiffness(data.radial_stiffness.sel(form=form)),
-                "slices", "k = {}", ylabel=_STIFFNESS_LABEL, title=f"{form} slicing: stiffness")
+                "slices", "k = {}", ylabel=_STIFFNESS_LABEL, title=f"{_SLICING[form]}: stiffness")
     for axis in axes[1]:
         axis.set_xlabel("crown cmax [um]")
     figure.suptitle(_conditions(data, "radial_load", "speed", "clearance", "crown_profile"),
@@ -144,7 +152,7 @@ def _crown(results, figures):
 
 def _clearance(results, figures):
     data = _open(results, "fig10_clearance")
-    figure, (left, right) = plt.subplots(1, 2, figsize=(10, 4.2))
+    figure, (left, right) = subplots(1, 2, figsize=(10, 4.2))
     count = data.roller.size
     azimuth = (float(_in_unit(data.cage_position, "degree"))
                + 360.0 * (data.roller - 1) / count)
@@ -172,12 +180,12 @@ def _clearance(results, figures):
 def _load_clearance(results, figures):
     data = _in_kn(_open(results, "fig11_12_load_clearance"))
     fixed = ("speed", "crown", "slices")
-    figure, axis = plt.subplots(figsize=(5, 3.6))
+    figure, axis = subplots(figsize=(5, 3.6))
     _family(axis, data.radial_load, _stiffness(data.radial_stiffness), "clearance",
             "Pd = {:g} mm", xlabel=_label(data.radial_load), ylabel=_STIFFNESS_LABEL)
     _title(axis, "Bearing D, diametral clearance Pd", data, *fixed)
     _save(figure, figures, "fig11_load_clearance.png")
-    figure, axis = plt.subplots(figsize=(5, 3.6))
+    figure, axis = subplots(figsize=(5, 3.6))
     counts = _at(data.loaded_rollers, clearance=["0 mm", "0.01 mm", "0.02 mm"])
     _family(axis, data.radial_load, counts, "clearance", "Pd = {:g} mm", plot="step",
             xlabel=_label(data.radial_load), ylabel="loaded rollers", ylim=(0, 9))
@@ -188,7 +196,7 @@ def _load_clearance(results, figures):
 
 def _crown_load(results, figures):
     data = _in_kn(_open(results, "fig13_crown_load"))
-    figure, axis = plt.subplots(figsize=(5, 3.6))
+    figure, axis = subplots(figsize=(5, 3.6))
     _family(axis, data.radial_load, _stiffness(data.radial_stiffness), "crown",
             "cmax = {:g} mm", xlabel=_label(data.radial_load), ylabel=_STIFFNESS_LABEL)
     _title(axis, "Bearing D, crown cmax", data, "speed", "clearance", "slices")
@@ -198,7 +206,7 @@ def _crown_load(results, figures):
 def _speed_load(results, figures):
     data = _in_kn(_open(results, "fig14_speed_load"))
     displacement = _in_unit(data.radial_displacement, "um")
-    figure, (left, right) = plt.subplots(1, 2, figsize=(10, 4.2))
+    figure, (left, right) = subplots(1, 2, figsize=(10, 4.2))
     _family(left, data.speed, displacement, "radial_load", "Fr = {:g} kN",
             xlabel=_label(data.speed), ylabel=_label(displacement), title="Displacement")
     _family(right, data.speed, _stiffness(data.radial_stiffness), "radial_load",
@@ -213,11 +221,12 @@ def _speed_load(results, figures):
 def _slices(results, figures):
     data = _open(results, "slices_convergence")
     relative = 100 * (data.radial_stiffness / data.radial_stiffness.sel(slices=1000) - 1)
-    figure, axes = plt.subplots(1, 2, figsize=(10, 4.2), sharey=True)
+    figure, axes = subplots(1, 2, figsize=(10, 4.2), sharey=True)
     for axis, form in zip(axes, data.form.values):
-        axis.axvline(60, color="k", lw=0.8, ls=":")
+        axis.axvline(60, color="k", lw=0.8, ls=":", label="k = 60, the paper's")
         _family(axis, data.slices, relative.sel(form=form), "effective_length", "l = {:g} mm",
-                plot="semilogx", xlabel="slices k", title=f"{form} slicing")
+                plot="semilogx", xlabel="slices k", title=_SLICING[form])
+        axis.get_legend().set_title("roller length", prop={"size": 7})
     axes[0].set_ylabel("stiffness relative to k = 1000 [%]")
     figure.suptitle(_conditions(data, "radial_load", "speed", "crown", "clearance"),
                     fontsize=9)
@@ -236,14 +245,14 @@ def _contact_constant(results, figures):
         values = _stated_percentages(point.radial_stiffness, point.loaded_rollers)
         for (_, series), value in zip(curves.values(), values):
             series.append(value)
-    figure, axis = plt.subplots(figsize=(6, 4))
+    figure, axis = subplots(figsize=(6, 5.2))
     for index, (label, (paper, series)) in enumerate(curves.items()):
         axis.semilogx(multiple, series, "o-", color=f"C{index}", label=label)
         axis.axhline(paper, color=f"C{index}", ls=":", lw=1)
     axis.set(xlabel="K / Palmgren's K", ylabel="fall of radial stiffness [%]")
     _title(axis, "Bearing D, crown 0.004 mm unless named; dotted: the paper", data, "speed",
            "slices")
-    axis.legend(fontsize=7)
+    axis.legend(fontsize=7, loc="upper center", bbox_to_anchor=(0.5, -0.15), ncol=2)
     axis.grid(alpha=0.3)
     _save(figure, figures, "contact_constant.png")
 
@@ -268,7 +277,7 @@ def unstated_reach(results: Path) -> dict:
 
 def _unstated(results, figures):
     reach = unstated_reach(results)
-    figure, axes = plt.subplots(2, len(reach), figsize=(3.3 * len(reach), 6.2))
+    figure, axes = subplots(2, len(reach), figsize=(3.3 * len(reach), 6.8))
     for column, (name, one) in enumerate(reach.items()):
         claim, multiple, agrees = one["claim"], one["multiple"], one["agrees"]
         plausible = (multiple >= _PLAUSIBLE[0]) & (multiple <= _PLAUSIBLE[1])
@@ -277,20 +286,25 @@ def _unstated(results, figures):
         top, bottom = axes[0, column], axes[1, column]
         _histogram(top, one["fall"].to_dataset(name="fall"), "fall", bins=40)
         top.axvspan(*band, color="C2", alpha=0.3)
-        top.set_title(f"{name}: paper {claim['paper']:g} %\nwithin tolerance: "
-                      f"{100 * agrees.mean():.0f} % of all, {100 * agrees[plausible].mean():.0f}"
-                      " % in the band", fontsize=8)
+        top.set_title(f"{_UNSTATED_TITLES[name]}: paper {claim['paper']:g} %\nsamples within "
+                      f"tolerance: {100 * agrees.mean():.0f} % of all,\n"
+                      f"{100 * agrees[plausible].mean():.0f} % of those with a plausible K",
+                      fontsize=8)
         top.set_xlabel("fall of radial stiffness [%]")
         bottom.plot(multiple, one["fall"].values, ".", ms=2)
         bottom.axhspan(*band, color="C2", alpha=0.3)
         bottom.axvspan(*_PLAUSIBLE, color="0.5", alpha=0.15)
         bottom.set(xlabel="K / Palmgren's K", ylabel="fall of radial stiffness [%]")
         bottom.grid(alpha=0.3)
+    keys = [Patch(color="C2", alpha=0.3, label="the paper's value within its tolerance"),
+            Patch(color="0.5", alpha=0.15, label=f"plausible K: {_PLAUSIBLE[0]:g} to "
+                                                  f"{_PLAUSIBLE[1]:g} times Palmgren's")]
+    figure.legend(handles=keys, loc="lower center", ncol=2, fontsize=8)
     data = _open(results, "unstated_inputs")
-    figure.suptitle(_conditions(data, "speed", "slices", width=None) + "; K, roller density and "
-                    "pitch diameter drawn (Latin hypercube)", fontsize=9)
-    figure.tight_layout()
-    _save(figure, figures, "unstated_inputs.png")
+    figure.suptitle(_conditions(data, "speed", "slices", width=None) + "; drawn (Latin "
+                    "hypercube): K, roller density, pitch diameter", fontsize=9)
+    figure.tight_layout(rect=(0, 0.04, 1, 1))  # room for the legend below
+    _save(figure, figures, "unstated_inputs.png", tight=False)
 
 
 # -- the paper's stated numbers, recomputed ---------------------------------------------------

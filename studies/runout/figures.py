@@ -2,14 +2,13 @@
 results only."""
 from pathlib import Path
 
-import matplotlib.pyplot as plt
 import numpy as np
 from matplotlib.lines import Line2D
 from matplotlib.patches import Patch
 
 from bearing_sweep import analyze
 from bearing_sweep.plotting import (at, conditions, family, histogram, label, result, save,
-                                    sobol_bars)
+                                    sobol_bars, subplots)
 
 FIGURES = {
     "fig07_table3.png": "Fig. 7: runout of NU208 number 1 for the roller size arrangements of "
@@ -50,8 +49,8 @@ def draw(results: Path, figures: Path):
 
 def _table3(results, figures):
     data = result(results, "fig07_table3")
-    figure, axis = plt.subplots(figsize=(8, 3.6))
-    axis.bar(np.arange(1, data.arrangement.size + 1), data.runout)
+    figure, axis = subplots(figsize=(8, 3.6))
+    _zero_marked(axis, axis.bar(np.arange(1, data.arrangement.size + 1), data.runout))
     axis.set(xlabel="arrangement (row of Table 3)", ylabel=label(data.runout),
              xticks=np.arange(1, data.arrangement.size + 1))
     axis.set_title(conditions(data, "roller_count") + "; roller diameter errors of Table 3, "
@@ -60,9 +59,15 @@ def _table3(results, figures):
     save(figure, figures, "fig07_table3.png")
 
 
+def _zero_marked(axis, bars):
+    """Write 0 on the bars of no runout, which would otherwise look like missing ones."""
+    axis.bar_label(bars, labels=["0" if abs(bar.get_height()) < 5e-4 else "" for bar in bars],
+                   fontsize=7)
+
+
 def _amplitude(results, figures):
     data = result(results, "fig08_amplitude")
-    figure, axis = plt.subplots(figsize=(5.5, 3.8))
+    figure, axis = subplots(figsize=(5.5, 3.8))
     for order in data.roller_roundness_order.values:
         axis.plot(data.roller_roundness_amplitude, data.runout.sel(roller_roundness_order=order),
                   "o-" if order % 2 == 0 else "x--", ms=3, label=f"order {order:g}")
@@ -81,7 +86,7 @@ def _order(results, figures):
     orders = data.roller_roundness_order.values
     even = orders % 2 == 0
     counts = data.roller_count.values
-    figure, axes = plt.subplots(counts.size, 1, figsize=(10, 1.7 * counts.size + 1.4),
+    figure, axes = subplots(counts.size, 1, figsize=(10, 1.7 * counts.size + 1.4),
                                 sharex=True, sharey=True)
     for index, (axis, count) in enumerate(zip(np.atleast_1d(axes), counts)):
         runout = data.runout.sel(roller_count=count).values
@@ -109,8 +114,9 @@ def _order(results, figures):
 def _table4(results, figures):
     data = result(results, "fig11_table4")
     rows = [label for label in data.arrangement.values if not label.endswith("e")]
-    figure, axis = plt.subplots(figsize=(8, 3.6))
-    axis.bar(np.arange(len(rows)), data.runout.sel(arrangement=rows), label="Table 4")
+    figure, axis = subplots(figsize=(8, 3.6))
+    _zero_marked(axis, axis.bar(np.arange(len(rows)), data.runout.sel(arrangement=rows),
+                                label="Table 4"))
     round_odd = [f"{label}e" for label in rows if f"{label}e" in data.arrangement.values]
     positions = [rows.index(label[:-1]) for label in round_odd]
     axis.bar(positions, data.runout.sel(arrangement=round_odd), width=0.4, alpha=0.5,
@@ -128,7 +134,7 @@ def _table4(results, figures):
 
 def _roller_count(results, figures):
     data = result(results, "fig12_roller_count")
-    figure, axis = plt.subplots(figsize=(6.5, 3.8))
+    figure, axis = subplots(figsize=(6.5, 3.8))
     family(axis, data.roller_count, data.runout, "roller_roundness_order", "order {:g}",
            xlabel="number of rollers Z", ylabel=label(data.runout),
            xticks=data.roller_count.values)
@@ -143,7 +149,7 @@ def _phases(results, figures):
     count = int(data.roller_count)
     equal = at(result(results, "fig09_10_order"), roller_count=count)
     orders = data.roller_roundness_order.values
-    figure, axes = plt.subplots(orders.size, 1, figsize=(6, 1.9 * orders.size + 1.2),
+    figure, axes = subplots(orders.size, 1, figsize=(6, 1.9 * orders.size + 1.2),
                                 sharex=True)
     bins = np.arange(0.0, float(data.runout.max()) + 0.04, 0.02)
     for index, (axis, order) in enumerate(zip(np.atleast_1d(axes), orders)):
@@ -164,7 +170,7 @@ def _phases(results, figures):
 def _assembly(results, figures):
     data = result(results, "selective_assembly")
     table3 = result(results, "fig07_table3")
-    figure, axis = plt.subplots(figsize=(5.5, 3.8))
+    figure, axis = subplots(figsize=(5.5, 3.8))
     axis.hist(data.runout, bins=30, color="C0", alpha=0.7,
               label=f"random orders ({data.order_seed.size})")
     for row, text, color in ((19, "increasing (row 19)", "C3"), (20, "alternating (row 20)",
@@ -195,7 +201,7 @@ def assembly_gain(data) -> dict:
 def _tolerances(results, figures):
     data = result(results, "tolerances")
     analysis = analyze(data)
-    figure, axes = plt.subplots(1, 3, figsize=(13, 3.8))
+    figure, axes = subplots(1, 3, figsize=(13, 3.8))
     edges = np.linspace(0.0, float(data.runout.max()), 31)
     for arrangement, text in (("as_given", "random (as drawn)"),
                               ("alternating", "sorted, alternated")):

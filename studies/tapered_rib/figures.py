@@ -2,9 +2,8 @@
 results only."""
 from pathlib import Path
 
-import matplotlib.pyplot as plt
 
-from bearing_sweep.plotting import conditions, in_unit, label, result, save
+from bearing_sweep.plotting import conditions, in_unit, label, result, save, subplots
 
 FIGURES = {
     "table2_roller_loads.png": "Table 2: load of each roller under Fr = 40 kN, Fa = 27 kN; "
@@ -44,14 +43,14 @@ def _degrees(variable):
 
 def _table2(results, figures):
     data = result(results, "table2_load")
-    figure, axis = plt.subplots(figsize=(5.5, 3.6))
+    figure, axis = subplots(figsize=(5.5, 3.6))
     axis.bar(data.roller, data.roller_load, color="C0", label="ours")
     axis.plot(data.roller, TABLE_2, "kx", ms=7, label="paper, Table 2")
-    axis.set(xlabel="roller (1 on the radial load)", ylabel=label(data.roller_load),
+    axis.set(xlabel="roller number (roller 1 on the load line)", ylabel=label(data.roller_load),
              xticks=data.roller.values)
     axis.set_title(conditions(data, "radial_load", "axial_load", "roller_count", width=60),
                    fontsize=9)
-    axis.legend(fontsize=7)
+    axis.legend(fontsize=7, loc="upper center")  # above the unloaded rollers
     axis.grid(alpha=0.3, axis="y")
     save(figure, figures, "table2_roller_loads.png")
 
@@ -59,12 +58,12 @@ def _table2(results, figures):
 def _fig04(results, figures):
     data = result(results, "fig04_rib_angle")
     angle = _degrees(data.rib_angle)
-    figure, axes = plt.subplots(2, 3, figsize=(12, 6.4), sharex=True)
+    figure, axes = subplots(2, 3, figsize=(12, 6.4), sharex=True)
     for axis, name in zip(axes.flat, _FIG04):
         shown = in_unit(data[name], _SHOWN.get(name, data[name].attrs["units"]))
         for form in data.form.values:
             axis.plot(angle, shown.sel(form=form), "o-", ms=2, label=_FORMS[form])
-        axis.set(ylabel=label(shown))
+        axis.set(ylabel=label(shown, long=True))
         axis.grid(alpha=0.3)
     last = axes.flat[5]
     axes.flat[0].legend(fontsize=7, loc="center right")
@@ -86,7 +85,7 @@ def _fig04(results, figures):
 def _limits(results, figures):
     load, radius = result(results, "limit_axial_load"), result(results, "limit_end_radius")
     load = load.assign_coords(axial_load=in_unit(load.axial_load, "kN"))
-    figure, axes = plt.subplots(1, 2, figsize=(9, 4), sharey=True)
+    figure, axes = subplots(1, 2, figsize=(9, 4), sharey=True)
     for axis, data, x, fixed in ((axes[0], load, load.axial_load, ("radial_load",
                                                                     "roller_end_radius")),
                                  (axes[1], radius, radius.roller_end_radius, ("radial_load",
