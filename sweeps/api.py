@@ -15,7 +15,7 @@ import xarray as xr
 from .models.registry import REQUIRED, STATUS_DESCRIPTIONS, all_models
 from . import spec, zarr_store
 from .compute import RESULT_COMPLETE, Executor, Interrupts, run_sweep
-from .parts import ZARR_SUFFIX, check_output, is_zarr
+from .parts import ZARR_SUFFIX, check_output, is_zarr, path_argument
 from .spec import SpecError, Sweep
 from .store import is_result, open_result, result_engine, write_netcdf
 
@@ -75,7 +75,7 @@ def run(definition, *, output=None, client=None, workers=None, progress=True, en
     sweep = _sweep(definition)
     sweep.storage = spec.storage_options(sweep.storage, encoding, compression,
                                          lambda key: f"argument {key}")
-    output = _path_argument(output, "output")
+    output = path_argument(output, "output")
     _flag_argument(progress, "progress")
     if workers is not None and (isinstance(workers, bool) or not isinstance(workers, int)
                                 or workers < 0):
@@ -132,11 +132,12 @@ def analyze(result, *, output=None) -> xr.Dataset:
         Not a sampled result, no such file, or an output path that must not be written.
     """
     where = "the dataset"
-    output = _path_argument(output, "output")
+    output = path_argument(output, "output")
     if output is not None:
         _check_analysis_output(output)
     if not isinstance(result, xr.Dataset):
-        result = _path_argument(result, "result", "a sampled result: an xarray.Dataset or")
+        result = path_argument(result, "result", "a sampled result: an xarray.Dataset or",
+                               optional=False)
         where = str(result)
         if not is_result(result):
             raise SpecError(f"{result}: no such result file")
@@ -231,19 +232,6 @@ def _sweep(definition) -> Sweep:
         return spec.load(definition)
     raise SpecError(f"a definition is TOML text, a path or a dict, not "
                     f"{type(definition).__name__}")
-
-
-def _path_argument(value, name: str, expected: str = "") -> str | None:
-    """A path given as an argument, as a string; None stays None."""
-    if value is None:
-        return None
-    if isinstance(value, os.PathLike):
-        value = os.fspath(value)
-    if not isinstance(value, str) or not value.strip():
-        raise SpecError(f"{name}={value!r}: expected {expected or 'a'} path (a str or "
-                        "os.PathLike), not " + ("an empty one" if isinstance(value, str)
-                                                else type(value).__name__))
-    return value
 
 
 def _client_argument(client):

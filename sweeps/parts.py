@@ -60,6 +60,21 @@ def is_zarr(output) -> bool:
     return output is not None and Path(output).suffix.lower() == ZARR_SUFFIX
 
 
+def path_argument(value, name: str, expected: str = "", optional: bool = True) -> str | None:
+    """A path given to a function of the API as its argument ``name``, as a string (None
+    stays None where it is ``optional``); anything else is a :class:`SpecError` naming the
+    argument."""
+    if value is None and optional:
+        return None
+    if isinstance(value, os.PathLike):
+        value = os.fspath(value)
+    if not isinstance(value, str) or not value.strip():
+        raise SpecError(f"{name}={value!r}: expected {expected or 'a'} path (a str or "
+                        "os.PathLike), not " + ("an empty one" if isinstance(value, str)
+                                                else type(value).__name__))
+    return value
+
+
 def check_output(output, definition=None):
     """Refuse, before any computing, an output path that a sweep must not replace.
 

@@ -21,7 +21,7 @@ from matplotlib.lines import Line2D
 
 from .dependence import flag_holds, held_points, on_grid
 from .models.registry import get_model
-from .parts import is_zarr, write_durably
+from .parts import is_zarr, path_argument, write_durably
 from .plotting import conditions, in_unit, label, shown_unit, subplots
 from .spec import SpecError, suggestion
 from .store import open_result
@@ -71,6 +71,14 @@ def plot(result, variable: str | None = None, *, x: str | None = None, output=No
         output, an output with nothing to draw (one value, no value at any point), or an
         output path that must not be written (see :func:`check_figure_path`).
     """
+    if not isinstance(result, xr.Dataset):
+        result = path_argument(result, "result", "a result: an xarray.Dataset or",
+                               optional=False)
+    output = path_argument(output, "output")
+    for name, value in (("variable", variable), ("x", x)):
+        if value is not None and not isinstance(value, str):
+            raise SpecError(f"{name}={value!r}: expected the name of "
+                            + ("an output" if name == "variable" else "an axis") + ", a string")
     source = "the dataset" if isinstance(result, xr.Dataset) else str(result)
     data = result if isinstance(result, xr.Dataset) else _open(result)
     if "status" not in data or "flag_meanings" not in data["status"].attrs:

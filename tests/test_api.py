@@ -236,3 +236,17 @@ def test_an_argument_of_the_wrong_type_is_one_line_before_anything_runs(call, wo
         call()
     assert words in str(caught.value) and "\n" not in str(caught.value)
     assert list(tmp_path.iterdir()) == []
+
+
+@pytest.mark.parametrize("arguments, words", [
+    (dict(result=5), "result=5: expected a result"), (dict(result=None), "result=None"),
+    (dict(result="r.nc", variable=5), "variable=5: expected the name of an output"),
+    (dict(result="r.nc", x=["radial_load"]), "x=['radial_load']: expected the name of an axis"),
+    (dict(result="r.nc", output=5), "output=5: expected a path")])
+def test_plot_refuses_an_argument_of_the_wrong_type_in_one_line(arguments, words, tmp_path,
+                                                               monkeypatch):
+    monkeypatch.chdir(tmp_path)
+    with pytest.raises(bearing_sweep.SpecError) as caught:
+        bearing_sweep.plot(**arguments)
+    assert words in str(caught.value) and "\n" not in str(caught.value)
+    assert list(tmp_path.iterdir()) == []
