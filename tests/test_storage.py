@@ -130,7 +130,7 @@ def test_the_flags_override_the_table_and_bad_flags_are_one_line(tmp_path, capsy
 
 
 def test_the_api_takes_them_too():
-    with pytest.raises(spec.SpecError, match=r"^encoding=: 'half' is not accepted"):
+    with pytest.raises(spec.SpecError, match=r"^argument encoding: 'half' is not accepted"):
         api.run(TEXT, encoding="half", progress=False)
 
 
