@@ -5,12 +5,24 @@ a sampled result), :func:`list_models`, :func:`describe`, and :func:`plot` (:mod
 result; every mistake in what is asked is a :class:`SpecError`. The model functions are in
 :mod:`bearing_sweep.models`.
 """
-from .spec import SpecError
+import sys
 
 #: Where each name of the API lives: imported when first asked for, since xarray (the API's)
-#: and matplotlib (plot's) cost more to import than a small sweep takes to run.
+#: and matplotlib (plot's) cost more to import than a small sweep takes to run, and pint
+#: (the definitions') a good part of what the program takes to start.
 _LAZY = {"run": "api", "check": "api", "analyze": "api", "list_models": "api",
-         "describe": "api", "plot": "quicklook"}
+         "describe": "api", "plot": "quicklook", "SpecError": "spec"}
+
+
+def program(argv=None) -> int:
+    """The ``bearing-sweep`` command (:func:`bearing_sweep.cli.program`), imported here so that
+    a Ctrl-C while its modules load is one line and exit 130, as one at any later moment."""
+    try:
+        from .cli import program as command
+    except KeyboardInterrupt:
+        print("interrupted while starting: nothing was done", file=sys.stderr)
+        return 130
+    return command(argv)
 
 
 def __getattr__(name):

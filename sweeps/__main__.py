@@ -1,5 +1,5 @@
 import sys
 
-from .cli import program
+from . import program
 
 sys.exit(program())

@@ -15,7 +15,7 @@ import xarray as xr
 from .models.registry import REQUIRED, STATUS_DESCRIPTIONS, all_models
 from . import spec, zarr_store
 from .compute import RESULT_COMPLETE, Executor, Interrupts, run_sweep
-from .parts import ZARR_SUFFIX, check_output, is_zarr, path_argument
+from .parts import ZARR_SUFFIX, argument_text, check_output, is_zarr, path_argument
 from .spec import SpecError, Sweep
 from .store import is_result, open_result, result_engine, write_netcdf
 
@@ -79,7 +79,8 @@ def run(definition, *, output=None, client=None, workers=None, progress=True, en
     _flag_argument(progress, "progress")
     if workers is not None and (isinstance(workers, bool) or not isinstance(workers, int)
                                 or workers < 0):
-        raise SpecError(f"workers={workers!r}: expected 0 (in this process) or more workers")
+        raise SpecError(f"workers={argument_text(workers)}: expected 0 (in this process) or "
+                        "more workers")
     if workers is not None and client is not None:
         raise SpecError("workers and client exclude each other: the client's cluster has its "
                         "own workers")
@@ -149,7 +150,7 @@ def analyze(result, *, output=None) -> xr.Dataset:
             raise SpecError(f"{where}: not a result of bearing-sweep run "
                             f"({str(error).splitlines()[0]})") from None
     if output is not None:
-        check_output(output)
+        check_output(output, result="analysis")
     from . import analysis  # its scipy.stats only for who analyses
 
     analyzed = analysis.analyze(result, where)
@@ -201,7 +202,8 @@ def describe(name: str) -> dict:
         No model has that name (the message names the closest).
     """
     if not isinstance(name, str):
-        raise SpecError(f"name={name!r}: expected a model's name, a string (list_models() "
+        raise SpecError(f"name={argument_text(name)}: expected a model's name, a string "
+                        "(list_models() "
                         "gives them)")
     model = spec.find_model(name)
     function = model.function
@@ -241,10 +243,11 @@ def _client_argument(client):
         raise SpecError(f"client={client!r}: expected a dask.distributed.Client; for a "
                         f"scheduler's address, give Client({client!r})")
     if not all(hasattr(client, method) for method in ("submit", "scheduler_info")):
-        raise SpecError(f"client={client!r}: expected a dask.distributed.Client, not "
+        raise SpecError(f"client={argument_text(client)}: expected a dask.distributed.Client, "
+                        "not "
                         f"{type(client).__name__}")
 
 
 def _flag_argument(value, name: str):
     if not isinstance(value, bool):
-        raise SpecError(f"{name}={value!r}: expected True or False")
+        raise SpecError(f"{name}={argument_text(value)}: expected True or False")

@@ -21,8 +21,16 @@ from .spec import SpecError
 USAGE_ERROR = 2
 
 
+class _Parser(argparse.ArgumentParser):
+    """argparse's parser, a mistake in the options one line as every other mistake's (not
+    the usage block): ``--help`` shows the usage."""
+
+    def error(self, message):
+        raise SpecError(f"{self.prog}: {message} (`{self.prog} --help` lists the options)")
+
+
 def _parser() -> argparse.ArgumentParser:
-    parser = argparse.ArgumentParser(
+    parser = _Parser(
         prog="bearing-sweep", description="Parametric studies of rolling bearings.")
     commands = parser.add_subparsers(dest="command", required=True)
 
@@ -212,9 +220,10 @@ def _our_schema(path: Path) -> bool:
 
 
 def main(argv=None) -> int:
-    args = _parser().parse_args(argv)
     interrupts = Interrupts()  # of a run: once its result is in place, it is complete
+    args = None
     try:
+        args = _parser().parse_args(argv)
         if args.command == "models":
             for model in all_models().values():
                 print(f"{model.name}: {model.summary}")
@@ -297,17 +306,19 @@ def main(argv=None) -> int:
         if interrupts.result_in_place:  # after the run's own cleanup: the result is complete
             print(RESULT_COMPLETE, file=sys.stderr)
             return 0
-        print("interrupted: the finished chunks are kept; run the same command again to resume",
-              file=sys.stderr)
+        computing = args is not None and args.command in ("run", "study")
+        print("interrupted: the finished chunks are kept; run the same command again to resume"
+              if computing else "interrupted", file=sys.stderr)
         return 130
     return 0
 
 
 def program(argv=None) -> int:
-    """The ``bearing-sweep`` program: :func:`main`, its objects then frozen out of the garbage
-    collector's passes at the interpreter's shutdown, which would otherwise search every
-    object numba, pint and the model left for cycles: a fifth of a second of a small run's
-    second. Every file is closed by then, and exit handlers still run."""
+    """The ``bearing-sweep`` program (through :func:`bearing_sweep.program`, which imports
+    this module): :func:`main`, its objects then frozen out of the garbage collector's passes
+    at the interpreter's shutdown, which would otherwise search every object numba, pint and
+    the model left for cycles: a fifth of a second of a small run's second. Every file is
+    closed by then, and exit handlers still run."""
     code = main(argv)
     gc.freeze()
     return code

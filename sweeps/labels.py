@@ -253,7 +253,7 @@ def declared_values(sweep: Sweep, name: str, values: list[Value]) -> np.ndarray:
         if declared is not None and value.unit != target:
             # One conversion from what was written, tidied to 15 digits so that "4 kN" is
             # stored as 4000 N, not 4000.0000000000005.
-            magnitude = _tidy(units.convert(magnitude, units.parse_unit(value.unit), declared))
+            magnitude = units.tidy(units.convert(magnitude, units.parse_unit(value.unit), declared))
         shown.append(magnitude)
     size = max(np.size(a) for a in shown)
     if any(a.ndim for a in shown):  # a single value on a zipped axis of patterns: repeat it
@@ -296,8 +296,3 @@ def described(label: str, meaning: str, unit: str | None) -> dict:
     if comment:
         attrs["comment"] = comment
     return attrs
-
-
-def _tidy(values) -> np.ndarray:
-    values = np.asarray(values, dtype=float)
-    return np.array([float(f"{v:.15g}") for v in values.ravel()]).reshape(values.shape)

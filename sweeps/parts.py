@@ -69,21 +69,28 @@ def path_argument(value, name: str, expected: str = "", optional: bool = True) -
     if isinstance(value, os.PathLike):
         value = os.fspath(value)
     if not isinstance(value, str) or not value.strip():
-        raise SpecError(f"{name}={value!r}: expected {expected or 'a'} path (a str or "
-                        "os.PathLike), not " + ("an empty one" if isinstance(value, str)
-                                                else type(value).__name__))
+        raise SpecError(f"{name}={argument_text(value)}: expected {expected or 'a'} path (a str "
+                        "or os.PathLike), not " + ("an empty one" if isinstance(value, str)
+                                                   else type(value).__name__))
     return value
 
 
-def check_output(output, definition=None):
+def argument_text(value) -> str:
+    """An argument as a message shows it: its repr, or its type where that is long."""
+    shown = repr(value)
+    return shown if len(shown) <= 60 and "\n" not in shown else f"<{type(value).__name__}>"
+
+
+def check_output(output, definition=None, result: str = "run"):
     """Refuse, before any computing, an output path that a sweep must not replace.
 
-    Accepted: a path that does not exist yet in a folder that exists or can be made, a
-    regular netCDF file that this program wrote (its global attributes name it: only the
-    header is read), or for a ``.zarr`` output a zarr store this program wrote (its group
-    attributes name it: only they are read). Anything else (the definition itself, another
-    folder, a device, a pipe, a symbolic link, another program's file) raises
-    :class:`UnsafeOutput`; nothing is opened but a regular file's first bytes and header.
+    Accepted: a path that does not exist yet in a folder that exists or can be made, or a
+    regular netCDF file that this program wrote as the same kind of ``result``, ``"run"`` or
+    ``"analysis"`` (its global attributes say so: only the header is read; an analysis never
+    replaces the result it may have been made from, nor a run an analysis). Anything else
+    (the definition itself, another folder, a device, a pipe, a symbolic link, another
+    program's file, an earlier zarr store) raises :class:`UnsafeOutput`; nothing is opened but
+    a regular file's first bytes and header.
     """
     _check_name(output)
     output = Path(output)
@@ -119,9 +126,10 @@ def check_output(output, definition=None):
     if kind != "regular file":
         raise UnsafeOutput(f"{output}: exists and is {kind}, not an earlier result; refusing to "
                            "replace it (choose another output)")
-    reason = _not_ours(output)
+    reason = _not_ours(output, result)
     if reason:
-        raise UnsafeOutput(f"{output}: exists and is not a netCDF file written by bearing-sweep "
+        what = "a netCDF file" if result == "run" else "an analysis"
+        raise UnsafeOutput(f"{output}: exists and is not {what} written by bearing-sweep "
                            f"({reason}); refusing to replace it (remove it or choose another "
                            "output)")
 
@@ -192,8 +200,9 @@ def _file_kind(mode: int) -> str:
     return "not a regular file"
 
 
-def _not_ours(path: Path) -> str | None:
-    """Why the regular file at ``path`` is not a result of this program, or None if it is."""
+def _not_ours(path: Path, kind: str = "run") -> str | None:
+    """Why the regular file at ``path`` is not a result of this program of that ``kind``,
+    or None if it is."""
     import netCDF4
 
     try:
@@ -208,7 +217,13 @@ def _not_ours(path: Path) -> str | None:
             attributes = dataset.__dict__
     except OSError as error:
         return str(error).splitlines()[0]
-    return None if _names_us(attributes) else "its attributes do not name bearing-sweep"
+    if not _names_us(attributes):
+        return "its attributes do not name bearing-sweep"
+    found = "run" if "definition" in attributes else "analysis"  # a run's holds its definition
+    if found != kind:
+        return (f"it is the result of a {found}, not an {kind}" if kind == "analysis" else
+                f"it is an {found}, not the result of a {kind}")
+    return None
 
 
 def _not_our_store(path: Path) -> str | None:
@@ -456,7 +471,8 @@ def _remove(path: Path):
 
 def remove_stale_temporaries(output) -> list[str]:
     """Remove the temporary files of ``output`` (``.<name>.<process id>.tmp``, beside it, a
-    file or a zarr store's folder) that a run killed while writing it left. Called by the holder of the output's lock
+    file or a zarr store's folder) that a run killed while writing it left. Called by the
+    holder of the output's lock
     (:class:`OutputLock`): every writer of such a file holds the lock as long as the file
     exists, and a process's lock dies with it, however it ends, so none of them is being
     written (on this host or another sharing the folder, whatever became of the process

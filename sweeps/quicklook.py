@@ -21,7 +21,7 @@ from matplotlib.lines import Line2D
 
 from .dependence import flag_holds, held_points, on_grid
 from .models.registry import get_model
-from .parts import is_zarr, path_argument, write_durably
+from .parts import argument_text, is_zarr, path_argument, write_durably
 from .plotting import conditions, in_unit, label, shown_unit, subplots
 from .spec import SpecError, suggestion
 from .store import open_result
@@ -77,7 +77,7 @@ def plot(result, variable: str | None = None, *, x: str | None = None, output=No
     output = path_argument(output, "output")
     for name, value in (("variable", variable), ("x", x)):
         if value is not None and not isinstance(value, str):
-            raise SpecError(f"{name}={value!r}: expected the name of "
+            raise SpecError(f"{name}={argument_text(value)}: expected the name of "
                             + ("an output" if name == "variable" else "an axis") + ", a string")
     source = "the dataset" if isinstance(result, xr.Dataset) else str(result)
     data = result if isinstance(result, xr.Dataset) else _open(result)

@@ -24,9 +24,12 @@ _RANGE_KEYS = {"start", "stop", "num", "step", "units"}
 _VALUES_KEYS = {"values", "units"}
 #: Names a result or its analysis uses: the status of each point, the [sample] axis and
 #: the blocks of its Saltelli design, and the dimensions of `analyze`'s output.
-RESERVED_NAMES = {"status", "sample", "saltelli_block", "statistic", "output", "input", "bound"}
-#: A name of a variable or dimension (CF conventions 2.3).
-AXIS_NAME = re.compile(r"[A-Za-z][A-Za-z0-9_]*")
+RESERVED_NAMES = {"status", "sample", "saltelli_block", "saltelli_replicate", "statistic",
+                  "output", "input", "bound"}
+#: A name of a variable or dimension (CF conventions 2.3), at most 64 characters.
+AXIS_NAME = re.compile(r"[A-Za-z][A-Za-z0-9_]{0,63}")
+#: The largest magnitude of an integer in a definition: what 64 bits hold.
+MAX_INTEGER = 2**63 - 1
 #: The keys of a [sample] table that are not sampled parameters.
 _SAMPLE_SETTINGS = ("n", "method", "seed")
 #: The keys of an [output] table.
@@ -407,9 +410,9 @@ class _Parser:
                       "accepted") + suggestion(str(method), sample.METHODS)
                       + f" (methods: {', '.join(sample.METHODS)})")
         seed = table.get("seed", 0)
-        if isinstance(seed, bool) or not isinstance(seed, int) or seed < 0:
-            self.fail("sample.seed", f"{seed!r}: expected an integer >= 0 (the same seed draws "
-                      "the same samples)")
+        if isinstance(seed, bool) or not isinstance(seed, int) or not 0 <= seed <= MAX_INTEGER:
+            self.fail("sample.seed", f"{_short(repr(seed))}: expected an integer from 0 to "
+                      f"{MAX_INTEGER} (the same seed draws the same samples)")
         if method == "saltelli" and n < sample.SALTELLI_MIN_N:
             self.fail("sample.n", f"{n}: a saltelli design needs at least "
                       f"{sample.SALTELLI_MIN_N} base samples (each of its "
@@ -538,9 +541,10 @@ class _Parser:
                       + suggestion(name, inputs)
                       + f" (`bearing-sweep describe {model.name}` lists them)")
         if not AXIS_NAME.fullmatch(name):
-            self.fail(key, f"{name!r} cannot name an axis: a name starts with a letter and "
-                      "holds letters, digits and underscores (CF conventions 2.3; netCDF and "
-                      "zarr read other characters as paths or refuse them)")
+            self.fail(key, f"{_short(name)!r} cannot name an axis: a name starts with a letter "
+                      "and holds letters, digits and underscores, at most 64 characters (CF "
+                      "conventions 2.3; netCDF and zarr read other characters as paths or "
+                      "refuse them)")
         taken = {o.name for o in model.outputs} | {d for o in model.outputs for d in o.dims} \
             | {f"{o.name}_units" for o in model.outputs if o.entry_units}
         if name in taken | RESERVED_NAMES:
@@ -564,17 +568,47 @@ class _Parser:
         lengths = {p: len(v) for p, v in values.items()}
         labels = raw.get("labels")
         if labels is not None:
-            if not isinstance(labels, list) or not labels or not all(
-                    isinstance(x, (str, int)) and not isinstance(x, bool) for x in labels):
-                self.fail(f"{key}.labels", "expected a non-empty list of strings or integers")
-            if len(set(labels)) != len(labels):
-                self.fail(f"{key}.labels", "labels must be unique")
+            self.check_labels(labels, f"{key}.labels")
             lengths["labels"] = len(labels)
         if len(set(lengths.values())) > 1:
             described = ", ".join(f"{p} has {n}" for p, n in lengths.items())
             self.fail(key, f"ragged zipped axis: {described} values; all must have the same number")
         return Axis(name, values, labels if labels is not None else list(range(len(
             next(iter(values.values()))))))
+
+    def check_labels(self, labels, key: str):
+        """A zipped axis' labels: strings a file stores as written, or integers in order."""
+        if not isinstance(labels, list) or not labels or not all(
+                isinstance(x, (str, int)) and not isinstance(x, bool) for x in labels):
+            self.fail(key, "expected a non-empty list of strings or integers")
+        for index, label in enumerate(labels):
+            if isinstance(label, str) and not (0 < len(label) <= 256 and label.isprintable()):
+                self.fail(f"{key}[{index}]", f"{_short(label)!r}: a label is 1 to 256 printable "
+                          "characters (no control characters: a file would not keep them)")
+            if isinstance(label, int):
+                self.fits(label, f"{key}[{index}]")
+        if len({type(x) for x in labels}) > 1:
+            self.fail(key, "labels are all strings or all integers")
+        if len(set(labels)) != len(labels):
+            self.fail(key, "labels must be unique")
+        if isinstance(labels[0], int):
+            self.monotonic(labels, key, "labels")
+
+    def monotonic(self, numbers, key: str, what: str = "values"):
+        """Refuse numbers of an axis out of order: a coordinate variable is strictly
+        monotonic (CF conventions 1.10, section 5), so that a reader can select ranges."""
+        steps = np.sign(np.diff(np.asarray(numbers, dtype=float)))
+        if len(steps) and not (np.all(steps > 0) or np.all(steps < 0)):
+            turn = int(np.argmax(steps != steps[0])) + 1  # the first value out of order
+            self.fail(f"{key}[{turn}]" if what == "values" else key,
+                      f"the {what} of an axis run in one direction, increasing or decreasing "
+                      f"(CF 1.10 section 5: a coordinate is monotonic); sort them")
+
+    def fits(self, number: int, key: str):
+        """Refuse an integer beyond what 64 bits hold (TOML's integers have no limit)."""
+        if abs(number) > MAX_INTEGER:
+            self.fail(key, f"{_short(str(number))} is too large: an integer of a definition is "
+                      f"at most {MAX_INTEGER} in magnitude")
 
     def axis_values(self, spec: Input, raw, key: str) -> list[Value]:
         if isinstance(raw, list):
@@ -594,6 +628,8 @@ class _Parser:
             self.fail(key, "empty axis: give at least one value")
         if key.count(".") == 1 and not any(np.ndim(v.si) for v in values):
             self.unique(values, key)  # a plain axis; a zipped one's columns may repeat
+            if not isinstance(values[0].si, str):
+                self.monotonic([v.si for v in values], key)
         return self.same_unit(values)
 
     def value_range(self, spec: Input, raw: dict, key: str) -> list[Value]:
@@ -616,7 +652,7 @@ class _Parser:
             if isinstance(num, bool) or not isinstance(num, int) or num < 1:
                 self.fail(f"{key}.num", f"{num!r}: expected an integer >= 1")
             self.axis_size(num, f"{key}.num")
-            shown = np.linspace(start.shown, stop_shown, num)
+            shown = units.tidy(np.linspace(start.shown, stop_shown, num))
         else:
             step = self.value(spec, raw["step"], f"{key}.step", unit, check_range=False)
             step_shown = step.shown
@@ -632,7 +668,7 @@ class _Parser:
             if count < 1:
                 self.fail(key, "empty axis: 'stop' is below 'start'")
             self.axis_size(count, f"{key}.step")
-            shown = start.shown + step_shown * np.arange(int(count))
+            shown = units.tidy(start.shown + step_shown * np.arange(int(count)))
         if spec.kind == "count":
             return [self.value(spec, float(x), f"{key}") for x in shown]
         if spec.dims:
@@ -704,6 +740,8 @@ class _Parser:
     # -- single values --------------------------------------------------------------------
     def value(self, spec: Input, raw, key: str, unit_text=None, check_range=True) -> Value:
         """One value of ``spec`` (a whole pattern for an array input)."""
+        for number in _integers(raw):
+            self.fits(number, key)
         if spec.kind == "choice":
             if not isinstance(raw, str) or raw not in spec.choices:
                 self.fail(key, f"{raw!r} is not accepted; {spec.name} is {spec.range_text()}"
@@ -925,6 +963,19 @@ def _written(raw) -> str:
     if isinstance(raw, float) and not np.isfinite(raw):
         return "nan" if np.isnan(raw) else ("-inf" if raw < 0 else "inf")
     return repr(raw) if isinstance(raw, (str, float, int)) else str(raw)
+
+
+def _integers(raw):
+    """The integers in a value as TOML gives it (a number, or a list or table of them)."""
+    if isinstance(raw, int) and not isinstance(raw, bool):
+        yield raw
+    elif isinstance(raw, (list, dict)):
+        for item in (raw.values() if isinstance(raw, dict) else raw):
+            yield from _integers(item)
+
+
+def _short(text: str) -> str:
+    return text if len(text) <= 40 else text[:37] + "..."
 
 
 def _order_key(si) -> tuple:

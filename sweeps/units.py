@@ -184,6 +184,14 @@ def convert(magnitude, unit: pint.Unit, target: pint.Unit):
     return UREG.Quantity(np.asarray(magnitude, dtype=float), unit).to(target).magnitude
 
 
+def tidy(values) -> np.ndarray:
+    """``values`` to 15 significant digits, as written: the last bit a conversion or a
+    range's arithmetic leaves is gone, so that "4 kN" is stored as 4000 N, not
+    4000.0000000000005, and a range's third step of 0.1 as 0.3."""
+    values = np.asarray(values, dtype=float)
+    return np.array([float(f"{v:.15g}") for v in values.ravel()]).reshape(values.shape)
+
+
 def from_si(values, unit_text: str):
     """SI values expressed in ``unit_text`` (the customary unit of a model output)."""
     unit, base = _unit_and_base(unit_text)

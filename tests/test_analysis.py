@@ -306,3 +306,28 @@ def test_an_output_whose_name_says_another_format_is_refused(results, tmp_path, 
     assert (tmp_path / "a.zarr" / ".zmetadata").is_file()
     assert math.isfinite(float(xr.open_dataset(tmp_path / "a.zarr", engine="zarr")
                                .radial_stiffness.sel(statistic="mean")))
+
+
+def test_an_analysis_replaces_an_earlier_analysis_only_and_a_run_a_run_only(tmp_path, capsys):
+    import shutil
+
+    result = tmp_path / "r.nc"
+    definition = tmp_path / "r.toml"
+    definition.write_text(sampled("random", n=8))
+    assert cli.main(["run", str(definition), "-o", str(result), "--workers", "0",
+                     "--quiet"]) == 0
+    other = tmp_path / "other.nc"
+    shutil.copy(result, other)
+    before = other.read_bytes()
+    assert cli.main(["analyze", str(result), "-o", str(other)]) == 2  # a run: not replaced
+    assert "is not an analysis written by bearing-sweep (it is the result of a run" in \
+        capsys.readouterr().err
+    assert other.read_bytes() == before
+    analysis = tmp_path / "a.nc"
+    assert cli.main(["analyze", str(result), "-o", str(analysis)]) == 0
+    assert cli.main(["analyze", str(result), "-o", str(analysis)]) == 0  # its own: replaced
+    capsys.readouterr()
+    assert cli.main(["run", str(definition), "-o", str(analysis), "--workers", "0"]) == 2
+    assert "it is an analysis, not the result of a run" in capsys.readouterr().err
+    with xr.open_dataset(analysis) as kept:
+        assert "statistic" in kept.dims

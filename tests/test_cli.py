@@ -173,3 +173,32 @@ def test_what_would_stop_a_study_after_its_sweeps_is_refused_before_them(tmp_pat
             "no_definitions": "study tiny has no sweep definitions (*.toml)"}[case] \
         in done.stderr
     assert not (tmp_path / "results").exists()  # nothing computed
+
+
+@pytest.mark.parametrize("options", [["run", "--workers", "1.5", "d.toml"], ["run"], [],
+                                     ["frob"], ["plot", "r.nc", "--x"], ["run", "--bogus", "d.toml"]])
+def test_a_mistaken_option_is_one_line_not_the_usage_block(options, tmp_path):
+    done = subprocess.run([BIN / "bearing-sweep", *options], cwd=tmp_path, capture_output=True,
+                          text=True, timeout=60)
+    assert done.returncode == 2
+    assert len(done.stderr.strip().splitlines()) == 1, done.stderr
+    assert done.stderr.startswith("error: bearing-sweep") and "--help` lists" in done.stderr
+    assert list(tmp_path.iterdir()) == []
+
+
+@pytest.mark.slow
+def test_ctrl_c_while_the_program_starts_is_one_line(tmp_path):
+    # From the moment Python runs the program's own code (the first few hundredths of a second
+    # are the interpreter's start-up, where a Ctrl-C is Python's to report) to the end.
+    import signal
+    import time
+
+    for delay in (0.05, 0.1, 0.15, 0.2, 0.3, 0.4, 0.6):
+        started = subprocess.Popen([BIN / "bearing-sweep", "describe", "crb_radial"], cwd=tmp_path,
+                                   stdout=subprocess.DEVNULL, stderr=subprocess.PIPE, text=True)
+        time.sleep(delay)
+        started.send_signal(signal.SIGINT)
+        error = started.communicate(timeout=60)[1]
+        assert "Traceback" not in error, (delay, error)
+        assert started.returncode in (0, 130), (delay, started.returncode, error)
+        assert len(error.strip().splitlines()) <= 1, error

@@ -1,4 +1,6 @@
 """Sweep definitions: what is accepted, and one clear line for each kind of mistake."""
+import re
+
 import numpy as np
 import pytest
 
@@ -302,3 +304,67 @@ def test_a_sweep_key_of_the_wrong_type_is_named(key, raw, words):
     with pytest.raises(SpecError) as caught:
         parse("\n".join(lines))
     assert words in str(caught.value)
+
+
+ONE_AXIS = """
+[sweep]
+model = "crb_radial"
+bearing = "paper000-D"
+[fixed]
+radial_load = "4 kN"
+[axes]
+"""
+
+
+@pytest.mark.parametrize("axis, where", [
+    ('crown = ["1 um", "3 um", "2 um"]', "axes.crown[2]"), ("slices = [60, 10, 30]", "axes.slices[2]"),
+    ('clearance = ["0.01 mm", "20 um", "0.015 mm"]', "axes.clearance[2]"),
+    ('speed = ["1000 rpm", "20 1/s", "1100 r/min"]', "axes.speed[2]")])
+def test_an_axis_out_of_order_is_refused_a_coordinate_is_monotonic(axis, where):
+    # CF 1.10 section 5: a coordinate variable is strictly monotonic.
+    with pytest.raises(SpecError, match=rf"{re.escape(where)}: the values of an axis run in one"):
+        parse(ONE_AXIS + axis)
+
+
+def test_an_axis_in_decreasing_order_and_a_range_of_tenths_are_kept_as_written():
+    sweep = parse(ONE_AXIS + 'clearance = ["0.02 mm", "10 um", "0 mm"]\n'
+                  'crown = { start = "0 um", stop = "0.3 um", step = "0.1 um" }\n')
+    assert [v.shown for v in sweep.axes[0].values["clearance"]] == [0.02, 0.01, 0]
+    assert [v.shown for v in sweep.axes[1].values["crown"]] == [0, 0.1, 0.2, 0.3]  # not ...004
+
+
+@pytest.mark.parametrize("labels, words", [
+    ('["a\\u0000", "a"]', "labels[0]: 'a\\x00': a label is 1 to 256 printable characters"),
+    ('[""]', "a label is 1 to 256 printable"), ("[3, 1, 2]", "labels: the labels of an axis run"),
+    ('[1, "a"]', "labels are all strings or all integers"),
+    ("[1, 18446744073709551616]", "is too large: an integer of a definition")])
+def test_labels_a_file_would_not_keep_as_written_are_refused(labels, words):
+    count = len(labels.split(","))
+    column = ", ".join(['"9.6 mm"'] * count)
+    with pytest.raises(SpecError) as caught:
+        parse(GOOD + f"[axes.case]\nlabels = {labels}\neffective_length = [{column}]\n")
+    assert words in str(caught.value)
+
+
+@pytest.mark.parametrize("where, text", [
+    ("fixed.poisson_ratio", "poisson_ratio = 1" + "0" * 400),
+    ("fixed.slices", "slices = 1" + "0" * 400),
+    ("axes.crown.values[1]", 'crown = { values = [0, 1' + "0" * 30 + '], units = "mm" }')])
+def test_an_integer_beyond_64_bits_is_one_line(where, text):
+    document = GOOD.replace("slices = 60\n", "").replace('crown = "0.004 mm"\n', "")
+    section = "[axes]" if where.startswith("axes") else "[fixed]"
+    with pytest.raises(SpecError, match=rf"{re.escape(where)}: 1000.* is too large"):
+        parse(document.replace(section, f"{section}\n{text}"))
+
+
+def test_a_seed_beyond_64_bits_is_refused_before_computing():
+    text = (GOOD.replace('crown = "0.004 mm"\n', "") + '[sample]\nn = 8\nmethod = "random"\n'
+            'seed = 18446744073709551616\ncrown = { distribution = "uniform", low = "0 mm", '
+            'high = "1 um" }\n')
+    with pytest.raises(SpecError, match="sample.seed: 18446744073709551616: expected an integer"):
+        parse(text)
+
+
+def test_an_axis_name_longer_than_64_characters_is_refused():
+    with pytest.raises(SpecError, match="at most 64 characters"):
+        parse(GOOD + f'[axes.{"a" * 301}]\nlabels = ["x"]\neffective_length = ["9 mm"]\n')

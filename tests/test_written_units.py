@@ -164,9 +164,9 @@ def test_the_same_value_twice_on_an_axis_is_refused(model, name, declared, value
 
 def test_mixed_speed_spellings_on_one_axis_are_stored_in_rpm():
     document = _with(_document("crb_radial"), "axes", "speed", ["1000 rpm", "3000 1/min",
-                                                                 "60 1/s", "100 rad/s"])
+                                                                 "60 1/s", "500 rad/s"])
     coordinate = labels.coordinates(spec.from_dict(document))["speed"]
-    assert list(coordinate[1]) == pytest.approx([1000, 3000, 3600, 6000 / TURN], rel=1e-12)
+    assert list(coordinate[1]) == pytest.approx([1000, 3000, 3600, 30000 / TURN], rel=1e-12)
 
 
 def test_a_speed_in_1_per_min_is_computed_and_stored_as_revolutions():
