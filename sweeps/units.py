@@ -153,11 +153,13 @@ def revolutions(unit: pint.Unit, declared: pint.Unit) -> pint.Unit:
 
 def _read_as_revolutions(unit: pint.Unit, target: pint.Unit) -> tuple[pint.Unit, pint.Unit]:
     """``unit`` and ``target`` with a plain reciprocal time on either side read as revolutions
-    when the other is a rotational speed (:func:`revolutions`); a conversion between an
-    angle-free unit and an angular one that is still left (Hz against rpm) is refused, as
-    pint would take it for radians."""
+    when the other is a rotational speed (:func:`revolutions`); a conversion between a
+    frequency and a rotational speed that is still left (Hz against rpm) is refused, as pint
+    would take it for radians. An angle to a plain number is pint's: radians ("deg" to "1")."""
     unit, target = revolutions(unit, target), revolutions(target, unit)
-    if not np.isclose(_angle_power(unit), _angle_power(target)):
+    per_time = UREG.parse_units("1/s").dimensionality
+    if (unit.dimensionality == per_time
+            and not np.isclose(_angle_power(unit), _angle_power(target))):
         raise UnitError(f"{_shown(unit)!r} and {_shown(target)!r} differ by an angle (Hz is "
                         "ambiguous for a rotational speed: write rpm, r/min or 1/min)")
     return unit, target

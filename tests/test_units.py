@@ -86,3 +86,9 @@ def test_a_plain_reciprocal_time_against_a_speed_is_revolutions_either_way(writt
 def test_hertz_against_a_speed_is_refused_not_read_as_radians():
     with pytest.raises(units.UnitError, match="Hz is ambiguous"):
         units.convert(50, units.parse_unit("Hz"), units.parse_unit("rpm"))
+
+
+def test_an_angle_to_a_plain_number_is_in_radians_as_pint_reads_it():
+    # Not a speed: the refusal of Hz against rpm leaves angles alone ("deg" -> "1": radians).
+    assert units.convert(180, units.parse_unit("deg"), units.parse_unit("1")) == \
+        pytest.approx(3.141592653589793, rel=1e-15)
