@@ -83,6 +83,9 @@ def test_the_pocket_couples_conserve_angular_momentum(pushed):
     ('cage_eccentricity = "1 m"', "mass centre lies within its outline"),
     ('cage_eccentricity = "29.5 mm"', "mass centre lies within its outline"),
     ('pocket_clearance = "1 m"', "pockets do not fit"),
+    # cages are of polymers (polyamide, 1140 kg/m^3) to bronze (8900)
+    ('cage_density = "1 kg/m^3"', "cage_density"),
+    ('cage_density = "20000 kg/m^3"', "cage_density"),
 ])
 def test_a_cage_that_cannot_be_is_refused_before_computing(model, fixed, words):
     from bearing_sweep import spec
