@@ -57,28 +57,41 @@ def viscosity_index(viscosity_40, viscosity_100):
     .. [1] ISO 2909:2002, Petroleum products - Calculation of viscosity index from kinematic
        viscosity; ASTM D2270-10, Table 1 and sections 6-7.
     """
+    lower = np.asarray(viscosity_100, dtype=float) * 1e6
+    return np.where(lower >= _VI_ROWS[0], _index(viscosity_40, viscosity_100), np.nan)
+
+
+def _index(viscosity_40, viscosity_100):
+    """:func:`viscosity_index`, and below ``Y = 2`` mm^2/s procedure A's ``100 (L - U) /
+    (L - H)`` with the reference oils' lines continued as the table's first rows run
+    (log-log), so that a thin oil can still be told from none."""
     upper = np.asarray(viscosity_40, dtype=float) * 1e6
     lower = np.asarray(viscosity_100, dtype=float) * 1e6
+    rows = np.log(_VI_ROWS)
     with np.errstate(invalid="ignore", divide="ignore", over="ignore"):
-        logs = np.log(np.clip(lower, _VI_ROWS[0], _VI_ROWS[-1]))
-        table = [np.exp(np.interp(logs, np.log(_VI_ROWS), np.log(column)))
-                 for column in (_VI_L, _VI_H)]
-        low = np.where(lower > _VI_ROWS[-1], 0.8353 * lower**2 + 14.67 * lower - 216.0,
-                       table[0])
-        high = np.where(lower > _VI_ROWS[-1], 0.1684 * lower**2 + 11.85 * lower - 97.0,
-                        table[1])
+        logs = np.log(lower)
+
+        def reference(column, formula):
+            logs_of = np.log(column)
+            slope = (logs_of[1] - logs_of[0]) / (rows[1] - rows[0])
+            table = np.where(logs < rows[0], logs_of[0] + slope * (logs - rows[0]),
+                             np.interp(logs, rows, logs_of))
+            return np.where(lower > _VI_ROWS[-1], formula, np.exp(table))
+
+        low = reference(_VI_L, 0.8353 * lower**2 + 14.67 * lower - 216.0)
+        high = reference(_VI_H, 0.1684 * lower**2 + 11.85 * lower - 97.0)
         below_100 = 100.0 * (low - upper) / (low - high)
         exponent = (np.log10(high) - np.log10(upper)) / np.log10(lower)
         above_100 = (10.0**exponent - 1.0) / 0.00715 + 100.0
-        index = np.where(upper > high, below_100, above_100)
-    return np.where(lower >= _VI_ROWS[0], index, np.nan)
+        return np.where((upper > high) | (lower < _VI_ROWS[0]), below_100, above_100)
 
 
 def implausible_viscosity_index(viscosity_40, viscosity_100):
     """Where an oil's viscosities [m^2/s] give a viscosity index outside
     :data:`VISCOSITY_INDEX_RANGE`: no lubricant thins so much, or so little, from 40 to
-    100 deg C (False where the index is not defined)."""
-    index = viscosity_index(viscosity_40, viscosity_100)
+    100 deg C. Below 2 mm^2/s at 100 deg C, where ISO 2909 defines no index, the reference
+    oils' lines are continued (:func:`_index`); False where a viscosity is NaN."""
+    index = _index(viscosity_40, viscosity_100)
     with np.errstate(invalid="ignore"):
         return (index < VISCOSITY_INDEX_RANGE[0]) | (index > VISCOSITY_INDEX_RANGE[1])
 

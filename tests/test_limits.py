@@ -40,12 +40,15 @@ def test_above_70_the_standards_formulas_hold():
 
 
 def test_viscosities_no_lubricant_has_are_implausible():
-    nu40 = np.array([3520.0, 26.0, 68.0, 3520.0, 1.98]) * MM2
-    nu100 = np.array([3519.0, 5.4, 8.7, 2.0, 1.0]) * MM2
+    nu40 = np.array([3520.0, 26.0, 68.0, 3520.0, 1.98, 3520.0, 2.2]) * MM2
+    nu100 = np.array([3519.0, 5.4, 8.7, 2.0, 1.0, 1.0, 0.3]) * MM2
     # the reproduction (VI 811), a 4050 turbine oil (149), ISO VG 68 mineral oil (99), a
-    # VG 3200 oil thinning to 2 mm^2/s (VI far below -100), a thin oil without an index
-    assert implausible_viscosity_index(nu40, nu100).tolist() == [True, False, False, True, False]
-    assert np.isnan(viscosity_index(nu40, nu100)[-1])
+    # VG 3200 oil thinning to 2 mm^2/s (VI far below -100); below 2 mm^2/s, where ISO 2909
+    # defines no index, a VG 2 oil of 1 mm^2/s at 100 deg C is one, a VG 3200 oil there or
+    # a VG 2 oil thinning to 0.3 mm^2/s (7 times; water thins 2.2 times) none
+    assert implausible_viscosity_index(nu40, nu100).tolist() == [True, False, False, True,
+                                                                 False, True, True]
+    assert np.isnan(viscosity_index(nu40, nu100)[4:]).all()
 
 
 @pytest.mark.parametrize("bore, largest", [
