@@ -197,7 +197,8 @@ def crb_runout(inner_raceway_diameter, outer_raceway_diameter, roller_diameter, 
     and 0.01 um (the centre moves by more than micrometres against the radii: a large
     clearance or large errors); or where a roller's or the inner raceway's profile is not
     convex (``C (n^2 + 1) >= R``), so that a contact leaves the radius line; and, whatever
-    the outcome, where the clearance ``d_e - d_i - 2 D`` exceeds the largest ISO 5753-1 gives
+    the outcome, where the clearance ``d_e - d_i - 2 D`` (with the largest roller's diameter
+    error) exceeds the largest ISO 5753-1 gives
     a cylindrical roller bearing whose bore is at most ``d_i``
     (:func:`models.limits.clearance_beyond_bearings`): paper 004's NU208 has 0.05-0.08 mm,
     its model takes the centre's movement small against the radii, and a bearing with more
@@ -286,7 +287,9 @@ def crb_runout(inner_raceway_diameter, outer_raceway_diameter, roller_diameter, 
                                amplitude[..., None]).any(axis=-1)
     inner_bent = _not_convex(0.5 * inner, inner_set[0][:, 0, 0], inner_set[1][:, 0, 0])
     outside = squeezed | inexact | rollers_bent | inner_bent
-    loose = clearance_beyond_bearings(outer - inner - 2.0 * diameter, inner)
+    # The play the largest roller leaves: undersize rollers widen the clearance.
+    loose = clearance_beyond_bearings(outer - inner - 2.0 * (diameter + error.max(axis=-1)),
+                                      inner)
     return {
         "runout": runout,
         "vertical_runout": y.max(axis=-1) - y.min(axis=-1),

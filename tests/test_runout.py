@@ -267,6 +267,11 @@ def test_a_clearance_no_bearing_has_is_out_of_validity():
     assert result["status"].tolist() == [CONVERGED, CONVERGED, OUT_OF_VALIDITY,
                                          OUT_OF_VALIDITY, OUT_OF_VALIDITY]
     assert np.isfinite(result["vertical_runout"]).all()
+    # Rollers all 0.1 mm undersize leave the preset's raceways 0.277 mm of play.
+    undersize = crb_runout(**preset, roller_diameter_error=-0.1 * MM)
+    assert undersize["status"].tolist() == [OUT_OF_VALIDITY]
+    one = crb_runout(**preset, roller_diameter_error=np.r_[-0.1 * MM, np.zeros(13)])
+    assert one["status"].tolist() == [CONVERGED]  # the others hold the play
 
 
 def test_describe_states_the_validity_it_applies():
