@@ -22,7 +22,7 @@ from .contact import POINT_CONTACT_EXPONENT, STIFFEST_SOLID, hertz_point
 from .geometry import elements_fit
 from .kernels import Kernels
 from .life import ball_bearing_reference_life, radial_ball_equivalent_load
-from .limits import OIL_VALIDITY, SPEED_VALIDITY, outside_operation
+from .limits import OIL_VALIDITY, SOFTEST_BEARING_SOLID, SPEED_VALIDITY, outside_operation
 from .lubrication import CELSIUS
 from .registry import (CONVERGED, INFEASIBLE, NOT_CONVERGED, OUT_OF_VALIDITY, Constraint,
                              Input, Model, Output, combine_status)
@@ -463,7 +463,7 @@ MODELS = [Model(
               "preload)", default=0.0,
               label="diametral clearance"),
         Input("youngs_modulus", "GPa", "Young's modulus of balls and rings", default=207.0,
-              minimum=0.0, exclusive_minimum=True, maximum=STIFFEST_SOLID),
+              minimum=SOFTEST_BEARING_SOLID, maximum=STIFFEST_SOLID),
         Input("poisson_ratio", "1", "Poisson's ratio of balls and rings", default=0.3,
               minimum=0.0, maximum=0.5),
         Input("contact_constant", "N/mm^1.5", "load-deflection constant K of a ball and both "

@@ -20,7 +20,7 @@ from .cage_slip import VALIDITY as STEADY_VALIDITY
 from .cage_slip import bearing_terms, cage_slip, cage_windage
 from .contact import STIFFEST_SOLID, palmgren_constant
 from .contact_laws import qin_damping_coefficient, winkler_modulus
-from .limits import CAGE_DENSITIES
+from .limits import CAGE_DENSITIES, SOFTEST_BEARING_SOLID
 from .cylindrical import crb_radial
 from .profiles import slice_centres
 from .registry import (CONVERGED, NOT_CONVERGED, VALIDITY_MASK, Constraint, DimCoordinate,
@@ -470,7 +470,7 @@ MODELS = [Model(
               "to 9000 for bronze)", default=8600.0, minimum=CAGE_DENSITIES[0],
               maximum=CAGE_DENSITIES[1]),
         Input("cage_youngs_modulus", "GPa", "cage Young's modulus (brass: 106)", default=106.0,
-              minimum=0.0, exclusive_minimum=True, maximum=STIFFEST_SOLID),
+              minimum=SOFTEST_BEARING_SOLID, maximum=STIFFEST_SOLID),
         Input("cage_poisson_ratio", "1", "cage Poisson's ratio (brass: 0.32)", default=0.32,
               minimum=0.0, maximum=0.49),
         Input("winkler_depth", "mm", "depth H of the Winkler layer of eq. 1 (not stated)",

@@ -28,7 +28,8 @@ from .lubrication import (OIL_DENSITIES, VISCOSITY_GRADES, WALTHER_FLOOR, Tracti
                           central_film_thickness, walther_viscosity)
 from .contact import STIFFEST_SOLID
 from .limits import (CLEARANCE_VALIDITY, OIL_VALIDITY, ROLLING_ELEMENT_DENSITIES,
-                     SPEED_VALIDITY, STEEL_VALIDITY, outside_operation)
+                     SOFTEST_BEARING_SOLID, SPEED_VALIDITY, STEEL_VALIDITY,
+                     outside_operation)
 from .registry import (CONVERGED, NO_ROOT_IN_RANGE, NOT_CONVERGED, OUT_OF_VALIDITY, Constraint,
                        Input, Model, Output, combine_status)
 from .solvers import solve_increasing
@@ -569,7 +570,7 @@ MODELS = [Model(
               "thickness only; 10-13; lubricants: about 5 for water-glycols to 40 for "
               "traction fluids)", default=11.0, minimum=0.0, maximum=100.0),
         Input("youngs_modulus", "GPa", "Young's modulus of rollers and rings", default=207.0,
-              minimum=0.0, exclusive_minimum=True, maximum=STIFFEST_SOLID),
+              minimum=SOFTEST_BEARING_SOLID, maximum=STIFFEST_SOLID),
         Input("poisson_ratio", "1", "Poisson's ratio of rollers and rings", default=0.28,
               minimum=0.0, maximum=0.5),
         Input("traction_peak", "1", "peak traction coefficient mu_m (typical 0.05)",

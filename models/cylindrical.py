@@ -17,8 +17,8 @@ from .contact import (APPROACH_LIMIT, LINE_CONTACT_EXPONENT,
 from .geometry import clearance_below_roller, elements_fit
 from .life import roller_bearing_reference_life
 from .limits import (CLEARANCE_VALIDITY, OIL_VALIDITY, ROLLING_ELEMENT_DENSITIES,
-                     SPEED_VALIDITY, STEEL_VALIDITY, clearance_beyond_bearings, not_steel,
-                     outside_operation)
+                     SOFTEST_BEARING_SOLID, SPEED_VALIDITY, STEEL_VALIDITY,
+                     clearance_beyond_bearings, not_steel, outside_operation)
 from .lubrication import CELSIUS
 from .profiles import PROFILES, crown_shape, distinct_slices, slice_centres
 from .registry import (CONVERGED, NOT_CONVERGED, OUT_OF_VALIDITY, Constraint, Input,
@@ -592,8 +592,7 @@ MODELS = [Model(
               minimum=0.0, exclusive_minimum=True,
               label="perturbation step"),
         Input("youngs_modulus", "GPa", "Young's modulus of rollers and rings (contact pressure "
-              "only)", default=207.0, minimum=0.0, exclusive_minimum=True,
-              maximum=STIFFEST_SOLID),
+              "only)", default=207.0, minimum=SOFTEST_BEARING_SOLID, maximum=STIFFEST_SOLID),
         Input("poisson_ratio", "1", "Poisson's ratio of rollers and rings (contact pressure "
               "only)", default=0.3, minimum=0.0, maximum=0.5),
         Input("pressure_limit", "MPa", "contact pressure above which a point is out of "

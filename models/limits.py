@@ -24,6 +24,11 @@ ROLLING_ELEMENT_DENSITIES = (900.0, 15700.0)
 #: bronze up to 8900), below copper itself (8960).
 CAGE_DENSITIES = (900.0, 9000.0)
 
+#: The softest material rolling elements, rings and cages are made of, PTFE (E of 0.4-0.55
+#: GPa; polyamide 2-3, acetal 3, PEEK 3.6): a bearing of softer solids is a slip of units
+#: (1e-6 GPa was taken) [GPa, the unit the models declare].
+SOFTEST_BEARING_SOLID = 0.4
+
 #: The speed factor n dm [mm r/min] of the fastest rolling bearings, with room above it:
 #: main-shaft bearings of jet engines ran at 3e6 DN (bore in mm times r/min) in NASA's
 #: endurance tests (120-mm bore, 25 000 r/min: E. N. Bamberger, E. V. Zaretsky, H. Signer,

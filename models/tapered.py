@@ -24,8 +24,8 @@ from .contact import (APPROACH_LIMIT, ROLLER_PRESSURE_LIMIT, STIFFEST_SOLID, eff
 from .geometry import elements_fit
 from .kernels import Kernels
 from .life import roller_bearing_reference_life, tapered_equivalent_load
-from .limits import (OIL_VALIDITY, SPEED_VALIDITY, STEEL_VALIDITY, not_steel,
-                     outside_operation)
+from .limits import (OIL_VALIDITY, SOFTEST_BEARING_SOLID, SPEED_VALIDITY, STEEL_VALIDITY,
+                     not_steel, outside_operation)
 from .lubrication import CELSIUS
 from .registry import (CONVERGED, INFEASIBLE, NO_ROOT_IN_RANGE, NOT_CONVERGED,
                        OUT_OF_VALIDITY, Constraint, Input, Model, Output, below,
@@ -554,7 +554,7 @@ _CONSTANT = Input("contact_constant", "N/mm^1.11", "load-deflection constant Kne
                   "Q = Kne delta^1.11; default eq. 14, 2.89e4 l^0.82 Dw^0.11 (N, mm)",
                   default=None, minimum=0.0, exclusive_minimum=True)
 _MODULUS = Input("youngs_modulus", "GPa", "Young's modulus of rollers and rings", default=206.0,
-                 minimum=0.0, exclusive_minimum=True, maximum=STIFFEST_SOLID)
+                 minimum=SOFTEST_BEARING_SOLID, maximum=STIFFEST_SOLID)
 _POISSON = Input("poisson_ratio", "1", "Poisson's ratio of rollers and rings", default=0.3,
                  minimum=0.0, maximum=0.5)
 _REFERENCE = "Paper 003, Optimization of the rib angle of tapered roller bearings"

@@ -100,6 +100,16 @@ def test_a_cage_that_cannot_be_is_refused_before_computing(model, fixed, words):
             spec.parse(text.replace(fixed, 'cage_axial_eccentricity = "-5 mm"'))
 
 
+def test_a_cage_softer_than_any_cage_material_is_refused():
+    from bearing_sweep import spec
+
+    text = ('[sweep]\nmodel = "cage_dynamics_6dof"\nbearing = "paper002-test"\n[fixed]\n'
+            'speed = "9000 rpm"\nradial_load = "800 N"\ncage_youngs_modulus = "1e-6 GPa"\n')
+    with pytest.raises(spec.SpecError, match="cage_youngs_modulus"):
+        spec.parse(text)
+    assert spec.parse(text.replace("1e-6 GPa", "3 GPa")).model.name == "cage_dynamics_6dof"
+
+
 def test_the_steady_starts_validity_is_carried_through_the_transient():
     # A pocket clearance of 0.6 mm, 12 % of the roller radius, is beyond cage_slip's thin
     # films: the run from that steady state is out of validity too, its values kept.

@@ -246,6 +246,7 @@ def _steady(**fixed):
     (dict(roller_density="16000 kg/m^3"), "roller_density"),
     (dict(drag_coefficient="1e6"), "drag_coefficient"),
     (dict(drag_coefficient="11"), "drag_coefficient"),
+    (dict(youngs_modulus="1e-6 GPa"), "youngs_modulus"),
 ])
 def test_impossible_inputs_are_refused_before_computing(fixed, words):
     with pytest.raises(spec.SpecError, match=words):

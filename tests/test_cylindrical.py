@@ -444,6 +444,7 @@ def _radial(**fixed):
     (dict(roller_density="1 kg/m^3"), "no rolling element is lighter"),
     (dict(roller_density="100 kg/m^3"), "no rolling element is lighter"),
     (dict(roller_density="20000 kg/m^3"), "roller_density"),
+    (dict(youngs_modulus="1e-6 GPa"), "youngs_modulus"),  # softer than any polymer
     (dict(youngs_modulus="207 TPa"), "youngs_modulus"),
     (dict(clearance="-12 mm"), "smaller than the roller diameter"),
 ])

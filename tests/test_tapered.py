@@ -312,6 +312,7 @@ def test_a_point_outside_validity_with_no_limit_angle_says_both(change):
     ("trb_rib", 'roller_mean_diameter = "13 mm"', "large end of the roller's cone"),
     ("trb_rib", 'roller_count = 40', "do not fit on the pitch circle"),
     ("trb_load", 'roller_count = 40', "do not fit on the pitch circle"),
+    ("trb_load", 'youngs_modulus = "1e-6 GPa"', "youngs_modulus"),
     ("trb_load", 'viscosity_40 = "8 mm^2/s"\nviscosity_100 = "68 mm^2/s"', "thins as it warms"),
 ])
 def test_a_tapered_bearing_that_cannot_be_is_refused_before_computing(model, fixed, words):
