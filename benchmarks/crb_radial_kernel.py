@@ -50,7 +50,7 @@ XTOL = 1e-13  # relative tolerance of every solve, as the model's
 MAX_ITER = 200  # as solve_increasing's
 CROWN, SPEED, SLICES, DENSITY = 0.004 * MM, 5000 * 2 * np.pi / 60, 60, 7850.0
 MODULUS = effective_modulus(207e9, 0.3)
-PRESSURE_LIMIT, APPROACH_LIMIT = 4000e6, 0.02
+PRESSURE_LIMIT, APPROACH_LIMIT, PERTURBATION_ERROR = 4000e6, 0.02, 0.02
 CLEARANCES = 4  # clearances on the grid; the loads fill the model's block
 # The solves stop within XTOL (relative) of the root, each at its own last iterate: the two
 # codes may stop one Newton step apart where rounding differs, and the forward-difference
@@ -252,16 +252,17 @@ def crb_points(load, half_clearance, crown, constant, centrifugal, perturbation,
             roller_load[p, :] = 0.0
             radial = radial_stiffness = 0.0
             rollers_ok = True
-        perturbed = bearing_loads(d + perturbation[p], cos, hc, free, gaps, counts, scale, fc,
-                                  split.copy(), spare_load, spare_deflection, work, roots,
-                                  state)[0]
+        perturbed, perturbed_stiffness, _ = bearing_loads(
+            d + perturbation[p], cos, hc, free, gaps, counts, scale, fc, split.copy(),
+            spare_load, spare_deflection, work, roots, state)
         balanced = abs(radial - load[p]) <= 1e-9 * load[p] + 1e-6
         displacement[p], stiffness[p] = d, radial_stiffness
         perturbation_stiffness[p] = (perturbed - radial) / perturbation[p]
         ok = converged and rollers_ok and balanced and free_ok and math.isfinite(d) \
             and math.isfinite(radial_stiffness) and math.isfinite(perturbation_stiffness[p])
         count = 0
-        beyond = False
+        # The forward difference's estimated error, half the stiffness change over its step.
+        beyond = abs(perturbed_stiffness / radial_stiffness - 1.0) / 2.0 > PERTURBATION_ERROR
         for j in range(rollers):
             ok = ok and math.isfinite(roller_load[p, j]) and math.isfinite(deflection[p, j])
             count += roller_load[p, j] > 1e-9 * load[p]
@@ -314,6 +315,7 @@ def model_grid(points: int) -> Grid:
     text = (f'[sweep]\nmodel = "crb_radial"\n[fixed]\n'
             f'roller_count = {GEOMETRY["roller_count"]}\n{geometry}\n'
             f'crown = "{CROWN / MM * 1e3:g} um"\nspeed = "5000 rpm"\nslices = {SLICES}\n'
+            'perturbation = "0.001 mm"\n'
             f'[axes]\nradial_load = {{ start = "1 kN", stop = "12 kN", num = {loads} }}\n'
             f'clearance = {{ start = "0 mm", stop = "0.04 mm", num = {CLEARANCES} }}\n')
     return Grid.from_sweep(spec.parse(text, "crb_radial_kernel"))

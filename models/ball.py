@@ -22,6 +22,7 @@ from .contact import POINT_CONTACT_EXPONENT, STIFFEST_SOLID, hertz_point
 from .geometry import elements_fit
 from .kernels import Kernels
 from .life import ball_bearing_reference_life, radial_ball_equivalent_load
+from .limits import OIL_VALIDITY, SOFTEST_BEARING_SOLID, SPEED_VALIDITY, outside_operation
 from .lubrication import CELSIUS
 from .registry import (CONVERGED, INFEASIBLE, NOT_CONVERGED, OUT_OF_VALIDITY, Constraint,
                              Input, Model, Output, combine_status)
@@ -219,7 +220,9 @@ def ball_5dof(ball_count, ball_diameter, pitch_diameter, contact_angle,
         ``A``) without an equilibrium; out of validity (4, values kept) beyond the limits of
         ``MODELS[0].validity``: ``p0`` above ``pressure_limit`` [4], an approach above
         ``MAX_APPROACH_PER_DIAMETER`` ``D`` [5], a displacement beyond ``A``, or a loaded
-        ball's contact angle of the opposite sign to ``alpha_0 > 0``.
+        ball's contact angle of the opposite sign to ``alpha_0 > 0``; and, whatever the
+        outcome, a speed factor ``n d_m`` above 4e6 mm r/min or an oil whose viscosity index
+        no lubricant has (:func:`models.limits.outside_operation`).
 
     Notes
     -----
@@ -309,9 +312,11 @@ def ball_5dof(ball_count, ball_diameter, pitch_diameter, contact_angle,
     outside = ((pressure.max(axis=-1) > pressure_limit)
                | (approach.max(axis=-1) > MAX_APPROACH_PER_DIAMETER * diameter)
                | left_bearing | crossed.any(axis=-1))
-    # Judged on a solution only: a failed point's last iterate says nothing of the bearing.
-    status = combine_status(status, np.where(outside & (status == CONVERGED), OUT_OF_VALIDITY,
-                                             CONVERGED))
+    # Judged on a solution only: a failed point's last iterate says nothing of the bearing;
+    # a speed or an oil no bearing runs with, whatever the outcome.
+    no_bearing = outside_operation(speed, pitch, life[4], life[5])
+    status = combine_status(status, np.where(
+        (outside & (status == CONVERGED)) | no_bearing, OUT_OF_VALIDITY, CONVERGED))
     displacement = scaled / scale
     matrix = stiffness * scale[:, :, None] * scale[:, None, :]
     outputs = {
@@ -443,7 +448,7 @@ MODELS = [Model(
             "pressures and rating lives (ISO/TS 16281, ISO 281).",
     reference="Paper 001, eq. 1-10; Jones (1960); Harris & Kotzalas, Rolling Bearing Analysis; "
               "ISO/TS 16281:2008; ISO 281:2007",
-    version="6",
+    version="7",
     inputs=(
         Input("ball_count", "1", "number of balls Z", kind="count", minimum=3, maximum=1000),
         Input("ball_diameter", "mm", "ball diameter D", minimum=0.0, exclusive_minimum=True),
@@ -458,7 +463,7 @@ MODELS = [Model(
               "preload)", default=0.0,
               label="diametral clearance"),
         Input("youngs_modulus", "GPa", "Young's modulus of balls and rings", default=207.0,
-              minimum=0.0, exclusive_minimum=True, maximum=STIFFEST_SOLID),
+              minimum=SOFTEST_BEARING_SOLID, maximum=STIFFEST_SOLID),
         Input("poisson_ratio", "1", "Poisson's ratio of balls and rings", default=0.3,
               minimum=0.0, maximum=0.5),
         Input("contact_constant", "N/mm^1.5", "load-deflection constant K of a ball and both "
@@ -547,5 +552,7 @@ MODELS = [Model(
              "whose contact angle has the opposite sign to a non-zero alpha0 (it runs on the "
              "side of the groove an angular-contact ring's low shoulder cuts away). Not "
              "checked: the contact ellipse running over a groove shoulder (shoulder heights "
-             "are not inputs); centrifugal and gyroscopic ball loads (a static model).",
+             "are not inputs); centrifugal and gyroscopic ball loads (a static model). "
+             f"Whatever the outcome, inputs that describe no bearing: {SPEED_VALIDITY}; "
+             f"{OIL_VALIDITY}.",
 )]

@@ -16,7 +16,8 @@ from . import cage_dynamics_rhs as rhs
 from .cage_slip import MODELS as STEADY_MODELS
 from .cage_slip import VALIDITY as STEADY_VALIDITY
 from .cage_slip import bearing_terms, cage_slip, cage_windage
-from .contact import DENSEST_SOLID, palmgren_constant
+from .contact import palmgren_constant
+from .limits import CAGE_DENSITIES
 from .cylindrical import crb_radial
 from .registry import (CONVERGED, NOT_CONVERGED, Constraint, DimCoordinate, Input, Model,
                        Output, VALIDITY_MASK, outcome)
@@ -245,11 +246,12 @@ MODELS = [Model(
     summary="Cylindrical roller bearing, planar transient: cage whirl, pocket contact, cage and "
             "roller slip in time, from the steady state.",
     reference="Paper 002, eq. 27-28 and section 3",
-    version="3",
+    version="4",
     inputs=tuple(i for i in STEADY_MODELS[0].inputs if i.name not in ("orbit_points", "branch"))
     + (
-        Input("cage_density", "kg/m^3", "cage density (brass: 8600)", default=8600.0,
-              minimum=0.0, exclusive_minimum=True, maximum=DENSEST_SOLID),
+        Input("cage_density", "kg/m^3", "cage density (brass: 8600; cages: 900 for polymers "
+              "to 9000 for bronze)", default=8600.0, minimum=CAGE_DENSITIES[0],
+              maximum=CAGE_DENSITIES[1]),
         Input("cage_eccentricity", "mm", "distance of the cage's mass centre from its "
               "geometric centre", default=0.0, minimum=0.0,
               label="cage mass eccentricity"),
@@ -257,6 +259,8 @@ MODELS = [Model(
               exclusive_minimum=True),
         Input("pocket_stiffness", "N/m", "pocket contact stiffness", default=5e7, minimum=0.0,
               exclusive_minimum=True),
+        # A linear spring-dashpot contact rebounds with restitution exp(-pi z / sqrt(1 - z^2))
+        # below critical damping (z = 1), not at all above it: 2 bounds every contact with room.
         Input("damping_ratio", "1", "damping ratio of pocket and ring contacts", default=0.1,
               minimum=0.0, maximum=2.0,
               label="contact damping ratio"),

@@ -18,8 +18,9 @@ from .cage_dynamics_rhs import roller_loads
 from .cage_slip import MODELS as STEADY_MODELS
 from .cage_slip import VALIDITY as STEADY_VALIDITY
 from .cage_slip import bearing_terms, cage_slip, cage_windage
-from .contact import DENSEST_SOLID, STIFFEST_SOLID, palmgren_constant
+from .contact import STIFFEST_SOLID, palmgren_constant
 from .contact_laws import qin_damping_coefficient, winkler_modulus
+from .limits import CAGE_DENSITIES, SOFTEST_BEARING_SOLID
 from .cylindrical import crb_radial
 from .profiles import slice_centres
 from .registry import (CONVERGED, NOT_CONVERGED, VALIDITY_MASK, Constraint, DimCoordinate,
@@ -451,7 +452,7 @@ MODELS = [Model(
             "cage with six degrees of freedom, Winkler pocket, end-face and rib contacts, cage "
             "mass eccentricity and ring misalignment (paper 002's own model).",
     reference="Paper 002, sections 1.3-1.5 (eqs. 1-26), eqs. 27-28, section 3",
-    version="2",
+    version="3",
     inputs=tuple(_PLANAR[name] for name in STEADY_INPUTS if name != "branch") + (
         _PLANAR["pocket_film_fill"],
         Input("end_film_thickness", "mm", "axial play of a roller between the ribs (Table 2: "
@@ -465,14 +466,18 @@ MODELS = [Model(
         Input("end_chamfer", "mm", "roller end chamfer: the end face is a disc of radius "
               "D/2 - chamfer (not stated)", default=0.5, minimum=0.0,
               label="roller end chamfer"),
-        Input("cage_density", "kg/m^3", "cage density (brass: 8600)", default=8600.0,
-              minimum=0.0, exclusive_minimum=True, maximum=DENSEST_SOLID),
+        Input("cage_density", "kg/m^3", "cage density (brass: 8600; cages: 900 for polymers "
+              "to 9000 for bronze)", default=8600.0, minimum=CAGE_DENSITIES[0],
+              maximum=CAGE_DENSITIES[1]),
         Input("cage_youngs_modulus", "GPa", "cage Young's modulus (brass: 106)", default=106.0,
-              minimum=0.0, exclusive_minimum=True, maximum=STIFFEST_SOLID),
+              minimum=SOFTEST_BEARING_SOLID, maximum=STIFFEST_SOLID),
         Input("cage_poisson_ratio", "1", "cage Poisson's ratio (brass: 0.32)", default=0.32,
               minimum=0.0, maximum=0.49),
         Input("winkler_depth", "mm", "depth H of the Winkler layer of eq. 1 (not stated)",
               default=1.0, minimum=0.0, exclusive_minimum=True),
+        # A restitution is the ratio of the speeds of separation and approach: 0 to 1 by the
+        # energy an impact cannot gain; a damping ratio 0 to critical and beyond (see
+        # cage_dynamics).
         Input("restitution", "1", "coefficient of restitution e of Qin's damping (eq. 1; "
               "not stated)", default=0.8, minimum=0.0, exclusive_minimum=True, maximum=1.0),
         Input("impact_speed", "m/s", "approach speed v- at which e holds (Qin's damping; "

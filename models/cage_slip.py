@@ -26,7 +26,10 @@ from .cylindrical import CLEARANCE_BELOW_ROLLER, crb_radial
 from .bearing_life import VISCOSITY_ORDER
 from .lubrication import (OIL_DENSITIES, VISCOSITY_GRADES, WALTHER_FLOOR, TractionCurve,
                           central_film_thickness, walther_viscosity)
-from .contact import DENSEST_SOLID, STIFFEST_SOLID
+from .contact import STIFFEST_SOLID
+from .limits import (CLEARANCE_VALIDITY, OIL_VALIDITY, ROLLING_ELEMENT_DENSITIES,
+                     SOFTEST_BEARING_SOLID, SPEED_VALIDITY, STEEL_VALIDITY,
+                     outside_operation)
 from .registry import (CONVERGED, NO_ROOT_IN_RANGE, NOT_CONVERGED, OUT_OF_VALIDITY, Constraint,
                        Input, Model, Output, combine_status)
 from .solvers import solve_increasing
@@ -53,6 +56,18 @@ BRANCHES = ("high_slip", "low_slip")
 #: curvature neglected (an error of the order of the ratio, Hamrock, Schmid and Jacobson,
 #: Fundamentals of Fluid Film Lubrication, 2nd ed. (2004), ch. 8, Petroff's equation) [-].
 THIN_FILM_LIMIT = 0.1
+#: Largest drag coefficient of the roller windage [-]: a cylinder across a flow has C_D of
+#: about 0.3 (beyond the drag crisis) to 1.2 over Reynolds numbers of 1e3-2e5, 3 at 10 and
+#: 10 at about 1 (F. M. White, Fluid Mechanics, 7th ed., McGraw-Hill (2011), Fig. 7.16a);
+#: below that the drag is viscous, proportional to the speed (Stokes, Lamb), not the
+#: quadratic windage F_D = rho_e C_D l h v^2 / 2 this model takes. Paper 002's typical value
+#: is about 1 (0.5-2, CAGE_SLIP_PHYSICS.md).
+DRAG_COEFFICIENT_LIMIT = 10.0
+#: Traction coefficients of a lubricated rolling contact stay below about 0.1 even for
+#: traction fluids (K. L. Johnson, J. L. Tevaarwerk, Proc. R. Soc. Lond. A 356 (1977) 215;
+#: turbine oils 0.03-0.06), and the boundary friction of steel on steel about 0.1-0.15 in
+#: mixed lubrication: 0.2 bounds both the peak and the high-slip limit [-].
+TRACTION_LIMIT = 0.2
 
 
 def kinematic_cage_speed(speed, inner_raceway_diameter, outer_raceway_diameter):
@@ -134,7 +149,10 @@ def cage_slip(radial_load, speed, roller_count, inner_raceway_diameter, roller_d
         small against the torques it balances; the status of the load distribution
         (:func:`models.cylindrical.crb_radial`) is combined in, its validity with it;
         ``out_of_validity`` also where the pocket clearance or the end film exceeds
-        :data:`THIN_FILM_LIMIT` of the roller radius (the films' thin-film form).
+        :data:`THIN_FILM_LIMIT` of the roller radius (the films' thin-film form) and,
+        whatever the outcome, where a speed factor ``n d_m`` above 4e6 mm r/min or an oil
+        whose viscosity index no lubricant has describe no bearing
+        (:func:`models.limits.outside_operation`).
 
     References
     ----------
@@ -175,6 +193,10 @@ def cage_slip(radial_load, speed, roller_count, inner_raceway_diameter, roller_d
         balance.inner_load[everything, heaviest], terms["contact_length"],
         radius * r_i / (radius + r_i), entraining, terms["viscosity"], terms["alpha"], reduced)
     missing = np.where(has_root, 1.0, np.nan)  # NaN where the outputs need the missing root
+    # Whatever the outcome: a speed or an oil no bearing runs with (the load distribution
+    # flags the speed too, and its own elastic constants and clearance).
+    no_bearing = outside_operation(terms["omega_i"], 2.0 * terms["pitch_radius"],
+                                   terms["nu_40"], terms["nu_100"])
     return {
         "cage_slip": 1.0 - omega_c / omega_kin,
         "cage_speed": omega_c,
@@ -186,8 +208,8 @@ def cage_slip(radial_load, speed, roller_count, inner_raceway_diameter, roller_d
         "max_roller_load": balance.inner_load.max(axis=1),
         "equilibrium_count": count.astype(float),
         "status": combine_status(status, balance.load_status, np.where(thick_films(
-            terms["diameter"], terms["pocket_clearance"], terms["end_film_thickness"]),
-            OUT_OF_VALIDITY, CONVERGED)).astype(np.int8),
+            terms["diameter"], terms["pocket_clearance"], terms["end_film_thickness"])
+            | no_bearing, OUT_OF_VALIDITY, CONVERGED)).astype(np.int8),
     }
 
 
@@ -362,7 +384,7 @@ def bearing_terms(radial_load, speed, roller_count, inner_raceway_diameter, roll
         * pitch_radius**2,
         "effective_density": effective_density, "cage_in": cage_in, "cage_out": cage_out,
         "width": width, "pocket_clearance": c_pocket, "end_film_thickness": h_end,
-        "mu_pocket": mu_pocket,
+        "mu_pocket": mu_pocket, "nu_40": nu_40, "nu_100": nu_100,
         "traction": TractionCurve(mu_peak, u_peak, mu_limit),
     }
 
@@ -499,9 +521,11 @@ def thick_films(roller_diameter, pocket_clearance, end_film_thickness):
 #: The validity cage_slip applies, and the transient models after it.
 VALIDITY = ("the load distribution's (crb_radial at each cage position: a roller's contact "
             "pressure above 4000 MPa, ISO 76's reference stress for roller bearings, or its "
-            "approach above 2 % of the roller diameter); a pocket clearance or end film "
-            "thicker than 10 % of the roller radius (the pocket and end films are Petroff's "
-            "thin Couette films)")
+            "approach above 2 % of the roller diameter; whatever the outcome, "
+            f"{STEEL_VALIDITY} (Palmgren's), {CLEARANCE_VALIDITY}); a pocket clearance or "
+            "end film thicker than 10 % of the roller radius (the pocket and end films are "
+            "Petroff's thin Couette films); whatever the outcome, "
+            f"{SPEED_VALIDITY}, or {OIL_VALIDITY}")
 
 MODELS = [Model(
     name="cage_slip",
@@ -510,7 +534,7 @@ MODELS = [Model(
             "orbit and roller spin from traction, oil films and windage.",
     reference="Paper 002 (eq. 27, roller windage); Harris (1966); Gupta (1984); "
               "CAGE_SLIP_PHYSICS.md for the published forms and typical values",
-    version="4",
+    version="5",
     inputs=(
         Input("radial_load", "N", "radial load Fr", minimum=0.0, exclusive_minimum=True),
         Input("speed", "rpm", "inner-ring speed", minimum=0.0, exclusive_minimum=True),
@@ -528,8 +552,9 @@ MODELS = [Model(
         Input("cage_outer_diameter", "mm", "cage outside diameter", minimum=0.0,
               exclusive_minimum=True),
         Input("cage_width", "mm", "cage width (0: no cage windage)", minimum=0.0),
-        Input("roller_density", "kg/m^3", "roller density", default=7820.0, minimum=0.0,
-              exclusive_minimum=True, maximum=DENSEST_SOLID),
+        Input("roller_density", "kg/m^3", "roller density (rolling elements: 900 for "
+              "polymers to 15700 for tungsten carbide)", default=7820.0,
+              minimum=ROLLING_ELEMENT_DENSITIES[0], maximum=ROLLING_ELEMENT_DENSITIES[1]),
         Input("oil_temperature", "degC", "oil temperature (largest single influence)",
               default=25.0, minimum=-40.0, maximum=200.0),
         Input("viscosity_40", "mm^2/s", "kinematic viscosity at 40 degC (4050-class turbine "
@@ -545,19 +570,24 @@ MODELS = [Model(
               "thickness only; 10-13; lubricants: about 5 for water-glycols to 40 for "
               "traction fluids)", default=11.0, minimum=0.0, maximum=100.0),
         Input("youngs_modulus", "GPa", "Young's modulus of rollers and rings", default=207.0,
-              minimum=0.0, exclusive_minimum=True, maximum=STIFFEST_SOLID),
+              minimum=SOFTEST_BEARING_SOLID, maximum=STIFFEST_SOLID),
         Input("poisson_ratio", "1", "Poisson's ratio of rollers and rings", default=0.28,
               minimum=0.0, maximum=0.5),
         Input("traction_peak", "1", "peak traction coefficient mu_m (typical 0.05)",
-              default=0.05, minimum=0.0, exclusive_minimum=True, maximum=0.2),
+              default=0.05, minimum=0.0, exclusive_minimum=True, maximum=TRACTION_LIMIT),
         Input("traction_peak_speed", "m/s", "sliding speed of the traction peak u_m "
               "(0.3-3)", default=2.0, minimum=0.0, exclusive_minimum=True),
         Input("traction_limit", "1", "high-slip traction coefficient mu_inf (typical 0.036)",
-              default=0.036, minimum=0.0, maximum=0.2),
+              default=0.036, minimum=0.0, maximum=TRACTION_LIMIT),
+        # The shares (oil_fraction, the film fills) lie in 0-1 by their definition. The pocket's
+        # Coulomb coefficient: steel on brass, steel or polyamide, 0.05-0.2 lubricated, up to
+        # 0.5-0.8 dry (steel on steel; F. P. Bowden, D. Tabor, The Friction and Lubrication of
+        # Solids, Oxford (1950)): 1 bounds every pair a cage pocket holds.
         Input("oil_fraction", "1", "oil's share of the cavity volume (0.01-0.5)", default=0.05,
               minimum=0.0, maximum=1.0),
-        Input("drag_coefficient", "1", "roller windage drag coefficient C_D (0.5-2)",
-              default=1.0, minimum=0.0),
+        Input("drag_coefficient", "1", "roller windage drag coefficient C_D (0.5-2; a "
+              "cylinder's reaches 10 at a Reynolds number of 1, where drag turns viscous)",
+              default=1.0, minimum=0.0, maximum=DRAG_COEFFICIENT_LIMIT),
         Input("pocket_clearance", "mm", "pocket clearance c_p", default=0.1, minimum=0.0,
               exclusive_minimum=True),
         Input("pocket_wrap_angle", "rad", "pocket arc wrapped around the roller theta_w",

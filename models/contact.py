@@ -192,9 +192,6 @@ ROLLER_PRESSURE_LIMIT = 4000e6
 #: Relat. Mater. 2 (1993) 918): a rolling element or ring stiffer than it is a slip of units
 #: [GPa, the unit the models declare].
 STIFFEST_SOLID = 1220.0
-#: The densest solid, osmium (22 590 kg/m^3 at 20 deg C; Arblaster, Platinum Metals Rev. 33
-#: (1989) 14): a rolling element or cage denser than it is a slip of units [kg/m^3].
-DENSEST_SOLID = 22590.0
 BALL_PRESSURE_LIMIT = 4200e6
 #: Approach of a roller's contacts beyond which a bearing model's fixed, small-displacement
 #: geometry (contact angles, azimuths, contact on the undeformed profiles) no longer holds, as

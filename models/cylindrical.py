@@ -10,12 +10,15 @@ import numpy as np
 from .bearing_life import (DEFAULT_CONTAMINATION_FACTOR, LIFE_CONSTRAINTS, LIFE_INPUTS,
                            life_outputs,
                            rating_lives)
-from .contact import (APPROACH_LIMIT, DENSEST_SOLID, LINE_CONTACT_EXPONENT,
+from .contact import (APPROACH_LIMIT, LINE_CONTACT_EXPONENT,
                       ROLLER_PRESSURE_LIMIT, SLICE_LAWS, STIFFEST_SOLID, effective_modulus,
                       largest_slice_line_load, line_contact_pressure, palmgren_constant,
                       slice_loads)
-from .geometry import elements_fit
+from .geometry import clearance_below_roller, elements_fit
 from .life import roller_bearing_reference_life
+from .limits import (CLEARANCE_VALIDITY, OIL_VALIDITY, ROLLING_ELEMENT_DENSITIES,
+                     SOFTEST_BEARING_SOLID, SPEED_VALIDITY, STEEL_VALIDITY,
+                     clearance_beyond_bearings, not_steel, outside_operation)
 from .lubrication import CELSIUS
 from .profiles import PROFILES, crown_shape, distinct_slices, slice_centres
 from .registry import (CONVERGED, NOT_CONVERGED, OUT_OF_VALIDITY, Constraint, Input,
@@ -29,6 +32,12 @@ _ONE_SLICE = np.ones(1)
 # A roller counts as loaded when it carries more than this fraction of the radial load.
 _LOADED_FRACTION = 1e-9
 _XTOL = 1e-13  # relative tolerance of the displacement solves [-]
+#: Largest error of the forward-difference stiffness, estimated as half the change of the
+#: analytic stiffness across its step (the leading term of a forward difference's error), as
+#: a share of the stiffness [-]: the step must be small against the displacement over which
+#: the stiffness changes. Paper 000's 0.001 mm on bearing C at 4 kN errs by 1 % (section 2.3
+#: states 1.3 %).
+PERTURBATION_ERROR_LIMIT = 0.02
 
 
 def cage_speed(speed, roller_diameter, pitch_diameter):
@@ -232,7 +241,7 @@ class _RollerSet:
 def crb_radial(radial_load, roller_count, pitch_diameter, roller_diameter, effective_length,
                clearance=0.0, crown=0.0, crown_profile="logarithmic", slices=60,
                slice_law="uniform", outer_contact="crowned", speed=0.0, roller_density=7850.0,
-               contact_constant=None, cage_position=0.0, misalignment=0.0, perturbation=1e-6,
+               contact_constant=None, cage_position=0.0, misalignment=0.0, perturbation=None,
                youngs_modulus=207e9, poisson_ratio=0.3, pressure_limit=ROLLER_PRESSURE_LIMIT,
                dynamic_load_rating=None, fatigue_load_limit=None,
                contamination_factor=DEFAULT_CONTAMINATION_FACTOR,
@@ -286,11 +295,13 @@ def crb_radial(radial_load, roller_count, pitch_diameter, roller_diameter, effec
         carry the same load; the roller's moment balance is not solved with it). The ring's
         moment is not balanced: the misalignment is imposed, as a shaft imposes it. Needs
         ``outer_contact='crowned'``.
-    perturbation : array_like
-        Displacement step ``Delta`` of the forward-difference stiffness [m] (section 2.3).
+    perturbation : array_like or None
+        Displacement step ``Delta`` of the forward-difference stiffness [m] (section 2.3;
+        the paper's is 1e-6); None: no forward-difference stiffness (NaN).
     youngs_modulus, poisson_ratio : array_like
         ``E`` [Pa] and ``nu`` [-] of rollers and rings. They enter the contact pressure only;
-        the load-deflection constant is ``contact_constant`` (Palmgren's is for steel).
+        the load-deflection constant is ``contact_constant`` (Palmgren's default is for
+        steel: see Validity).
     pressure_limit : array_like
         Contact pressure above which a point is ``out_of_validity`` [Pa] (default 4000 MPa,
         ISO 76's reference stress for roller bearings of through-hardened steel).
@@ -341,10 +352,23 @@ def crb_radial(radial_load, roller_count, pitch_diameter, roller_diameter, effec
     approach (both contacts) exceeds ``APPROACH_LIMIT`` (2 %) of the roller diameter, where
     the fixed geometry (azimuths, contacts along the radius line, undeformed rings) fails;
     so does the state the perturbation stiffness evaluates, the ring moved on by
-    ``perturbation`` (a step of 1 m gave a stiffness 3.4 times the analytic one).
-    Speed has no limit of its own: the centrifugal force of a roller orbiting at the
-    kinematic cage speed holds while the roller stays elastic, and its outer contact's
-    pressure carries that force (1e6 r/min gives bearing D some 16 GPa there).
+    ``perturbation`` (a step of 1 m gave a stiffness 3.4 times the analytic one). The
+    forward difference is the mean of the stiffness over its step, so the step must be small
+    against the displacement over which the stiffness changes: a point is out of validity
+    where the analytic stiffness changes across the step by more than twice
+    ``PERTURBATION_ERROR_LIMIT`` (2 %) of itself, an estimated error above 2 % (0.19 mm at
+    4 kN on bearing D gave 1.31 times the analytic stiffness, the paper's 0.001 mm at 1e-12 N
+    26 times).
+
+    Whatever the outcome, a point is also out of validity where its inputs describe no
+    bearing: the default (Palmgren's, steel) contact constant with ``youngs_modulus`` and
+    ``poisson_ratio`` whose ``E*`` lies more than 10 % from steel's
+    (:func:`models.limits.not_steel`); a clearance beyond the largest of ISO 5753-1 for the
+    inner raceway's diameter ``d_m - D`` (:func:`models.limits.clearance_beyond_bearings`);
+    a speed factor ``n d_m`` beyond 4e6 mm r/min, or an oil whose viscosity index no lubricant
+    has (:func:`models.limits.outside_operation`). Speed otherwise enters through the
+    pressure its centrifugal force causes (1e6 r/min gives bearing D some 16 GPa at the
+    outer contact).
 
     Solution: the ring's displacement by the safeguarded Newton of
     :func:`models.solvers.solve_increasing`, all points at once; at each displacement tried,
@@ -362,7 +386,8 @@ def crb_radial(radial_load, roller_count, pitch_diameter, roller_diameter, effec
     .. [4] ISO/TS 16281:2008, 5.3; ISO 281:2007, 7 and 9.3.
     """
     roller_count, slices = int(roller_count), int(slices)
-    if contact_constant is None:
+    default_constant = contact_constant is None
+    if default_constant:
         contact_constant = palmgren_constant(effective_length)
     life = (dynamic_load_rating, fatigue_load_limit, contamination_factor, oil_temperature,
             viscosity_40, viscosity_100)
@@ -389,6 +414,8 @@ def crb_radial(radial_load, roller_count, pitch_diameter, roller_diameter, effec
                          centrifugal_force(diameter, length, pitch, speed, density), slices,
                          crown_profile, slice_law, outer_contact, tilt)
     outputs = _solve(rollers, load, perturbation)
+    # The stiffness the forward difference averages changes across its step: by how much.
+    perturbation_error = outputs.pop("stiffness_change") / 2.0
     inner, outer = rollers.approaches(outputs["radial_displacement"],
                                       outputs["inner_contact_deflection"])
     inner_load, outer_load = rollers.largest_line_loads(inner, outer, length)
@@ -415,7 +442,15 @@ def crb_radial(radial_load, roller_count, pitch_diameter, roller_diameter, effec
     approach_limit = APPROACH_LIMIT * diameter[:, None]
     beyond = ((pressure > pressure_limit[:, None]) | (inner + outer > approach_limit)
               | (inner + outer + perturbation[:, None] > approach_limit)).any(axis=-1)
-    outputs["status"] = np.where((outputs["status"] == CONVERGED) & beyond, OUT_OF_VALIDITY,
+    with np.errstate(invalid="ignore"):
+        beyond |= perturbation_error > PERTURBATION_ERROR_LIMIT
+    # Inputs that describe no bearing, whatever the outcome.
+    no_bearing = (clearance_beyond_bearings(clearance, pitch - diameter)
+                  | outside_operation(speed, pitch, *life[4:])
+                  | (default_constant & np.broadcast_to(
+                      not_steel(youngs_modulus, poisson_ratio), shape).ravel()))
+    outside = ((outputs["status"] == CONVERGED) & beyond) | no_bearing
+    outputs["status"] = np.where(outside, outputs["status"] | OUT_OF_VALIDITY,
                                  outputs["status"]).astype(np.int8)
     return {name: value.reshape(shape + value.shape[1:]) for name, value in outputs.items()}
 
@@ -425,7 +460,6 @@ def _solve(rollers, load, perturbation):
     cos_azimuth, half_clearance, crown = rollers.cos, rollers.half_clearance, rollers.crown
     constant, centrifugal = rollers.constant, rollers.centrifugal
     count, n = load.size, LINE_CONTACT_EXPONENT
-    everyone = np.arange(count)
     split = np.full(cos_azimuth.shape + (3,), np.nan)  # no roller solved yet
     # Where each solve's roller loads and approaches go, and where those of other calls do.
     cache = {"converged": np.ones(count, dtype=bool), "load": np.empty(count),
@@ -472,8 +506,13 @@ def _solve(rollers, load, perturbation):
     for name in ("roller_load", "stiffness", "load"):
         cache[name][resting] = 0.0
     cache["converged"][resting] = True
-    # Forward-difference stiffness with the paper's perturbation (section 2.3).
-    perturbed = rollers.loads(displacement + perturbation, everyone, split.copy(), *spare)[0]
+    # Forward-difference stiffness with the paper's perturbation (section 2.3), where asked
+    # for, and the analytic stiffness at its other end.
+    perturbed, perturbed_stiffness = np.full(count, np.nan), np.full(count, np.nan)
+    asked = np.flatnonzero(np.isfinite(perturbation))
+    if asked.size:
+        perturbed[asked], perturbed_stiffness[asked] = rollers.loads(
+            displacement[asked] + perturbation[asked], asked, split.copy(), *spare)[:2]
     balanced = np.abs(cache["load"] - load) <= 1e-9 * load + 1e-6
     ok = converged & cache["converged"] & balanced & rollers.free_outer_converged
     outputs = {
@@ -485,19 +524,28 @@ def _solve(rollers, load, perturbation):
         "roller_load": cache["roller_load"],
         "inner_contact_deflection": cache["deflection"],
     }
-    # A NaN anywhere (an input, an overflow) fails the point rather than hiding in one output.
-    for value in outputs.values():
-        ok &= np.isfinite(value).reshape(count, -1).all(axis=-1)
+    # A NaN anywhere (an input, an overflow) fails the point rather than hiding in one output;
+    # the forward difference is NaN where it was not asked for.
+    for name, value in outputs.items():
+        finite = np.isfinite(value).reshape(count, -1).all(axis=-1)
+        ok &= finite | ((name == "perturbation_stiffness") & np.isnan(perturbation))
     outputs = {name: np.where(ok.reshape((-1,) + (1,) * (value.ndim - 1)), value, np.nan)
                for name, value in outputs.items()}
     outputs["status"] = np.where(ok, CONVERGED, NOT_CONVERGED).astype(np.int8)
+    with np.errstate(divide="ignore", invalid="ignore"):
+        outputs["stiffness_change"] = np.abs(perturbed_stiffness / cache["stiffness"] - 1.0)
     return outputs
 
 
 #: A diametral clearance (or interference) smaller than the rollers.
-CLEARANCE_BELOW_ROLLER = Constraint(
-    ("clearance", "roller_diameter"), lambda clearance, roller_diameter:
-    np.abs(clearance) < roller_diameter, "the clearance must be smaller than the roller diameter")
+CLEARANCE_BELOW_ROLLER = Constraint(("clearance", "roller_diameter"), clearance_below_roller,
+                                    "the clearance must be smaller than the roller diameter")
+
+
+def _rolling_element_density(roller_density):
+    # 0 switches the centrifugal force off; any other density is a material's.
+    return (roller_density == 0) | (roller_density >= ROLLING_ELEMENT_DENSITIES[0])
+
 
 MODELS = [Model(
     name="crb_radial",
@@ -505,7 +553,7 @@ MODELS = [Model(
     summary="Cylindrical roller bearing under radial load: load distribution and radial stiffness "
             "with crowned rollers (slices), centrifugal force and clearance.",
     reference="Paper 000, Radial stiffness analysis of cylindrical roller bearing, eq. 1-16",
-    version="6",
+    version="7",
     inputs=(
         Input("radial_load", "N", "radial load Fr on the inner ring", minimum=0.0),
         Input("roller_count", "1", "number of rollers Z", kind="count", minimum=3, maximum=1000),
@@ -526,8 +574,9 @@ MODELS = [Model(
               "paper: eq. 6 as printed (straight outer contact)", default="crowned",
               kind="choice", choices=OUTER_CONTACTS),
         Input("speed", "rpm", "inner-ring speed ni", default=0.0, minimum=0.0),
-        Input("roller_density", "kg/m^3", "roller density rho (0: no centrifugal force)",
-              default=7850.0, minimum=0.0, maximum=DENSEST_SOLID),
+        Input("roller_density", "kg/m^3", "roller density rho (0: no centrifugal force; "
+              "rolling elements: 900 for polymers to 15700 for tungsten carbide)",
+              default=7850.0, minimum=0.0, maximum=ROLLING_ELEMENT_DENSITIES[1]),
         Input("contact_constant", "N/mm^(10/9)", "load-deflection constant K of one contact, "
               "Q = K delta^(10/9); default Palmgren 8.06e4 l^(8/9) (N, mm)", default=None,
               minimum=0.0, exclusive_minimum=True,
@@ -539,11 +588,11 @@ MODELS = [Model(
               "the load direction; each roller takes half", default=0.0, minimum=-20.0,
               maximum=20.0, label="misalignment"),
         Input("perturbation", "mm", "displacement step of the forward-difference stiffness "
-              "(section 2.3)", default=0.001, minimum=0.0, exclusive_minimum=True,
+              "(section 2.3; the paper's: 0.001 mm); default: none (NaN)", default=None,
+              minimum=0.0, exclusive_minimum=True,
               label="perturbation step"),
         Input("youngs_modulus", "GPa", "Young's modulus of rollers and rings (contact pressure "
-              "only)", default=207.0, minimum=0.0, exclusive_minimum=True,
-              maximum=STIFFEST_SOLID),
+              "only)", default=207.0, minimum=SOFTEST_BEARING_SOLID, maximum=STIFFEST_SOLID),
         Input("poisson_ratio", "1", "Poisson's ratio of rollers and rings (contact pressure "
               "only)", default=0.3, minimum=0.0, maximum=0.5),
         Input("pressure_limit", "MPa", "contact pressure above which a point is out of "
@@ -556,7 +605,7 @@ MODELS = [Model(
         Output("radial_stiffness", "N/mm", "radial stiffness dFr/d(delta_r), implicit "
                "differentiation (eq. 12-16)"),
         Output("perturbation_stiffness", "N/mm", "forward-difference radial stiffness with the "
-               "displacement step 'perturbation'",
+               "displacement step 'perturbation'; NaN without it",
                label="perturbation stiffness"),
         Output("loaded_rollers", "1", "number of rollers carrying load", dtype="int"),
         Output("centrifugal_force", "N", "centrifugal force of one roller (eq. 3)",
@@ -584,6 +633,9 @@ MODELS = [Model(
                    "misalignment needs outer_contact 'crowned' (the paper's straight outer "
                    "contact has no tilt)"),
         CLEARANCE_BELOW_ROLLER,
+        Constraint(("roller_density",), _rolling_element_density,
+                   "roller_density must be 0 (no centrifugal force) or at least 900 kg/m^3: "
+                   "no rolling element is lighter than polymers (polypropylene, 900)"),
         Constraint(("roller_count", "pitch_diameter", "roller_diameter"),
                    lambda roller_count, pitch_diameter, roller_diameter:
                    elements_fit(roller_count, pitch_diameter, roller_diameter),
@@ -601,6 +653,10 @@ MODELS = [Model(
     validity="a roller's maximum contact pressure above pressure_limit (default 4000 MPa, "
              "ISO 76's reference stress for roller bearings) or its approach (both contacts) "
              "above 2 % of the roller diameter, also with the ring moved on by the "
-             "perturbation step (the forward difference's state); speed only through the "
-             "pressure its centrifugal force causes",
+             "perturbation step (the forward difference's state); a perturbation step not "
+             "small against the displacement over which the stiffness changes (the analytic "
+             "stiffness changing across it by more than 4 %: the forward difference, its mean "
+             "over the step, then errs by about 2 %); whatever the outcome, inputs that "
+             f"describe no bearing: {STEEL_VALIDITY}; {CLEARANCE_VALIDITY}; {SPEED_VALIDITY}; "
+             f"{OIL_VALIDITY}",
 )]

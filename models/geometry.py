@@ -11,3 +11,10 @@ def elements_fit(count, pitch_diameter, element_diameter):
     touching each other when that chord exceeds their diameter. Any consistent length unit.
     """
     return np.asarray(pitch_diameter) * np.sin(np.pi / np.asarray(count)) > element_diameter
+
+
+def clearance_below_roller(clearance, roller_diameter):
+    """Whether a diametral clearance (or interference, negative) is smaller than the rollers:
+    a gap between the raceways as large as a roller lets rollers pass one another or drop out
+    of their raceways, which no bearing can."""
+    return np.abs(np.asarray(clearance)) < np.asarray(roller_diameter)

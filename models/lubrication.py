@@ -18,6 +18,84 @@ WALTHER_FLOOR = 0.3
 OIL_DENSITIES = (600.0, 2000.0)
 
 
+#: Viscosity indices real lubricants have [-], with room on both sides: naphthenic mineral
+#: oils reach down to about 0 and a few below, paraffinic ones 80-120, hydrocracked and
+#: synthetic hydrocarbons, esters and polyglycols up to about 250, silicone fluids, the
+#: highest, about 400 (L. R. Rudnick (ed.), Synthetics, Mineral Oils, and Bio-Based
+#: Lubricants, 3rd ed., CRC Press (2020)). Beyond them the two viscosities are no oil's.
+VISCOSITY_INDEX_RANGE = (-100.0, 500.0)
+#: ISO 2909 / ASTM D2270 Table 1: the viscosities at 40 deg C of the reference oils of
+#: viscosity index 0 (L) and 100 (H) that have the kinematic viscosity Y at 100 deg C, all in
+#: mm^2/s, at the table's rows listed here; between them log-log interpolation stays within
+#: 0.2 % of every row of the table (2-70 mm^2/s). Above 70 the standard's own formulas.
+_VI_ROWS = np.array([2.0, 2.3, 2.8, 3.4, 4.0, 4.2, 4.4, 5.1, 5.5, 5.9, 6.5, 7.1, 7.5, 8.6,
+                     14.9, 20.2, 30.0, 41.5, 57.0, 70.0])
+_VI_L = np.array([7.994, 10.0, 13.8, 19.12, 25.32, 27.75, 30.48, 41.99, 49.09, 56.2, 67.12,
+                  80.25, 88.85, 113.9, 293.0, 501.5, 1023.0, 1851.0, 3340.0, 4905.0])
+_VI_H = np.array([6.394, 7.944, 10.87, 14.93, 19.56, 21.21, 22.92, 29.46, 33.34, 37.23,
+                  43.18, 49.61, 53.98, 66.48, 148.2, 233.0, 421.7, 689.1, 1127.0, 1558.0])
+
+
+def viscosity_index(viscosity_40, viscosity_100):
+    """Viscosity index of an oil (ISO 2909, ASTM D2270, procedures A and B).
+
+    Parameters
+    ----------
+    viscosity_40, viscosity_100 : array_like
+        Kinematic viscosity at 40 and 100 deg C [m^2/s].
+
+    Returns
+    -------
+    numpy.ndarray
+        ``VI = 100 (L - U) / (L - H)`` where ``U`` (the viscosity at 40 deg C) exceeds ``H``,
+        else ``VI = (10^N - 1) / 0.00715 + 100`` with ``N = (log H - log U) / log Y``, ``Y``
+        the viscosity at 100 deg C, all in mm^2/s [-]; NaN below ``Y = 2`` mm^2/s, where the
+        standard defines none.
+
+    References
+    ----------
+    .. [1] ISO 2909:2002, Petroleum products - Calculation of viscosity index from kinematic
+       viscosity; ASTM D2270-10, Table 1 and sections 6-7.
+    """
+    lower = np.asarray(viscosity_100, dtype=float) * 1e6
+    return np.where(lower >= _VI_ROWS[0], _index(viscosity_40, viscosity_100), np.nan)
+
+
+def _index(viscosity_40, viscosity_100):
+    """:func:`viscosity_index`, and below ``Y = 2`` mm^2/s procedure A's ``100 (L - U) /
+    (L - H)`` with the reference oils' lines continued as the table's first rows run
+    (log-log), so that a thin oil can still be told from none."""
+    upper = np.asarray(viscosity_40, dtype=float) * 1e6
+    lower = np.asarray(viscosity_100, dtype=float) * 1e6
+    rows = np.log(_VI_ROWS)
+    with np.errstate(invalid="ignore", divide="ignore", over="ignore"):
+        logs = np.log(lower)
+
+        def reference(column, formula):
+            logs_of = np.log(column)
+            slope = (logs_of[1] - logs_of[0]) / (rows[1] - rows[0])
+            table = np.where(logs < rows[0], logs_of[0] + slope * (logs - rows[0]),
+                             np.interp(logs, rows, logs_of))
+            return np.where(lower > _VI_ROWS[-1], formula, np.exp(table))
+
+        low = reference(_VI_L, 0.8353 * lower**2 + 14.67 * lower - 216.0)
+        high = reference(_VI_H, 0.1684 * lower**2 + 11.85 * lower - 97.0)
+        below_100 = 100.0 * (low - upper) / (low - high)
+        exponent = (np.log10(high) - np.log10(upper)) / np.log10(lower)
+        above_100 = (10.0**exponent - 1.0) / 0.00715 + 100.0
+        return np.where((upper > high) | (lower < _VI_ROWS[0]), below_100, above_100)
+
+
+def implausible_viscosity_index(viscosity_40, viscosity_100):
+    """Where an oil's viscosities [m^2/s] give a viscosity index outside
+    :data:`VISCOSITY_INDEX_RANGE`: no lubricant thins so much, or so little, from 40 to
+    100 deg C. Below 2 mm^2/s at 100 deg C, where ISO 2909 defines no index, the reference
+    oils' lines are continued (:func:`_index`); False where a viscosity is NaN."""
+    index = _index(viscosity_40, viscosity_100)
+    with np.errstate(invalid="ignore"):
+        return (index < VISCOSITY_INDEX_RANGE[0]) | (index > VISCOSITY_INDEX_RANGE[1])
+
+
 def viscosities_fall(viscosity_40, viscosity_100):
     """Whether an oil's viscosity at 100 deg C is below that at 40 deg C, as every oil's is
     (its viscosity falls as it warms); Walther's law through swapped values would make it

@@ -21,7 +21,8 @@ from __future__ import annotations
 
 import numpy as np
 
-from .geometry import elements_fit
+from .geometry import clearance_below_roller, elements_fit
+from .limits import CLEARANCE_VALIDITY, clearance_beyond_bearings
 from .registry import (CONVERGED, NOT_CONVERGED, OUT_OF_VALIDITY, Constraint, DimCoordinate,
                        Input, Model, Output, combine_status)
 
@@ -195,7 +196,13 @@ def crb_runout(inner_raceway_diameter, outer_raceway_diameter, roller_diameter, 
     between the centres not linearised vary from step to step by more than 1 % of the runout
     and 0.01 um (the centre moves by more than micrometres against the radii: a large
     clearance or large errors); or where a roller's or the inner raceway's profile is not
-    convex (``C (n^2 + 1) >= R``), so that a contact leaves the radius line.
+    convex (``C (n^2 + 1) >= R``), so that a contact leaves the radius line; and, whatever
+    the outcome, where the clearance ``d_e - d_i - 2 D`` (with the largest roller's diameter
+    error) exceeds the largest ISO 5753-1 gives
+    a cylindrical roller bearing whose bore is at most ``d_i``
+    (:func:`models.limits.clearance_beyond_bearings`): paper 004's NU208 has 0.05-0.08 mm,
+    its model takes the centre's movement small against the radii, and a bearing with more
+    play than any group of the standard is none the paper or the makers describe.
 
     References
     ----------
@@ -280,6 +287,9 @@ def crb_runout(inner_raceway_diameter, outer_raceway_diameter, roller_diameter, 
                                amplitude[..., None]).any(axis=-1)
     inner_bent = _not_convex(0.5 * inner, inner_set[0][:, 0, 0], inner_set[1][:, 0, 0])
     outside = squeezed | inexact | rollers_bent | inner_bent
+    # The play the largest roller leaves: undersize rollers widen the clearance.
+    loose = clearance_beyond_bearings(outer - inner - 2.0 * (diameter + error.max(axis=-1)),
+                                      inner)
     return {
         "runout": runout,
         "vertical_runout": y.max(axis=-1) - y.min(axis=-1),
@@ -287,7 +297,8 @@ def crb_runout(inner_raceway_diameter, outer_raceway_diameter, roller_diameter, 
         "rotation_angle": np.broadcast_to(rotation, x.shape),
         "assembly_order": order_index + 1.0,
         "status": combine_status(np.where(found, CONVERGED, NOT_CONVERGED),
-                                 np.where(outside, OUT_OF_VALIDITY, CONVERGED)),
+                                 np.where(outside, OUT_OF_VALIDITY, CONVERGED),
+                                 np.where(loose, OUT_OF_VALIDITY, CONVERGED)),
     }
 
 
@@ -325,6 +336,11 @@ def _clearance(inner_raceway_diameter, outer_raceway_diameter, roller_diameter):
     # Zero clearance written in mm may come out a few 1e-18 m negative in metres.
     clearance = outer_raceway_diameter - inner_raceway_diameter - 2.0 * roller_diameter
     return clearance >= -_ROUNDING * outer_raceway_diameter
+
+
+def _clearance_below_roller(inner_raceway_diameter, outer_raceway_diameter, roller_diameter):
+    return clearance_below_roller(
+        outer_raceway_diameter - inner_raceway_diameter - 2.0 * roller_diameter, roller_diameter)
 
 
 def _rollers_have_radius(roller_diameter, roller_diameter_error, roller_roundness_amplitude):
@@ -374,7 +390,7 @@ MODELS = [Model(
             "roundness and size errors of rollers and raceways.",
     reference="Paper 004, Influence of geometric error of rollers on rotational accuracy of "
               "cylindrical roller bearings, eq. 1-6, section 1.4",
-    version="4",
+    version="5",
     inputs=(
         Input("inner_raceway_diameter", "mm", "inner raceway diameter di", minimum=0.0,
               exclusive_minimum=True),
@@ -431,6 +447,10 @@ MODELS = [Model(
                    _clearance, "outer_raceway_diameter - inner_raceway_diameter - 2 "
                    "roller_diameter (the clearance) must not be negative: the model is "
                    "unloaded"),
+        Constraint(("inner_raceway_diameter", "outer_raceway_diameter", "roller_diameter"),
+                   _clearance_below_roller, "the clearance (outer_raceway_diameter - "
+                   "inner_raceway_diameter - 2 roller_diameter) must be smaller than the roller "
+                   "diameter"),
         Constraint(("roller_roundness_order", "inner_roundness_order", "outer_roundness_order"),
                    _whole_orders, "roundness orders must be whole numbers"),
         Constraint(("roller_diameter", "roller_diameter_error", "roller_roundness_amplitude"),
@@ -450,5 +470,6 @@ MODELS = [Model(
              "not linearised (paper 004's linear contact conditions, section 1.4, take "
              "micrometre errors against radii of centimetres); a roller or "
              "inner raceway profile that is not convex, C (n^2 + 1) >= R (a contact off the "
-             "radius line)",
+             f"radius line); whatever the outcome, {CLEARANCE_VALIDITY} (paper 004's NU208: "
+             "0.05-0.08 mm)",
 )]

@@ -24,6 +24,8 @@ from .contact import (APPROACH_LIMIT, ROLLER_PRESSURE_LIMIT, STIFFEST_SOLID, eff
 from .geometry import elements_fit
 from .kernels import Kernels
 from .life import roller_bearing_reference_life, tapered_equivalent_load
+from .limits import (OIL_VALIDITY, SOFTEST_BEARING_SOLID, SPEED_VALIDITY, STEEL_VALIDITY,
+                     not_steel, outside_operation)
 from .lubrication import CELSIUS
 from .registry import (CONVERGED, INFEASIBLE, NO_ROOT_IN_RANGE, NOT_CONVERGED,
                        OUT_OF_VALIDITY, Constraint, Input, Model, Output, below,
@@ -39,6 +41,11 @@ _LIMIT_BRACKET = (np.radians(80.0), np.radians(90.0))  # rib angles searched for
 _LIMIT_NODES = 41  # grid of the limit search: 0.25 deg steps
 _ANGLE_TOLERANCE = 1e-9  # [rad], 0.0002 arcsec
 _MAX_ITERATIONS = 200
+#: Largest relative difference between the large-end diameter given and the one the roller's
+#: cone has, ``D_w + l tan(phi)`` [-]: drawings round each to 0.01 mm (paper 003's roller:
+#: 15.21 against 15.2134 mm, 0.02 %), and 0.5 % of D_w1 (0.08 mm there) moves its limit rib
+#: angle by about 1', less than the 2' steps of the paper's sweep.
+LARGE_END_TOLERANCE = 0.005
 #: Points this process may compute with the interpreted equilibrium before it loads the
 #: compiled one: about as long (0.25 ms a point) as numba takes to import and load it (0.3 s).
 INTERPRETED_POINTS = 1000
@@ -160,7 +167,11 @@ def trb_load(radial_load, axial_load, roller_count, effective_length, roller_mea
     bearings, beyond which the permanent deformation exceeds 1e-4 of the roller diameter and
     the contact is no longer elastic; checked only with ``pitch_diameter``), or its compression
     exceeds 2 % of ``D_w``, where the fixed contact angle and azimuths of the model no longer
-    hold.
+    hold; and, whatever the outcome, where the inputs describe no bearing: eq. 14's constant
+    (fitted to steel) with ``youngs_modulus`` and ``poisson_ratio`` whose ``E*`` lies more
+    than 10 % from steel's (:func:`models.limits.not_steel`), a speed factor ``n d_m`` above
+    4e6 mm r/min or an oil whose viscosity index no lubricant has
+    (:func:`models.limits.outside_operation`).
 
     References
     ----------
@@ -178,6 +189,10 @@ def trb_load(radial_load, axial_load, roller_count, effective_length, roller_mea
     radial, axial, length, diameter, angle, given, pitch, modulus, pressure_limit = arrays[:9]
     speed, life = arrays[9], arrays[10:]
     constant = np.where(np.isnan(given), paper_contact_constant(length, diameter), given)
+    # Inputs that describe no bearing, whatever the outcome: eq. 14's steel constant with
+    # other elastic constants, a speed or an oil no bearing runs with.
+    no_bearing = (np.isnan(given) & not_steel(youngs_modulus, poisson_ratio)) \
+        | outside_operation(speed, pitch, life[4], life[5])
     carried = _carried(radial, axial, angle)
     # Start from the axial displacement of eq. 15 (all rollers equally loaded by F_a) with
     # a radial shift that keeps every roller compressed.
@@ -197,8 +212,9 @@ def trb_load(radial_load, axial_load, roller_count, effective_length, roller_mea
     converged &= np.isfinite(displacement).all(axis=-1) & np.isfinite(roller_load).all(axis=-1)
     beyond = ((pressure > pressure_limit[:, None])
               | (compression > APPROACH_LIMIT * diameter[:, None])).any(axis=-1)
-    status = np.select([~carried, ~converged, beyond], [INFEASIBLE, NOT_CONVERGED,
-                                                        OUT_OF_VALIDITY], CONVERGED)
+    status = combine_status(
+        np.select([~carried, ~converged], [INFEASIBLE, NOT_CONVERGED], CONVERGED),
+        np.where((carried & converged & beyond) | no_bearing, OUT_OF_VALIDITY, CONVERGED))
     with np.errstate(divide="ignore", invalid="ignore"):
         reference_life = roller_bearing_reference_life(roller_load[..., None], life[0],
                                                        diameter, pitch, angle)
@@ -507,6 +523,14 @@ def _large_end_larger(roller_large_diameter, roller_mean_diameter):
     return np.asarray(roller_large_diameter) > np.asarray(roller_mean_diameter)
 
 
+def _large_end_of_the_cone(roller_large_diameter, roller_mean_diameter, effective_length,
+                           roller_half_angle):
+    # Both contacts end at the large end (RollerEnd, _roller_balance): the cone of mean
+    # diameter D_w in the middle of the contact widens to D_w + l tan(phi) there.
+    cone = roller_mean_diameter + effective_length * np.tan(roller_half_angle)
+    return np.abs(roller_large_diameter - cone) <= LARGE_END_TOLERANCE * roller_large_diameter
+
+
 def _end_sphere_fits(roller_end_radius, roller_large_diameter):
     return roller_end_radius > roller_large_diameter / 2
 
@@ -530,7 +554,7 @@ _CONSTANT = Input("contact_constant", "N/mm^1.11", "load-deflection constant Kne
                   "Q = Kne delta^1.11; default eq. 14, 2.89e4 l^0.82 Dw^0.11 (N, mm)",
                   default=None, minimum=0.0, exclusive_minimum=True)
 _MODULUS = Input("youngs_modulus", "GPa", "Young's modulus of rollers and rings", default=206.0,
-                 minimum=0.0, exclusive_minimum=True, maximum=STIFFEST_SOLID)
+                 minimum=SOFTEST_BEARING_SOLID, maximum=STIFFEST_SOLID)
 _POISSON = Input("poisson_ratio", "1", "Poisson's ratio of rollers and rings", default=0.3,
                  minimum=0.0, maximum=0.5)
 _REFERENCE = "Paper 003, Optimization of the rib angle of tapered roller bearings"
@@ -542,7 +566,7 @@ MODELS = [
         summary="Tapered roller bearing under radial and axial load: radial and axial "
                 "displacement and the load of every roller.",
         reference=_REFERENCE + ", eq. 13-18",
-        version="6",
+        version="7",
         inputs=_LOAD_INPUTS + (
             _CONSTANT,
             Input("pitch_diameter", "mm", "pitch diameter dm at the middle of the rollers, for "
@@ -588,7 +612,10 @@ MODELS = [
         points_per_call=4096,
         validity="a roller's cone contact pressure above pressure_limit (default 4000 MPa, "
                  "ISO 76's reference stress for roller bearings; checked when pitch_diameter "
-                 "is given) or its compression above 2 % of the mean roller diameter",
+                 "is given) or its compression above 2 % of the mean roller diameter; "
+                 "whatever the outcome, inputs that describe no bearing: "
+                 f"{STEEL_VALIDITY} (eq. 14's constant); {SPEED_VALIDITY} (with "
+                 f"pitch_diameter); {OIL_VALIDITY}",
     ),
     Model(
         name="trb_rib",
@@ -597,7 +624,7 @@ MODELS = [
                 "with the conical rib, its distance from the oil groove, and the rib angle at "
                 "which the contact ellipse reaches the groove.",
         reference=_REFERENCE + ", eq. 1-12, 19-20",
-        version="3",
+        version="4",
         inputs=_LOAD_INPUTS + (
             Input("roller_large_diameter", "mm", "large-end roller diameter Dw1", minimum=0.0,
                   exclusive_minimum=True),
@@ -653,6 +680,12 @@ MODELS = [
             Constraint(("roller_large_diameter", "roller_mean_diameter"), _large_end_larger,
                        "roller_large_diameter must exceed roller_mean_diameter: the large "
                        "end is the larger"),
+            Constraint(("roller_large_diameter", "roller_mean_diameter", "effective_length",
+                        "roller_half_angle"), _large_end_of_the_cone,
+                       "roller_large_diameter must be the large end of the roller's cone, "
+                       "roller_mean_diameter + effective_length * tan(roller_half_angle), "
+                       "within 0.5 %: the model takes both raceway contacts to end at the "
+                       "large end (paper 003: 13.71 + 21.5 tan 4 deg = 15.21 mm)"),
             Constraint(("roller_count", "rib_diameter", "effective_length",
                         "roller_mean_diameter", "outer_contact_angle", "roller_half_angle"),
                        _rib_rollers_fit, "the rollers do not fit on the pitch circle "
@@ -660,7 +693,8 @@ MODELS = [
                        "d_m sin(180 deg / roller_count), must exceed roller_mean_diameter")),
         seconds_per_point=3.7e-4,  # benchmarks/declared_costs.py: 3.5-3.9e-4
         points_per_call=2000,
-        validity="trb_load's limits for the raceways (pitch diameter from rib_diameter); the "
+        validity="trb_load's limits for the raceways (pitch diameter from rib_diameter; its "
+                 "steel constant with other elastic constants included); the "
                  "rib contact's pressure above 4000 MPa (ISO 76, roller bearings), an ellipse "
                  "cut by the oil groove (edge_margin < 0), or hertz_point's limits",
     ),

@@ -498,3 +498,18 @@ def test_the_equivalent_load_takes_iso_281_factors_of_the_contact_angle():
     deep_groove = ball_5dof(**PUBLISHED_BEARING, axial_load=1000.0, radial_load=1000.0,
                             clearance=0.01 * MM, dynamic_load_rating=23.4e3)
     assert np.isnan(deep_groove["equivalent_dynamic_load"]).all()
+
+
+def test_a_speed_or_oil_no_bearing_runs_with_is_out_of_validity():
+    # The load distribution is static, but the speed and the oil make the lives: n dm beyond
+    # 4e6 mm r/min (1e5 r/min on 41 mm is 4.1e6) or an oil of VI 811 (3520 and 3519 mm^2/s)
+    # is flagged, values kept.
+    rpm = 2 * np.pi / 60
+    speed = ball_5dof(**ACBB, axial_load=1000.0, speed=np.array([3000.0, 1e5, 1e300]) * rpm,
+                      dynamic_load_rating=4.15e3)
+    assert speed["status"].tolist() == [CONVERGED, OUT_OF_VALIDITY, OUT_OF_VALIDITY]
+    assert np.all(speed["axial_stiffness"] == speed["axial_stiffness"][0])
+    oil = ball_5dof(**ACBB, axial_load=1000.0, speed=3000 * rpm, dynamic_load_rating=4.15e3,
+                    fatigue_load_limit=0.2e3, viscosity_40=np.array([68e-6, 3520e-6]),
+                    viscosity_100=np.array([8.7e-6, 3519e-6]))
+    assert oil["status"].tolist() == [CONVERGED, OUT_OF_VALIDITY]

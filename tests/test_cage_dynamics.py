@@ -83,6 +83,9 @@ def test_the_pocket_couples_conserve_angular_momentum(pushed):
     ('cage_eccentricity = "1 m"', "mass centre lies within its outline"),
     ('cage_eccentricity = "29.5 mm"', "mass centre lies within its outline"),
     ('pocket_clearance = "1 m"', "pockets do not fit"),
+    # cages are of polymers (polyamide, 1140 kg/m^3) to bronze (8900)
+    ('cage_density = "1 kg/m^3"', "cage_density"),
+    ('cage_density = "20000 kg/m^3"', "cage_density"),
 ])
 def test_a_cage_that_cannot_be_is_refused_before_computing(model, fixed, words):
     from bearing_sweep import spec
@@ -95,6 +98,16 @@ def test_a_cage_that_cannot_be_is_refused_before_computing(model, fixed, words):
     if model == "cage_dynamics_6dof":
         with pytest.raises(spec.SpecError, match="mass centre lies within its outline"):
             spec.parse(text.replace(fixed, 'cage_axial_eccentricity = "-5 mm"'))
+
+
+def test_a_cage_softer_than_any_cage_material_is_refused():
+    from bearing_sweep import spec
+
+    text = ('[sweep]\nmodel = "cage_dynamics_6dof"\nbearing = "paper002-test"\n[fixed]\n'
+            'speed = "9000 rpm"\nradial_load = "800 N"\ncage_youngs_modulus = "1e-6 GPa"\n')
+    with pytest.raises(spec.SpecError, match="cage_youngs_modulus"):
+        spec.parse(text)
+    assert spec.parse(text.replace("1e-6 GPa", "3 GPa")).model.name == "cage_dynamics_6dof"
 
 
 def test_the_steady_starts_validity_is_carried_through_the_transient():

@@ -176,7 +176,7 @@ OUTSIDE_VALIDITY = {
     "crb_runout": ('bearing = "paper004-NU208-1"\n[fixed]\nroller_roundness_order = 2\n'
                    'roller_roundness_amplitude = "0.5 um"\nrevolutions = 1\n'
                    'steps_per_revolution = 360', 'outer_raceway_diameter = ["71.555 mm", '
-                   '"100 mm"]', "converged"),
+                   '"80 mm"]', "converged"),
     "hertz_point": ('[fixed]\ncurvature_1x = "0.2 1/mm"\ncurvature_1y = "0.2 1/mm"\n'
                     'curvature_2x = "-0.19 1/mm"', 'load = ["10 N", "1 MN"]', "converged"),
     "trb_load": ('bearing = "paper003-table1"\n[fixed]\nradial_load = "10 kN"',

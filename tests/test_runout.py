@@ -243,8 +243,42 @@ def test_a_profile_that_is_not_convex_is_out_of_validity():
         assert result["status"][0] == status, amplitude
 
 
+@pytest.mark.parametrize("outer", ["100 mm", "82.48 mm"])
+def test_a_clearance_as_large_as_a_roller_is_refused_before_computing(outer):
+    # The reproduction: an outer raceway of 100 mm on NU208 (the preset's round parts) leaves
+    # a diametral clearance of 28.5 mm against 11 mm rollers, and gave 366.5 um of vertical
+    # runout, "converged". 82.48 mm leaves 11.0035 mm, just more than the roller diameter.
+    from bearing_sweep.spec import SpecError
+
+    with pytest.raises(SpecError, match="must be smaller than the roller diameter"):
+        _definition(outer_raceway_diameter=outer)
+    assert _definition(outer_raceway_diameter="82.47 mm").model.name == "crb_runout"
+
+
+def test_a_clearance_no_bearing_has_is_out_of_validity():
+    # The preset's round parts (nothing for the linearisation check to see): 80 mm (8.5 mm of
+    # clearance) and 71.65 mm (0.172 mm) are beyond ISO 5753-1's largest clearance for a
+    # bearing of NU208's size (group 5: 0.125 mm), values kept; the preset's 0.077 mm and
+    # 0.124 mm are within.
+    preset = {**NU208, "roller_diameter": 10.9985 * MM}
+    tight = 49.481 + 2 * 10.9985  # the outer raceway diameter of zero clearance [mm]
+    outer = np.array([71.555, tight + 0.124, tight + 0.126, 71.65, 80.0]) * MM
+    result = crb_runout(**{**preset, "outer_raceway_diameter": outer})
+    assert result["status"].tolist() == [CONVERGED, CONVERGED, OUT_OF_VALIDITY,
+                                         OUT_OF_VALIDITY, OUT_OF_VALIDITY]
+    assert np.isfinite(result["vertical_runout"]).all()
+    # Rollers all 0.1 mm undersize leave the preset's raceways 0.277 mm of play.
+    undersize = crb_runout(**preset, roller_diameter_error=-0.1 * MM)
+    assert undersize["status"].tolist() == [OUT_OF_VALIDITY]
+    one = crb_runout(**preset, roller_diameter_error=np.r_[-0.1 * MM, np.zeros(13)])
+    assert one["status"].tolist() == [CONVERGED]  # the others hold the play
+
+
 def test_describe_states_the_validity_it_applies():
     from bearing_sweep import describe
 
-    validity = describe("crb_runout")["validity"]
+    description = describe("crb_runout")
+    validity = description["validity"]
     assert "preload" in validity and "1 %" in validity and "convex" in validity
+    assert "ISO 5753-1" in validity
+    assert any("smaller than the roller diameter" in c for c in description["conditions"])

@@ -302,8 +302,17 @@ def test_a_point_outside_validity_with_no_limit_angle_says_both(change):
 @pytest.mark.parametrize("model, fixed, words", [
     ("trb_rib", 'roller_half_angle = "15 deg"', "raceway angle beta"),
     ("trb_rib", 'roller_large_diameter = "12 mm"', "large end is the larger"),
+    # the reproduction: 13.72 mm gave an edge margin of 0.133 mm (0.838 mm with the cone's
+    # 15.21 mm) and a limit of 88.96 deg (89.35), "converged"; 30 mm only no_root_in_range
+    ("trb_rib", 'roller_large_diameter = "13.72 mm"', "large end of the roller's cone"),
+    ("trb_rib", 'roller_large_diameter = "30 mm"', "large end of the roller's cone"),
+    ("trb_rib", 'roller_large_diameter = "15.29 mm"', "large end of the roller's cone"),
+    ("trb_rib", 'roller_half_angle = "2 deg"', "large end of the roller's cone"),
+    ("trb_rib", 'effective_length = "25 mm"', "large end of the roller's cone"),
+    ("trb_rib", 'roller_mean_diameter = "13 mm"', "large end of the roller's cone"),
     ("trb_rib", 'roller_count = 40', "do not fit on the pitch circle"),
     ("trb_load", 'roller_count = 40', "do not fit on the pitch circle"),
+    ("trb_load", 'youngs_modulus = "1e-6 GPa"', "youngs_modulus"),
     ("trb_load", 'viscosity_40 = "8 mm^2/s"\nviscosity_100 = "68 mm^2/s"', "thins as it warms"),
 ])
 def test_a_tapered_bearing_that_cannot_be_is_refused_before_computing(model, fixed, words):
@@ -317,3 +326,46 @@ def test_a_tapered_bearing_that_cannot_be_is_refused_before_computing(model, fix
             '[axes]\naxial_load = ["27 kN", "40 kN"]\n')
     with pytest.raises(spec.SpecError, match=words):
         spec.parse(text)
+
+
+def test_a_large_end_of_the_cone_within_rounding_is_accepted():
+    # 15.21 mm is the cone's 13.71 + 21.5 tan 4 deg = 15.2134 mm rounded; within 0.5 %.
+    from bearing_sweep import spec
+
+    for large in ("15.21 mm", "15.2134 mm", "15.28 mm", "15.14 mm"):
+        text = ('[sweep]\nmodel = "trb_rib"\nbearing = "paper003-table1-rib"\n[fixed]\n'
+                f'roller_large_diameter = "{large}"\nrib_angle = "89 deg"\n')
+        assert spec.parse(text).model.name == "trb_rib"
+
+
+def test_the_steel_contact_constant_with_another_material_is_out_of_validity():
+    # The reproduction: youngs_modulus 1e-6 GPa gave trb_load the steel displacements,
+    # "converged": eq. 14 was fitted to steel. Flagged in trb_load and in trb_rib, whose
+    # raceways are trb_load's; a constant of the user's own holds for any material.
+    moduli = np.array([206e9, 1e3, 310e9])
+    load = trb_load(40e3, 27e3, **BEARING, youngs_modulus=moduli)
+    assert load["status"].tolist() == [CONVERGED, OUT_OF_VALIDITY, OUT_OF_VALIDITY]
+    assert np.all(load["radial_displacement"] == load["radial_displacement"][0])  # kept
+    own = trb_load(40e3, 27e3, **BEARING, youngs_modulus=moduli,
+                   contact_constant=paper_contact_constant(21.5 * MM, 13.71 * MM))
+    assert own["status"].tolist() == [CONVERGED] * 3
+    rib = trb_rib(40e3, 27e3, **BEARING, **{**END, "youngs_modulus": moduli},
+                  rib_angle=DEG(89))
+    assert [s & OUT_OF_VALIDITY for s in rib["status"].tolist()] == [0, OUT_OF_VALIDITY,
+                                                                      OUT_OF_VALIDITY]
+
+
+def test_a_speed_or_oil_no_bearing_runs_with_is_out_of_validity():
+    # 1e300 r/min, 1e5 r/min on an 80 mm pitch circle (8e6 mm r/min) and an oil of VI 811;
+    # without a pitch diameter the speed factor is unknown (and the lives are NaN).
+    pitch = 79.537 * MM
+    rpm = 2 * np.pi / 60
+    speed = trb_load(40e3, 27e3, **BEARING, pitch_diameter=pitch,
+                     speed=np.array([3000.0, 1e5, 1e300]) * rpm)
+    assert speed["status"].tolist() == [CONVERGED, OUT_OF_VALIDITY, OUT_OF_VALIDITY]
+    oil = trb_load(40e3, 27e3, **BEARING, pitch_diameter=pitch, speed=3000 * rpm,
+                   dynamic_load_rating=127.6e3, fatigue_load_limit=15e3,
+                   viscosity_40=np.array([68e-6, 3520e-6]),
+                   viscosity_100=np.array([8.7e-6, 3519e-6]))
+    assert oil["status"].tolist() == [CONVERGED, OUT_OF_VALIDITY]
+    assert trb_load(40e3, 27e3, **BEARING, speed=1e5 * rpm)["status"].tolist() == [CONVERGED]
