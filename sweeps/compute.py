@@ -21,6 +21,7 @@ from .models.registry import MODEL_ERROR, known_status, values_kept
 from . import hdf5_chunks, store, units
 from .footprint import Footprint, InsufficientSpace
 from .grid import Grid, block_shape
+from .interrupts import RESULT_COMPLETE, Interrupts, interruptions_raised  # noqa: F401
 from .labels import stored_unit
 from .parts import HeldChunks, OutputLock, Parts, check_output, check_parts_folder, is_zarr
 from .spec import SpecError, Sweep
@@ -72,7 +73,8 @@ def evaluate_chunk(grid: Grid, start: int, stop: int) -> dict:
     units, with the grid's largest size on each own dimension (NaN beyond a point's own size).
     Points are grouped by their structural inputs (counts, choices) and the model is called
     once per group. An exception in the model marks that group's points with
-    ``model_error`` and records its message; it does not stop the sweep.
+    ``model_error`` and records its message; it does not stop the sweep, but a Ctrl-C does,
+    whatever exception the model turned it into (:func:`interrupts.interruptions_raised`).
     """
     model = grid.model
     count = stop - start
@@ -100,7 +102,9 @@ def evaluate_chunk(grid: Grid, start: int, stop: int) -> dict:
             else:
                 arguments[name] = values[members]
         try:
-            result = model.function(**arguments)
+            # A Ctrl-C that compiled code turns into another exception stops the run.
+            with interruptions_raised():
+                result = model.function(**arguments)
         except Exception as error:  # one bad group must not cost the whole sweep
             errors.append(f"{type(error).__name__}: {error}".splitlines()[0])
             continue
@@ -364,10 +368,12 @@ class Executor:
             # goes wrong reaches the summary or the command's one line of error.
             count = self.worker_count()
             try:
-                self.cluster = LocalCluster(n_workers=count, threads_per_worker=1,
-                                            processes=True, dashboard_address=":0",
-                                            silence_logs=logging.CRITICAL, preload=[__name__])
-                self.client = Client(self.cluster, set_as_default=False)
+                with interruptions_raised():  # a Ctrl-C, not a failure to start
+                    self.cluster = LocalCluster(
+                        n_workers=count, threads_per_worker=1, processes=True,
+                        dashboard_address=":0", silence_logs=logging.CRITICAL,
+                        preload=[__name__])
+                    self.client = Client(self.cluster, set_as_default=False)
             except Exception as error:  # dask's own traceback is not for the user
                 reason = (str(error).splitlines() or [type(error).__name__])[0]
                 raise ClusterFailure(
@@ -487,48 +493,6 @@ def _check_versions(found: dict, expected: dict, executor: Executor, parts: Part
         f"a worker of {where} runs bearing-sweep {found['package']} (model version "
         f"{found['model']}) where this run has bearing-sweep {expected['package']} (model version "
         f"{expected['model']}): install the same on every worker{kept}")
-
-
-#: What a run says of a Ctrl-C that came once its result was in place (:class:`Interrupts`).
-RESULT_COMPLETE = "interrupt ignored: the result was already complete"
-
-
-class Interrupts:
-    """Ctrl-C (SIGINT) during a run, in the main thread. Until the result is about to take its
-    name it stops the run as usual (``KeyboardInterrupt``: the finished chunks are kept);
-    from :meth:`result_taking_its_name` on, the result is complete, and an interrupt is
-    recorded (:attr:`ignored`) instead: the short cleanup that follows (the parts removed,
-    the cluster closed, the summary) finishes, and the caller says that the result is
-    complete rather than that it was interrupted. Elsewhere than in the main thread, or
-    where SIGINT is ignored (a job in the background), nothing changes."""
-
-    def __init__(self):
-        self.result_in_place = False
-        self.ignored = False
-        self.previous = None
-
-    def __enter__(self):
-        if threading.current_thread() is threading.main_thread():
-            previous = signal.getsignal(signal.SIGINT)
-            if callable(previous):
-                self.previous = previous
-                signal.signal(signal.SIGINT, self._interrupted)
-        return self
-
-    def __exit__(self, *exc):
-        if self.previous is not None:
-            signal.signal(signal.SIGINT, self.previous)
-            self.previous = None
-
-    def _interrupted(self, signum, frame):
-        if self.result_in_place:
-            self.ignored = True
-            return
-        self.previous(signum, frame)
-
-    def result_taking_its_name(self):
-        """Called once the result is complete on the disk, just before its rename."""
-        self.result_in_place = True
 
 
 def _stored_bytes(result: dict) -> int | None:

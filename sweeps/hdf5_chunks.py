@@ -33,6 +33,7 @@ import numpy as np
 
 from .dependence import split_reduced, stored_dims
 from .grid import Grid
+from .interrupts import interruptions_raised
 from .parts import Parts, counts_unreadable, load_counts, saved_counts, write_durably
 from .store import closed_after, stored_blocks, writing
 
@@ -154,7 +155,8 @@ def reopened(open_file):
     deadline = time.monotonic() + REOPEN_SECONDS
     while True:
         try:
-            return open_file()
+            with interruptions_raised():
+                return open_file()
         except OSError:
             if time.monotonic() > deadline:
                 raise

@@ -290,3 +290,40 @@ def test_workers_that_keep_dying_are_one_line(tmp_path, capsys, monkeypatch):
     assert err.endswith("run the same command again, or with --workers 0 to compute in this "
                         "process\n")
     assert not (tmp_path / "out.nc").exists()
+
+
+@pytest.mark.slow
+def test_a_ctrl_c_that_reaches_a_worker_alone_changes_nothing(tmp_path):
+    # A worker process that receives SIGINT (kill -INT, a terminal's Ctrl-C reaching the
+    # process group before the driver stops the run) neither stops nor fails its chunks: the
+    # driver alone decides what a Ctrl-C does.
+    import signal
+    import threading
+
+    from bearing_sweep import spec
+    from bearing_sweep.compute import Executor, run_sweep
+
+    sweep = spec.parse(DEFINITION.replace("num = 10", "num = 200").replace("num = 5", "num = 100"))
+    reference = run_sweep(sweep, None, Executor(workers=0), chunk_size=1000, progress=False)
+    with Executor(workers=1) as executor:
+        client = executor.connect()
+        worker = list(client.run(os.getpid).values())[0]
+        running, sent = threading.Event(), []
+
+        def pester():  # SIGINT to the worker every 10 ms while the sweep runs
+            while not running.wait(0.01):
+                os.kill(worker, signal.SIGINT)
+                sent.append(1)
+
+        thread = threading.Thread(target=pester)
+        thread.start()
+        try:
+            summary = run_sweep(sweep, None, executor, chunk_size=1000, progress=False)
+        finally:
+            running.set()
+            thread.join()
+        assert len(sent) > 10 and list(client.run(os.getpid).values()) == [worker]
+    assert summary.status_counts == reference.status_counts and not summary.errors
+    for name in reference.dataset.data_vars:
+        np.testing.assert_array_equal(summary.dataset[name].values,
+                                      reference.dataset[name].values, err_msg=name)
