@@ -18,7 +18,7 @@ from dataclasses import dataclass, field
 import numpy as np
 
 from .models.registry import MODEL_ERROR, known_status, values_kept
-from . import hdf5_chunks, store, units
+from . import hdf5_chunks, quiet, store, units
 from .footprint import Footprint, InsufficientSpace
 from .grid import Grid, block_shape
 from .interrupts import RESULT_COMPLETE, Interrupts, interruptions_raised  # noqa: F401
@@ -75,6 +75,7 @@ def evaluate_chunk(grid: Grid, start: int, stop: int) -> dict:
     once per group. An exception in the model marks that group's points with
     ``model_error`` and records its message; it does not stop the sweep, but a Ctrl-C does,
     whatever exception the model turned it into (:func:`interrupts.interruptions_raised`).
+    The model's warnings are not shown (:func:`quiet.silenced`): its statuses say it.
     """
     model = grid.model
     count = stop - start
@@ -102,16 +103,18 @@ def evaluate_chunk(grid: Grid, start: int, stop: int) -> dict:
             else:
                 arguments[name] = values[members]
         try:
-            # A Ctrl-C that compiled code turns into another exception stops the run.
-            with interruptions_raised():
+            # A Ctrl-C that compiled code turns into another exception stops the run; the
+            # model's warnings stay off the screen (its points say what went wrong).
+            with interruptions_raised(), quiet.silenced():
                 result = model.function(**arguments)
         except Exception as error:  # one bad group must not cost the whole sweep
             errors.append(f"{type(error).__name__}: {error}".splitlines()[0])
             continue
-        for spec in model.outputs:
-            value = _per_point(result[spec.name], members.size, len(spec.dims))
-            region = (members,) + tuple(slice(0, n) for n in value.shape[1:])
-            outputs[spec.name][region] = _from_si(value, spec)
+        with np.errstate(all="ignore"):  # a huge value in its unit is inf, as it says
+            for spec in model.outputs:
+                value = _per_point(result[spec.name], members.size, len(spec.dims))
+                region = (members,) + tuple(slice(0, n) for n in value.shape[1:])
+                outputs[spec.name][region] = _from_si(value, spec)
         returned = _per_point(result["status"], members.size, 0)
         unknown = ~known_status(returned)
         if unknown.any():  # a code no reader could decode: the model is wrong there

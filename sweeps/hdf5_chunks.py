@@ -107,12 +107,14 @@ def layouts(target, names) -> dict[str, Layout]:
 
 def encoded(values: np.ndarray, layout: Layout) -> bytes:
     """The bytes of an HDF5 chunk holding ``values`` (its first indices; the rest of the chunk
-    the fill value) as stored with ``layout``: what HDF5's filters would write."""
-    if values.shape == layout.chunk:
-        data = np.ascontiguousarray(values, dtype=layout.dtype)
-    else:  # an edge block: the part of the chunk beyond the grid is never read
-        data = np.full(layout.chunk, layout.fill, dtype=layout.dtype)
-        data[tuple(slice(0, n) for n in values.shape)] = values
+    the fill value) as stored with ``layout``: what HDF5's filters would write (a value
+    beyond float32's range infinite, without numpy's warning)."""
+    with np.errstate(over="ignore"):
+        if values.shape == layout.chunk:
+            data = np.ascontiguousarray(values, dtype=layout.dtype)
+        else:  # an edge block: the part of the chunk beyond the grid is never read
+            data = np.full(layout.chunk, layout.fill, dtype=layout.dtype)
+            data[tuple(slice(0, n) for n in values.shape)] = values
     size = data.dtype.itemsize
     if layout.shuffle and size > 1:  # byte 0 of every value, then byte 1, ...
         data = data.reshape(-1).view(np.uint8).reshape(-1, size).T.copy()

@@ -168,9 +168,10 @@ def writing(output):
     """The block's failures of HDF5 or netCDF writing the file of ``output`` (``OSError``,
     ``RuntimeError``: a full disk, a file larger than the process may write) as one
     ``OSError`` naming ``output``, in the words of its errno where they give one; a Ctrl-C
-    that the libraries turned into another exception stays one."""
+    that the libraries turned into another exception stays one. A value beyond the range of
+    the type it is stored in (float32) is stored as infinite, without numpy's warning."""
     try:
-        with interruptions_raised():
+        with interruptions_raised(), np.errstate(over="ignore"):
             yield
     except (OSError, RuntimeError) as error:
         code = error.errno if isinstance(getattr(error, "errno", None), int) else None
