@@ -395,14 +395,46 @@ class OutputLock:
         self.lock = filelock.FileLock(self.path, timeout=0)
 
     def __enter__(self):
-        self.path.parent.mkdir(parents=True, exist_ok=True)
+        """Take the lock; :class:`OutputBusy` if another run holds it, and a lock file that
+        cannot be made (a read-only folder, a filesystem that takes no files: /proc) is one
+        of :meth:`_not_made`."""
         try:
-            self.lock.acquire()
-        except filelock.Timeout:
-            raise OutputBusy(f"{self.output}: another bearing-sweep run is writing this output; "
-                             "wait for it to finish or choose another -o") from None
+            self.path.parent.mkdir(parents=True, exist_ok=True)
+        except OSError as error:
+            raise self._not_made(error, f"its folder {self.path.parent} cannot be made") \
+                from None
+        for _ in range(3):  # again if the holder let it go while it was looked at
+            try:
+                self.lock.acquire()
+            except filelock.Timeout:  # said also where the file cannot be made: look
+                failure = _creation_failure(self.path)
+                if failure is None:
+                    raise OutputBusy(f"{self.output}: another bearing-sweep run is writing this "
+                                     "output; wait for it to finish or choose another -o") \
+                        from None
+            except OSError as error:
+                failure = error
+            else:
+                break
+            if failure is not False:
+                raise self._not_made(failure, f"its lock file {self.path.name} cannot be "
+                                              f"made in {self.path.parent}") from None
+        else:
+            raise OutputBusy(f"{self.output}: another bearing-sweep run keeps taking and "
+                             "leaving this output's lock; wait for it to finish or choose "
+                             "another -o")
         remove_stale_temporaries(self.output)
         return self
+
+    def _not_made(self, error: OSError, what: str) -> OSError:
+        """The error of a lock that cannot be made (``what``, for ``error``): a full disk's
+        is an ``OSError`` (a failure of the machine), any other an :class:`UnsafeOutput` (an
+        output where nothing can be written)."""
+        reason = error.strerror or str(error) or type(error).__name__
+        if error.errno in WRITING_ERRORS and error.errno != errno.EROFS:
+            return OSError(error.errno, f"{what}: {reason}", str(self.output))
+        return UnsafeOutput(f"{self.output}: cannot be written: {what} ({reason}); choose "
+                            "another output")
 
     def __exit__(self, *exc):
         try:
@@ -410,6 +442,28 @@ class OutputLock:
         except OSError:  # Windows cannot remove an open file: filelock removes it on release
             pass
         self.lock.release()
+
+
+def _creation_failure(path: Path) -> OSError | bool | None:
+    """Why no file can be opened or made at ``path`` (an ``OSError``); None where one exists
+    that opens (its lock is another process's), False where one could be made (the holder
+    has just removed it: nothing is left of the try)."""
+    flags = os.O_RDWR | getattr(os, "O_NOFOLLOW", 0)
+    try:
+        os.close(os.open(path, flags))
+        return None
+    except FileNotFoundError:
+        pass  # not there, or a folder that takes no files (/proc says so too)
+    except OSError as error:
+        return error
+    try:
+        os.close(os.open(path, flags | os.O_CREAT | os.O_EXCL, 0o644))
+    except FileExistsError:
+        return None  # made meanwhile, by the run that takes the lock
+    except OSError as error:
+        return error
+    os.unlink(path)
+    return False
 
 
 def _read_json(path: Path):

@@ -4,6 +4,7 @@ Everything else is refused in one line, exit status 2, before any computing and 
 written. The device case is played by stand-ins inside tmp_path (a named pipe, a symbolic
 link); /dev/null itself is only looked at, with every way of writing made to fail first.
 """
+import errno
 import os
 import re
 import stat
@@ -187,3 +188,50 @@ def test_a_file_where_a_store_goes_is_refused(tmp_path, capsys, no_computing):
         ours.source = "bearing-sweep 0.1.0"
     err = refused(tmp_path, capsys, tmp_path / "ours.zarr")
     assert "ours.zarr: exists and is a file; a .zarr output is a zarr store, a folder" in err
+
+
+#: A lock file that cannot be made, by the error the system gives, and the exit status.
+LOCK_FAILURES = {"a filesystem that takes no files, as /proc": (errno.ENOENT, 2),
+                 "a read-only folder": (errno.EROFS, 2),
+                 "no permission": (errno.EACCES, 2),
+                 "a full disk": (errno.ENOSPC, 1)}
+
+
+@pytest.mark.parametrize("case", LOCK_FAILURES)
+def test_a_lock_file_that_cannot_be_made_says_so(tmp_path, capsys, monkeypatch, case):
+    # Before, every one of them said that another run was writing the output.
+    code, status = LOCK_FAILURES[case]
+    opened = os.open
+
+    def refused_there(path, flags, *args, **kwargs):
+        if os.fspath(path).endswith(".out.nc.lock"):
+            raise OSError(code, os.strerror(code), os.fspath(path))
+        return opened(path, flags, *args, **kwargs)
+
+    (tmp_path / "def.toml").write_text(DEFINITION)
+    before = tree(tmp_path)
+    monkeypatch.setattr(os, "open", refused_there)
+    assert cli.main(["run", str(tmp_path / "def.toml"), "-o", str(tmp_path / "out.nc"),
+                     "--workers", "0", "--quiet"]) == status
+    err = capsys.readouterr().err
+    assert err.count("\n") == 1 and "another bearing-sweep run" not in err, err
+    assert f"its lock file .out.nc.lock cannot be made in {tmp_path}" in err
+    assert os.strerror(code) in err
+    assert tree(tmp_path) == before
+
+
+def test_a_folder_where_the_lock_goes_says_so(tmp_path, capsys):
+    (tmp_path / ".out.nc.lock").mkdir()
+    err = refused(tmp_path, capsys, tmp_path / "out.nc")
+    assert f"its lock file .out.nc.lock cannot be made in {tmp_path} (Is a directory)" in err
+
+
+@pytest.mark.skipif(not os.path.isdir("/proc/self"), reason="no /proc")
+def test_an_output_in_proc_is_refused_for_what_it_is(tmp_path, capsys):
+    # The reproduction: nothing can be made in /proc (the attempt makes nothing).
+    (tmp_path / "def.toml").write_text(DEFINITION)
+    assert cli.main(["run", str(tmp_path / "def.toml"), "-o", "/proc/x.nc", "--workers", "0",
+                     "--quiet"]) == 2
+    assert capsys.readouterr().err == (
+        "error: /proc/x.nc: cannot be written: its lock file .x.nc.lock cannot be made in /proc "
+        "(No such file or directory); choose another output\n")
