@@ -47,6 +47,8 @@ class UnreadablePart(OSError):
 NETCDF_SIGNATURES = (b"CDF\x01", b"CDF\x02", b"CDF\x05", b"\x89HDF\r\n\x1a\n")
 #: The suffix of an output written as a zarr store (a folder) rather than a netCDF file.
 ZARR_SUFFIX = ".zarr"
+#: The suffix of the folder beside an output that keeps its run's finished chunks.
+PARTS_SUFFIX = ".parts"
 #: Names that are only a suffix: a hidden file, not a result with a name.
 BARE_SUFFIXES = (ZARR_SUFFIX, ".nc")
 #: The errors of a file that cannot be written on (a full disk or quota, a file larger than
@@ -86,6 +88,7 @@ def check_output(output, definition=None):
     :class:`UnsafeOutput`; nothing is opened but a regular file's first bytes and header.
     """
     _check_name(output)
+    check_outside_results(output)
     output = Path(output)
     try:
         found = output.lstat()
@@ -146,12 +149,31 @@ def _check_name(output):
                            "zarr store, a name ending in .zarr)")
 
 
+def check_outside_results(path):
+    """Refuse (:class:`UnsafeOutput`) a path to write inside a zarr store (a folder named
+    ``*.zarr``, in any case: a store holds what its run wrote, and is never changed after) or
+    inside a parts folder (``*.parts``: the folder of an output's finished chunks, which its
+    run removes, with what else is in it), by the path as given or as its links lead."""
+    given = Path(os.path.abspath(path))
+    for folder in [*given.parents, *Path(os.path.realpath(given.parent)).parents,
+                   Path(os.path.realpath(given.parent))]:
+        if is_zarr(folder):
+            raise UnsafeOutput(f"{path}: is inside {folder}, and a .zarr folder is a zarr "
+                               "store, which holds only what its run wrote: choose a path "
+                               "outside it")
+        if folder.name.endswith(PARTS_SUFFIX):
+            owner = folder.name[:-len(PARTS_SUFFIX)] or "an output"
+            raise UnsafeOutput(f"{path}: is inside {folder}, the folder where a run keeps the "
+                               f"finished chunks of {owner}, and removes with all it holds: "
+                               "choose a path outside it")
+
+
 def check_parts_folder(output):
     """Refuse (:class:`UnsafeOutput`) a run's output whose parts folder (:class:`Parts`: it is
     emptied and removed once the run is complete) exists and is not a folder (a file, a
     link)."""
     output = Path(output)
-    folder = output.with_name(output.name + ".parts")
+    folder = output.with_name(output.name + PARTS_SUFFIX)
     try:
         kind = _file_kind(folder.lstat().st_mode)
     except OSError:
@@ -238,7 +260,7 @@ class Parts:
 
     def __init__(self, output, key: dict):
         output = Path(output)
-        self.folder = output.with_name(output.name + ".parts")
+        self.folder = output.with_name(output.name + PARTS_SUFFIX)
         self.key = key
 
     def open(self, chunk_size: int, fresh: bool, log, chunks_of=None) -> int:

@@ -235,3 +235,49 @@ def test_an_output_in_proc_is_refused_for_what_it_is(tmp_path, capsys):
     assert capsys.readouterr().err == (
         "error: /proc/x.nc: cannot be written: its lock file .x.nc.lock cannot be made in /proc "
         "(No such file or directory); choose another output\n")
+
+
+#: Paths inside a zarr store or a parts folder, made before the run (None: not made).
+INSIDE = {"a netCDF file in a store": ("s.zarr", "s.zarr/y.nc"),
+          "a store in a store": ("s.zarr", "s.zarr/inner.zarr"),
+          "in a store's subfolder": ("s.zarr", "s.zarr/status/y.nc"),
+          "in a store yet to be": (None, "new.ZARR/y.nc"),
+          "in a store through a link": ("s.zarr", "link/y.nc"),
+          "in another output's parts": ("r.nc.parts", "r.nc.parts/x.nc"),
+          "in a parts folder yet to be": (None, "results/r.nc.parts/x.nc"),
+          "in a store's parts": ("s.zarr", "s.zarr.parts/store.zarr/y.nc")}
+
+
+@pytest.mark.parametrize("case", INSIDE)
+def test_an_output_inside_a_store_or_a_parts_folder_is_refused(tmp_path, capsys, case):
+    made, output = INSIDE[case]
+    (tmp_path / "def.toml").write_text(DEFINITION)
+    if made == "s.zarr":
+        assert cli.main(["run", str(tmp_path / "def.toml"), "-o", str(tmp_path / made),
+                         "--workers", "0", "--quiet"]) == 0
+        (tmp_path / "link").symlink_to(tmp_path / made)
+    elif made:
+        (tmp_path / made).mkdir()
+    capsys.readouterr()
+    err = refused(tmp_path, capsys, tmp_path / output)
+    assert "is inside" in err and "choose a path outside it" in err
+    inside = "a .zarr folder is a zarr store" if ".zarr/" in output.lower() or "link" in case \
+        else "the folder where a run keeps the finished chunks of"
+    assert inside in err
+
+
+def test_an_analysis_or_a_figure_inside_a_store_is_refused(tmp_path, capsys):
+    (tmp_path / "def.toml").write_text(DEFINITION)
+    assert cli.main(["run", str(tmp_path / "def.toml"), "-o", str(tmp_path / "s.zarr"),
+                     "--workers", "0", "--quiet"]) == 0
+    capsys.readouterr()
+    before = tree(tmp_path)
+    for command in (["analyze", str(tmp_path / "s.zarr"), "-o", str(tmp_path / "s.zarr/a.nc")],
+                    ["plot", str(tmp_path / "s.zarr"), "-o", str(tmp_path / "s.zarr/f.png")],
+                    ["schema", "-o", str(tmp_path / "s.zarr/schema.json")]):
+        assert cli.main(command) == 2
+        err = capsys.readouterr().err
+        assert err.count("\n") == 1 and "a .zarr folder is a zarr store" in err, err
+    with pytest.raises(parts.UnsafeOutput, match="is inside"):
+        bearing_sweep.analyze(tmp_path / "s.zarr", output=tmp_path / "s.zarr" / "a.zarr")
+    assert tree(tmp_path) == before
