@@ -21,6 +21,7 @@ import os
 import re
 import shutil
 import stat
+import tempfile
 import zipfile
 from contextlib import contextmanager
 from pathlib import Path
@@ -469,22 +470,22 @@ class OutputLock:
 def _creation_failure(path: Path) -> OSError | bool | None:
     """Why no file can be opened or made at ``path`` (an ``OSError``); None where one exists
     that opens (its lock is another process's), False where one could be made (the holder
-    has just removed it: nothing is left of the try)."""
-    flags = os.O_RDWR | getattr(os, "O_NOFOLLOW", 0)
+    has just removed it). Nothing is made at ``path`` itself: a file made and removed there
+    could be the one another process has just opened to lock."""
     try:
-        os.close(os.open(path, flags))
+        os.close(os.open(path, os.O_RDWR | getattr(os, "O_NOFOLLOW", 0)))
         return None
     except FileNotFoundError:
         pass  # not there, or a folder that takes no files (/proc says so too)
     except OSError as error:
         return error
-    try:
-        os.close(os.open(path, flags | os.O_CREAT | os.O_EXCL, 0o644))
-    except FileExistsError:
-        return None  # made meanwhile, by the run that takes the lock
+    try:  # whether the folder takes a new file, tried under a name of its own
+        handle, probe = tempfile.mkstemp(prefix=f".{path.name}.", suffix=".probe",
+                                         dir=path.parent)
     except OSError as error:
         return error
-    os.unlink(path)
+    os.close(handle)
+    os.unlink(probe)
     return False
 
 
