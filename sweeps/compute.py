@@ -19,7 +19,7 @@ import numpy as np
 
 from .models.registry import MODEL_ERROR, known_status, values_kept
 from . import hdf5_chunks, quiet, store, units
-from .footprint import Footprint, InsufficientSpace
+from .footprint import Footprint, InsufficientSpace, duration
 from .grid import Grid, block_shape
 from .interrupts import RESULT_COMPLETE, Interrupts, interruptions_raised  # noqa: F401
 from .labels import stored_unit
@@ -299,22 +299,29 @@ class Executor:
         return self.size or min(self.workers or DEFAULT_WORKERS, available_cores())
 
     def plan(self, grid: Grid, chunk_size: int | None, log):
-        """Size the local cluster for ``grid`` (in chunks of ``chunk_size`` points, or as
-        :func:`choose_chunk_size` chooses): the workers asked for (default two), but no more
-        than the cores this process may use (each worker is one single-threaded process:
-        more would only share them; a line to ``log`` says so) nor than the sweep has
-        chunks. A cluster already started for an earlier sweep grows if this one needs
-        more. An external cluster (``scheduler``, ``client``) is the caller's to size."""
+        """Size the local cluster for ``grid``: the workers asked for (default two), but no
+        more than the cores this process may use (each worker is one single-threaded process:
+        more would only share them; a line to ``log`` says so) nor than the sweep has chunks
+        of ``chunk_size`` points, by default of :func:`largest_chunk` (about a second of
+        work: a worker costs more than that to start). A cluster already started for an
+        earlier sweep grows if this one needs more. An external cluster (``scheduler``,
+        ``client``) is the caller's to size."""
         if self.scheduler or self.given:
             return
         asked = self.workers or DEFAULT_WORKERS
         cores = available_cores()
-        block = block_shape(grid.shape, chunk_size or choose_chunk_size(grid, min(asked, cores)))
+        block = block_shape(grid.shape, chunk_size or largest_chunk(grid))
         chunks = math.prod(math.ceil(n / b) for n, b in zip(grid.shape, block))  # as Grid.chunks
         count = max(1, min(asked, cores, chunks))
         if self.workers and self.workers > cores:
+            work = grid.size * grid.model.seconds_per_point
+            fewer = "" if chunks >= cores else (
+                f" and {chunks} chunk{'s' * (chunks != 1)} of {chunk_size} "
+                f"point{'s' * (chunk_size != 1)}"
+                if chunk_size else f" and {duration(work)} of work (a worker for each second "
+                                   "of it at most)")
             log(f"{self.workers} workers asked for, {cores} core{'s' * (cores != 1)} "
-                f"available to this process: a local cluster of {count} "
+                f"available to this process{fewer}: a local cluster of {count} "
                 f"worker{'s' * (count != 1)} (--scheduler runs on a larger cluster)")
         if self.cluster is not None and count > (self.size or 0):
             self.cluster.scale(count)
@@ -475,12 +482,17 @@ class Progress:
             self.stream.flush()
 
 
+def largest_chunk(grid: Grid) -> int:
+    """The most points a chunk holds by default: ``CHUNK_SECONDS`` of work on one core, by
+    the model's declared cost."""
+    return max(1, int(CHUNK_SECONDS / grid.model.seconds_per_point))
+
+
 def choose_chunk_size(grid: Grid, workers: int) -> int:
-    """Chunks of at most ``CHUNK_SECONDS`` (the progress bar moves, an interruption loses
+    """Chunks of at most :func:`largest_chunk` (the progress bar moves, an interruption loses
     little), on a cluster eight per worker to balance uneven points; in-process
     (``workers`` 0) as few as that allows: each chunk costs a model call and a write."""
-    cost = grid.model.seconds_per_point
-    largest = max(1, int(CHUNK_SECONDS / cost))
+    largest = largest_chunk(grid)
     return max(1, min(largest, math.ceil(grid.size / (8 * workers)) if workers else grid.size))
 
 

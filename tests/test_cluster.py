@@ -229,17 +229,25 @@ def test_a_thousand_workers_asked_for_start_no_more_than_the_cores(tmp_path, cap
 
     monkeypatch.setattr(distributed, "LocalCluster", recorded)
     (tmp_path / "def.toml").write_text(DEFINITION.replace("num = 10", "num = 1").replace(
-        "num = 5", "num = 3"))  # 3 points
-    cores = len(os.sched_getaffinity(0))
-    for asked, chunk, expected in ((1000, [], min(cores, 3)), (1000, ["--chunk-size", "2"],
-                                                                  min(cores, 2))):
+        "num = 5", "num = 3"))  # 3 points, 0.2 ms of work
+    monkeypatch.setattr("bearing_sweep.compute.available_cores", lambda: 4)
+    # By default, no more workers than seconds of work (the chunks of a second each): one;
+    # in chunks of 2 points, two chunks: two workers; of 1 point, three.
+    for chunk, expected, why in (
+            ([], 1, " and 0.00018 s of work (a worker for each second of it at most)"),
+            (["--chunk-size", "2"], 2, " and 2 chunks of 2 points"),
+            (["--chunk-size", "1"], 3, " and 3 chunks of 1 point")):
         assert cli.main(["run", str(tmp_path / "def.toml"), "-o", str(tmp_path / "out.nc"),
-                         "--workers", str(asked), "--quiet", *chunk]) == 1
+                         "--workers", "1000", "--quiet", *chunk]) == 1
         err = capsys.readouterr().err.splitlines()
-        assert err[0] == (f"1000 workers asked for, {cores} core{'s' * (cores != 1)} available "
-                          f"to this process: a local cluster of {expected} "
-                          f"worker{'s' * (expected != 1)} (--scheduler runs on a larger cluster)")
+        assert err[0] == (f"1000 workers asked for, 4 cores available to this process{why}: a "
+                          f"local cluster of {expected} worker{'s' * (expected != 1)} "
+                          "(--scheduler runs on a larger cluster)")
         assert started.pop() == expected
+    assert cli.main(["run", str(tmp_path / "def.toml"), "-o", str(tmp_path / "out.nc"),
+                     "--workers", "2", "--quiet"]) == 1
+    assert started.pop() == 1  # fewer than the cores: said by the summary alone
+    assert capsys.readouterr().err.startswith("error: the local dask cluster of 1 worker could")
 
 
 @pytest.mark.slow
