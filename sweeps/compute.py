@@ -502,8 +502,10 @@ def _check_versions(found: dict, expected: dict, executor: Executor, parts: Part
     if found == expected:
         return
     where = f"dask scheduler {executor.scheduler}" if executor.scheduler else "the cluster"
-    kept = "" if parts.folder is None else (
-        f" ({parts.count()} chunks computed so far are kept in {parts.folder})")
+    count = 0 if parts.folder is None else parts.count()
+    kept = "" if not count else (f" ({count} chunks computed so far are kept in {parts.folder})"
+                                 if count > 1 else f" (the chunk computed so far is kept in "
+                                                   f"{parts.folder})")
     raise WorkerMismatch(
         f"a worker of {where} runs bearing-sweep {found['package']} (model version "
         f"{found['model']}) where this run has bearing-sweep {expected['package']} (model version "
@@ -529,8 +531,11 @@ def run_sweep(sweep: Sweep, output=None, executor: Executor | None = None,
     chunk is written into the file as it arrives, while the others compute: memory is bounded
     by the chunk size, and the file is complete soon after the last chunk. An output ending
     in ``.zarr`` is a zarr store that each chunk is written into by the worker that computes
-    it (:mod:`zarr_store`). A cluster, when the sweep is worth one, starts while the parts
-    are looked at and the file's structure is written. ``log`` receives messages for the user
+    it (:mod:`zarr_store`). A cluster, when the sweep is worth one, starts while the grid is
+    made and the parts are looked at. Nothing in the parts folder changes until every refusal
+    that may come before computing has passed (:meth:`parts.Parts.begin`): a result the disk
+    cannot hold, a cluster that cannot start, workers of another version (a chunk computed
+    by one later is refused too). ``log`` receives messages for the user
     (resuming, discarding, and with ``progress`` the estimate of a long or large run:
     :mod:`footprint`). A result the disk cannot hold raises
     :class:`footprint.InsufficientSpace`. ``interrupts``: the caller's :class:`Interrupts`,
@@ -571,18 +576,27 @@ def run_sweep(sweep: Sweep, output=None, executor: Executor | None = None,
                 key["parts_hold"] = hdf5_chunks.parts_hold(direct, sweep.storage, grid)
             parts = HeldChunks() if output is None else (
                 zarr_store.StoreParts if zarr else hdf5_chunks.EncodedParts if direct
-                else Parts)(output, key)
-            size = parts.open(size, fresh, log, grid.chunks)
+                else Parts)(output, key, grid, sweep.storage)
+            # Looked at only: nothing of an earlier run's changes before every refusal that
+            # may come before computing has passed.
+            size = parts.open(size, fresh, grid.chunks)
             chunks = grid.chunks(size)
+            done = parts.finished()
+            todo = [chunk for chunk in chunks if chunk not in done]
+            footprint = None if output is None else _footprint(
+                sweep, grid, output, todo, executor, parallel)
+            if parallel:  # the cluster started, its workers of this version
+                _check_workers(executor, model, expected, parts)
+            parts.begin(log)
+            if footprint is not None and progress and footprint.announced():
+                workers = executor.worker_count() if parallel else 1
+                log(footprint.text(model.name, f"{workers} worker{'s' * (workers != 1)}"
+                                   if parallel else "one core, in this process"))
             scheduler = executor.describe(parallel)
             task = None
             if zarr:  # each chunk is written into the store by the worker that computes it
                 parts.prepare(sweep, grid, size, scheduler)
                 task = functools.partial(evaluate_into, parts.writer, expected)
-            done = parts.finished()
-            todo = [chunk for chunk in chunks if chunk not in done]
-            footprint = None if output is None else _footprint(
-                sweep, grid, output, todo, executor, parallel, parts, done, progress, log)
             tallies = []
             with contextlib.nullcontext() if output is None or zarr else store.result_file(
                     sweep, grid, output, store.provenance(scheduler), size, direct,
@@ -633,21 +647,37 @@ def run_sweep(sweep: Sweep, output=None, executor: Executor | None = None,
             executor.close()
 
 
-def _footprint(sweep, grid, output, todo, executor, parallel, parts, done, progress, log):
-    """The run's :class:`footprint.Footprint`: a result stored uncompressed that the disk
-    cannot hold is refused before any computing (the parts folder made for it removed, if it
-    holds no finished chunk), and with ``progress`` a long or large run says what it will
-    take."""
+def _footprint(sweep, grid, output, todo, executor, parallel) -> Footprint:
+    """The run's :class:`footprint.Footprint`; a result stored uncompressed that the disk
+    cannot hold is refused (:class:`footprint.InsufficientSpace`) before any computing."""
     workers = executor.worker_count() if parallel else 1
     footprint = Footprint.of(sweep, grid, output, sum(stop - start for start, stop in todo),
                              workers, netcdf=not is_zarr(output))
-    try:
-        footprint.refuse_if_too_large()
-    except InsufficientSpace:
-        if not done:  # nothing computed: nothing is left of the run
-            parts.remove()
-        raise
-    if progress and footprint.announced():
-        log(footprint.text(grid.model.name, f"{workers} worker{'s' * (workers != 1)}"
-                           if parallel else "one core, in this process"))
+    footprint.refuse_if_too_large()
     return footprint
+
+
+def installed_versions(model_name: str) -> dict | None:
+    """The :func:`versions` a worker computes ``model_name`` with, or None where its
+    installation has no such model (its chunks will say what it does)."""
+    from .models.registry import get_model
+
+    try:
+        return versions(get_model(model_name))
+    except KeyError:
+        return None
+
+
+def _check_workers(executor: Executor, model, expected: dict, parts):
+    """Wait for the cluster (:class:`ClusterFailure` if it cannot start) and refuse workers
+    of another version (:func:`_check_versions`), before a chunk is computed; a worker that
+    joins later is checked by its chunks."""
+    client = executor.connect()
+    try:
+        with interruptions_raised():
+            found = client.run(installed_versions, model.name)
+    except Exception:  # a worker that cannot run it: its chunks will say what it does
+        return
+    for one in found.values():
+        if one is not None:
+            _check_versions(one, expected, executor, parts)

@@ -7,8 +7,9 @@ finished chunk, each written atomically and flushed to the disk before it is ren
 place (a zarr output keeps its chunks' values in its store instead: ``zarr_store``). Parts of
 another definition, model, package version or storage are discarded, with a message, and so
 is a folder whose manifest is not one this program writes; a part that cannot be read (a power
-loss before it reached the disk) is computed again, and a file in the folder that is no part of
-the run is removed, with a message.
+loss before it reached the disk) or that does not hold what its name says (each records its
+range; :meth:`Parts.damage`) is computed again, and a file in the folder that is no part of
+the run is removed, with a message. Nothing changes in the folder before :meth:`Parts.begin`.
 A lock on ``.<output>.lock`` keeps two runs from writing the same output; the run that holds it
 removes the temporary files that a killed run left (:func:`remove_stale_temporaries`), and
 :func:`check_output` refuses an output path that holds something other than an earlier result.
@@ -29,6 +30,7 @@ from pathlib import Path
 import filelock
 import numpy as np
 
+from .models.registry import known_status
 from .spec import SpecError
 
 
@@ -252,80 +254,123 @@ def _names_us(attributes: dict) -> bool:
 
 
 class Parts:
-    """The part files of one output."""
+    """The part files of one output (of ``grid``, when given: what its parts must hold is
+    checked against it).
+
+    :meth:`open` only looks at the folder; nothing in it changes until :meth:`begin`, called
+    once every refusal that may come before computing has passed (a disk too small, a
+    cluster that cannot start, workers of another version): a run refused leaves an earlier
+    run's parts as they were, even those it would have discarded.
+    """
 
     #: The suffix of a finished chunk's file.
     suffix = ".npz"
     #: What the folder holds besides the finished chunks' files.
     own_entries = ("manifest.json",)
 
-    def __init__(self, output, key: dict):
+    def __init__(self, output, key: dict, grid=None, storage=None):
         output = Path(output)
         self.folder = output.with_name(output.name + PARTS_SUFFIX)
-        self.key = key
+        self.key, self.grid, self.storage = key, grid, storage
+        self.size = None
+        self.plan = None  # what begin() does: "create", "discard" (then create) or "resume"
+        self.usable, self.unusable, self.discarding = set(), {}, None
 
-    def open(self, chunk_size: int, fresh: bool, log, chunks_of=None) -> int:
-        """Prepare the folder; return the chunk size to use (a resumed sweep keeps its own).
+    def open(self, chunk_size: int, fresh: bool, chunks_of=None) -> int:
+        """Look at the folder (nothing changes: :meth:`begin` does it); return the chunk size
+        to use (a resumed sweep keeps its own).
 
         ``chunks_of(size)`` gives the ``(start, stop)`` of every chunk of the sweep in chunks
-        of ``size`` points: a file in the folder that is none of them is removed (with a line
-        to ``log``), as is a part that cannot be read.
+        of ``size`` points: a file in the folder that is none of them is to be removed, as is
+        a part that cannot be read or does not hold what its name says (:meth:`damage`); the
+        others are :meth:`finished`. Parts of another definition, model, package or storage,
+        or with a manifest this program does not write, are to be discarded; a folder without
+        a manifest that holds what no run writes is refused (:class:`UnsafeOutput`).
         """
+        self.size, self.plan = chunk_size, "create"
+        self.usable, self.unusable, self.discarding = set(), {}, None
+        if not self.folder.exists():
+            return chunk_size
         manifest = self.folder / "manifest.json"
-        if self.folder.exists():
-            found, damage = _read_manifest(manifest, self.key)
-            count = self.count()
-            if fresh or damage or found != {**self.key, "chunk_size": found["chunk_size"]}:
-                if damage:
-                    log(f"{damage} in {self.folder}: discarding the folder"
-                        + (f" and its {count} finished chunks" if count else ""))
-                elif count:
-                    why = "--fresh" if fresh else (
-                        "the definition, model, package or storage changed")
-                    log(f"{why}: discarding {count} finished chunks in {self.folder}")
-                shutil.rmtree(self.folder)
-            else:
-                size = found["chunk_size"]
-                count = self._remove_unusable(log, set(chunks_of(size)) if chunks_of else None)
-                if count:
-                    log(f"resuming: {count} chunk{'s' * (count != 1)} already computed in "
-                        f"{self.folder}")
-                return size
-        self.folder.mkdir(parents=True)
-        text = json.dumps({**self.key, "chunk_size": chunk_size}).encode()
-        write_durably(manifest, lambda handle: handle.write(text))
-        return chunk_size
+        found, damage = _read_manifest(manifest, self.key)
+        if not manifest.exists():
+            self._refuse_if_not_ours()
+        count = self.count_on_disk()
+        if fresh or damage or found != {**self.key, "chunk_size": found["chunk_size"]}:
+            self.plan = "discard"
+            if damage:
+                self.discarding = (f"{damage} in {self.folder}: discarding the folder"
+                                   + (f" and its {count} finished chunks" if count else ""))
+            elif count:
+                why = "--fresh" if fresh else "the definition, model, package or storage changed"
+                self.discarding = f"{why}: discarding {count} finished chunks in {self.folder}"
+            return chunk_size
+        self.plan, self.size = "resume", found["chunk_size"]
+        self._survey(set(chunks_of(self.size)) if chunks_of else None)
+        return self.size
 
-    def _remove_unusable(self, log, chunks: set | None) -> int:
-        """Remove from the folder what is no finished chunk of this run (``chunks``: the
-        ``(start, stop)`` of each, None: any), with one line to ``log`` for the files that
-        are neither ours nor readable, and the temporary files a killed run left (the run
-        holds the output's lock: no other run writes them), quietly; return how many
-        finished chunks are left."""
-        unreadable, stray, left = [], [], 0
+    def _refuse_if_not_ours(self):
+        """A folder without a manifest holds only what a run writes (its manifest is written
+        first, durably): anything else is someone's, and refused rather than removed."""
+        for entry in sorted(self.folder.iterdir()):
+            if not (entry.name in self.own_entries or _TEMPORARY.fullmatch(entry.name)
+                    or self.bounds(entry.name)):
+                raise UnsafeOutput(f"{self.folder}: holds {entry.name} and no manifest.json: "
+                                   "not the folder of an interrupted run's parts; refusing to "
+                                   "use it (move it away or choose another output)")
+
+    def _survey(self, chunks: set | None):
+        """Sort the folder's entries: the finished chunks of this run (``chunks``: the
+        ``(start, stop)`` of each, None: any) that can be used, and what :meth:`begin` is to
+        remove: ``{"unreadable": [...], "wrong": [...], "stray": [...], "temporary": [...]}``
+        (a temporary file a killed run left: the run holds the output's lock, no other run
+        writes it)."""
+        self.unusable = {"unreadable": [], "wrong": [], "stray": [], "temporary": []}
         for entry in sorted(self.folder.iterdir()):
             if entry.name in self.own_entries:
                 continue
             bounds = self.bounds(entry.name)
             if bounds is None or (chunks is not None and bounds not in chunks):
-                if not _TEMPORARY.fullmatch(entry.name):
-                    stray.append(entry.name)
-                _remove(entry)
+                kind = "temporary" if _TEMPORARY.fullmatch(entry.name) else "stray"
+                self.unusable[kind].append((entry, None))
                 continue
-            reason = self.unreadable(entry, bounds[1] - bounds[0])
-            if reason:
-                unreadable.append(f"{entry.name} ({reason})")
-                _remove(entry)
-            else:
-                left += 1
-        for found, what, then in ((unreadable, "unreadable part", "computing {} again"),
-                                  (stray, "a file that is no part of this run,",
-                                   "removed {}")):
+            found = self.unusable_part(entry, *bounds)
             if found:
-                more = f" and {len(found) - 1} more" if len(found) > 1 else ""
-                log(f"{what} {found[0]}{more} in {self.folder}: "
-                    + then.format("them" if more else "it"))
-        return left
+                self.unusable[found[0]].append((entry, found[1]))
+            else:
+                self.usable.add(bounds)
+
+    def begin(self, log):
+        """Make the folder this run's, saying so to ``log``: discard it, make it, or remove
+        from it what :meth:`open` found unusable."""
+        plan, self.plan = self.plan, None
+        if plan == "resume":
+            lines = (("unreadable", "unreadable part", "computing {} again"),
+                     ("wrong", "a part that does not hold what its name says,",
+                      "computing {} again"),
+                     ("stray", "a file that is no part of this run,", "removed {}"))
+            for kind, what, then in lines:
+                found = self.unusable[kind]
+                if found:
+                    entry, reason = found[0]
+                    more = f" and {len(found) - 1} more" if len(found) > 1 else ""
+                    log(f"{what} {entry.name}{f' ({reason})' if reason else ''}{more} in "
+                        f"{self.folder}: " + then.format("them" if more else "it"))
+            for entry, _ in (one for found in self.unusable.values() for one in found):
+                _remove(entry)
+            if self.usable:
+                count = len(self.usable)
+                log(f"resuming: {count} chunk{'s' * (count != 1)} already computed in "
+                    f"{self.folder}")
+            return
+        if plan == "discard":
+            if self.discarding:
+                log(self.discarding)
+            shutil.rmtree(self.folder)
+        if plan in ("discard", "create"):
+            self.folder.mkdir(parents=True)
+            text = json.dumps({**self.key, "chunk_size": self.size}).encode()
+            write_durably(self.folder / "manifest.json", lambda handle: handle.write(text))
 
     def bounds(self, name: str) -> tuple[int, int] | None:
         """The ``(start, stop)`` of the finished chunk whose file is named ``name``, or None
@@ -335,16 +380,58 @@ class Parts:
             return None
         return int(found[1]), int(found[2])
 
-    def unreadable(self, path: Path, points: int) -> str | None:
-        """Why the finished chunk at ``path`` cannot be used, or None."""
-        return _unreadable(path, points)
+    def unusable_part(self, path: Path, start: int, stop: int) -> tuple[str, str] | None:
+        """Why the part at ``path`` cannot be used as the chunk of points ``start..stop-1``:
+        ``("unreadable", reason)`` or ``("wrong", reason)`` (:meth:`damage`), or None."""
+        try:
+            with np.load(path) as data:
+                reason = self.damage(data, start, stop)
+        except (EOFError, KeyError, zipfile.BadZipFile):  # cut short, or an array missing
+            return "unreadable", "incomplete"
+        except (OSError, ValueError) as error:
+            return "unreadable", (str(error).splitlines()[0] if str(error)
+                                  else type(error).__name__)
+        return None if reason is None else ("wrong", reason)
+
+    def damage(self, data, start: int, stop: int) -> str | None:
+        """What the open part ``data`` says of itself that is not what the chunk of points
+        ``start..stop-1`` holds, in words, or None: its range, its statuses (as many as the
+        chunk has points, each a code of the registry) and, when the grid is known, the
+        model's outputs (names, shapes, type). ``KeyError`` for an array it lacks."""
+        reason = range_damage(data, start, stop) or status_damage(data["status"], stop - start)
+        if reason:
+            return reason
+        errors = data["errors"]
+        if errors.ndim != 1 or errors.dtype.kind not in "US":
+            return "its error messages unreadable"
+        found = {key[len("output_"):]: data[key] for key in data.files
+                 if key.startswith("output_")}
+        if self.grid is None:
+            return None
+        declared = {o.name: (stop - start,) + tuple(self.grid.dim_sizes[d] for d in o.dims)
+                    for o in self.grid.model.outputs}
+        if set(found) != set(declared):
+            return f"outputs {sorted(found)}, not the model's {sorted(declared)}"
+        for name, values in found.items():
+            if values.shape != declared[name] or values.dtype != np.float64:
+                return (f"output {name} of shape {values.shape} and type {values.dtype}, not "
+                        f"{declared[name]} float64")
+        return None
 
     def count(self) -> int:
-        """How many finished chunks are on disk."""
+        """How many finished chunks this run has (:meth:`finished`)."""
         return len(self.finished())
 
+    def count_on_disk(self) -> int:
+        """How many files in the folder are named as finished chunks."""
+        return len(self._on_disk())
+
     def finished(self) -> set:
-        """``(start, stop)`` of every chunk on disk."""
+        """``(start, stop)`` of every finished chunk: before :meth:`begin`, those :meth:`open`
+        found usable; then every one on disk."""
+        return set(self.usable) if self.plan is not None else self._on_disk()
+
+    def _on_disk(self) -> set:
         found = (self.bounds(path.name) for path in self.folder.glob(f"chunk-*{self.suffix}"))
         return {bounds for bounds in found if bounds is not None}
 
@@ -352,22 +439,33 @@ class Parts:
         return self.folder / f"chunk-{start:012d}-{stop:012d}{self.suffix}"
 
     def save(self, start: int, stop: int, result: dict):
+        """Keep the finished chunk of points ``start..stop-1``: :meth:`arrays` and its range."""
+        arrays = self.arrays(result)
+        arrays["bounds"] = np.array([start, stop], dtype=np.int64)
+        write_durably(self.path(start, stop), lambda handle: np.savez(handle, **arrays))
+
+    def arrays(self, result: dict) -> dict:
+        """What a part file holds of a computed chunk (as ``compute.evaluate_chunk`` returns
+        it): its outputs, statuses and error messages."""
         arrays = {f"output_{name}": values for name, values in result["outputs"].items()}
         arrays["status"] = result["status"]
         arrays["errors"] = np.array(result["errors"], dtype=str)
-        write_durably(self.path(start, stop), lambda handle: np.savez(handle, **arrays))
+        return arrays
 
     def load(self, start: int, stop: int) -> dict:
         path = self.path(start, stop)
         try:
             with np.load(path) as data:
-                return self.read(data)
+                reason = self.damage(data, start, stop)
+                if reason is None:
+                    return self.read(data)
         except (OSError, ValueError, EOFError, KeyError, zipfile.BadZipFile) as error:
-            # Found readable when the run began, damaged since: removed, so that the next run
-            # computes it again.
-            path.unlink(missing_ok=True)
-            raise UnreadablePart(f"{path}: unreadable part ({type(error).__name__}); it is "
-                                 "removed: run the same command again to compute it") from None
+            reason = f"unreadable: {type(error).__name__}"
+        # Found usable when the run began, damaged since: removed, so that the next run
+        # computes it again.
+        path.unlink(missing_ok=True)
+        raise UnreadablePart(f"{path}: unusable part ({reason}); it is removed: run the same "
+                             "command again to compute it")
 
     def read(self, data) -> dict:
         """A finished chunk from its open part file ``data`` (as :meth:`save` wrote it)."""
@@ -388,8 +486,11 @@ class HeldChunks:
     def __init__(self):
         self.chunks = {}
 
-    def open(self, chunk_size: int, fresh: bool, log, chunks_of=None) -> int:
+    def open(self, chunk_size: int, fresh: bool, chunks_of=None) -> int:
         return chunk_size
+
+    def begin(self, log):
+        pass
 
     def finished(self) -> set:
         return set(self.chunks)
@@ -558,17 +659,25 @@ def remove_stale_temporaries(output) -> list[str]:
     return removed
 
 
-def _unreadable(path: Path, points: int) -> str | None:
-    """Why the part at ``path`` cannot be used, or None. Reads its index and status only."""
-    try:
-        with np.load(path) as data:
-            if "status" not in data.files or "errors" not in data.files:
-                return "incomplete"
-            if data["status"].shape != (points,):
-                return f"{data['status'].shape[0]} points instead of {points}"
-    except (OSError, ValueError, EOFError, zipfile.BadZipFile) as error:
-        return str(error).splitlines()[0] if str(error) else type(error).__name__
-    return None
+def range_damage(data, start: int, stop: int) -> str | None:
+    """What the open part ``data`` says of its range (its ``bounds``) that is not
+    ``start..stop-1``, or None."""
+    if "bounds" not in data.files:
+        return "no range recorded in it"
+    bounds = data["bounds"]
+    if bounds.shape != (2,) or bounds.dtype.kind not in "iu":
+        return "its range unreadable"
+    low, high = (int(bound) for bound in bounds)
+    return None if (low, high) == (start, stop) else f"it holds points {low}..{high - 1}"
+
+
+def status_damage(status: np.ndarray, points: int) -> str | None:
+    """What is wrong with a chunk's ``status`` of ``points`` points, or None: one per point,
+    each a code of the registry."""
+    if status.shape != (points,) or status.dtype != np.int8:
+        return f"{status.size} statuses of type {status.dtype}, not {points} of int8"
+    unknown = ~known_status(status)
+    return f"status {status[unknown][0]}, not a code of the registry" if unknown.any() else None
 
 
 def saved_counts(result: dict) -> dict:
@@ -589,15 +698,48 @@ def load_counts(data) -> tuple[dict, dict]:
     return json.loads(str(data["tally"])), firsts
 
 
-def counts_unreadable(path: Path, points: int) -> str | None:
-    """Why a part file holding :func:`saved_counts` cannot be used for a chunk of ``points``
-    points, or None. Reads its counts only."""
-    try:
-        with np.load(path) as data:
-            tally = json.loads(str(data["tally"]))
-    except (OSError, ValueError, EOFError, KeyError, zipfile.BadZipFile):
-        return "incomplete"
-    return None if sum(tally["status"]) == points else "not this chunk's counts"
+def counts_damage(data, grid, start: int, stop: int) -> str | None:
+    """What an open part file holding :func:`saved_counts` (``data``) says of itself that is
+    not the chunk of points ``start..stop-1`` of ``grid``: its range, its counts (of as many
+    points, each status a code of the registry, the model's counted outputs) and the values
+    it gives the outputs stored on fewer dimensions (one per cell, at points of the chunk, of
+    the output's own shape); None where it says nothing else. ``KeyError`` or ``ValueError``
+    for what cannot be read."""
+    from .dependence import reduced_outputs
+    from .store import STATUS_CODES
+
+    reason = range_damage(data, start, stop)
+    if reason:
+        return reason
+    tally, firsts = load_counts(data)
+    status, errors, noted = (tally.get(key) if isinstance(tally, dict) else None
+                             for key in ("status", "errors", "noted"))
+    if not (isinstance(status, list) and len(status) == STATUS_CODES
+            and all(type(n) is int and n >= 0 for n in status)
+            and isinstance(errors, list) and all(isinstance(e, str) for e in errors)
+            and isinstance(noted, dict) and all(type(n) is int and n >= 0
+                                                for n in noted.values())):
+        return "its counts unreadable"
+    if sum(status) != stop - start:
+        return f"counts of {sum(status)} points, not {stop - start}"
+    codes = np.flatnonzero(status)
+    if not known_status(codes).all():
+        return f"status {codes[~known_status(codes)][0]}, not a code of the registry"
+    if grid is None:
+        return None
+    counted = {o.counted[0] for o in grid.model.outputs if o.counted}
+    if set(noted) != counted:
+        return f"counts of {sorted(noted)}, not of the model's {sorted(counted)}"
+    reduced = {o.name: o for o in reduced_outputs(grid)}
+    if set(firsts) != set(reduced):
+        return f"values of {sorted(firsts)}, not of the outputs on fewer axes {sorted(reduced)}"
+    for name, (points, values) in firsts.items():
+        own = tuple(grid.dim_sizes[d] for d in reduced[name].dims)
+        if (points.ndim != 1 or points.dtype.kind not in "iu"
+                or ((points < start) | (points >= stop)).any()
+                or values.shape != points.shape + own):
+            return f"values of {name} not of points {start}..{stop - 1}"
+    return None
 
 
 def write_durably(path: Path, write):

@@ -130,7 +130,8 @@ def workers_of_another_version_are_refused(address, folder):
     assert len(done.stderr.strip().splitlines()) == 1, done.stderr
     assert f"a worker of dask scheduler {address} runs bearing-sweep 0.0.1" in done.stderr
     assert "install the same on every worker" in done.stderr
-    assert not (folder / "other.nc").exists() and (folder / "other.nc.parts").is_dir()
+    # refused before any chunk is computed: no parts folder made
+    assert not (folder / "other.nc").exists() and not (folder / "other.nc.parts").exists()
 
 
 @pytest.mark.slow
@@ -182,7 +183,8 @@ def test_a_local_cluster_that_cannot_start_is_one_line_with_the_way_out(tmp_path
     (tmp_path / "def.toml").write_text(DEFINITION)
     (tmp_path / "scratch").write_text("a file, not a folder")
     done = subprocess.run([sys.executable, "-m", "bearing_sweep", "run", "def.toml", "-o",
-                           "out.nc", "--workers", "2", "--quiet"], cwd=tmp_path,
+                           "out.nc", "--workers", "2", "--chunk-size", "25", "--quiet"],
+                          cwd=tmp_path,
                           capture_output=True, text=True, timeout=300,
                           env=os.environ | {"DASK_TEMPORARY_DIRECTORY": str(tmp_path / "scratch")})
     assert done.returncode == 1, done.stderr
@@ -205,7 +207,7 @@ def test_any_failure_to_start_the_cluster_is_one_line(tmp_path, capsys, monkeypa
     monkeypatch.setattr(distributed, "LocalCluster", failing)
     (tmp_path / "def.toml").write_text(DEFINITION)
     assert cli.main(["run", str(tmp_path / "def.toml"), "-o", str(tmp_path / "out.nc"),
-                     "--workers", "2", "--quiet"]) == 1
+                     "--workers", "2", "--chunk-size", "25", "--quiet"]) == 1
     assert capsys.readouterr().err == (
         "error: the local dask cluster of 2 workers could not start (Nanny failed to start in "
         "60 s); --workers 0 (workers=0 in Python) computes in this process\n")
