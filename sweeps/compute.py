@@ -21,9 +21,11 @@ from .models.registry import MODEL_ERROR, known_status, values_kept
 from . import hdf5_chunks, quiet, store, units
 from .footprint import Footprint, InsufficientSpace, duration
 from .grid import Grid, block_shape
+# RESULT_COMPLETE and Interrupts: the command and the API take them from here.
 from .interrupts import RESULT_COMPLETE, Interrupts, interruptions_raised  # noqa: F401
 from .labels import stored_unit
-from .parts import HeldChunks, OutputLock, Parts, check_output, check_parts_folder, is_zarr
+from .output_paths import check_output, check_parts_folder, is_zarr
+from .parts import HeldChunks, OutputLock, Parts
 from .spec import SpecError, Sweep
 
 #: Below this estimated single-core time [s] a sweep runs in-process: starting a cluster

@@ -403,7 +403,7 @@ def check_figure_path(output, result=None) -> Path:
     """Refuse a figure path that must not be written: the result itself, a folder or any
     other kind of file than a regular one, a suffix other than ``FORMATS``', an existing file
     that is not a figure of that format, a folder that does not exist, a path inside a zarr
-    store or a parts folder (:func:`parts.check_outside_results`)."""
+    store or a parts folder (:func:`output_paths.check_outside_results`)."""
     check_outside_results(output)
     output = Path(output)
     if result is not None and output.exists() and output.resolve() == Path(result).resolve():

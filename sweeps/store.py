@@ -22,7 +22,8 @@ from .grid import Grid, block_shape
 from .interrupts import interruptions_raised
 from .labels import labelled, labelled_dataset
 from .netcdf_structure import write_attributes, write_structure
-from .parts import OutputLock, is_zarr, written_atomically
+from .output_paths import is_zarr
+from .parts import OutputLock, written_atomically
 from .spec import Sweep
 from .storage import integral_values
 

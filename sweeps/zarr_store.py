@@ -161,7 +161,7 @@ class StoreParts(Parts):
         """Write the outputs stored on fewer dimensions from the ``chunks``' marks, complete
         the store's global attributes (as the netCDF file's: model errors, scheduler,
         history), consolidate its metadata, and give it the output's name (calling
-        ``before_rename()`` just before), where nothing is (``parts.check_output`` refuses
+        ``before_rename()`` just before), where nothing is (``output_paths.check_output`` refuses
         an earlier store: it is never replaced)."""
         import zarr
 
