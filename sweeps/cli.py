@@ -11,7 +11,7 @@ from pathlib import Path
 from .models.catalogue import PRESETS
 from .models.registry import all_models
 from . import schema, spec, store
-from .parts import check_output, write_durably
+from .parts import check_output, check_outside_results, write_durably
 from .compute import (RESULT_COMPLETE, ClusterFailure, Executor, Interrupts, WorkerMismatch,
                       check_scheduler_address, run_sweep)
 from .dependence import InconsistentOutput
@@ -204,6 +204,7 @@ def _schema(model: str | None, output: Path | None):
         return
     if output.suffix != ".json" or (output.exists() and not output.is_file()):
         raise SpecError(f"{output}: a schema is written to a .json file")
+    check_outside_results(output)
     if output.exists() and not _our_schema(output):
         raise SpecError(f"{output}: exists and is not a schema written by bearing-sweep; "
                         "refusing to replace it (remove it or choose another path)")

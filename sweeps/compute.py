@@ -18,11 +18,14 @@ from dataclasses import dataclass, field
 import numpy as np
 
 from .models.registry import MODEL_ERROR, known_status, values_kept
-from . import hdf5_chunks, store, units
-from .footprint import Footprint, InsufficientSpace
+from . import hdf5_chunks, quiet, store, units
+from .footprint import Footprint, InsufficientSpace, duration
 from .grid import Grid, block_shape
+# RESULT_COMPLETE and Interrupts: the command and the API take them from here.
+from .interrupts import RESULT_COMPLETE, Interrupts, interruptions_raised  # noqa: F401
 from .labels import stored_unit
-from .parts import HeldChunks, OutputLock, Parts, check_output, check_parts_folder, is_zarr
+from .output_paths import check_output, check_parts_folder, is_zarr
+from .parts import HeldChunks, OutputLock, Parts
 from .spec import SpecError, Sweep
 
 #: Below this estimated single-core time [s] a sweep runs in-process: starting a cluster
@@ -72,7 +75,9 @@ def evaluate_chunk(grid: Grid, start: int, stop: int) -> dict:
     units, with the grid's largest size on each own dimension (NaN beyond a point's own size).
     Points are grouped by their structural inputs (counts, choices) and the model is called
     once per group. An exception in the model marks that group's points with
-    ``model_error`` and records its message; it does not stop the sweep.
+    ``model_error`` and records its message; it does not stop the sweep, but a Ctrl-C does,
+    whatever exception the model turned it into (:func:`interrupts.interruptions_raised`).
+    The model's warnings are not shown (:func:`quiet.silenced`): its statuses say it.
     """
     model = grid.model
     count = stop - start
@@ -100,14 +105,18 @@ def evaluate_chunk(grid: Grid, start: int, stop: int) -> dict:
             else:
                 arguments[name] = values[members]
         try:
-            result = model.function(**arguments)
+            # A Ctrl-C that compiled code turns into another exception stops the run; the
+            # model's warnings stay off the screen (its points say what went wrong).
+            with interruptions_raised(), quiet.silenced():
+                result = model.function(**arguments)
         except Exception as error:  # one bad group must not cost the whole sweep
             errors.append(f"{type(error).__name__}: {error}".splitlines()[0])
             continue
-        for spec in model.outputs:
-            value = _per_point(result[spec.name], members.size, len(spec.dims))
-            region = (members,) + tuple(slice(0, n) for n in value.shape[1:])
-            outputs[spec.name][region] = _from_si(value, spec)
+        with np.errstate(all="ignore"):  # a huge value in its unit is inf, as it says
+            for spec in model.outputs:
+                value = _per_point(result[spec.name], members.size, len(spec.dims))
+                region = (members,) + tuple(slice(0, n) for n in value.shape[1:])
+                outputs[spec.name][region] = _from_si(value, spec)
         returned = _per_point(result["status"], members.size, 0)
         unknown = ~known_status(returned)
         if unknown.any():  # a code no reader could decode: the model is wrong there
@@ -292,22 +301,29 @@ class Executor:
         return self.size or min(self.workers or DEFAULT_WORKERS, available_cores())
 
     def plan(self, grid: Grid, chunk_size: int | None, log):
-        """Size the local cluster for ``grid`` (in chunks of ``chunk_size`` points, or as
-        :func:`choose_chunk_size` chooses): the workers asked for (default two), but no more
-        than the cores this process may use (each worker is one single-threaded process:
-        more would only share them; a line to ``log`` says so) nor than the sweep has
-        chunks. A cluster already started for an earlier sweep grows if this one needs
-        more. An external cluster (``scheduler``, ``client``) is the caller's to size."""
+        """Size the local cluster for ``grid``: the workers asked for (default two), but no
+        more than the cores this process may use (each worker is one single-threaded process:
+        more would only share them; a line to ``log`` says so) nor than the sweep has chunks
+        of ``chunk_size`` points, by default of :func:`largest_chunk` (about a second of
+        work: a worker costs more than that to start). A cluster already started for an
+        earlier sweep grows if this one needs more. An external cluster (``scheduler``,
+        ``client``) is the caller's to size."""
         if self.scheduler or self.given:
             return
         asked = self.workers or DEFAULT_WORKERS
         cores = available_cores()
-        block = block_shape(grid.shape, chunk_size or choose_chunk_size(grid, min(asked, cores)))
+        block = block_shape(grid.shape, chunk_size or largest_chunk(grid))
         chunks = math.prod(math.ceil(n / b) for n, b in zip(grid.shape, block))  # as Grid.chunks
         count = max(1, min(asked, cores, chunks))
         if self.workers and self.workers > cores:
+            work = grid.size * grid.model.seconds_per_point
+            fewer = "" if chunks >= cores else (
+                f" and {chunks} chunk{'s' * (chunks != 1)} of {chunk_size} "
+                f"point{'s' * (chunk_size != 1)}"
+                if chunk_size else f" and {duration(work)} of work (a worker for each second "
+                                   "of it at most)")
             log(f"{self.workers} workers asked for, {cores} core{'s' * (cores != 1)} "
-                f"available to this process: a local cluster of {count} "
+                f"available to this process{fewer}: a local cluster of {count} "
                 f"worker{'s' * (count != 1)} (--scheduler runs on a larger cluster)")
         if self.cluster is not None and count > (self.size or 0):
             self.cluster.scale(count)
@@ -364,10 +380,12 @@ class Executor:
             # goes wrong reaches the summary or the command's one line of error.
             count = self.worker_count()
             try:
-                self.cluster = LocalCluster(n_workers=count, threads_per_worker=1,
-                                            processes=True, dashboard_address=":0",
-                                            silence_logs=logging.CRITICAL, preload=[__name__])
-                self.client = Client(self.cluster, set_as_default=False)
+                with interruptions_raised():  # a Ctrl-C, not a failure to start
+                    self.cluster = LocalCluster(
+                        n_workers=count, threads_per_worker=1, processes=True,
+                        dashboard_address=":0", silence_logs=logging.CRITICAL,
+                        preload=[__name__])
+                    self.client = Client(self.cluster, set_as_default=False)
             except Exception as error:  # dask's own traceback is not for the user
                 reason = (str(error).splitlines() or [type(error).__name__])[0]
                 raise ClusterFailure(
@@ -466,12 +484,17 @@ class Progress:
             self.stream.flush()
 
 
+def largest_chunk(grid: Grid) -> int:
+    """The most points a chunk holds by default: ``CHUNK_SECONDS`` of work on one core, by
+    the model's declared cost."""
+    return max(1, int(CHUNK_SECONDS / grid.model.seconds_per_point))
+
+
 def choose_chunk_size(grid: Grid, workers: int) -> int:
-    """Chunks of at most ``CHUNK_SECONDS`` (the progress bar moves, an interruption loses
+    """Chunks of at most :func:`largest_chunk` (the progress bar moves, an interruption loses
     little), on a cluster eight per worker to balance uneven points; in-process
     (``workers`` 0) as few as that allows: each chunk costs a model call and a write."""
-    cost = grid.model.seconds_per_point
-    largest = max(1, int(CHUNK_SECONDS / cost))
+    largest = largest_chunk(grid)
     return max(1, min(largest, math.ceil(grid.size / (8 * workers)) if workers else grid.size))
 
 
@@ -481,54 +504,14 @@ def _check_versions(found: dict, expected: dict, executor: Executor, parts: Part
     if found == expected:
         return
     where = f"dask scheduler {executor.scheduler}" if executor.scheduler else "the cluster"
-    kept = "" if parts.folder is None else (
-        f" ({parts.count()} chunks computed so far are kept in {parts.folder})")
+    count = 0 if parts.folder is None else parts.count()
+    kept = "" if not count else (f" ({count} chunks computed so far are kept in {parts.folder})"
+                                 if count > 1 else f" (the chunk computed so far is kept in "
+                                                   f"{parts.folder})")
     raise WorkerMismatch(
         f"a worker of {where} runs bearing-sweep {found['package']} (model version "
         f"{found['model']}) where this run has bearing-sweep {expected['package']} (model version "
         f"{expected['model']}): install the same on every worker{kept}")
-
-
-#: What a run says of a Ctrl-C that came once its result was in place (:class:`Interrupts`).
-RESULT_COMPLETE = "interrupt ignored: the result was already complete"
-
-
-class Interrupts:
-    """Ctrl-C (SIGINT) during a run, in the main thread. Until the result is about to take its
-    name it stops the run as usual (``KeyboardInterrupt``: the finished chunks are kept);
-    from :meth:`result_taking_its_name` on, the result is complete, and an interrupt is
-    recorded (:attr:`ignored`) instead: the short cleanup that follows (the parts removed,
-    the cluster closed, the summary) finishes, and the caller says that the result is
-    complete rather than that it was interrupted. Elsewhere than in the main thread, or
-    where SIGINT is ignored (a job in the background), nothing changes."""
-
-    def __init__(self):
-        self.result_in_place = False
-        self.ignored = False
-        self.previous = None
-
-    def __enter__(self):
-        if threading.current_thread() is threading.main_thread():
-            previous = signal.getsignal(signal.SIGINT)
-            if callable(previous):
-                self.previous = previous
-                signal.signal(signal.SIGINT, self._interrupted)
-        return self
-
-    def __exit__(self, *exc):
-        if self.previous is not None:
-            signal.signal(signal.SIGINT, self.previous)
-            self.previous = None
-
-    def _interrupted(self, signum, frame):
-        if self.result_in_place:
-            self.ignored = True
-            return
-        self.previous(signum, frame)
-
-    def result_taking_its_name(self):
-        """Called once the result is complete on the disk, just before its rename."""
-        self.result_in_place = True
 
 
 def _stored_bytes(result: dict) -> int | None:
@@ -550,8 +533,11 @@ def run_sweep(sweep: Sweep, output=None, executor: Executor | None = None,
     chunk is written into the file as it arrives, while the others compute: memory is bounded
     by the chunk size, and the file is complete soon after the last chunk. An output ending
     in ``.zarr`` is a zarr store that each chunk is written into by the worker that computes
-    it (:mod:`zarr_store`). A cluster, when the sweep is worth one, starts while the parts
-    are looked at and the file's structure is written. ``log`` receives messages for the user
+    it (:mod:`zarr_store`). A cluster, when the sweep is worth one, starts while the grid is
+    made and the parts are looked at. Nothing in the parts folder changes until every refusal
+    that may come before computing has passed (:meth:`parts.Parts.begin`): a result the disk
+    cannot hold, a cluster that cannot start, workers of another version (a chunk computed
+    by one later is refused too). ``log`` receives messages for the user
     (resuming, discarding, and with ``progress`` the estimate of a long or large run:
     :mod:`footprint`). A result the disk cannot hold raises
     :class:`footprint.InsufficientSpace`. ``interrupts``: the caller's :class:`Interrupts`,
@@ -592,18 +578,27 @@ def run_sweep(sweep: Sweep, output=None, executor: Executor | None = None,
                 key["parts_hold"] = hdf5_chunks.parts_hold(direct, sweep.storage, grid)
             parts = HeldChunks() if output is None else (
                 zarr_store.StoreParts if zarr else hdf5_chunks.EncodedParts if direct
-                else Parts)(output, key)
-            size = parts.open(size, fresh, log, grid.chunks)
+                else Parts)(output, key, grid, sweep.storage)
+            # Looked at only: nothing of an earlier run's changes before every refusal that
+            # may come before computing has passed.
+            size = parts.open(size, fresh, grid.chunks)
             chunks = grid.chunks(size)
+            done = parts.finished()
+            todo = [chunk for chunk in chunks if chunk not in done]
+            footprint = None if output is None else _footprint(
+                sweep, grid, output, todo, executor, parallel)
+            if parallel:  # the cluster started, its workers of this version
+                _check_workers(executor, model, expected, parts)
+            parts.begin(log)
+            if footprint is not None and progress and footprint.announced():
+                workers = executor.worker_count() if parallel else 1
+                log(footprint.text(model.name, f"{workers} worker{'s' * (workers != 1)}"
+                                   if parallel else "one core, in this process"))
             scheduler = executor.describe(parallel)
             task = None
             if zarr:  # each chunk is written into the store by the worker that computes it
                 parts.prepare(sweep, grid, size, scheduler)
                 task = functools.partial(evaluate_into, parts.writer, expected)
-            done = parts.finished()
-            todo = [chunk for chunk in chunks if chunk not in done]
-            footprint = None if output is None else _footprint(
-                sweep, grid, output, todo, executor, parallel, parts, done, progress, log)
             tallies = []
             with contextlib.nullcontext() if output is None or zarr else store.result_file(
                     sweep, grid, output, store.provenance(scheduler), size, direct,
@@ -654,21 +649,37 @@ def run_sweep(sweep: Sweep, output=None, executor: Executor | None = None,
             executor.close()
 
 
-def _footprint(sweep, grid, output, todo, executor, parallel, parts, done, progress, log):
-    """The run's :class:`footprint.Footprint`: a result stored uncompressed that the disk
-    cannot hold is refused before any computing (the parts folder made for it removed, if it
-    holds no finished chunk), and with ``progress`` a long or large run says what it will
-    take."""
+def _footprint(sweep, grid, output, todo, executor, parallel) -> Footprint:
+    """The run's :class:`footprint.Footprint`; a result stored uncompressed that the disk
+    cannot hold is refused (:class:`footprint.InsufficientSpace`) before any computing."""
     workers = executor.worker_count() if parallel else 1
     footprint = Footprint.of(sweep, grid, output, sum(stop - start for start, stop in todo),
                              workers, netcdf=not is_zarr(output))
-    try:
-        footprint.refuse_if_too_large()
-    except InsufficientSpace:
-        if not done:  # nothing computed: nothing is left of the run
-            parts.remove()
-        raise
-    if progress and footprint.announced():
-        log(footprint.text(grid.model.name, f"{workers} worker{'s' * (workers != 1)}"
-                           if parallel else "one core, in this process"))
+    footprint.refuse_if_too_large()
     return footprint
+
+
+def installed_versions(model_name: str) -> dict | None:
+    """The :func:`versions` a worker computes ``model_name`` with, or None where its
+    installation has no such model (its chunks will say what it does)."""
+    from .models.registry import get_model
+
+    try:
+        return versions(get_model(model_name))
+    except KeyError:
+        return None
+
+
+def _check_workers(executor: Executor, model, expected: dict, parts):
+    """Wait for the cluster (:class:`ClusterFailure` if it cannot start) and refuse workers
+    of another version (:func:`_check_versions`), before a chunk is computed; a worker that
+    joins later is checked by its chunks."""
+    client = executor.connect()
+    try:
+        with interruptions_raised():
+            found = client.run(installed_versions, model.name)
+    except Exception:  # a worker that cannot run it: its chunks will say what it does
+        return
+    for one in found.values():
+        if one is not None:
+            _check_versions(one, expected, executor, parts)

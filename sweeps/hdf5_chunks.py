@@ -31,10 +31,11 @@ from dataclasses import dataclass
 
 import numpy as np
 
-from .dependence import split_reduced, stored_dims
-from .grid import Grid
-from .parts import Parts, counts_unreadable, load_counts, saved_counts, write_durably
-from .store import closed_after, stored_blocks, writing
+from .dependence import reduced_outputs, split_reduced, stored_dims
+from .grid import Grid, block_shape
+from .interrupts import interruptions_raised
+from .parts import Parts, counts_damage, load_counts, saved_counts, status_damage
+from .store import STATUS_CODES, _regions, closed_after, stored_blocks, writing
 
 #: The compressions whose HDF5 filters :func:`encoded` applies, as ``storage.Storage`` and
 #: netCDF4's ``Variable.filters()`` name them (HDF5's deflate, the zstd plugin, or none).
@@ -106,12 +107,14 @@ def layouts(target, names) -> dict[str, Layout]:
 
 def encoded(values: np.ndarray, layout: Layout) -> bytes:
     """The bytes of an HDF5 chunk holding ``values`` (its first indices; the rest of the chunk
-    the fill value) as stored with ``layout``: what HDF5's filters would write."""
-    if values.shape == layout.chunk:
-        data = np.ascontiguousarray(values, dtype=layout.dtype)
-    else:  # an edge block: the part of the chunk beyond the grid is never read
-        data = np.full(layout.chunk, layout.fill, dtype=layout.dtype)
-        data[tuple(slice(0, n) for n in values.shape)] = values
+    the fill value) as stored with ``layout``: what HDF5's filters would write (a value
+    beyond float32's range infinite, without numpy's warning)."""
+    with np.errstate(over="ignore"):
+        if values.shape == layout.chunk:
+            data = np.ascontiguousarray(values, dtype=layout.dtype)
+        else:  # an edge block: the part of the chunk beyond the grid is never read
+            data = np.full(layout.chunk, layout.fill, dtype=layout.dtype)
+            data[tuple(slice(0, n) for n in values.shape)] = values
     size = data.dtype.itemsize
     if layout.shuffle and size > 1:  # byte 0 of every value, then byte 1, ...
         data = data.reshape(-1).view(np.uint8).reshape(-1, size).T.copy()
@@ -154,7 +157,8 @@ def reopened(open_file):
     deadline = time.monotonic() + REOPEN_SECONDS
     while True:
         try:
-            return open_file()
+            with interruptions_raised():
+                return open_file()
         except OSError:
             if time.monotonic() > deadline:
                 raise
@@ -195,14 +199,15 @@ class DirectWriter:
 class EncodedParts(Parts):
     """The parts of an interrupted netCDF run whose chunks are encoded by the workers: each
     chunk's :meth:`ChunkEncoder.write` result and counts (``store.chunk_tally``), as the
-    driver writes them. The interface of :class:`parts.Parts`."""
+    driver writes them. The interface of :class:`parts.Parts`; what a part says of itself is
+    checked against its grid and storage (:meth:`damage`)."""
 
-    def save(self, start: int, stop: int, result: dict):
+    def arrays(self, result: dict) -> dict:
         arrays = saved_counts(result)
         for name, (offset, data) in result["chunks"].items():
             arrays[f"offset_{name}"] = np.array(offset, dtype=np.int64)
             arrays[f"chunk_{name}"] = np.frombuffer(data, dtype=np.uint8)
-        write_durably(self.path(start, stop), lambda handle: np.savez(handle, **arrays))
+        return arrays
 
     def read(self, data) -> dict:
         tally, firsts = load_counts(data)
@@ -211,5 +216,49 @@ class EncodedParts(Parts):
                   for key in data.files if key.startswith("chunk_")}
         return {"chunks": chunks, "tally": tally, "firsts": firsts}
 
-    def unreadable(self, path, points: int) -> str | None:
-        return counts_unreadable(path, points)
+    def damage(self, data, start: int, stop: int) -> str | None:
+        """:func:`parts.counts_damage`, then: an HDF5 chunk for each variable the file
+        stores per point, each at the block of points ``start..stop-1``, and statuses that
+        are the counts' (the status chunk decoded: one byte a point)."""
+        reason = counts_damage(data, self.grid, start, stop)
+        if reason or self.grid is None:
+            return reason
+        reduced = {o.name for o in reduced_outputs(self.grid)}
+        expected = sorted([o.name for o in self.grid.model.outputs if o.name not in reduced]
+                          + ["status"])
+        found = sorted(key[len("chunk_"):] for key in data.files if key.startswith("chunk_"))
+        if found != expected:
+            return f"chunks of {found}, not of {expected}"
+        (index, _, _), = _regions(self.grid.shape, start, stop)
+        for name in found:
+            offset = tuple(data[f"offset_{name}"].tolist())
+            if offset[:len(index)] != tuple(s.start for s in index) or any(offset[len(index):]):
+                return f"its chunk of {name} at {offset}, not at the block of its points"
+        status = decoded_status(data["chunk_status"].tobytes(), self.storage.compression,
+                                block_shape(self.grid.shape, self.size),
+                                tuple(s.stop - s.start for s in index))
+        reason = status_damage(status, stop - start)
+        if reason:
+            return reason
+        counts = np.bincount(status, minlength=STATUS_CODES).tolist()
+        return None if counts == load_counts(data)[0]["status"] else \
+            "counts that are not those of its statuses"
+
+
+def decoded_status(data: bytes, compression: str, chunk: tuple, block: tuple) -> np.ndarray:
+    """The statuses of a block of points (``block``: its shape) from the bytes of the HDF5
+    chunk (of shape ``chunk``) that :func:`encoded` made of them (one byte each: shuffle
+    leaves them as they are); ``ValueError`` for bytes that do not decode to it."""
+    try:
+        if compression == "zlib":
+            data = zlib.decompress(data)
+        elif compression == "zstd":
+            import numcodecs
+
+            data = bytes(numcodecs.Zstd().decode(data))
+    except (zlib.error, RuntimeError) as error:
+        raise ValueError(f"its status chunk does not decode ({error})") from None
+    values = np.frombuffer(data, dtype=np.int8)
+    if values.size != int(np.prod(chunk)):
+        raise ValueError(f"{values.size} bytes of status, not {int(np.prod(chunk))}")
+    return values.reshape(chunk)[tuple(slice(0, n) for n in block)].ravel()

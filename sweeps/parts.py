@@ -7,11 +7,12 @@ finished chunk, each written atomically and flushed to the disk before it is ren
 place (a zarr output keeps its chunks' values in its store instead: ``zarr_store``). Parts of
 another definition, model, package version or storage are discarded, with a message, and so
 is a folder whose manifest is not one this program writes; a part that cannot be read (a power
-loss before it reached the disk) is computed again, and a file in the folder that is no part of
-the run is removed, with a message.
+loss before it reached the disk) or that does not hold what its name says (each records its
+range; :meth:`Parts.damage`) is computed again, and a file in the folder that is no part of
+the run is removed, with a message. Nothing changes in the folder before :meth:`Parts.begin`.
 A lock on ``.<output>.lock`` keeps two runs from writing the same output; the run that holds it
-removes the temporary files that a killed run left (:func:`remove_stale_temporaries`), and
-:func:`check_output` refuses an output path that holds something other than an earlier result.
+removes the temporary files that a killed run left (:func:`remove_stale_temporaries`).
+Which output paths may be written is :mod:`output_paths`' to say.
 """
 from __future__ import annotations
 
@@ -20,7 +21,7 @@ import json
 import os
 import re
 import shutil
-import stat
+import tempfile
 import zipfile
 from contextlib import contextmanager
 from pathlib import Path
@@ -28,296 +29,144 @@ from pathlib import Path
 import filelock
 import numpy as np
 
-from .spec import SpecError
+from .models.registry import known_status
+# Output paths' checks, here for who imports them from this module.
+from .output_paths import (PARTS_SUFFIX, ZARR_SUFFIX, UnsafeOutput,  # noqa: F401
+                           check_output, check_outside_results, check_parts_folder,
+                           argument_text, is_zarr, path_argument)
 
 
 class OutputBusy(OSError):
     """Another run holds the output; the message is for the user."""
 
 
-class UnsafeOutput(SpecError):
-    """An output path that must not be written; the message is for the user."""
-
-
 class UnreadablePart(OSError):
     """A part file that cannot be read; the message is for the user."""
 
 
-#: The first bytes of a netCDF file: classic and 64-bit offset formats, and HDF5 (netCDF-4).
-NETCDF_SIGNATURES = (b"CDF\x01", b"CDF\x02", b"CDF\x05", b"\x89HDF\r\n\x1a\n")
-#: The suffix of an output written as a zarr store (a folder) rather than a netCDF file.
-ZARR_SUFFIX = ".zarr"
-#: Names that are only a suffix: a hidden file, not a result with a name.
-BARE_SUFFIXES = (ZARR_SUFFIX, ".nc")
 #: The errors of a file that cannot be written on (a full disk or quota, a file larger than
 #: the process may write, a disk failing or read-only).
 WRITING_ERRORS = (errno.ENOSPC, errno.EFBIG, errno.EDQUOT, errno.EIO, errno.EROFS)
 
 
-def is_zarr(output) -> bool:
-    """Whether ``output`` names a zarr store (by its suffix, as ``-o result.zarr``, in any
-    case: ``result.ZARR`` must not become a netCDF file under a store's name)."""
-    return output is not None and Path(output).suffix.lower() == ZARR_SUFFIX
-
-
-def path_argument(value, name: str, expected: str = "", optional: bool = True) -> str | None:
-    """A path given to a function of the API as its argument ``name``, as a string (None
-    stays None where it is ``optional``); anything else is a :class:`SpecError` naming the
-    argument."""
-    if value is None and optional:
-        return None
-    if isinstance(value, os.PathLike):
-        value = os.fspath(value)
-    if not isinstance(value, str) or not value.strip():
-        raise SpecError(f"{name}={argument_text(value)}: expected {expected or 'a'} path (a str "
-                        "or os.PathLike), not " + ("an empty one" if isinstance(value, str)
-                                                   else type(value).__name__))
-    return value
-
-
-def argument_text(value) -> str:
-    """An argument as a message shows it: its repr, or its type where that is long."""
-    shown = repr(value)
-    return shown if len(shown) <= 60 and "\n" not in shown else f"<{type(value).__name__}>"
-
-
-def check_output(output, definition=None, result: str = "run"):
-    """Refuse, before any computing, an output path that a sweep must not replace.
-
-    Accepted: a path that does not exist yet in a folder that exists or can be made, or a
-    regular netCDF file that this program wrote as the same kind of ``result``, ``"run"`` or
-    ``"analysis"`` (its global attributes say so: only the header is read; an analysis never
-    replaces the result it may have been made from, nor a run an analysis). Anything else
-    (the definition itself, another folder, a device, a pipe, a symbolic link, another
-    program's file, an earlier zarr store) raises :class:`UnsafeOutput`; nothing is opened but
-    a regular file's first bytes and header.
-    """
-    _check_name(output)
-    output = Path(output)
-    try:
-        found = output.lstat()
-    except (FileNotFoundError, NotADirectoryError):  # the second: a file on the way to it
-        found = None
-    except OSError as error:
-        raise UnsafeOutput(f"{output}: cannot be the output: {error.strerror}") from None
-    if found is None:
-        _check_folder(output)
-        return
-    if definition is not None and _same_file(output, Path(definition)):
-        raise UnsafeOutput(f"{output}: is the sweep definition itself; choose another output")
-    kind = _file_kind(found.st_mode)
-    if kind == "a folder" and is_zarr(output):
-        reason = _not_our_store(output)
-        if reason:
-            raise UnsafeOutput(f"{output}: exists and is not a zarr store written by "
-                               f"bearing-sweep ({reason}); refusing to replace it (remove it or "
-                               "choose another output)")
-        # A reader of a store reads each chunk by its path when asked for it, and a chunk
-        # missing reads as the fill value: whatever replaced the store, a reader that has it
-        # open would read the new run's values (or fill values) under the coordinates it
-        # read from the old one.
-        raise UnsafeOutput(f"{output}: holds an earlier zarr store of bearing-sweep, which is "
-                           "never replaced (a reader that has it open would read the new "
-                           "values under its old coordinates): remove it first (close its "
-                           "readers, then rm -r it) or choose another output")
-    if kind == "regular file" and is_zarr(output):
-        raise UnsafeOutput(f"{output}: exists and is a file; a .zarr output is a zarr store, a "
-                           "folder: refusing to replace it (choose another output)")
-    if kind != "regular file":
-        raise UnsafeOutput(f"{output}: exists and is {kind}, not an earlier result; refusing to "
-                           "replace it (choose another output)")
-    reason = _not_ours(output, result)
-    if reason:
-        what = "a netCDF file" if result == "run" else "an analysis"
-        raise UnsafeOutput(f"{output}: exists and is not {what} written by bearing-sweep "
-                           f"({reason}); refusing to replace it (remove it or choose another "
-                           "output)")
-
-
-def _check_name(output):
-    """Refuse an output name that does not say plainly what it is: only a suffix (``.zarr``,
-    ``.nc``: a hidden file), a name ending in a dot (which some filesystems drop: ``x.zarr.``
-    would be a netCDF file there, a store elsewhere), or a netCDF name ending in a separator
-    (a folder, where a netCDF result is a file)."""
-    text = os.fspath(output)
-    name = Path(text).name
-    if name.lower() in BARE_SUFFIXES:
-        kind = "store" if is_zarr(f"x{name}") else "file"
-        raise UnsafeOutput(f"{text}: is only a suffix; name the {kind}, as result{name}")
-    if name.endswith(".") and name.strip("."):
-        raise UnsafeOutput(f"{text}: ends in a dot, which some filesystems drop; name it "
-                           f"{name.rstrip('.')} (a .zarr store or a netCDF file)")
-    separators = (os.sep, os.altsep) if os.altsep else (os.sep,)
-    if text.endswith(separators) and name not in ("", ".", "..") and not is_zarr(text):
-        raise UnsafeOutput(f"{text}: names a folder (it ends in {text[-1]}), and a netCDF "
-                           f"result is a file: name it {name} (a folder is written only as a "
-                           "zarr store, a name ending in .zarr)")
-
-
-def check_parts_folder(output):
-    """Refuse (:class:`UnsafeOutput`) a run's output whose parts folder (:class:`Parts`: it is
-    emptied and removed once the run is complete) exists and is not a folder (a file, a
-    link)."""
-    output = Path(output)
-    folder = output.with_name(output.name + ".parts")
-    try:
-        kind = _file_kind(folder.lstat().st_mode)
-    except OSError:
-        return
-    if kind != "a folder":
-        kind = "a file" if kind == "regular file" else kind
-        raise UnsafeOutput(f"{folder}: exists and is {kind}, not the folder of an interrupted "
-                           f"run's parts of {output.name}; refusing to use it (remove it or "
-                           "choose another output)")
-
-
-def _check_folder(output: Path):
-    """The output's folder exists, or the nearest existing ancestor is a writable folder."""
-    ancestor = output.parent
-    while not os.path.lexists(ancestor) and ancestor != ancestor.parent:
-        ancestor = ancestor.parent
-    if not ancestor.is_dir():
-        raise UnsafeOutput(f"{output}: its folder cannot be created: {ancestor} is not a folder")
-    if not os.access(ancestor, os.W_OK | os.X_OK):
-        raise UnsafeOutput(f"{output}: its folder cannot be written: permission denied on "
-                           f"{ancestor}")
-
-
-def _same_file(first: Path, second: Path) -> bool:
-    try:
-        return os.path.samefile(first, second)
-    except OSError:
-        return False
-
-
-def _file_kind(mode: int) -> str:
-    for test, kind in ((stat.S_ISREG, "regular file"), (stat.S_ISDIR, "a folder"),
-                       (stat.S_ISLNK, "a symbolic link"), (stat.S_ISFIFO, "a named pipe"),
-                       (stat.S_ISCHR, "a device"), (stat.S_ISBLK, "a device"),
-                       (stat.S_ISSOCK, "a socket")):
-        if test(mode):
-            return kind
-    return "not a regular file"
-
-
-def _not_ours(path: Path, kind: str = "run") -> str | None:
-    """Why the regular file at ``path`` is not a result of this program of that ``kind``,
-    or None if it is."""
-    import netCDF4
-
-    try:
-        with open(path, "rb") as handle:
-            head = handle.read(8)
-    except OSError as error:
-        return error.strerror
-    if not head.startswith(NETCDF_SIGNATURES):
-        return "not a netCDF file"
-    try:
-        with netCDF4.Dataset(path, "r") as dataset:
-            attributes = dataset.__dict__
-    except OSError as error:
-        return str(error).splitlines()[0]
-    if not _names_us(attributes):
-        return "its attributes do not name bearing-sweep"
-    found = "run" if "definition" in attributes else "analysis"  # a run's holds its definition
-    if found != kind:
-        return (f"it is the result of a {found}, not an {kind}" if kind == "analysis" else
-                f"it is an {found}, not the result of a {kind}")
-    return None
-
-
-def _not_our_store(path: Path) -> str | None:
-    """Why the folder at ``path`` is not a zarr store of this program, or None if it is.
-    Reads its group attributes only (``.zattrs``, zarr format 2, as this program writes)."""
-    if not (path / ".zgroup").is_file():
-        return "no zarr group of format 2 in it"
-    attributes = _read_json(path / ".zattrs")
-    if not isinstance(attributes, dict):
-        return "its attributes cannot be read"
-    return None if _names_us(attributes) else "its attributes do not name bearing-sweep"
-
-
-def _names_us(attributes: dict) -> bool:
-    """Whether a result's global attributes say this program wrote it."""
-    return ("definition_sha256" in attributes
-            or str(attributes.get("source", "")).startswith("bearing-sweep"))
-
-
 class Parts:
-    """The part files of one output."""
+    """The part files of one output (of ``grid``, when given: what its parts must hold is
+    checked against it).
+
+    :meth:`open` only looks at the folder; nothing in it changes until :meth:`begin`, called
+    once every refusal that may come before computing has passed (a disk too small, a
+    cluster that cannot start, workers of another version): a run refused leaves an earlier
+    run's parts as they were, even those it would have discarded.
+    """
 
     #: The suffix of a finished chunk's file.
     suffix = ".npz"
     #: What the folder holds besides the finished chunks' files.
     own_entries = ("manifest.json",)
 
-    def __init__(self, output, key: dict):
+    def __init__(self, output, key: dict, grid=None, storage=None):
         output = Path(output)
-        self.folder = output.with_name(output.name + ".parts")
-        self.key = key
+        self.folder = output.with_name(output.name + PARTS_SUFFIX)
+        self.key, self.grid, self.storage = key, grid, storage
+        self.size = None
+        self.plan = None  # what begin() does: "create", "discard" (then create) or "resume"
+        self.usable, self.unusable, self.discarding = set(), {}, None
 
-    def open(self, chunk_size: int, fresh: bool, log, chunks_of=None) -> int:
-        """Prepare the folder; return the chunk size to use (a resumed sweep keeps its own).
+    def open(self, chunk_size: int, fresh: bool, chunks_of=None) -> int:
+        """Look at the folder (nothing changes: :meth:`begin` does it); return the chunk size
+        to use (a resumed sweep keeps its own).
 
         ``chunks_of(size)`` gives the ``(start, stop)`` of every chunk of the sweep in chunks
-        of ``size`` points: a file in the folder that is none of them is removed (with a line
-        to ``log``), as is a part that cannot be read.
+        of ``size`` points: a file in the folder that is none of them is to be removed, as is
+        a part that cannot be read or does not hold what its name says (:meth:`damage`); the
+        others are :meth:`finished`. Parts of another definition, model, package or storage,
+        or with a manifest this program does not write, are to be discarded; a folder without
+        a manifest that holds what no run writes is refused (:class:`UnsafeOutput`).
         """
+        self.size, self.plan = chunk_size, "create"
+        self.usable, self.unusable, self.discarding = set(), {}, None
+        if not self.folder.exists():
+            return chunk_size
         manifest = self.folder / "manifest.json"
-        if self.folder.exists():
-            found, damage = _read_manifest(manifest, self.key)
-            count = self.count()
-            if fresh or damage or found != {**self.key, "chunk_size": found["chunk_size"]}:
-                if damage:
-                    log(f"{damage} in {self.folder}: discarding the folder"
-                        + (f" and its {count} finished chunks" if count else ""))
-                elif count:
-                    why = "--fresh" if fresh else (
-                        "the definition, model, package or storage changed")
-                    log(f"{why}: discarding {count} finished chunks in {self.folder}")
-                shutil.rmtree(self.folder)
-            else:
-                size = found["chunk_size"]
-                count = self._remove_unusable(log, set(chunks_of(size)) if chunks_of else None)
-                if count:
-                    log(f"resuming: {count} chunk{'s' * (count != 1)} already computed in "
-                        f"{self.folder}")
-                return size
-        self.folder.mkdir(parents=True)
-        text = json.dumps({**self.key, "chunk_size": chunk_size}).encode()
-        write_durably(manifest, lambda handle: handle.write(text))
-        return chunk_size
+        found, damage = _read_manifest(manifest, self.key)
+        if not manifest.exists():
+            self._refuse_if_not_ours()
+        count = self.count_on_disk()
+        if fresh or damage or found != {**self.key, "chunk_size": found["chunk_size"]}:
+            self.plan = "discard"
+            if damage:
+                self.discarding = (f"{damage} in {self.folder}: discarding the folder"
+                                   + (f" and its {count} finished chunks" if count else ""))
+            elif count:
+                why = "--fresh" if fresh else "the definition, model, package or storage changed"
+                self.discarding = f"{why}: discarding {count} finished chunks in {self.folder}"
+            return chunk_size
+        self.plan, self.size = "resume", found["chunk_size"]
+        self._survey(set(chunks_of(self.size)) if chunks_of else None)
+        return self.size
 
-    def _remove_unusable(self, log, chunks: set | None) -> int:
-        """Remove from the folder what is no finished chunk of this run (``chunks``: the
-        ``(start, stop)`` of each, None: any), with one line to ``log`` for the files that
-        are neither ours nor readable, and the temporary files a killed run left (the run
-        holds the output's lock: no other run writes them), quietly; return how many
-        finished chunks are left."""
-        unreadable, stray, left = [], [], 0
+    def _refuse_if_not_ours(self):
+        """A folder without a manifest holds only what a run writes (its manifest is written
+        first, durably): anything else is someone's, and refused rather than removed."""
+        for entry in sorted(self.folder.iterdir()):
+            if not (entry.name in self.own_entries or _TEMPORARY.fullmatch(entry.name)
+                    or self.bounds(entry.name)):
+                raise UnsafeOutput(f"{self.folder}: holds {entry.name} and no manifest.json: "
+                                   "not the folder of an interrupted run's parts; refusing to "
+                                   "use it (move it away or choose another output)")
+
+    def _survey(self, chunks: set | None):
+        """Sort the folder's entries: the finished chunks of this run (``chunks``: the
+        ``(start, stop)`` of each, None: any) that can be used, and what :meth:`begin` is to
+        remove: ``{"unreadable": [...], "wrong": [...], "stray": [...], "temporary": [...]}``
+        (a temporary file a killed run left: the run holds the output's lock, no other run
+        writes it)."""
+        self.unusable = {"unreadable": [], "wrong": [], "stray": [], "temporary": []}
         for entry in sorted(self.folder.iterdir()):
             if entry.name in self.own_entries:
                 continue
             bounds = self.bounds(entry.name)
             if bounds is None or (chunks is not None and bounds not in chunks):
-                if not _TEMPORARY.fullmatch(entry.name):
-                    stray.append(entry.name)
-                _remove(entry)
+                kind = "temporary" if _TEMPORARY.fullmatch(entry.name) else "stray"
+                self.unusable[kind].append((entry, None))
                 continue
-            reason = self.unreadable(entry, bounds[1] - bounds[0])
-            if reason:
-                unreadable.append(f"{entry.name} ({reason})")
-                _remove(entry)
-            else:
-                left += 1
-        for found, what, then in ((unreadable, "unreadable part", "computing {} again"),
-                                  (stray, "a file that is no part of this run,",
-                                   "removed {}")):
+            found = self.unusable_part(entry, *bounds)
             if found:
-                more = f" and {len(found) - 1} more" if len(found) > 1 else ""
-                log(f"{what} {found[0]}{more} in {self.folder}: "
-                    + then.format("them" if more else "it"))
-        return left
+                self.unusable[found[0]].append((entry, found[1]))
+            else:
+                self.usable.add(bounds)
+
+    def begin(self, log):
+        """Make the folder this run's, saying so to ``log``: discard it, make it, or remove
+        from it what :meth:`open` found unusable."""
+        plan, self.plan = self.plan, None
+        if plan == "resume":
+            lines = (("unreadable", "unreadable part", "computing {} again"),
+                     ("wrong", "a part that does not hold what its name says,",
+                      "computing {} again"),
+                     ("stray", "a file that is no part of this run,", "removed {}"))
+            for kind, what, then in lines:
+                found = self.unusable[kind]
+                if found:
+                    entry, reason = found[0]
+                    more = f" and {len(found) - 1} more" if len(found) > 1 else ""
+                    log(f"{what} {entry.name}{f' ({reason})' if reason else ''}{more} in "
+                        f"{self.folder}: " + then.format("them" if more else "it"))
+            for entry, _ in (one for found in self.unusable.values() for one in found):
+                _remove(entry)
+            if self.usable:
+                count = len(self.usable)
+                log(f"resuming: {count} chunk{'s' * (count != 1)} already computed in "
+                    f"{self.folder}")
+            return
+        if plan == "discard":
+            if self.discarding:
+                log(self.discarding)
+            shutil.rmtree(self.folder)
+        if plan in ("discard", "create"):
+            self.folder.mkdir(parents=True)
+            text = json.dumps({**self.key, "chunk_size": self.size}).encode()
+            write_durably(self.folder / "manifest.json", lambda handle: handle.write(text))
 
     def bounds(self, name: str) -> tuple[int, int] | None:
         """The ``(start, stop)`` of the finished chunk whose file is named ``name``, or None
@@ -327,16 +176,58 @@ class Parts:
             return None
         return int(found[1]), int(found[2])
 
-    def unreadable(self, path: Path, points: int) -> str | None:
-        """Why the finished chunk at ``path`` cannot be used, or None."""
-        return _unreadable(path, points)
+    def unusable_part(self, path: Path, start: int, stop: int) -> tuple[str, str] | None:
+        """Why the part at ``path`` cannot be used as the chunk of points ``start..stop-1``:
+        ``("unreadable", reason)`` or ``("wrong", reason)`` (:meth:`damage`), or None."""
+        try:
+            with np.load(path) as data:
+                reason = self.damage(data, start, stop)
+        except (EOFError, KeyError, zipfile.BadZipFile):  # cut short, or an array missing
+            return "unreadable", "incomplete"
+        except (OSError, ValueError) as error:
+            return "unreadable", (str(error).splitlines()[0] if str(error)
+                                  else type(error).__name__)
+        return None if reason is None else ("wrong", reason)
+
+    def damage(self, data, start: int, stop: int) -> str | None:
+        """What the open part ``data`` says of itself that is not what the chunk of points
+        ``start..stop-1`` holds, in words, or None: its range, its statuses (as many as the
+        chunk has points, each a code of the registry) and, when the grid is known, the
+        model's outputs (names, shapes, type). ``KeyError`` for an array it lacks."""
+        reason = range_damage(data, start, stop) or status_damage(data["status"], stop - start)
+        if reason:
+            return reason
+        errors = data["errors"]
+        if errors.ndim != 1 or errors.dtype.kind not in "US":
+            return "its error messages unreadable"
+        found = {key[len("output_"):]: data[key] for key in data.files
+                 if key.startswith("output_")}
+        if self.grid is None:
+            return None
+        declared = {o.name: (stop - start,) + tuple(self.grid.dim_sizes[d] for d in o.dims)
+                    for o in self.grid.model.outputs}
+        if set(found) != set(declared):
+            return f"outputs {sorted(found)}, not the model's {sorted(declared)}"
+        for name, values in found.items():
+            if values.shape != declared[name] or values.dtype != np.float64:
+                return (f"output {name} of shape {values.shape} and type {values.dtype}, not "
+                        f"{declared[name]} float64")
+        return None
 
     def count(self) -> int:
-        """How many finished chunks are on disk."""
+        """How many finished chunks this run has (:meth:`finished`)."""
         return len(self.finished())
 
+    def count_on_disk(self) -> int:
+        """How many files in the folder are named as finished chunks."""
+        return len(self._on_disk())
+
     def finished(self) -> set:
-        """``(start, stop)`` of every chunk on disk."""
+        """``(start, stop)`` of every finished chunk: before :meth:`begin`, those :meth:`open`
+        found usable; then every one on disk."""
+        return set(self.usable) if self.plan is not None else self._on_disk()
+
+    def _on_disk(self) -> set:
         found = (self.bounds(path.name) for path in self.folder.glob(f"chunk-*{self.suffix}"))
         return {bounds for bounds in found if bounds is not None}
 
@@ -344,22 +235,33 @@ class Parts:
         return self.folder / f"chunk-{start:012d}-{stop:012d}{self.suffix}"
 
     def save(self, start: int, stop: int, result: dict):
+        """Keep the finished chunk of points ``start..stop-1``: :meth:`arrays` and its range."""
+        arrays = self.arrays(result)
+        arrays["bounds"] = np.array([start, stop], dtype=np.int64)
+        write_durably(self.path(start, stop), lambda handle: np.savez(handle, **arrays))
+
+    def arrays(self, result: dict) -> dict:
+        """What a part file holds of a computed chunk (as ``compute.evaluate_chunk`` returns
+        it): its outputs, statuses and error messages."""
         arrays = {f"output_{name}": values for name, values in result["outputs"].items()}
         arrays["status"] = result["status"]
         arrays["errors"] = np.array(result["errors"], dtype=str)
-        write_durably(self.path(start, stop), lambda handle: np.savez(handle, **arrays))
+        return arrays
 
     def load(self, start: int, stop: int) -> dict:
         path = self.path(start, stop)
         try:
             with np.load(path) as data:
-                return self.read(data)
+                reason = self.damage(data, start, stop)
+                if reason is None:
+                    return self.read(data)
         except (OSError, ValueError, EOFError, KeyError, zipfile.BadZipFile) as error:
-            # Found readable when the run began, damaged since: removed, so that the next run
-            # computes it again.
-            path.unlink(missing_ok=True)
-            raise UnreadablePart(f"{path}: unreadable part ({type(error).__name__}); it is "
-                                 "removed: run the same command again to compute it") from None
+            reason = f"unreadable: {type(error).__name__}"
+        # Found usable when the run began, damaged since: removed, so that the next run
+        # computes it again.
+        path.unlink(missing_ok=True)
+        raise UnreadablePart(f"{path}: unusable part ({reason}); it is removed: run the same "
+                             "command again to compute it")
 
     def read(self, data) -> dict:
         """A finished chunk from its open part file ``data`` (as :meth:`save` wrote it)."""
@@ -380,8 +282,11 @@ class HeldChunks:
     def __init__(self):
         self.chunks = {}
 
-    def open(self, chunk_size: int, fresh: bool, log, chunks_of=None) -> int:
+    def open(self, chunk_size: int, fresh: bool, chunks_of=None) -> int:
         return chunk_size
+
+    def begin(self, log):
+        pass
 
     def finished(self) -> set:
         return set(self.chunks)
@@ -410,14 +315,46 @@ class OutputLock:
         self.lock = filelock.FileLock(self.path, timeout=0)
 
     def __enter__(self):
-        self.path.parent.mkdir(parents=True, exist_ok=True)
+        """Take the lock; :class:`OutputBusy` if another run holds it, and a lock file that
+        cannot be made (a read-only folder, a filesystem that takes no files: /proc) is one
+        of :meth:`_not_made`."""
         try:
-            self.lock.acquire()
-        except filelock.Timeout:
-            raise OutputBusy(f"{self.output}: another bearing-sweep run is writing this output; "
-                             "wait for it to finish or choose another -o") from None
+            self.path.parent.mkdir(parents=True, exist_ok=True)
+        except OSError as error:
+            raise self._not_made(error, f"its folder {self.path.parent} cannot be made") \
+                from None
+        for _ in range(3):  # again if the holder let it go while it was looked at
+            try:
+                self.lock.acquire()
+            except filelock.Timeout:  # said also where the file cannot be made: look
+                failure = _creation_failure(self.path)
+                if failure is None:
+                    raise OutputBusy(f"{self.output}: another bearing-sweep run is writing this "
+                                     "output; wait for it to finish or choose another -o") \
+                        from None
+            except OSError as error:
+                failure = error
+            else:
+                break
+            if failure is not False:
+                raise self._not_made(failure, f"its lock file {self.path.name} cannot be "
+                                              f"made in {self.path.parent}") from None
+        else:
+            raise OutputBusy(f"{self.output}: another bearing-sweep run keeps taking and "
+                             "leaving this output's lock; wait for it to finish or choose "
+                             "another -o")
         remove_stale_temporaries(self.output)
         return self
+
+    def _not_made(self, error: OSError, what: str) -> OSError:
+        """The error of a lock that cannot be made (``what``, for ``error``): a full disk's
+        is an ``OSError`` (a failure of the machine), any other an :class:`UnsafeOutput` (an
+        output where nothing can be written)."""
+        reason = error.strerror or str(error) or type(error).__name__
+        if error.errno in WRITING_ERRORS and error.errno != errno.EROFS:
+            return OSError(error.errno, f"{what}: {reason}", str(self.output))
+        return UnsafeOutput(f"{self.output}: cannot be written: {what} ({reason}); choose "
+                            "another output")
 
     def __exit__(self, *exc):
         try:
@@ -427,11 +364,26 @@ class OutputLock:
         self.lock.release()
 
 
-def _read_json(path: Path):
+def _creation_failure(path: Path) -> OSError | bool | None:
+    """Why no file can be opened or made at ``path`` (an ``OSError``); None where one exists
+    that opens (its lock is another process's), False where one could be made (the holder
+    has just removed it). Nothing is made at ``path`` itself: a file made and removed there
+    could be the one another process has just opened to lock."""
     try:
-        return json.loads(path.read_text())
-    except (OSError, ValueError):
+        os.close(os.open(path, os.O_RDWR | getattr(os, "O_NOFOLLOW", 0)))
         return None
+    except FileNotFoundError:
+        pass  # not there, or a folder that takes no files (/proc says so too)
+    except OSError as error:
+        return error
+    try:  # whether the folder takes a new file, tried under a name of its own
+        handle, probe = tempfile.mkstemp(prefix=f".{path.name}.", suffix=".probe",
+                                         dir=path.parent)
+    except OSError as error:
+        return error
+    os.close(handle)
+    os.unlink(probe)
+    return False
 
 
 def _read_manifest(path: Path, key: dict) -> tuple:
@@ -471,8 +423,7 @@ def _remove(path: Path):
 
 def remove_stale_temporaries(output) -> list[str]:
     """Remove the temporary files of ``output`` (``.<name>.<process id>.tmp``, beside it, a
-    file or a zarr store's folder) that a run killed while writing it left. Called by the
-    holder of the output's lock
+    file or a zarr store's folder) that a run killed while writing it left. Called by the holder of the output's lock
     (:class:`OutputLock`): every writer of such a file holds the lock as long as the file
     exists, and a process's lock dies with it, however it ends, so none of them is being
     written (on this host or another sharing the folder, whatever became of the process
@@ -497,17 +448,25 @@ def remove_stale_temporaries(output) -> list[str]:
     return removed
 
 
-def _unreadable(path: Path, points: int) -> str | None:
-    """Why the part at ``path`` cannot be used, or None. Reads its index and status only."""
-    try:
-        with np.load(path) as data:
-            if "status" not in data.files or "errors" not in data.files:
-                return "incomplete"
-            if data["status"].shape != (points,):
-                return f"{data['status'].shape[0]} points instead of {points}"
-    except (OSError, ValueError, EOFError, zipfile.BadZipFile) as error:
-        return str(error).splitlines()[0] if str(error) else type(error).__name__
-    return None
+def range_damage(data, start: int, stop: int) -> str | None:
+    """What the open part ``data`` says of its range (its ``bounds``) that is not
+    ``start..stop-1``, or None."""
+    if "bounds" not in data.files:
+        return "no range recorded in it"
+    bounds = data["bounds"]
+    if bounds.shape != (2,) or bounds.dtype.kind not in "iu":
+        return "its range unreadable"
+    low, high = (int(bound) for bound in bounds)
+    return None if (low, high) == (start, stop) else f"it holds points {low}..{high - 1}"
+
+
+def status_damage(status: np.ndarray, points: int) -> str | None:
+    """What is wrong with a chunk's ``status`` of ``points`` points, or None: one per point,
+    each a code of the registry."""
+    if status.shape != (points,) or status.dtype != np.int8:
+        return f"{status.size} statuses of type {status.dtype}, not {points} of int8"
+    unknown = ~known_status(status)
+    return f"status {status[unknown][0]}, not a code of the registry" if unknown.any() else None
 
 
 def saved_counts(result: dict) -> dict:
@@ -528,15 +487,48 @@ def load_counts(data) -> tuple[dict, dict]:
     return json.loads(str(data["tally"])), firsts
 
 
-def counts_unreadable(path: Path, points: int) -> str | None:
-    """Why a part file holding :func:`saved_counts` cannot be used for a chunk of ``points``
-    points, or None. Reads its counts only."""
-    try:
-        with np.load(path) as data:
-            tally = json.loads(str(data["tally"]))
-    except (OSError, ValueError, EOFError, KeyError, zipfile.BadZipFile):
-        return "incomplete"
-    return None if sum(tally["status"]) == points else "not this chunk's counts"
+def counts_damage(data, grid, start: int, stop: int) -> str | None:
+    """What an open part file holding :func:`saved_counts` (``data``) says of itself that is
+    not the chunk of points ``start..stop-1`` of ``grid``: its range, its counts (of as many
+    points, each status a code of the registry, the model's counted outputs) and the values
+    it gives the outputs stored on fewer dimensions (one per cell, at points of the chunk, of
+    the output's own shape); None where it says nothing else. ``KeyError`` or ``ValueError``
+    for what cannot be read."""
+    from .dependence import reduced_outputs
+    from .store import STATUS_CODES
+
+    reason = range_damage(data, start, stop)
+    if reason:
+        return reason
+    tally, firsts = load_counts(data)
+    status, errors, noted = (tally.get(key) if isinstance(tally, dict) else None
+                             for key in ("status", "errors", "noted"))
+    if not (isinstance(status, list) and len(status) == STATUS_CODES
+            and all(type(n) is int and n >= 0 for n in status)
+            and isinstance(errors, list) and all(isinstance(e, str) for e in errors)
+            and isinstance(noted, dict) and all(type(n) is int and n >= 0
+                                                for n in noted.values())):
+        return "its counts unreadable"
+    if sum(status) != stop - start:
+        return f"counts of {sum(status)} points, not {stop - start}"
+    codes = np.flatnonzero(status)
+    if not known_status(codes).all():
+        return f"status {codes[~known_status(codes)][0]}, not a code of the registry"
+    if grid is None:
+        return None
+    counted = {o.counted[0] for o in grid.model.outputs if o.counted}
+    if set(noted) != counted:
+        return f"counts of {sorted(noted)}, not of the model's {sorted(counted)}"
+    reduced = {o.name: o for o in reduced_outputs(grid)}
+    if set(firsts) != set(reduced):
+        return f"values of {sorted(firsts)}, not of the outputs on fewer axes {sorted(reduced)}"
+    for name, (points, values) in firsts.items():
+        own = tuple(grid.dim_sizes[d] for d in reduced[name].dims)
+        if (points.ndim != 1 or points.dtype.kind not in "iu"
+                or ((points < start) | (points >= stop)).any()
+                or values.shape != points.shape + own):
+            return f"values of {name} not of points {start}..{stop - 1}"
+    return None
 
 
 def write_durably(path: Path, write):

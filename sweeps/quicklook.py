@@ -21,7 +21,7 @@ from matplotlib.lines import Line2D
 
 from .dependence import flag_holds, held_points, on_grid
 from .models.registry import get_model
-from .parts import argument_text, is_zarr, path_argument, write_durably
+from .parts import argument_text, check_outside_results, is_zarr, path_argument, write_durably
 from .plotting import conditions, in_unit, label, shown_unit, subplots
 from .spec import SpecError, suggestion
 from .store import open_result
@@ -402,7 +402,9 @@ def _choose(name: str, options: list, what: str) -> str:
 def check_figure_path(output, result=None) -> Path:
     """Refuse a figure path that must not be written: the result itself, a folder or any
     other kind of file than a regular one, a suffix other than ``FORMATS``', an existing file
-    that is not a figure of that format, a folder that does not exist."""
+    that is not a figure of that format, a folder that does not exist, a path inside a zarr
+    store or a parts folder (:func:`output_paths.check_outside_results`)."""
+    check_outside_results(output)
     output = Path(output)
     if result is not None and output.exists() and output.resolve() == Path(result).resolve():
         raise SpecError(f"{output}: is the result itself; choose another figure path")

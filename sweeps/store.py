@@ -19,9 +19,11 @@ from .models.registry import (OUTCOME_MASK, STATUS_MASKS, STATUS_MEANINGS, STATU
                               VALIDITY_MASK)
 from .dependence import reductions, stored_cells
 from .grid import Grid, block_shape
+from .interrupts import interruptions_raised
 from .labels import labelled, labelled_dataset
 from .netcdf_structure import write_attributes, write_structure
-from .parts import OutputLock, is_zarr, written_atomically
+from .output_paths import is_zarr
+from .parts import OutputLock, written_atomically
 from .spec import Sweep
 from .storage import integral_values
 
@@ -166,9 +168,12 @@ def result_file(sweep: Sweep, grid: Grid, path, provenance: dict, chunk_size: in
 def writing(output):
     """The block's failures of HDF5 or netCDF writing the file of ``output`` (``OSError``,
     ``RuntimeError``: a full disk, a file larger than the process may write) as one
-    ``OSError`` naming ``output``, in the words of its errno where they give one."""
+    ``OSError`` naming ``output``, in the words of its errno where they give one; a Ctrl-C
+    that the libraries turned into another exception stays one. A value beyond the range of
+    the type it is stored in (float32) is stored as infinite, without numpy's warning."""
     try:
-        yield
+        with interruptions_raised(), np.errstate(over="ignore"):
+            yield
     except (OSError, RuntimeError) as error:
         code = error.errno if isinstance(getattr(error, "errno", None), int) else None
         if not code or code < 0:  # netCDF's own codes are negative; HDF5 says it in words

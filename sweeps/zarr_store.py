@@ -35,8 +35,7 @@ from . import zarr_structure
 from .dependence import reductions, split_reduced
 from .grid import Grid, block_shape
 from .netcdf_structure import global_attributes, stored_as
-from .parts import (OutputLock, Parts, counts_unreadable, fsync_path, load_counts, saved_counts,
-                    write_durably)
+from .parts import OutputLock, Parts, counts_damage, fsync_path, load_counts, saved_counts
 from .spec import Sweep
 from .store import provenance, stored_blocks, stored_reduction, structure, summed, writing
 
@@ -112,8 +111,8 @@ class StoreParts(Parts):
 
     own_entries = Parts.own_entries + ("store.zarr", ".store.zarr.tmp")
 
-    def __init__(self, output, key: dict):
-        super().__init__(output, key)
+    def __init__(self, output, key: dict, grid=None, storage=None):
+        super().__init__(output, key, grid, storage)
         self.output = str(output)
         self.store = self.folder / "store.zarr"
 
@@ -136,14 +135,16 @@ class StoreParts(Parts):
     def writer(self) -> StoreWriter:
         return StoreWriter(str(self.store.absolute()), self.output)
 
-    def unreadable(self, path: Path, points: int) -> str | None:
-        return counts_unreadable(path, points)
+    def damage(self, data, start: int, stop: int) -> str | None:
+        """:func:`parts.counts_damage`; a mark without the store it vouches for is none."""
+        if not self.store.is_dir():
+            return "no store beside it"
+        return counts_damage(data, self.grid, start, stop)
 
-    def save(self, start: int, stop: int, result: dict):
-        """Mark the chunk finished, its values being in the store: keep its counts and the
-        values it gives the outputs stored on fewer dimensions."""
-        arrays = saved_counts(result)
-        write_durably(self.path(start, stop), lambda handle: np.savez(handle, **arrays))
+    def arrays(self, result: dict) -> dict:
+        """A chunk's mark (its values being in the store): its counts and the values it
+        gives the outputs stored on fewer dimensions."""
+        return saved_counts(result)
 
     @staticmethod
     def load(path: Path) -> tuple[dict, dict]:
@@ -160,7 +161,7 @@ class StoreParts(Parts):
         """Write the outputs stored on fewer dimensions from the ``chunks``' marks, complete
         the store's global attributes (as the netCDF file's: model errors, scheduler,
         history), consolidate its metadata, and give it the output's name (calling
-        ``before_rename()`` just before), where nothing is (``parts.check_output`` refuses
+        ``before_rename()`` just before), where nothing is (``output_paths.check_output`` refuses
         an earlier store: it is never replaced)."""
         import zarr
 

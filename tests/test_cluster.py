@@ -130,7 +130,8 @@ def workers_of_another_version_are_refused(address, folder):
     assert len(done.stderr.strip().splitlines()) == 1, done.stderr
     assert f"a worker of dask scheduler {address} runs bearing-sweep 0.0.1" in done.stderr
     assert "install the same on every worker" in done.stderr
-    assert not (folder / "other.nc").exists() and (folder / "other.nc.parts").is_dir()
+    # refused before any chunk is computed: no parts folder made
+    assert not (folder / "other.nc").exists() and not (folder / "other.nc.parts").exists()
 
 
 @pytest.mark.slow
@@ -182,7 +183,8 @@ def test_a_local_cluster_that_cannot_start_is_one_line_with_the_way_out(tmp_path
     (tmp_path / "def.toml").write_text(DEFINITION)
     (tmp_path / "scratch").write_text("a file, not a folder")
     done = subprocess.run([sys.executable, "-m", "bearing_sweep", "run", "def.toml", "-o",
-                           "out.nc", "--workers", "2", "--quiet"], cwd=tmp_path,
+                           "out.nc", "--workers", "2", "--chunk-size", "25", "--quiet"],
+                          cwd=tmp_path,
                           capture_output=True, text=True, timeout=300,
                           env=os.environ | {"DASK_TEMPORARY_DIRECTORY": str(tmp_path / "scratch")})
     assert done.returncode == 1, done.stderr
@@ -205,7 +207,7 @@ def test_any_failure_to_start_the_cluster_is_one_line(tmp_path, capsys, monkeypa
     monkeypatch.setattr(distributed, "LocalCluster", failing)
     (tmp_path / "def.toml").write_text(DEFINITION)
     assert cli.main(["run", str(tmp_path / "def.toml"), "-o", str(tmp_path / "out.nc"),
-                     "--workers", "2", "--quiet"]) == 1
+                     "--workers", "2", "--chunk-size", "25", "--quiet"]) == 1
     assert capsys.readouterr().err == (
         "error: the local dask cluster of 2 workers could not start (Nanny failed to start in "
         "60 s); --workers 0 (workers=0 in Python) computes in this process\n")
@@ -229,17 +231,25 @@ def test_a_thousand_workers_asked_for_start_no_more_than_the_cores(tmp_path, cap
 
     monkeypatch.setattr(distributed, "LocalCluster", recorded)
     (tmp_path / "def.toml").write_text(DEFINITION.replace("num = 10", "num = 1").replace(
-        "num = 5", "num = 3"))  # 3 points
-    cores = len(os.sched_getaffinity(0))
-    for asked, chunk, expected in ((1000, [], min(cores, 3)), (1000, ["--chunk-size", "2"],
-                                                                  min(cores, 2))):
+        "num = 5", "num = 3"))  # 3 points, 0.2 ms of work
+    monkeypatch.setattr("bearing_sweep.compute.available_cores", lambda: 4)
+    # By default, no more workers than seconds of work (the chunks of a second each): one;
+    # in chunks of 2 points, two chunks: two workers; of 1 point, three.
+    for chunk, expected, why in (
+            ([], 1, " and 0.00018 s of work (a worker for each second of it at most)"),
+            (["--chunk-size", "2"], 2, " and 2 chunks of 2 points"),
+            (["--chunk-size", "1"], 3, " and 3 chunks of 1 point")):
         assert cli.main(["run", str(tmp_path / "def.toml"), "-o", str(tmp_path / "out.nc"),
-                         "--workers", str(asked), "--quiet", *chunk]) == 1
+                         "--workers", "1000", "--quiet", *chunk]) == 1
         err = capsys.readouterr().err.splitlines()
-        assert err[0] == (f"1000 workers asked for, {cores} core{'s' * (cores != 1)} available "
-                          f"to this process: a local cluster of {expected} "
-                          f"worker{'s' * (expected != 1)} (--scheduler runs on a larger cluster)")
+        assert err[0] == (f"1000 workers asked for, 4 cores available to this process{why}: a "
+                          f"local cluster of {expected} worker{'s' * (expected != 1)} "
+                          "(--scheduler runs on a larger cluster)")
         assert started.pop() == expected
+    assert cli.main(["run", str(tmp_path / "def.toml"), "-o", str(tmp_path / "out.nc"),
+                     "--workers", "2", "--quiet"]) == 1
+    assert started.pop() == 1  # fewer than the cores: said by the summary alone
+    assert capsys.readouterr().err.startswith("error: the local dask cluster of 1 worker could")
 
 
 @pytest.mark.slow
@@ -290,3 +300,40 @@ def test_workers_that_keep_dying_are_one_line(tmp_path, capsys, monkeypatch):
     assert err.endswith("run the same command again, or with --workers 0 to compute in this "
                         "process\n")
     assert not (tmp_path / "out.nc").exists()
+
+
+@pytest.mark.slow
+def test_a_ctrl_c_that_reaches_a_worker_alone_changes_nothing(tmp_path):
+    # A worker process that receives SIGINT (kill -INT, a terminal's Ctrl-C reaching the
+    # process group before the driver stops the run) neither stops nor fails its chunks: the
+    # driver alone decides what a Ctrl-C does.
+    import signal
+    import threading
+
+    from bearing_sweep import spec
+    from bearing_sweep.compute import Executor, run_sweep
+
+    sweep = spec.parse(DEFINITION.replace("num = 10", "num = 200").replace("num = 5", "num = 100"))
+    reference = run_sweep(sweep, None, Executor(workers=0), chunk_size=1000, progress=False)
+    with Executor(workers=1) as executor:
+        client = executor.connect()
+        worker = list(client.run(os.getpid).values())[0]
+        running, sent = threading.Event(), []
+
+        def pester():  # SIGINT to the worker every 10 ms while the sweep runs
+            while not running.wait(0.01):
+                os.kill(worker, signal.SIGINT)
+                sent.append(1)
+
+        thread = threading.Thread(target=pester)
+        thread.start()
+        try:
+            summary = run_sweep(sweep, None, executor, chunk_size=1000, progress=False)
+        finally:
+            running.set()
+            thread.join()
+        assert len(sent) > 10 and list(client.run(os.getpid).values()) == [worker]
+    assert summary.status_counts == reference.status_counts and not summary.errors
+    for name in reference.dataset.data_vars:
+        np.testing.assert_array_equal(summary.dataset[name].values,
+                                      reference.dataset[name].values, err_msg=name)

@@ -146,3 +146,86 @@ def test_a_long_or_large_run_says_what_it_will_take_unless_quiet(tmp_path, capsy
     monkeypatch.undo()
     assert cli.main(["run", str(small), "-o", str(tmp_path / "small.nc"), "--workers", "0"]) == 0
     assert capsys.readouterr().err == ""  # a moment's run says nothing before its summary
+
+
+def interrupted_run(tmp_path, monkeypatch):
+    """The arguments of a run of SMALL (27 points, compressed) into ``r.nc`` in chunks of 9,
+    interrupted once two are kept; its parts folder."""
+    import bearing_sweep.compute as compute
+
+    (tmp_path / "small.toml").write_text(SMALL)
+    arguments = ["run", str(tmp_path / "small.toml"), "-o", str(tmp_path / "r.nc"),
+                 "--chunk-size", "9", "--quiet"]
+    original, calls = compute.evaluate_chunk, []
+
+    def interrupted(grid, start, stop):
+        calls.append(start)
+        if len(calls) == 3:
+            raise KeyboardInterrupt
+        return original(grid, start, stop)
+
+    with monkeypatch.context() as patched:
+        patched.setattr(compute, "evaluate_chunk", interrupted)
+        assert cli.main(arguments + ["--workers", "0"]) == 130
+    return arguments, tmp_path / "r.nc.parts"
+
+
+def contents(folder):
+    return {path.name: path.read_bytes() for path in sorted(folder.iterdir())}
+
+
+class OtherVersionClient:
+    """A cluster's client whose workers run another bearing-sweep."""
+
+    def run(self, function, *args):
+        return {"tcp://10.0.0.1:4000": {"package": "0.0.1", "model": 1}}
+
+    def close(self):
+        pass
+
+
+def refused_by(case, monkeypatch, disk):
+    """Make the rerun's ``case`` refuse it; the options the rerun is given."""
+    import distributed
+
+    import bearing_sweep.compute as compute
+
+    if case == "a disk too small":
+        disk(1e3)  # the uncompressed result: 27 points of about a kilobyte, twice
+        return ["--workers", "0"]
+
+    def failing(**kwargs):
+        raise OSError("Nanny failed to start")
+
+    monkeypatch.setattr(distributed, "LocalCluster", failing)
+    if case == "workers of another version":
+        monkeypatch.setattr(compute.Executor, "start", lambda self: None)
+        monkeypatch.setattr(compute.Executor, "connect", lambda self: OtherVersionClient())
+    return ["--workers", "2"]
+
+
+@pytest.mark.parametrize("case", ["a disk too small", "a cluster that cannot start",
+                                  "workers of another version"])
+def test_a_refused_rerun_leaves_the_earlier_runs_parts_as_they_were(tmp_path, capsys,
+                                                                   monkeypatch, disk, case):
+    # The reproduction: a --compression none rerun refused for lack of space first
+    # discarded the earlier (compressed) run's finished chunks.
+    arguments, parts = interrupted_run(tmp_path, monkeypatch)
+    before = contents(parts)
+    assert len([name for name in before if name.startswith("chunk-")]) == 2
+    capsys.readouterr()
+    with monkeypatch.context() as patched:
+        options = refused_by(case, patched, disk)
+        assert cli.main(arguments + ["--compression", "none"] + options) == 1
+    err = capsys.readouterr().err
+    assert err.count("\n") == 1 and err.startswith("error: "), err
+    assert "discarding" not in err
+    assert contents(parts) == before
+    assert sorted(p.name for p in tmp_path.iterdir()) == ["r.nc.parts", "small.toml"]
+    assert cli.main(arguments + ["--workers", "0"]) == 0  # as before: resumed
+    assert capsys.readouterr().err == f"resuming: 2 chunks already computed in {parts}\n"
+    whole = tmp_path / "whole.nc"
+    run_sweep(spec.parse(SMALL), whole, Executor(workers=0), progress=False)
+    for name, values in bearing_sweep.store.open_result(whole).data_vars.items():
+        np.testing.assert_array_equal(
+            bearing_sweep.store.open_result(tmp_path / "r.nc")[name].values, values.values)

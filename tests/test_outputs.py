@@ -4,6 +4,7 @@ Everything else is refused in one line, exit status 2, before any computing and 
 written. The device case is played by stand-ins inside tmp_path (a named pipe, a symbolic
 link); /dev/null itself is only looked at, with every way of writing made to fail first.
 """
+import errno
 import os
 import re
 import stat
@@ -187,3 +188,96 @@ def test_a_file_where_a_store_goes_is_refused(tmp_path, capsys, no_computing):
         ours.source = "bearing-sweep 0.1.0"
     err = refused(tmp_path, capsys, tmp_path / "ours.zarr")
     assert "ours.zarr: exists and is a file; a .zarr output is a zarr store, a folder" in err
+
+
+#: A lock file that cannot be made, by the error the system gives, and the exit status.
+LOCK_FAILURES = {"a filesystem that takes no files, as /proc": (errno.ENOENT, 2),
+                 "a read-only folder": (errno.EROFS, 2),
+                 "no permission": (errno.EACCES, 2),
+                 "a full disk": (errno.ENOSPC, 1)}
+
+
+@pytest.mark.parametrize("case", LOCK_FAILURES)
+def test_a_lock_file_that_cannot_be_made_says_so(tmp_path, capsys, monkeypatch, case):
+    # Before, every one of them said that another run was writing the output.
+    code, status = LOCK_FAILURES[case]
+    opened = os.open
+
+    def refused_there(path, flags, *args, **kwargs):  # no new file in tmp_path
+        if flags & os.O_CREAT and os.path.dirname(path) == str(tmp_path):
+            raise OSError(code, os.strerror(code), os.fspath(path))
+        return opened(path, flags, *args, **kwargs)
+
+    (tmp_path / "def.toml").write_text(DEFINITION)
+    before = tree(tmp_path)
+    monkeypatch.setattr(os, "open", refused_there)
+    assert cli.main(["run", str(tmp_path / "def.toml"), "-o", str(tmp_path / "out.nc"),
+                     "--workers", "0", "--quiet"]) == status
+    err = capsys.readouterr().err
+    assert err.count("\n") == 1 and "another bearing-sweep run" not in err, err
+    assert f"its lock file .out.nc.lock cannot be made in {tmp_path}" in err
+    assert os.strerror(code) in err
+    assert tree(tmp_path) == before
+
+
+def test_a_folder_where_the_lock_goes_says_so(tmp_path, capsys):
+    (tmp_path / ".out.nc.lock").mkdir()
+    err = refused(tmp_path, capsys, tmp_path / "out.nc")
+    assert f"its lock file .out.nc.lock cannot be made in {tmp_path} (Is a directory)" in err
+
+
+@pytest.mark.skipif(not os.path.isdir("/proc/self"), reason="no /proc")
+def test_an_output_in_proc_is_refused_for_what_it_is(tmp_path, capsys):
+    # The reproduction: nothing can be made in /proc (the attempt makes nothing).
+    (tmp_path / "def.toml").write_text(DEFINITION)
+    assert cli.main(["run", str(tmp_path / "def.toml"), "-o", "/proc/x.nc", "--workers", "0",
+                     "--quiet"]) == 2
+    assert capsys.readouterr().err == (
+        "error: /proc/x.nc: cannot be written: its lock file .x.nc.lock cannot be made in /proc "
+        "(No such file or directory); choose another output\n")
+
+
+#: Paths inside a zarr store or a parts folder, made before the run (None: not made).
+INSIDE = {"a netCDF file in a store": ("s.zarr", "s.zarr/y.nc"),
+          "a store in a store": ("s.zarr", "s.zarr/inner.zarr"),
+          "in a store's subfolder": ("s.zarr", "s.zarr/status/y.nc"),
+          "in a store yet to be": (None, "new.ZARR/y.nc"),
+          "in a store through a link": ("s.zarr", "link/y.nc"),
+          "in another output's parts": ("r.nc.parts", "r.nc.parts/x.nc"),
+          "in a parts folder yet to be": (None, "results/r.nc.parts/x.nc"),
+          "in a store's parts": ("s.zarr", "s.zarr.parts/store.zarr/y.nc")}
+
+
+@pytest.mark.parametrize("case", INSIDE)
+def test_an_output_inside_a_store_or_a_parts_folder_is_refused(tmp_path, capsys, case):
+    made, output = INSIDE[case]
+    (tmp_path / "def.toml").write_text(DEFINITION)
+    if made == "s.zarr":
+        assert cli.main(["run", str(tmp_path / "def.toml"), "-o", str(tmp_path / made),
+                         "--workers", "0", "--quiet"]) == 0
+        (tmp_path / "link").symlink_to(tmp_path / made)
+    elif made:
+        (tmp_path / made).mkdir()
+    capsys.readouterr()
+    err = refused(tmp_path, capsys, tmp_path / output)
+    assert "is inside" in err and "choose a path outside it" in err
+    inside = "a .zarr folder is a zarr store" if ".zarr/" in output.lower() or "link" in case \
+        else "the folder where a run keeps the finished chunks of"
+    assert inside in err
+
+
+def test_an_analysis_or_a_figure_inside_a_store_is_refused(tmp_path, capsys):
+    (tmp_path / "def.toml").write_text(DEFINITION)
+    assert cli.main(["run", str(tmp_path / "def.toml"), "-o", str(tmp_path / "s.zarr"),
+                     "--workers", "0", "--quiet"]) == 0
+    capsys.readouterr()
+    before = tree(tmp_path)
+    for command in (["analyze", str(tmp_path / "s.zarr"), "-o", str(tmp_path / "s.zarr/a.nc")],
+                    ["plot", str(tmp_path / "s.zarr"), "-o", str(tmp_path / "s.zarr/f.png")],
+                    ["schema", "-o", str(tmp_path / "s.zarr/schema.json")]):
+        assert cli.main(command) == 2
+        err = capsys.readouterr().err
+        assert err.count("\n") == 1 and "a .zarr folder is a zarr store" in err, err
+    with pytest.raises(parts.UnsafeOutput, match="is inside"):
+        bearing_sweep.analyze(tmp_path / "s.zarr", output=tmp_path / "s.zarr" / "a.zarr")
+    assert tree(tmp_path) == before

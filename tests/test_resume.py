@@ -10,6 +10,7 @@ import subprocess
 import sys
 import threading
 import time
+import zlib
 from pathlib import Path
 
 import numpy as np
@@ -402,6 +403,127 @@ def test_files_that_are_no_part_of_the_run_are_removed_with_a_line(tmp_path, mon
     same_data(store.open_result(tmp_path / "out.nc"), store.open_result(whole))
 
 
+def rewritten(path, change):
+    """The part file at ``path`` rewritten with ``change(arrays)`` made to its arrays."""
+    with np.load(path) as data:
+        arrays = {key: data[key] for key in data.files}
+    change(arrays)
+    with open(path, "wb") as handle:
+        np.savez(handle, **arrays)
+
+
+def recounted(change):
+    """A change of a part's counts (its ``tally``, as JSON)."""
+    def changed(arrays):
+        tally = json.loads(str(arrays["tally"]))
+        change(tally)
+        arrays["tally"] = np.array(json.dumps(tally))
+    return changed
+
+
+def moved(tally, code, other, count):
+    """``count`` points of a tally's ``code`` counted as ``other`` instead."""
+    tally["status"][code] -= count
+    tally["status"][other] += count
+
+
+#: What a part of points 100..199 may say of itself that it is not (on the grid of 20 x 20
+#: points in chunks of 100: 5 rows), and the reason the run gives.
+FALSE_PARTS = {
+    "a copy of another chunk's": (None, "it holds points 0..99"),
+    "no range (an earlier version's)": (lambda a: a.pop("bounds"), "no range recorded in it"),
+    "counts of another size": (recounted(lambda t: t["status"].__setitem__(0, 150)),
+                               "counts of 150 points, not 100"),
+    "a status no registry defines": (recounted(lambda t: moved(t, 0, 9, 100)),
+                                     "status 9, not a code of the registry"),
+    "counts that are not its statuses": (recounted(lambda t: moved(t, 0, 1, 1)),
+                                         "counts that are not those of its statuses"),
+    "statuses of the fill value": (
+        lambda a: a.__setitem__("chunk_status", np.frombuffer(
+            zlib.compress(np.full(100, -127, np.int8).tobytes(), 1), np.uint8)),
+        "status -127, not a code of the registry"),
+    "an output's chunk missing": (
+        lambda a: (a.pop("chunk_radial_stiffness"), a.pop("offset_radial_stiffness")),
+        "chunks of ["),
+    "a chunk at another block": (lambda a: a.__setitem__("offset_status", np.array([0])),
+                                 "its chunk of status at (0,), not at the block of its points"),
+}
+
+
+@pytest.mark.parametrize("case", FALSE_PARTS)
+def test_a_part_that_is_not_what_its_name_says_is_computed_again(tmp_path, monkeypatch, capsys,
+                                                                 case):
+    # The reproduction: after kill -9, a copy of chunk 0-500 under the name of 500-1000 was
+    # resumed, and the file held the fill value at 500..999 under "converged" counts.
+    arguments, parts, whole = interrupted_parts(tmp_path, monkeypatch, capsys)
+    change, reason = FALSE_PARTS[case]
+    false = parts / "chunk-000000000100-000000000200.npz"
+    if change is None:
+        false.write_bytes((parts / "chunk-000000000000-000000000100.npz").read_bytes())
+    else:
+        rewritten(false, change)
+    assert cli.main(arguments) == 0
+    out, err = capsys.readouterr()
+    said = (f"a part that does not hold what its name says, {false.name} ({reason}")
+    assert err.startswith(said) and err.count("\n") == 2, err
+    assert err.endswith(f") in {parts}: computing it again\nresuming: 3 chunks already "
+                        f"computed in {parts}\n")
+    assert "400 points (400 converged)" in out
+    same_data(store.open_result(tmp_path / "out.nc"), store.open_result(whole))
+
+
+#: A one-point sweep: its single chunk kept as arrays (a grid without axes has no HDF5 chunks).
+ONE_POINT = SLOW.split("[axes]")[0] + 'radial_load = "4 kN"\nclearance = "0.01 mm"\n'
+
+
+@pytest.mark.parametrize("change, reason", [
+    (lambda a: a.__setitem__("status", np.array([9], np.int8)), "status 9, not a code"),
+    (lambda a: a.__setitem__("status", np.zeros(2, np.int8)), "2 statuses of type int8, not 1"),
+    (lambda a: a.__setitem__("bounds", np.array([0, 2])), "it holds points 0..1"),
+    (lambda a: a.pop("output_roller_load"), "outputs ["),
+    (lambda a: a.__setitem__("output_roller_load", a["output_roller_load"][:, :3]),
+     "output roller_load of shape (1, 3)"),
+    (lambda a: a.__setitem__("output_radial_stiffness", np.zeros(1, np.float32)),
+     "type float32")])
+def test_a_part_of_arrays_is_checked_alike(tmp_path, monkeypatch, capsys, change, reason):
+    definition = tmp_path / "one.toml"
+    definition.write_text(ONE_POINT)
+    arguments = ["run", str(definition), "-o", str(tmp_path / "one.nc"), "--workers", "0",
+                 "--quiet"]
+    assert cli.main(arguments[:3] + [str(tmp_path / "whole.nc")] + arguments[4:]) == 0
+    with monkeypatch.context() as patched:
+        patched.setattr("bearing_sweep.store.ChunkWriter.finish", interrupt_now)
+        assert cli.main(arguments) == 130
+    capsys.readouterr()
+    part, = (tmp_path / "one.nc.parts").glob("chunk-*.npz")
+    rewritten(part, change)
+    assert cli.main(arguments) == 0
+    err = capsys.readouterr().err
+    assert err.startswith(f"a part that does not hold what its name says, {part.name} "
+                          f"(") and reason in err and err.count("\n") == 1, err
+    same_data(store.open_result(tmp_path / "one.nc"), store.open_result(tmp_path / "whole.nc"))
+
+
+def interrupt_now(*args):
+    raise KeyboardInterrupt
+
+
+def test_a_folder_without_a_manifest_that_holds_someone_s_files_is_refused(tmp_path, capsys):
+    # Named as the parts of -o out.nc, but holding what no run writes: never removed.
+    definition = tmp_path / "d.toml"
+    definition.write_text(SLOW.replace("num = 200", "num = 2"))
+    parts = tmp_path / "out.nc.parts"
+    parts.mkdir()
+    (parts / "thesis.tex").write_text("someone's work")
+    code = cli.main(["run", str(definition), "-o", str(tmp_path / "out.nc"), "--workers", "0"])
+    err = capsys.readouterr().err
+    assert code == 2 and err == (f"error: {parts}: holds thesis.tex and no manifest.json: not "
+                                 "the folder of an interrupted run's parts; refusing to use it "
+                                 "(move it away or choose another output)\n")
+    assert (parts / "thesis.tex").read_text() == "someone's work"
+    assert not (tmp_path / "out.nc").exists()
+
+
 @pytest.mark.parametrize("kind", ["a file", "a link to a folder"])
 def test_a_parts_folder_that_is_not_a_folder_is_refused(tmp_path, capsys, kind):
     definition = tmp_path / "d.toml"
@@ -617,9 +739,11 @@ def test_the_api_too_finishes_a_run_whose_result_is_in_place(tmp_path, capsys, m
 
 def test_a_part_damaged_after_the_run_began_is_removed_with_one_clear_error(tmp_path):
     chunks = Parts(tmp_path / "out.nc", {"definition_sha256": "x"})
-    chunks.open(4, False, print)
+    chunks.open(4, False)
+    chunks.begin(print)
     chunks.save(0, 4, {"outputs": {}, "status": np.zeros(4, np.int8), "errors": []})
     assert chunks.finished() == {(0, 4)}
+    assert chunks.load(0, 4)["status"].tolist() == [0] * 4
     chunks.path(0, 4).write_bytes(b"PK\x03\x04" + bytes(40))  # the zip's start, then zeros
     with pytest.raises(UnreadablePart, match="run the same command again to compute it"):
         chunks.load(0, 4)

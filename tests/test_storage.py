@@ -75,6 +75,23 @@ def test_float32_is_stored_on_request_and_said_so(tmp_path):
     assert single.radial_load.dtype == np.float64  # inputs keep their values exactly
 
 
+@pytest.mark.parametrize("output", ["r.nc", "r.zarr", "one.nc", "none.nc"])
+def test_a_value_beyond_float32_is_stored_infinite_without_a_warning(tmp_path, output):
+    import warnings
+
+    loads = '["1e300 N"]' if output == "one.nc" else '["1e30 N", "1e300 N"]'
+    sweep = spec.parse('[sweep]\nmodel = "hertz_point"\n[fixed]\ncurvature_1x = "0.1 1/mm"\n'
+                       f'curvature_1y = "0.1 1/mm"\n[axes]\nload = {loads}\n[output]\n'
+                       'encoding = "float32"\n' + ('compression = "none"\n'
+                                                    if output == "none.nc" else ""))
+    with warnings.catch_warnings(record=True) as shown:
+        warnings.simplefilter("always")
+        run_sweep(sweep, tmp_path / output, Executor(workers=0), progress=False)
+    assert [str(w.message) for w in shown] == []
+    found = store.open_result(tmp_path / output).max_pressure.values  # p0 ~ load^(1/3)
+    assert found[-1] == np.inf and (output == "one.nc" or np.isfinite(found[0]))
+
+
 def test_integral_outputs_are_integers_with_a_fill_value_where_a_point_failed(
         tmp_path, paper_slice_law_fails):
     path = written(tmp_path)

@@ -2,6 +2,7 @@
 chunking and the workers, each chunk written by its worker, resumable, never left half."""
 import json
 import math
+import shutil
 from pathlib import Path
 
 import numpy as np
@@ -169,6 +170,40 @@ def test_a_store_s_parts_keep_the_store_and_lose_what_is_not_theirs(tmp_path, mo
     assert messages == ["a manifest whose chunk_size is 0, not a positive integer in "
                         f"{again}: discarding the folder and its 3 finished chunks"]
     assert_same_result(tmp_path / "whole.nc", tmp_path / "again.zarr")
+
+
+def resumed(tmp_path, sweep, output) -> list:
+    """Run ``sweep`` into ``output`` again, check that it gives the uninterrupted result, and
+    return what it said."""
+    messages = []
+    summary = run_sweep(sweep, output, Executor(workers=0), progress=False, log=messages.append)
+    assert summary.status_counts["converged"] == summary.points
+    run_sweep(sweep, tmp_path / "whole.nc", Executor(workers=0), progress=False)
+    assert_same_result(tmp_path / "whole.nc", output)
+    return messages
+
+
+def test_a_mark_that_is_not_its_chunks_is_computed_again(tmp_path, monkeypatch):
+    # A mark says its chunk's values are in the store: one copied under another chunk's name
+    # would leave that chunk's fill values in the store under counts of "converged".
+    sweep = spec.parse(DEFINITION, "three_axes.toml")
+    parts = interrupted_store(monkeypatch, sweep, tmp_path / "out.zarr", [])
+    first, *_ = marks = sorted(parts.glob("chunk-*.npz"))
+    copied = parts / "chunk-000000000010-000000000012.npz"
+    assert copied not in marks
+    copied.write_bytes(first.read_bytes())
+    assert resumed(tmp_path, sweep, tmp_path / "out.zarr") == [
+        f"a part that does not hold what its name says, {copied.name} (it holds points 0..1) "
+        f"in {parts}: computing it again", f"resuming: 3 chunks already computed in {parts}"]
+
+
+def test_marks_without_their_store_are_computed_again(tmp_path, monkeypatch):
+    sweep = spec.parse(DEFINITION, "three_axes.toml")
+    parts = interrupted_store(monkeypatch, sweep, tmp_path / "out.zarr", [])
+    shutil.rmtree(parts / "store.zarr")
+    assert resumed(tmp_path, sweep, tmp_path / "out.zarr") == [
+        "a part that does not hold what its name says, chunk-000000000000-000000000002.npz (no "
+        f"store beside it) and 2 more in {parts}: computing them again"]
 
 
 def test_values_of_another_version_are_never_written(tmp_path, monkeypatch):
