@@ -253,7 +253,9 @@ def declared_values(sweep: Sweep, name: str, values: list[Value]) -> np.ndarray:
         if declared is not None and value.unit != target:
             # One conversion from what was written, tidied to 15 digits so that "4 kN" is
             # stored as 4000 N, not 4000.0000000000005.
-            magnitude = units.tidy(units.convert(magnitude, units.parse_unit(value.unit), declared))
+            written = units.parse_unit(value.unit)
+            magnitude = units.tidy(units.convert(magnitude, written, declared),
+                                   units.conversion_scale(written, declared))
         shown.append(magnitude)
     size = max(np.size(a) for a in shown)
     if any(a.ndim for a in shown):  # a single value on a zipped axis of patterns: repeat it

@@ -652,6 +652,9 @@ class _Parser:
             if isinstance(num, bool) or not isinstance(num, int) or num < 1:
                 self.fail(f"{key}.num", f"{num!r}: expected an integer >= 1")
             self.axis_size(num, f"{key}.num")
+            if num == 1 and not np.isclose(stop_shown, start.shown, rtol=SAME_VALUE, atol=0):
+                self.fail(f"{key}.num", "1 value from start to a different stop would leave the "
+                          "stop out: give num >= 2, or the one value as a list")
             shown = units.tidy(np.linspace(start.shown, stop_shown, num))
         else:
             step = self.value(spec, raw["step"], f"{key}.step", unit, check_range=False)
@@ -667,6 +670,9 @@ class _Parser:
                 count = np.floor((stop_shown - start.shown) / step_shown + 1e-9) + 1
             if count < 1:
                 self.fail(key, "empty axis: 'stop' is below 'start'")
+            if count == 1 and not np.isclose(stop_shown, start.shown, rtol=SAME_VALUE, atol=0):
+                self.fail(f"{key}.step", "the step is larger than the range from start to stop: "
+                          "the axis would hold the start only; take a smaller step")
             self.axis_size(count, f"{key}.step")
             shown = units.tidy(start.shown + step_shown * np.arange(int(count)))
         if spec.kind == "count":

@@ -186,12 +186,25 @@ def convert(magnitude, unit: pint.Unit, target: pint.Unit):
     return UREG.Quantity(np.asarray(magnitude, dtype=float), unit).to(target).magnitude
 
 
-def tidy(values) -> np.ndarray:
+def tidy(values, scale: float = 0.0) -> np.ndarray:
     """``values`` to 15 significant digits, as written: the last bit a conversion or a
     range's arithmetic leaves is gone, so that "4 kN" is stored as 4000 N, not
-    4000.0000000000005, and a range's third step of 0.1 as 0.3."""
+    4000.0000000000005, and a range's third step of 0.1 as 0.3. Where a conversion went
+    through larger numbers (``scale``: 273.15 for a temperature), the values are rounded at
+    that size's 15th digit: "32 degF" is 0 degC, not 5.7e-14."""
     values = np.asarray(values, dtype=float)
+    if scale:  # at the 15th digit of the scale
+        values = np.round(values, int(14 - np.floor(np.log10(abs(scale))))) + 0.0  # not -0
     return np.array([float(f"{v:.15g}") for v in values.ravel()]).reshape(values.shape)
+
+
+def conversion_scale(unit: pint.Unit, target: pint.Unit) -> float:
+    """The size of the numbers a conversion from ``unit`` to ``target`` goes through: an
+    offset unit's zero (absolute zero in degC is -273.15), else 0."""
+    if not (is_offset(unit) or is_offset(target)):
+        return 0.0
+    return float(abs(UREG.Quantity(0.0, "kelvin").to(target).magnitude)) if is_offset(target) \
+        else float(abs(UREG.Quantity(0.0, "kelvin").to(unit).magnitude))
 
 
 def from_si(values, unit_text: str):

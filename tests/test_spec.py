@@ -368,3 +368,20 @@ def test_a_seed_beyond_64_bits_is_refused_before_computing():
 def test_an_axis_name_longer_than_64_characters_is_refused():
     with pytest.raises(SpecError, match="at most 64 characters"):
         parse(GOOD + f'[axes.{"a" * 301}]\nlabels = ["x"]\neffective_length = ["9 mm"]\n')
+
+
+@pytest.mark.parametrize("axis, words", [
+    ('{ start = "0 mm", stop = "0.01 mm", num = 1 }', "crown.num: 1 value from start to a"),
+    ('{ start = "0 mm", stop = "0.01 mm", step = "0.02 mm" }', "crown.step: the step is larger")])
+def test_a_range_that_would_leave_its_stop_out_silently_is_refused(axis, words):
+    with pytest.raises(SpecError, match=words):
+        parse(ONE_AXIS + f"crown = {axis}\n")
+    assert parse(ONE_AXIS + 'crown = { start = "4 um", stop = "0.004 mm", num = 1 }\n').axes
+
+
+def test_a_temperature_range_in_degf_is_stored_at_round_degc():
+    from bearing_sweep import labels
+
+    sweep = parse(CAGE.replace('{ start = "20 degC", stop = "80 degC", step = "STEP" }',
+                               '{ start = "32 degF", stop = "212 degF", num = 3 }'))
+    assert list(labels.coordinates(sweep)["oil_temperature"][1]) == [0.0, 50.0, 100.0]
