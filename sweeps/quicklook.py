@@ -22,13 +22,15 @@ from matplotlib.lines import Line2D
 from .dependence import flag_holds, held_points, on_grid
 from .models.registry import get_model
 from .parts import argument_text, check_outside_results, is_zarr, path_argument, write_durably
-from .plotting import conditions, in_unit, label, shown_unit, subplots
+from .plotting import MAKER, conditions, in_unit, label, metadata, shown_unit, subplots
 from .spec import SpecError, suggestion
 from .store import open_result
 
 #: Figure formats ``plot`` writes, with the first bytes of such a file: only a figure is ever
 #: replaced by another one.
 FORMATS = {".png": (b"\x89PNG",), ".pdf": (b"%PDF",), ".svg": (b"<?xml", b"<svg")}
+#: The most of a figure read to find who wrote it (a quick look is some 100 kB).
+MOST_FIGURE_BYTES = 64 * 2**20
 #: What a point's mark code says: its values hold, hold but outside validity, or none.
 _HOLDS, _OUTSIDE, _NO_VALUE = range(3)
 #: Most lines in a panel, and most panels across or down; a longer axis is thinned.
@@ -414,18 +416,29 @@ def check_figure_path(output, result=None) -> Path:
                         "suffix)")
     if output.is_symlink() or (output.exists() and not output.is_file()):
         raise SpecError(f"{output}: exists and is not a regular file; refusing to replace it")
-    if output.exists():
-        with open(output, "rb") as handle:
-            head = handle.read(8)
-        if not head.startswith(FORMATS[suffix]):
-            raise SpecError(f"{output}: exists and is not a {suffix[1:].upper()} figure; "
-                            "refusing to replace it (remove it or choose another path)")
+    if output.exists() and not ours(output):
+        raise SpecError(f"{output}: exists and is not a {suffix[1:].upper()} figure written by "
+                        "bearing-sweep; refusing to replace it (remove it or choose another "
+                        "path)")
     if not output.parent.is_dir():
         raise SpecError(f"{output}: its folder {output.parent} does not exist")
     return output
 
 
+def ours(path: Path) -> bool:
+    """Whether the figure file at ``path`` was written by this program: of its format by its
+    first bytes, and carrying :data:`plotting.MAKER` among its metadata (PNG's Software, PDF's
+    and SVG's Creator), which no other program writes."""
+    suffix = path.suffix.lower()
+    try:
+        with open(path, "rb") as handle:
+            content = handle.read(MOST_FIGURE_BYTES)
+    except OSError:
+        return False
+    return content.startswith(FORMATS.get(suffix, (b"\0",))) and MAKER.encode() in content
+
+
 def _write(figure, output: Path):
     """Write ``figure`` to ``output`` atomically (a finished file replaces the old one)."""
     write_durably(output, lambda handle: figure.savefig(
-        handle, format=output.suffix[1:].lower(), dpi=110))
+        handle, format=output.suffix[1:].lower(), dpi=110, metadata=metadata(output.suffix)))

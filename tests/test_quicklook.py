@@ -439,3 +439,24 @@ def test_entries_in_units_of_their_own_are_labelled_with_each_entry_unit(results
     for title in shown:
         entry = title.removeprefix("dof = ").split(",")[0]
         assert by_entry[title].endswith(f"[{units[entry]}]"), (title, by_entry[title])
+
+
+@pytest.mark.parametrize("suffix", [".png", ".pdf", ".svg"])
+def test_a_figure_another_program_wrote_is_never_replaced(results, tmp_path, suffix):
+    from matplotlib.figure import Figure
+
+    result = tmp_path / "r.nc"
+    result.write_bytes(results["hertz"].read_bytes())
+    theirs = tmp_path / f"mine{suffix}"
+    figure = Figure()
+    figure.subplots().plot([1, 2, 3])
+    figure.savefig(theirs)  # a figure of that format, by matplotlib as a user draws one
+    before = theirs.read_bytes()
+    done = cli("plot", result, "-o", theirs)
+    assert done.returncode == 2 and "not a " + suffix[1:].upper() + " figure written by " \
+        "bearing-sweep" in done.stderr, done.stderr
+    assert theirs.read_bytes() == before
+    ours = tmp_path / f"ours{suffix}"
+    for _ in range(2):  # our own is replaced
+        assert cli("plot", result, "-o", ours).returncode == 0
+    assert b"bearing-sweep" in ours.read_bytes()
