@@ -11,7 +11,7 @@ from pathlib import Path
 from .models.catalogue import PRESETS
 from .models.registry import all_models
 from . import schema, spec, store
-from .parts import check_output, check_outside_results, write_durably
+from .parts import OutputLock, check_output, check_outside_results, write_durably
 from .compute import (RESULT_COMPLETE, ClusterFailure, Executor, Interrupts, WorkerMismatch,
                       check_scheduler_address, run_sweep)
 from .dependence import InconsistentOutput
@@ -208,7 +208,8 @@ def _schema(model: str | None, output: Path | None):
     if output.exists() and not _our_schema(output):
         raise SpecError(f"{output}: exists and is not a schema written by bearing-sweep; "
                         "refusing to replace it (remove it or choose another path)")
-    write_durably(output, lambda handle: handle.write(text.encode()))
+    with OutputLock(output):  # a folder that takes no file says so, as for a run
+        write_durably(output, lambda handle: handle.write(text.encode()))
     print(f"wrote {output}", file=sys.stderr)
 
 

@@ -21,7 +21,8 @@ from matplotlib.lines import Line2D
 
 from .dependence import flag_holds, held_points, on_grid
 from .models.registry import get_model
-from .parts import argument_text, check_outside_results, is_zarr, path_argument, write_durably
+from .parts import (OutputLock, argument_text, check_outside_results, is_zarr, path_argument,
+                    write_durably)
 from .plotting import MAKER, conditions, in_unit, label, metadata, shown_unit, subplots
 from .spec import SpecError, suggestion
 from .store import open_result
@@ -440,5 +441,7 @@ def ours(path: Path) -> bool:
 
 def _write(figure, output: Path):
     """Write ``figure`` to ``output`` atomically (a finished file replaces the old one)."""
-    write_durably(output, lambda handle: figure.savefig(
-        handle, format=output.suffix[1:].lower(), dpi=110, metadata=metadata(output.suffix)))
+    with OutputLock(output):  # a folder that takes no file says so, as for a run
+        write_durably(output, lambda handle: figure.savefig(
+            handle, format=output.suffix[1:].lower(), dpi=110,
+            metadata=metadata(output.suffix)))

@@ -235,6 +235,15 @@ def test_an_output_in_proc_is_refused_for_what_it_is(tmp_path, capsys):
     assert capsys.readouterr().err == (
         "error: /proc/x.nc: cannot be written: its lock file .x.nc.lock cannot be made in /proc "
         "(No such file or directory); choose another output\n")
+    # The schema and a figure alike, naming the path asked for, not a temporary one.
+    assert cli.main(["schema", "-o", "/proc/x.json"]) == 2
+    assert capsys.readouterr().err.startswith("error: /proc/x.json: cannot be written: its lock")
+    result = tmp_path / "r.nc"
+    assert cli.main(["run", str(tmp_path / "def.toml"), "-o", str(result), "--workers", "0",
+                     "--quiet"]) == 0
+    capsys.readouterr()
+    assert cli.main(["plot", str(result), "-o", "/proc/x.png"]) == 2
+    assert capsys.readouterr().err.startswith("error: /proc/x.png: cannot be written: its lock")
 
 
 #: Paths inside a zarr store or a parts folder, made before the run (None: not made).
