@@ -271,7 +271,7 @@ def input_attrs(sweep: Sweep, name: str, written: str) -> dict:
         return described(spec.short, spec.meaning, None) | {
             "accepted_values": " ".join(spec.choices)}
     attrs = described(spec.short, spec.meaning, spec.unit)
-    if written and written not in ("1", spec.unit):
+    if written and written not in ("1", stored_unit(spec.unit)):  # as written, if not stored so
         attrs["written_units"] = written
     return attrs
 

@@ -14,6 +14,7 @@ import xarray as xr
 from matplotlib.figure import Figure
 
 from . import units
+from .spec import SpecError, suggestion
 from .store import open_result
 
 
@@ -37,17 +38,34 @@ def shown_unit(unit: str) -> str:
 _SI_UNIT = re.compile(r"Units: (\S+) \(SI\)")
 
 
-def label(variable: xr.DataArray, long: bool = False) -> str:
-    """Axis label: the variable's name and units; ``long``: its ``long_name`` instead of its
-    name, no unit for a number; for a variable stored without ``units`` (N/m^1.5, which
-    UDUNITS cannot write) the SI unit its ``comment`` names, else "SI"."""
-    if not long:
-        return f"{variable.name.replace('_', ' ')} [{shown_unit(variable.attrs['units'])}]"
-    name = variable.attrs.get("long_name", variable.name.replace("_", " "))
+def stored_unit(variable: xr.DataArray) -> str:
+    """The unit ``variable``'s values are in: its ``units``, or for one stored without them
+    (N/m^1.5, which UDUNITS cannot write) the SI unit its ``comment`` names; "1" for labels,
+    "SI" where neither says."""
+    if "units" in variable.attrs:
+        return variable.attrs["units"]
     named = _SI_UNIT.search(variable.attrs.get("comment", ""))
-    unit = variable.attrs.get("units", "1" if variable.dtype.kind in "OUS" else
-                              named.group(1) if named else "SI")
+    return "1" if variable.dtype.kind in "OUS" else named.group(1) if named else "SI"
+
+
+def label(variable: xr.DataArray, long: bool = False) -> str:
+    """Axis label: the variable's name and units (:func:`stored_unit`); ``long``: its
+    ``long_name`` instead of its name, no unit for a number."""
+    unit = stored_unit(variable)
+    if not long:
+        return f"{variable.name.replace('_', ' ')} [{shown_unit(unit)}]"
+    name = variable.attrs.get("long_name", variable.name.replace("_", " "))
     return name if unit == "1" else f"{name} [{shown_unit(unit)}]"
+
+
+def _variable(data, name: str) -> xr.DataArray:
+    """``data[name]``; a :class:`SpecError` naming what ``data`` holds where it has none."""
+    if not isinstance(data, (xr.Dataset, xr.DataArray)):
+        raise SpecError(f"expected a result (an xarray.Dataset), not {type(data).__name__}")
+    if not isinstance(name, str) or name not in data.variables:
+        raise SpecError(f"the result has no {name!r}" + suggestion(str(name), list(
+            data.variables)) + f" (its axes: {', '.join(map(str, data.dims))})")
+    return data[name]
 
 
 def family(axis, x, y, over: str, label: str, plot: str = "plot", **settings):
@@ -101,17 +119,31 @@ def at(data, method=None, **where):
             return [magnitude(name, v) for v in value]
         if not isinstance(value, str) or data[name].dtype.kind in "OUS":
             return value
-        number, unit = units.split_quantity(value)
-        stored = units.parse_unit(data[name].attrs.get("units", "1"))
-        return float(units.convert(number, units.parse_unit(unit or "1"), stored))
+        unit = stored_unit(data[name])
+        try:
+            number, written = units.split_quantity(value)
+            return float(units.convert(number, units.parse_unit(written or "1"),
+                                       units.parse_unit("1" if unit == "SI" else unit)))
+        except units.UnitError as error:
+            raise SpecError(f"{name} = {value!r}: {error}") from None
+        except units.pint.errors.DimensionalityError:
+            raise SpecError(f"{name} = {value!r}: its units do not fit {name}, which is in "
+                            f"{shown_unit(unit)}") from None
 
     for name, value in where.items():
+        _variable(data, name)
         converted = magnitude(name, value)
-        if method or isinstance(converted, slice) or converted is value:
-            data = data.sel({name: converted}, method=method)
-        else:  # a converted number may differ from the stored one in its last digit
-            scale = np.max(np.abs(converted)) if np.size(converted) else 0.0
-            data = data.sel({name: converted}, method="nearest", tolerance=1e-9 * scale)
+        try:
+            if method or isinstance(converted, slice) or converted is value:
+                data = data.sel({name: converted}, method=method)
+            else:  # a converted number may differ from the stored one in its last digit
+                scale = np.max(np.abs(converted)) if np.size(converted) else 0.0
+                data = data.sel({name: converted}, method="nearest", tolerance=1e-9 * scale)
+        except KeyError:
+            shown = np.atleast_1d(data[name].values)
+            raise SpecError(f"{name} = {value!r}: no such value of {name} (it holds "
+                            f"{', '.join(map(str, shown[:8]))}{' ...' if len(shown) > 8 else ''}"
+                            f" {shown_unit(stored_unit(data[name]))})") from None
     return data
 
 
@@ -123,8 +155,8 @@ def in_unit(variable: xr.DataArray, unit: str) -> xr.DataArray:
     "kN"))`` draws and selects in kN. A variable without ``units`` holds SI values (UDUNITS has
     no form for fractional powers such as N/m^1.5: the file says so in ``comment``).
     """
-    stored = variable.attrs.get("units")
-    if stored is None:
+    stored = stored_unit(variable)
+    if stored == "SI":
         values = units.from_si(variable.values, unit)
     else:
         values = units.convert(variable.values, units.parse_unit(stored),
@@ -148,13 +180,12 @@ def conditions(data: xr.Dataset, *names: str, width: int | None = 80, preset: bo
     """
     parts = []
     for name in names:
-        variable = data[name]
-        unit = shown_in.get(name, variable.attrs.get("written_units",
-                                                     variable.attrs.get("units", "1")))
+        variable = _variable(data, name)
+        unit = shown_in.get(name, variable.attrs.get("written_units", stored_unit(variable)))
         if variable.dtype.kind in "OUS":
             parts.append(f"{name.replace('_', ' ')} = {variable.values}")
             continue
-        if "units" in variable.attrs or unit != "1":
+        if unit != "1":
             variable = in_unit(variable, unit)
         low, high = float(variable.min()), float(variable.max())
         shown = f"{low:g}" if low == high else f"{low:g} to {high:g}"
@@ -177,6 +208,12 @@ def sobol_bars(axis, analysis: xr.Dataset, output: str, **where):
     """First-order and total Sobol' indices of ``output`` (a result of ``analyze``), a pair
     of bars per sampled input with their confidence intervals as error bars; ``where``
     selects a point of the result's other axes (``speed="5000 rpm"``, as :func:`at`)."""
+    if "first_order" not in getattr(analysis, "variables", ()):
+        raise SpecError("sobol_bars draws the result of analyze on a Saltelli design (it has "
+                        "first_order and total_order); this has no first_order")
+    if output not in analysis["output"].values:
+        raise SpecError(f"no Sobol indices of {output!r}" + suggestion(
+            str(output), [str(o) for o in analysis["output"].values]))
     one = at(analysis, **where).sel(output=output)
     inputs = list(one.input.values)
     place = np.arange(len(inputs))
@@ -199,6 +236,7 @@ def histogram(axis, data: xr.Dataset, name: str, bins=30, style: dict | None = N
     a Saltelli design's repeated AB blocks are left out. ``bins``: a count or the edges (the
     same edges for histograms drawn over each other); ``style``: settings of ``axis.hist``
     (``label``, ``alpha``, ``color``)."""
+    _variable(data, name)
     values = at(data, **where)[name]
     if "saltelli_block" in values.coords:
         values = values.where(values.saltelli_block < 2, drop=True)

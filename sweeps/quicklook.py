@@ -362,7 +362,7 @@ def _positions(coordinate: xr.DataArray):
 def _shown(coordinate: xr.DataArray) -> xr.DataArray:
     """A coordinate in the unit its definition was written in."""
     written = coordinate.attrs.get("written_units")
-    if written and "units" in coordinate.attrs:
+    if written and coordinate.dtype.kind not in "OUS":  # also from SI (N/m^1.5, no units)
         return in_unit(coordinate, written)
     return coordinate
 

@@ -460,3 +460,58 @@ def test_a_figure_another_program_wrote_is_never_replaced(results, tmp_path, suf
     for _ in range(2):  # our own is replaced
         assert cli("plot", result, "-o", ours).returncode == 0
     assert b"bearing-sweep" in ours.read_bytes()
+
+
+@pytest.fixture(scope="module")
+def fractional(tmp_path_factory):
+    """crb_radial over its contact constant (N/mm^(10/9): a unit UDUNITS cannot write, stored
+    in SI and named in the comment), and ball_5dof with one fixed (N/mm^1.5)."""
+    folder = tmp_path_factory.mktemp("fractional")
+    import bearing_sweep
+
+    over = bearing_sweep.run({"sweep": {"model": "crb_radial", "bearing": "paper000-D"},
+                              "fixed": {"radial_load": "4 kN"},
+                              "axes": {"contact_constant": ["5e4 N/mm^(10/9)",
+                                                            "8e4 N/mm^(10/9)"]}},
+                             workers=0, progress=False)
+    fixed = bearing_sweep.run({"sweep": {"model": "ball_5dof", "bearing": "paper001-71807AC"},
+                               "fixed": {"contact_constant": "5e5 N/mm^1.5"},
+                               "axes": {"axial_load": ["500 N", "1 kN"]}},
+                              workers=0, progress=False)
+    return over, fixed
+
+
+def test_a_coordinate_in_a_fractional_unit_is_selected_and_shown_in_it(fractional):
+    from bearing_sweep.plotting import at, conditions
+
+    over, fixed = fractional
+    chosen = at(over, contact_constant="8e4 N/mm^(10/9)")
+    assert float(chosen.contact_constant) == pytest.approx(8e4 * 1000 ** (10 / 9), rel=1e-9)
+    assert conditions(fixed, "contact_constant", preset=False) == \
+        "contact constant = 500000 N/mm^1.5"
+
+
+@pytest.mark.parametrize("call, words", [
+    (lambda d: __import__("bearing_sweep.plotting").plotting.at(d, contact_constant="4 kN"),
+     "contact_constant = '4 kN': its units do not fit"),
+    (lambda d: __import__("bearing_sweep.plotting").plotting.at(d, nosuch="1 N"),
+     "the result has no 'nosuch'"),
+    (lambda d: __import__("bearing_sweep.plotting").plotting.at(d, contact_constant=5.0),
+     "contact_constant = 5.0: no such value"),
+    (lambda d: __import__("bearing_sweep.plotting").plotting.conditions(5, "x"),
+     "expected a result (an xarray.Dataset), not int"),
+    (lambda d: __import__("bearing_sweep.plotting").plotting.sobol_bars(None, d, "x"),
+     "sobol_bars draws the result of analyze on a Saltelli design")])
+def test_the_figure_helpers_name_a_mistake_in_one_line(fractional, call, words):
+    with pytest.raises(SpecError) as caught:
+        call(fractional[0])
+    assert words in str(caught.value) and "\n" not in str(caught.value)
+
+
+def test_a_quick_look_shows_a_fractional_unit_as_the_definition_wrote_it(fractional):
+    over, fixed = fractional
+    [axis] = plot(over, "radial_stiffness").axes
+    assert "N/mm^(10/9)" in axis.get_xlabel()
+    assert list(axis.lines[0].get_xdata()) == pytest.approx([5e4, 8e4])
+    title = plot(fixed, "displacement").get_suptitle()
+    assert "contact constant = 500000 N/mm^1.5" in title
