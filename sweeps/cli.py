@@ -5,6 +5,7 @@ from __future__ import annotations
 import argparse
 import gc
 import json
+import shlex
 import sys
 from pathlib import Path
 
@@ -285,7 +286,10 @@ def main(argv=None) -> int:
 
             chosen = study.select(args.studies or study.default_studies_folder(), "all")
             study.check_folders(chosen, args.results, args.figures)
-            for path in study.write_report(chosen, args.results, args.figures):
+            folders = " ".join(f"--{name} {shlex.quote(str(value))}" for name, value in (
+                ("studies", args.studies), ("results", args.results), ("figures", args.figures))
+                if value is not None and value != Path(name))
+            for path in study.write_report(chosen, args.results, args.figures, folders):
                 print(f"wrote {path}")
     except SpecError as error:
         print(f"error: {error}", file=sys.stderr)

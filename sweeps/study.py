@@ -172,15 +172,19 @@ def run_study(study: Study, results: Path, figures: Path, executor: Executor,
     log(f"{study.name}: figures in {target}")
 
 
-def write_report(studies: list[Study], results: Path, figures: Path) -> list[Path]:
-    """Write ``figures/<study>/README.md`` for each study and the index ``figures/README.md``."""
+def write_report(studies: list[Study], results: Path, figures: Path,
+                 folders: str = "") -> list[Path]:
+    """Write ``figures/<study>/README.md`` for each study and the index ``figures/README.md``;
+    ``folders``: the options that name the folders (``--results res``), repeated in the
+    command a page gives to run a study that has not been run yet."""
     written, index = [], ["# Reproduced figures and stated numbers", ""]
     for study in studies:
         module = study.figures_module()
         folder = figures / study.name
         missing = [d.name for d in study.definitions if not study.result(results, d).exists()]
         if missing:
-            index.append(f"- {study.name}: not run yet (`bearing-sweep study {study.name}`)")
+            index.append(f"- {study.name}: not run yet (`bearing-sweep study {study.name}"
+                         f"{' ' + folders if folders else ''}`)")
             continue
         ours = module.ours(results / study.name)
         kind, heading, column = (("expected trends", "What is expected beside ours", "expected")

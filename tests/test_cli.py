@@ -202,3 +202,15 @@ def test_ctrl_c_while_the_program_starts_is_one_line(tmp_path):
         assert "Traceback" not in error, (delay, error)
         assert started.returncode in (0, 130), (delay, started.returncode, error)
         assert len(error.strip().splitlines()) <= 1, error
+
+
+def test_a_report_tells_how_to_run_a_study_in_the_folders_it_was_given(tmp_path):
+    done = cli("report", "--studies", STUDIES, "--results", "my results", "--figures", "fig",
+               cwd=tmp_path)
+    assert done.returncode == 0, done.stderr
+    index = (tmp_path / "fig" / "README.md").read_text()
+    assert (f"- runout: not run yet (`bearing-sweep study runout --studies {STUDIES} "
+            "--results 'my results' --figures fig`)") in index
+    assert cli("report", cwd=tmp_path).returncode == 0  # the default folders: no options
+    assert "- runout: not run yet (`bearing-sweep study runout`)" in \
+        (tmp_path / "figures" / "README.md").read_text()
