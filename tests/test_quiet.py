@@ -32,7 +32,8 @@ def test_a_model_overflowing_prints_nothing_but_the_summary(tmp_path, workers):
                            "--workers", workers, "--chunk-size", "1", "--quiet"], cwd=tmp_path,
                           capture_output=True, text=True, timeout=300)
     assert done.returncode == 0 and done.stderr == "", done.stderr
-    assert "3 points (3 not_converged)" in done.stdout
+    # Points no bearing runs at: not converged, and flagged outside validity (speed factor).
+    assert "3 points (3 not_converged; 3 out_of_validity)" in done.stdout
 
 
 def warning_model(monkeypatch):
