@@ -62,9 +62,10 @@ def _variable(data, name: str) -> xr.DataArray:
     """``data[name]``; a :class:`SpecError` naming what ``data`` holds where it has none."""
     if not isinstance(data, (xr.Dataset, xr.DataArray)):
         raise SpecError(f"expected a result (an xarray.Dataset), not {type(data).__name__}")
-    if not isinstance(name, str) or name not in data.variables:
-        raise SpecError(f"the result has no {name!r}" + suggestion(str(name), list(
-            data.variables)) + f" (its axes: {', '.join(map(str, data.dims))})")
+    held = data.variables if isinstance(data, xr.Dataset) else data.coords
+    if not isinstance(name, str) or name not in held:
+        raise SpecError(f"the result has no {name!r}" + suggestion(str(name), list(held))
+                        + f" (its axes: {', '.join(map(str, data.dims))})")
     return data[name]
 
 

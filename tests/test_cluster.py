@@ -230,8 +230,8 @@ def test_a_thousand_workers_asked_for_start_no_more_than_the_cores(tmp_path, cap
         raise RuntimeError("recorded")
 
     monkeypatch.setattr(distributed, "LocalCluster", recorded)
-    (tmp_path / "def.toml").write_text(DEFINITION.replace("num = 10", "num = 1").replace(
-        "num = 5", "num = 3"))  # 3 points, 0.2 ms of work
+    one_load = DEFINITION.replace('{ start = "1 kN", stop = "10 kN", num = 10 }', '["1 kN"]')
+    (tmp_path / "def.toml").write_text(one_load.replace("num = 5", "num = 3"))  # 3 points
     monkeypatch.setattr("bearing_sweep.compute.available_cores", lambda: 4)
     # By default, no more workers than seconds of work (the chunks of a second each): one;
     # in chunks of 2 points, two chunks: two workers; of 1 point, three.

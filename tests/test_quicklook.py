@@ -487,6 +487,9 @@ def test_a_coordinate_in_a_fractional_unit_is_selected_and_shown_in_it(fractiona
     over, fixed = fractional
     chosen = at(over, contact_constant="8e4 N/mm^(10/9)")
     assert float(chosen.contact_constant) == pytest.approx(8e4 * 1000 ** (10 / 9), rel=1e-9)
+    # One variable of the result selects as the result does.
+    one = at(over.radial_stiffness, contact_constant="8e4 N/mm^(10/9)")
+    assert float(one) == float(chosen.radial_stiffness)
     assert conditions(fixed, "contact_constant", preset=False) == \
         "contact constant = 500000 N/mm^1.5"
 
@@ -496,6 +499,8 @@ def test_a_coordinate_in_a_fractional_unit_is_selected_and_shown_in_it(fractiona
      "contact_constant = '4 kN': its units do not fit"),
     (lambda d: __import__("bearing_sweep.plotting").plotting.at(d, nosuch="1 N"),
      "the result has no 'nosuch'"),
+    (lambda d: __import__("bearing_sweep.plotting").plotting.at(d.radial_stiffness, load="1 N"),
+     "the result has no 'load'"),
     (lambda d: __import__("bearing_sweep.plotting").plotting.at(d, contact_constant=5.0),
      "contact_constant = 5.0: no such value"),
     (lambda d: __import__("bearing_sweep.plotting").plotting.conditions(5, "x"),
