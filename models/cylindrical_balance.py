@@ -258,3 +258,49 @@ def free_outer_approaches(gaps, counts, constant, centrifugal, by_loaded, upper,
                 if done:
                     break
             approach[p, r], converged[p, r] = a, ok
+
+
+@njit(cache=True, error_model="numpy")
+def slice_sums(approach, crown, tilt, floor, shape, position, counts, by_loaded, rising,
+               sums):
+    """What a slicing gives each of ``n`` contacts, in units of its constant ``K``.
+
+    Contact ``i`` has the approach ``approach[i]`` and slices of ``counts`` whose gaps are
+    ``crown[i] shape - tilt[i] position - floor[i]`` (``(n,)`` each, ``(m,)`` each; with
+    ``rising``, the distinct slices of aligned rollers, ``shape`` rises and the loop stops at
+    the first slice that does not touch). Row ``i`` of ``sums`` ``(n, 6)`` takes its load ``Q/K``, stiffness
+    ``(dQ/d delta)/K``, the deepest slice's penetration, the share of ``K/l`` a slice's line
+    load takes per penetration to the ``n``, the laminae's life sum
+    ``k^(7/2) divisor^(-9/2) sum pen^5`` (ISO/TS 16281's ``sum (q/q_c)^(9/2)`` up to a
+    factor common to every slicing: the lamina ratings go as ``k^(-7/9)``) and its slope
+    along the approach. ``by_loaded``: the paper's law, the constant shared by the loaded
+    slices."""
+    rows, size = approach.size, shape.size
+    work, roots, weights = np.empty(size), np.empty(size), np.empty(size)
+    slices = counts.sum()
+    for i in range(rows):
+        touching, loaded, deepest = 0, 0.0, 0.0
+        for j in range(size):
+            penetration = approach[i] - (crown[i] * shape[j] - tilt[i] * position[j]
+                                         - floor[i])
+            if penetration > 1e-300:  # normal numbers only: ninth_roots needs them
+                work[touching], weights[touching] = penetration, counts[j]
+                touching += 1
+                loaded += counts[j]
+                deepest = max(deepest, penetration)
+            elif rising:
+                break
+        ninth_roots(work, roots, touching)
+        load = stiffness = life = slope = 0.0
+        for t in range(touching):
+            fourth = work[t] * work[t]
+            fourth = fourth * fourth * weights[t]
+            load += work[t] * roots[t] * weights[t]
+            stiffness += roots[t] * weights[t]
+            life += fourth * work[t]
+            slope += fourth
+        divisor = (loaded if loaded > 0.0 else 1.0) if by_loaded else slices
+        scale = slices**3.5 / divisor**4.5
+        sums[i, 0], sums[i, 1] = load / divisor, N * stiffness / divisor
+        sums[i, 2], sums[i, 3] = deepest, slices / divisor
+        sums[i, 4], sums[i, 5] = scale * life, 5.0 * scale * slope
