@@ -73,7 +73,7 @@ RUNOUT = """
 model = "crb_runout"
 bearing = "paper004-NU208-1"
 [fixed]
-steps_per_revolution = 36
+steps_per_revolution = 360
 revolutions = 1
 """
 

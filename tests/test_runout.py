@@ -144,7 +144,7 @@ def test_a_pattern_of_the_wrong_length_is_an_error():
 def test_a_nan_input_fails_the_point_as_not_converged():
     # No resting position can be found from a NaN; model_error is kept for exceptions.
     result = crb_runout(**{**NU208, "roller_diameter": np.array([10.998 * MM, np.nan])},
-                        revolutions=1, steps_per_revolution=36)
+                        revolutions=1, steps_per_revolution=180)
     assert result["status"].tolist() == [CONVERGED, NOT_CONVERGED]
     assert np.isnan(result["runout"][1])
 
@@ -228,9 +228,9 @@ def test_a_roller_without_room_between_the_rings_is_out_of_validity():
     tight = {**NU208, "outer_raceway_diameter": (49.481 + 2 * 10.998) * MM}
     error = np.zeros(14)
     error[0] = 2 * UM
-    squeezed = crb_runout(**tight, roller_diameter_error=error, steps_per_revolution=90)
+    squeezed = crb_runout(**tight, roller_diameter_error=error, steps_per_revolution=180)
     assert squeezed["status"][0] == OUT_OF_VALIDITY
-    undersize = crb_runout(**tight, roller_diameter_error=-error, steps_per_revolution=90)
+    undersize = crb_runout(**tight, roller_diameter_error=-error, steps_per_revolution=180)
     assert undersize["status"][0] == CONVERGED
 
 
@@ -239,7 +239,7 @@ def test_a_profile_that_is_not_convex_is_out_of_validity():
     # 6.5 um does, 5.5 um does not (nor does paper 004's 0.5 um roundness).
     for amplitude, status in ((6.5 * UM, OUT_OF_VALIDITY), (5.5 * UM, CONVERGED)):
         result = crb_runout(**NU208, roller_roundness_order=30.0,
-                            roller_roundness_amplitude=amplitude, steps_per_revolution=360)
+                            roller_roundness_amplitude=amplitude, steps_per_revolution=2400)
         assert result["status"][0] == status, amplitude
 
 
@@ -282,3 +282,28 @@ def test_describe_states_the_validity_it_applies():
     assert "preload" in validity and "1 %" in validity and "convex" in validity
     assert "ISO 5753-1" in validity
     assert any("smaller than the roller diameter" in c for c in description["conditions"])
+
+
+@pytest.mark.parametrize("errors", [
+    dict(roller_diameter_error=np.linspace(0.0, 1.3, 14) * UM),
+    dict(outer_roundness_order=5, outer_roundness_amplitude=1 * UM),
+    dict(roller_roundness_order=4, roller_roundness_amplitude=1 * UM,
+         roller_roundness_phase=np.linspace(0.0, 3.0, 14))])
+def test_too_few_rotation_steps_are_out_of_validity(errors):
+    # Sampled runouts err as 1/steps (the extremes lie at kinks): 8 steps a revolution miss
+    # a tenth of an outer raceway's order-5 or a roller's order-4 runout. A point is flagged
+    # below 30 steps per period of the fastest motion of the centre; every point left
+    # within validity lies within 3.3 % of 3600 steps.
+    fine = crb_runout(**NU208, **errors, steps_per_revolution=3600)["runout"][0]
+    flagged = []
+    for steps in (8, 24, 60, 171, 172, 360, 720):
+        result = crb_runout(**NU208, **errors, steps_per_revolution=steps)
+        flagged.append(result["status"][0] == OUT_OF_VALIDITY)
+        if not flagged[-1]:
+            assert result["runout"][0] == pytest.approx(fine, rel=0.033)
+    assert flagged[:4] == [True] * 4 and not flagged[-1]
+    # The rollers pass the bottom Z (1 - D/dm) / 2 = 5.73 times a revolution: 172 steps.
+    assert flagged[4] == ("roller_roundness_order" in errors)
+    low = crb_runout(**NU208, **errors, steps_per_revolution=8)["runout"][0]
+    if "roller_diameter_error" not in errors:
+        assert abs(low - fine) > 0.05 * fine
