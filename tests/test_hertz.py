@@ -3,6 +3,7 @@ import numpy as np
 import pytest
 
 from bearing_sweep.models.contact import _curvature_difference, ellipse_parameters, hertz_point
+from bearing_sweep.models.registry import CONVERGED, OUT_OF_VALIDITY
 from bearing_sweep import spec
 from bearing_sweep.spec import SpecError
 
@@ -102,6 +103,25 @@ def test_hamrock_brewe_closed_forms_stay_near_the_exact_solution():
     # Orientation does not matter: swapping x and y gives the same ellipse.
     swapped = hertz_point(100.0, 1.0, ratio, **STEEL)
     np.testing.assert_allclose(swapped["semi_major"], exact["semi_major"], rtol=1e-12)
+
+
+def test_hamrock_brewe_beyond_its_accuracy_is_out_of_validity():
+    # Up to Ry/Rx = 70 every output lies within 3 % of the exact ellipse and the point is
+    # within validity; beyond, the approach errs by more (4.1 % at 100, 12.7 % at 1000) and
+    # the point is flagged, its values kept. The exact formula is not judged by the ratio.
+    ratio = np.concatenate([np.linspace(1.0, 69.99, 200), [70.01, 100.0, 1000.0]])
+    exact = hertz_point(1.0, ratio, 1.0, **STEEL)  # a small contact even on R = 1 mm
+    approximate = hertz_point(1.0, ratio, 1.0, formula="hamrock_brewe", **STEEL)
+    error = np.max([np.abs(approximate[name] / exact[name] - 1) for name in (
+        "semi_major", "semi_minor", "approach", "max_pressure")], axis=0)
+    inside = ratio <= 70.0
+    assert error[inside].max() < 0.03 and error[-2:].min() > 0.04
+    assert (exact["status"] == CONVERGED).all()
+    np.testing.assert_array_equal(approximate["status"],
+                                  np.where(inside, CONVERGED, OUT_OF_VALIDITY))
+    assert np.isfinite(approximate["approach"]).all()
+    swapped = hertz_point(1.0, 1.0, ratio, formula="hamrock_brewe", **STEEL)
+    np.testing.assert_array_equal(swapped["status"], approximate["status"])
 
 
 def test_approach_follows_the_load_to_the_power_two_thirds():
