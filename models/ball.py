@@ -260,7 +260,7 @@ def ball_5dof(ball_count, ball_diameter, pitch_diameter, contact_angle,
     .. [5] K. L. Johnson, Contact Mechanics, Cambridge University Press, 1985, sec. 4.1.
     .. [6] ISO/TS 16281:2008, Rolling bearings - Methods for calculating the modified
        reference rating life for universally loaded bearings, 4.3.
-    .. [7] ISO 281:2007, Rolling bearings - Dynamic load ratings and rating life, 6.2 and
+    .. [7] ISO 281:2007, Rolling bearings - Dynamic load ratings and rating life, 5.2 and
        Table 3; 9.3 (a_ISO).
     """
     names = fixed_dofs.split() if isinstance(fixed_dofs, str) else list(fixed_dofs)
@@ -448,7 +448,7 @@ MODELS = [Model(
             "pressures and rating lives (ISO/TS 16281, ISO 281).",
     reference="Paper 001, eq. 1-10; Jones (1960); Harris & Kotzalas, Rolling Bearing Analysis; "
               "ISO/TS 16281:2008; ISO 281:2007",
-    version="7",
+    version="8",
     inputs=(
         Input("ball_count", "1", "number of balls Z", kind="count", minimum=3, maximum=1000),
         Input("ball_diameter", "mm", "ball diameter D", minimum=0.0, exclusive_minimum=True),
@@ -512,7 +512,7 @@ MODELS = [Model(
                "theory gives for the curvature ratios (eq. 4-5, series law corrected); "
                "Q = K delta^1.5, K in N/m^1.5",
                label="Hertz load-deflection constant K"),
-    ) + life_outputs("ball loads, inner ring rotating", "X Fr + Y Fa (ISO 281 6.2, Table 3; "
+    ) + life_outputs("ball loads, inner ring rotating", "X Fr + Y Fa (ISO 281 5.2, Table 3; "
                      "NaN under a moment, or with an axial load below 20 deg)"),
     dim_sizes={"ball": "ball_count", "dof": DOFS, "load_dof": DOFS},
     constraints=(

@@ -25,6 +25,13 @@ SPEED_INPUT = Input("speed", "rpm", "speed of the inner ring, for the lives in h
                     "viscosity ratio only (the load distribution is static)", default=0.0,
                     minimum=0.0, label="inner-ring speed")
 
+#: Largest equivalent load, as a fraction of Cr, at which ISO 281:2007 vouches for its life
+#: equation (5.3.1 and 7.3.1: beyond P = 0.5 Cr, or C0r where that is smaller, heavy loads
+#: may deform the most loaded contact plastically; the models flag C0r's contact stress, ISO
+#: 76's reference stress, in the point's status). It concerns the lives only, not the loads
+#: and stiffness a point's status vouches for: the lives carry it as ``load_rating_ratio``.
+HEAVY_LOAD_RATIO = 0.5
+
 #: Declared after a model's own inputs, in this order (the function's last parameters).
 LIFE_INPUTS = (
     Input("dynamic_load_rating", "N", "basic dynamic load rating Cr of the bearing "
@@ -69,7 +76,13 @@ LIFE_CONSTRAINTS = (
 LIFE_OUTPUT_NAMES = ("reference_rating_life", "modified_reference_rating_life",
                      "basic_rating_life", "modified_rating_life", "equivalent_dynamic_load",
                      "viscosity_ratio", "life_modification_factor", "reference_rating_hours",
-                     "modified_reference_rating_hours")
+                     "modified_reference_rating_hours", "load_rating_ratio")
+
+
+def beyond_life_equation(load_rating_ratio):
+    """Where the lives lie beyond ISO 281's life equation: ``P/C_r`` above
+    :data:`HEAVY_LOAD_RATIO` (false where there is no rating, NaN)."""
+    return np.asarray(load_rating_ratio) > HEAVY_LOAD_RATIO
 
 
 def life_outputs(elements, equivalent_load):
@@ -109,6 +122,11 @@ def life_outputs(elements, equivalent_load):
                "at rest)", label="reference rating life L10rh"),
         Output("modified_reference_rating_hours", "h", "L10rm in hours at the given speed",
                label="modified reference rating life L10rmh"),
+        Output("load_rating_ratio", "1", "P/Cr: above 0.5 the lives are beyond ISO 281's "
+               "life equation (ISO 281:2007 5.3.1, 7.3.1: such loads may deform the most "
+               f"loaded contact plastically); {missing}", label="load ratio P/Cr",
+               counted=("points whose lives lie beyond ISO 281's life equation (P > 0.5 Cr)",
+                        beyond_life_equation)),
     )
 
 
@@ -147,7 +165,7 @@ def rating_lives(reference_life, equivalent_load, kind, speed, pitch_diameter,
 
     References
     ----------
-    .. [1] ISO 281:2007, 6.2 and 7.2 (L10), 9.1 and 9.3 (L10m, a_ISO, kappa).
+    .. [1] ISO 281:2007, 5.3 and 7.3 (L10), 9.1 and 9.3 (L10m, a_ISO, kappa).
     .. [2] ISO/TS 16281:2008, 4.3.5 and 5.3.6 (L10rm).
     """
     rating = np.asarray(_given(dynamic_load_rating), dtype=float)
@@ -173,5 +191,6 @@ def rating_lives(reference_life, equivalent_load, kind, speed, pitch_diameter,
             "life_modification_factor": reference_factor,
             "reference_rating_hours": life_duration(reference_life, speed),
             "modified_reference_rating_hours": life_duration(modified_reference, speed),
+            "load_rating_ratio": np.asarray(equivalent_load, dtype=float) / rating,
         }
     return dict(zip(lives, (np.array(value) for value in np.broadcast_arrays(*lives.values()))))

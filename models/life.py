@@ -130,7 +130,7 @@ def radial_ball_equivalent_load(radial_load, axial_load, contact_angle, moment_l
 
     References
     ----------
-    .. [1] ISO 281:2007, Rolling bearings - Dynamic load ratings and rating life, 6.2
+    .. [1] ISO 281:2007, Rolling bearings - Dynamic load ratings and rating life, 5.2
        (dynamic equivalent radial load of radial ball bearings) and Table 3 (factors X, Y
        and e).
     """

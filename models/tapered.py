@@ -566,7 +566,7 @@ MODELS = [
         summary="Tapered roller bearing under radial and axial load: radial and axial "
                 "displacement and the load of every roller.",
         reference=_REFERENCE + ", eq. 13-18",
-        version="7",
+        version="8",
         inputs=_LOAD_INPUTS + (
             _CONSTANT,
             Input("pitch_diameter", "mm", "pitch diameter dm at the middle of the rollers, for "

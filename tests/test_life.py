@@ -257,7 +257,7 @@ def test_modified_lives_are_a_iso_times_the_basic_ones():
 
 
 def test_the_equivalent_load_of_angular_contact_ball_bearings_follows_iso_281_table_3():
-    # ISO 281:2007 6.2 and Table 3, single-row angular contact ball bearings, F_a/F_r > e:
+    # ISO 281:2007 5.2 and Table 3, single-row angular contact ball bearings, F_a/F_r > e:
     # 20 deg: e 0.57, X 0.43, Y 1.00; 25 deg: e 0.68, X 0.41, Y 0.87; 30 deg: e 0.80,
     # X 0.39, Y 0.76; 40 deg: e 1.14, X 0.35, Y 0.57; 45 deg: e 1.34, X 0.33, Y 0.50.
     radians = np.radians
@@ -294,7 +294,7 @@ def test_the_equivalent_load_of_angular_contact_ball_bearings_follows_iso_281_ta
 def test_the_equivalent_load_is_nan_where_iso_281_needs_more_than_the_loads():
     radians = np.radians
     # Below 20 deg with an axial load, e and Y depend on f0 Fa / C0r (static load rating);
-    # above 45 deg the bearing is a thrust bearing; a tilting moment is outside 6.2.
+    # above 45 deg the bearing is a thrust bearing; a tilting moment is outside 5.2.
     assert np.isnan(life.radial_ball_equivalent_load(1000.0, 100.0, 0.0))
     assert np.isnan(life.radial_ball_equivalent_load(1000.0, 100.0, radians(15.0)))
     assert np.isnan(life.radial_ball_equivalent_load(1000.0, 0.0, radians(50.0)))
@@ -337,3 +337,31 @@ def test_an_axial_to_radial_ratio_of_exactly_e_takes_x_1_y_0(angle, ratio):
     radial, axial = _in_si(1.0, "kN"), _in_si(ratio, "kN")
     load = life.radial_ball_equivalent_load(radial, axial, _in_si(angle, "deg"))
     assert load == pytest.approx(1000.0, rel=1e-12)
+
+
+def test_lives_beyond_iso_281s_life_equation_are_counted_and_kept(tmp_path):
+    # ISO 281:2007 5.3.1 and 7.3.1 vouch for the life equation up to P = 0.5 Cr. A radial
+    # roller bearing with a purely radial load has P = Fr (7.2): bearing D's assumed Cr of
+    # 48.4 kN puts 20 kN at P/Cr = 0.413 and 30 kN at 0.620. The lives are kept, the point's
+    # status (its load distribution) untouched, and the run's summary counts the two.
+    from bearing_sweep import spec
+    from bearing_sweep.compute import Executor, run_sweep
+    from bearing_sweep.store import open_result
+
+    text = ('[sweep]\nmodel = "crb_radial"\nbearing = "paper000-D"\n'
+            '[fixed]\ndynamic_load_rating = "48.4 kN"\n'
+            '[axes]\nradial_load = ["20 kN", "30 kN", "40 kN"]\n')
+    summary = run_sweep(spec.parse(text), tmp_path / "heavy.nc", Executor(workers=0),
+                        progress=False)
+    name = "points whose lives lie beyond ISO 281's life equation (P > 0.5 Cr)"
+    assert summary.noted == {name: 2}
+    assert f"; 2 {name}" in summary.text()
+    data = open_result(tmp_path / "heavy.nc")
+    np.testing.assert_allclose(data.load_rating_ratio, np.array([20, 30, 40]) / 48.4,
+                               rtol=1e-12)
+    assert data.load_rating_ratio.attrs["units"] == "1"
+    assert np.isfinite(data.basic_rating_life).all()
+    assert (data.status == 0).all()
+    assert data.basic_rating_life.attrs["units"] == "Mturn"  # ISO 281 7.3: (Cr/P)^(10/3)
+    np.testing.assert_allclose(data.basic_rating_life, (48.4 / np.array([20, 30, 40]))
+                               ** (10 / 3), rtol=1e-9)

@@ -6,8 +6,9 @@ from pathlib import Path
 import numpy as np
 from matplotlib.ticker import LogLocator, NullFormatter, StrMethodFormatter
 
-from bearing_sweep.plotting import (at, conditions, family, in_unit, label, result, save,
-                                    subplots)
+from bearing_sweep.models.bearing_life import beyond_life_equation
+from bearing_sweep.plotting import (at, conditions, family, in_unit, label, result,
+                                    ring, save, subplots)
 
 FIGURES = {
     "clearance.png": "Bearing D (paper 000): ISO/TS 16281 reference life L10r (solid) and "
@@ -21,11 +22,14 @@ FIGURES = {
                  "of a few micrometres pays.",
     "preload_71807ac.png": "71807AC (paper 001): L10r (solid), ISO 281 L10 (dashed) and the "
                            "largest contact pressure against the axial load (preload) for "
-                           "several radial loads.",
+                           "several radial loads; rings: an equivalent load above half the "
+                           "dynamic load rating, where ISO 281 (5.3.1) no longer vouches for "
+                           "its life equation.",
     "tapered.png": "Tapered roller bearing of paper 003 at its radial load: L10r and ISO 281 "
                    "L10 (left) and the largest contact pressure with the loaded rollers "
                    "(right) against Fa/Fr, from just above Fr tan(alpha), below which the "
-                   "rollers cannot carry the radial load.",
+                   "rollers cannot carry the radial load; rings: an equivalent load above "
+                   "half the dynamic load rating (ISO 281, 7.3.1).",
     "modified_life.png": "Bearing D with ISO VG 68 oil: L10r, L10rm, L10 and L10m against "
                          "radial load at 70 degC (left), and the life modification factor "
                          "aISO of L10rm for three oil temperatures (right).",
@@ -33,6 +37,8 @@ FIGURES = {
 
 _LIFE_UNIT = "Mturn"  # millions of revolutions, the unit of both standards
 _LIFE_SHOWN = "$10^6$ rev"  # the same, as the standards write it
+#: What the rings on a life curve mean (the models flag the points so).
+_HEAVY = "P > 0.5 Cr: beyond ISO 281's life equation"
 
 
 def draw(results: Path, figures: Path):
@@ -120,6 +126,10 @@ def _preload(results, figures):
         left.semilogy(point.axial_load, _life(point.reference_rating_life), "-",
                       color=f"C{index}", label=f"Fr = {load:g} N")
         left.semilogy(point.axial_load, _life(point.basic_rating_life), "--", color=f"C{index}")
+    for index, load in enumerate(data.radial_load.values):  # after the lines, in the legend too
+        point = data.sel(radial_load=load)
+        ring(left, point.axial_load, _life(point.basic_rating_life),
+             beyond_life_equation(point.load_rating_ratio), _HEAVY if index == 0 else None)
     left.set(xlabel=label(data.axial_load), ylabel=f"rating life [{_LIFE_SHOWN}]",
              title="L10r (solid), L10 (dashed)")
     left.legend(fontsize=7)
@@ -144,6 +154,8 @@ def _tapered(results, figures):
     figure, (left, right) = subplots(1, 2, figsize=(10, 4.2))
     left.semilogy(ratio, _life(data.reference_rating_life), "-", label="L10r (ISO/TS 16281)")
     left.semilogy(ratio, _life(data.basic_rating_life), "--", label="L10 (ISO 281)")
+    ring(left, ratio, _life(data.basic_rating_life),
+         beyond_life_equation(data.load_rating_ratio), _HEAVY)
     angle = float(in_unit(data.outer_contact_angle, "rad"))
     for value, text in ((np.tan(angle), r"$\tan\alpha$"),
                         (1.5 * np.tan(angle), r"$e = 1.5 \tan\alpha$")):
@@ -151,7 +163,7 @@ def _tapered(results, figures):
         left.annotate(text, (value, 0.02), xycoords=("data", "axes fraction"), fontsize=7,
                       rotation=90, ha="right")
     left.set(xlabel="Fa/Fr", ylabel=f"rating life [{_LIFE_SHOWN}]", title="Rating lives")
-    left.legend(fontsize=7)
+    left.legend(fontsize=7, loc="upper right")
     right.plot(ratio, in_unit(data.largest_contact_pressure, "MPa"), color="C0")
     right.set(xlabel="Fa/Fr", title="Largest contact pressure and loaded rollers")
     right.set_ylabel("largest contact pressure [MPa]", color="C0")
