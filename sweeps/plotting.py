@@ -14,7 +14,6 @@ import xarray as xr
 from matplotlib.figure import Figure
 
 from . import units
-from .models.registry import out_of_validity
 from .spec import SpecError, suggestion
 from .store import open_result
 
@@ -82,17 +81,12 @@ def family(axis, x, y, over: str, label: str, plot: str = "plot", **settings):
 
 def ring(axis, x, y, where, label=None):
     """Ring the points of the line ``y`` against ``x`` where ``where`` holds (values kept but
-    not vouched for: a ``status`` outside validity, :func:`outside`, or a life beyond its
-    standard); ``label`` names the rings in the legend."""
+    not vouched for: a status outside validity, or a life beyond its standard); ``label``
+    names the rings in the legend."""
     flagged = np.asarray(where, dtype=bool).ravel()
     if flagged.any():
         axis.plot(np.asarray(x).ravel()[flagged], np.asarray(y).ravel()[flagged], "o",
                   mfc="none", mec="k", ms=6, mew=0.8, ls="none", label=label)
-
-
-def outside(status):
-    """Where a result's ``status`` puts its points outside the model's validity."""
-    return out_of_validity(status)
 
 
 def subplots(nrows: int = 1, ncols: int = 1, *, figsize=None, **settings):
