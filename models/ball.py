@@ -22,7 +22,8 @@ from .contact import POINT_CONTACT_EXPONENT, STIFFEST_SOLID, hertz_point
 from .geometry import elements_fit
 from .kernels import Kernels
 from .life import ball_bearing_reference_life, radial_ball_equivalent_load
-from .limits import OIL_VALIDITY, SOFTEST_BEARING_SOLID, SPEED_VALIDITY, outside_operation
+from .limits import (OIL_VALIDITY, SOFTEST_BEARING_SOLID, SPEED_VALIDITY, not_steel,
+                     outside_operation)
 from .lubrication import CELSIUS
 from .registry import (CONVERGED, INFEASIBLE, NOT_CONVERGED, OUT_OF_VALIDITY, Constraint,
                              Input, Model, Output, combine_status)
@@ -314,7 +315,10 @@ def ball_5dof(ball_count, ball_diameter, pitch_diameter, contact_angle,
                | left_bearing | crossed.any(axis=-1))
     # Judged on a solution only: a failed point's last iterate says nothing of the bearing;
     # a speed or an oil no bearing runs with, whatever the outcome.
-    no_bearing = outside_operation(speed, pitch, life[4], life[5])
+    # A given constant holds for the material it was found for, steel for paper 001's (a
+    # preset's): with other balls and rings the same contacts carry other loads.
+    no_bearing = (outside_operation(speed, pitch, life[4], life[5])
+                  | (np.isfinite(given) & not_steel(modulus, poisson)))
     status = combine_status(status, np.where(
         (outside & (status == CONVERGED)) | no_bearing, OUT_OF_VALIDITY, CONVERGED))
     displacement = scaled / scale
@@ -448,7 +452,7 @@ MODELS = [Model(
             "pressures and rating lives (ISO/TS 16281, ISO 281).",
     reference="Paper 001, eq. 1-10; Jones (1960); Harris & Kotzalas, Rolling Bearing Analysis; "
               "ISO/TS 16281:2008; ISO 281:2007",
-    version="8",
+    version="9",
     inputs=(
         Input("ball_count", "1", "number of balls Z", kind="count", minimum=3, maximum=1000),
         Input("ball_diameter", "mm", "ball diameter D", minimum=0.0, exclusive_minimum=True),
@@ -554,5 +558,8 @@ MODELS = [Model(
              "checked: the contact ellipse running over a groove shoulder (shoulder heights "
              "are not inputs); centrifugal and gyroscopic ball loads (a static model). "
              f"Whatever the outcome, inputs that describe no bearing: {SPEED_VALIDITY}; "
-             f"{OIL_VALIDITY}.",
+             f"{OIL_VALIDITY}; a given contact_constant with balls and rings whose E* = "
+             "E / (2 (1 - nu^2)) lies more than 10 % from steel's (207 GPa, 0.3): the constant "
+             "is taken as given, and paper 001's is for steel (leave it out to use Hertz's "
+             "for the material).",
 )]

@@ -513,3 +513,19 @@ def test_a_speed_or_oil_no_bearing_runs_with_is_out_of_validity():
                     fatigue_load_limit=0.2e3, viscosity_40=np.array([68e-6, 3520e-6]),
                     viscosity_100=np.array([8.7e-6, 3519e-6]))
     assert oil["status"].tolist() == [CONVERGED, OUT_OF_VALIDITY]
+
+
+def test_a_given_contact_constant_with_balls_not_of_steel_is_out_of_validity():
+    # Paper 001's constant (its preset's) is for steel balls and rings: with silicon nitride
+    # balls (E 310 GPa, nu 0.27) on steel the same contacts carry other loads, so a point
+    # that keeps the steel constant is flagged, its values kept; Hertz's constant, computed
+    # for the material given, is not; nor is the steel constant on 200 GPa steel (E* within
+    # 10 % of 207 GPa, 0.3).
+    given = dict(ACBB, axial_load=1000.0, contact_constant=1.0649e10)
+    ceramic = dict(youngs_modulus=310e9, poisson_ratio=0.27)
+    assert ball_5dof(**given, **ceramic)["status"][0] == OUT_OF_VALIDITY
+    assert ball_5dof(**given, youngs_modulus=200e9)["status"][0] == CONVERGED
+    assert ball_5dof(**dict(given, contact_constant=None), **ceramic)["status"][0] == CONVERGED
+    flagged = ball_5dof(**given, **ceramic)
+    kept = ball_5dof(**given)
+    assert flagged["axial_displacement"][0] == kept["axial_displacement"][0]
