@@ -230,10 +230,20 @@ def _has_mass(cage_width):
     return cage_width > 0
 
 
-def mass_centre_on_cage(cage_eccentricity, cage_outer_diameter):
-    """Whether the cage's mass centre lies within its outline, as any body's lies within its
-    convex hull."""
-    return cage_eccentricity < 0.5 * cage_outer_diameter
+def mass_centre_on_cage(cage_eccentricity, cage_inner_diameter, cage_outer_diameter):
+    """Whether a cage with the models' polar inertia about its mass centre, that of a ring
+    ``m (R_o^2 + R_i^2) / 2``, can have its mass centre ``e`` from its axis with all its mass
+    within the outside radius: about the axis its inertia ``J + m e^2`` is at most
+    ``m R_o^2``, so ``e^2 <= (R_o^2 - R_i^2) / 2``."""
+    return cage_eccentricity**2 < (cage_outer_diameter**2 - cage_inner_diameter**2) / 8
+
+
+#: The cage's mass centre and inertia agree with its outline (:func:`mass_centre_on_cage`).
+CAGE_MASS_CENTRE = Constraint(
+    ("cage_eccentricity", "cage_inner_diameter", "cage_outer_diameter"), mass_centre_on_cage,
+    "cage_eccentricity must be below sqrt((cage_outer_diameter^2 - cage_inner_diameter^2) / 8): "
+    "a cage with a ring's inertia about its mass centre and all its mass inside its outside "
+    "diameter has its mass centre no farther from its axis")
 
 
 def _samples_fit(duration, output_interval):
@@ -299,9 +309,7 @@ MODELS = [Model(
         ("output_interval",), _sample_times, "ms", "time since the steady start")},
     constraints=STEADY_MODELS[0].constraints + (
         Constraint(("cage_width",), _has_mass, "the transient needs a cage of some width"),
-        Constraint(("cage_eccentricity", "cage_outer_diameter"), mass_centre_on_cage,
-                   "cage_eccentricity must be below half the cage_outer_diameter: a body's "
-                   "mass centre lies within its outline"),
+        CAGE_MASS_CENTRE,
         Constraint(("duration", "output_interval"), _samples_fit,
                    "output_interval must not exceed duration, and at most 1e5 samples"),
     ),

@@ -13,7 +13,7 @@ from __future__ import annotations
 import numpy as np
 
 from . import cage_dynamics_6dof_rhs as rhs
-from .cage_dynamics import GRAVITY, _samples, _samples_fit, mass_centre_on_cage
+from .cage_dynamics import CAGE_MASS_CENTRE, GRAVITY, _samples, _samples_fit
 from .cage_dynamics_rhs import roller_loads
 from .cage_slip import MODELS as STEADY_MODELS
 from .cage_slip import VALIDITY as STEADY_VALIDITY
@@ -578,9 +578,7 @@ MODELS = [Model(
     dim_coordinates={"elapsed_time": DimCoordinate(
         ("output_interval",), _sample_times, "ms", "time since the steady start")},
     constraints=STEADY_MODELS[0].constraints + (
-        Constraint(("cage_eccentricity", "cage_outer_diameter"), mass_centre_on_cage,
-                   "cage_eccentricity must be below half the cage_outer_diameter: a body's "
-                   "mass centre lies within its outline"),
+        CAGE_MASS_CENTRE,
         Constraint(("cage_axial_eccentricity", "cage_width"), _axially_on_cage,
                    "|cage_axial_eccentricity| must be below half the cage_width: a body's "
                    "mass centre lies within its outline"),

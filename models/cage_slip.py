@@ -492,6 +492,10 @@ def _contact_on_roller(effective_length, roller_length):
     return effective_length <= roller_length
 
 
+def _pockets_hold_rollers(cage_width, roller_length):
+    return (cage_width == 0) | (cage_width >= roller_length)
+
+
 def _outer_raceway_diameter(inner_raceway_diameter, roller_diameter, clearance):
     return inner_raceway_diameter + 2.0 * roller_diameter + clearance
 
@@ -637,6 +641,9 @@ MODELS = [Model(
         Constraint(("effective_length", "roller_length"), _contact_on_roller,
                    "effective_length must not exceed roller_length: the raceway contact is "
                    "part of the roller"),
+        Constraint(("cage_width", "roller_length"), _pockets_hold_rollers,
+                   "cage_width must be at least roller_length (or 0: no cage windage): the "
+                   "cage's pockets hold the whole rollers"),
         CLEARANCE_BELOW_ROLLER,  # crb_radial's, whose load distribution this model takes
         Constraint(("cage_inner_diameter", "cage_outer_diameter", "inner_raceway_diameter",
                     "roller_diameter", "clearance"), _cage_between_raceways,

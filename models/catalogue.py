@@ -130,7 +130,7 @@ _PRESETS = (
         values={"roller_count": 13, "inner_raceway_diameter": "44 mm", "roller_diameter": "10 mm",
                 "roller_length": "11 mm", "effective_length": "7.2 mm", "clearance": "0.02 mm",
                 "cage_inner_diameter": "48.5 mm", "cage_outer_diameter": "59 mm",
-                "cage_width": "9 mm", "pocket_clearance": "0.1 mm", "roller_density":
+                "cage_width": "13 mm", "pocket_clearance": "0.1 mm", "roller_density":
                 "7820 kg/m^3", "youngs_modulus": "207 GPa", "poisson_ratio": 0.28,
                 "end_film_thickness": "0.015 mm"},
         source="Paper 002, Tables 2-3 (the test bearing of Fig. 17)",
@@ -138,8 +138,9 @@ _PRESETS = (
         notes="Table 2 is inconsistent: 44 + 2 x 10 + 0.02 = 64.02 mm, not its 63.82 mm outer "
               "raceway (which would be 0.18 mm of interference). The inner raceway, roller and "
               "clearance are kept; the outer raceway follows from them. The cage width is not "
-              "stated (9 mm assumed; it only sets the cage's windage). The end film is the "
-              "rib axial play, 0.015 mm. Oil, traction and drag are the model's documented "
+              "stated: 13 mm assumed, the 11 mm roller and a 1 mm side ring each side (it "
+              "sets the cage's windage and, in the transients, its mass and inertia). The end "
+              "film is the rib axial play, 0.015 mm. Oil, traction and drag are the model's documented "
               "defaults: the paper gives none of them.",
     ),
     Preset(

@@ -117,6 +117,7 @@ def labelled(sweep: Sweep, grid: Grid, outputs: dict, status: np.ndarray,
         "definition": sweep.text,
         "definition_file": str(sweep.path),
         "definition_sha256": sweep.sha256,
+        "values_sha256": grid.values_sha256,
         "scheduler": provenance["scheduler"],
         "output_encoding": sweep.storage.text(),
     }

@@ -19,6 +19,7 @@ import xarray as xr
 
 from . import spec as spec_module
 from .compute import Executor, run_sweep
+from .grid import Grid
 from .spec import SpecError
 
 
@@ -144,7 +145,8 @@ def _check_folder(folder: Path, option: str):
 
 
 def is_stale(definition: Path, result: Path, sweep) -> bool:
-    """Whether ``result`` is missing or was made from another definition or model version."""
+    """Whether ``result`` is missing or was made from another definition, other input values
+    (a preset of the catalogue changed since) or another model version."""
     if not result.exists():
         return True
     try:
@@ -153,6 +155,7 @@ def is_stale(definition: Path, result: Path, sweep) -> bool:
     except (OSError, ValueError):
         return True
     return (attrs.get("definition_sha256") != sweep.sha256
+            or attrs.get("values_sha256") != Grid.from_sweep(sweep).values_sha256
             or attrs.get("model_version") != sweep.model.version)
 
 

@@ -9,7 +9,7 @@ from bearing_sweep.models.cage_slip import cage_slip
 MM, RPM = 1e-3, 2 * np.pi / 60
 TEST = dict(roller_count=13, inner_raceway_diameter=44 * MM, roller_diameter=10 * MM,
             roller_length=11 * MM, effective_length=7.2 * MM, clearance=0.02 * MM,
-            cage_inner_diameter=48.5 * MM, cage_outer_diameter=59 * MM, cage_width=9 * MM,
+            cage_inner_diameter=48.5 * MM, cage_outer_diameter=59 * MM, cage_width=13 * MM,
             pocket_friction=0.0)
 
 
@@ -80,8 +80,13 @@ def test_the_pocket_couples_conserve_angular_momentum(pushed):
 @pytest.mark.parametrize("model", ["cage_dynamics", "cage_dynamics_6dof"])
 @pytest.mark.parametrize("fixed, words", [
     # the reproduction: a mass centre 1 m off a 59 mm cage
-    ('cage_eccentricity = "1 m"', "mass centre lies within its outline"),
-    ('cage_eccentricity = "29.5 mm"', "mass centre lies within its outline"),
+    ('cage_eccentricity = "1 m"', "has its mass centre no farther"),
+    ('cage_eccentricity = "29.5 mm"', "has its mass centre no farther"),
+    # A ring cage of 48.5-59 mm has J = m (Ro^2 + Ri^2) / 2 about its mass centre; with all
+    # its mass within Ro, J + m e^2 <= m Ro^2: e at most sqrt((59^2 - 48.5^2) / 8) = 11.88 mm.
+    ('cage_eccentricity = "12 mm"', "has its mass centre no farther"),
+    # the 11 mm rollers need pockets at least as wide
+    ('cage_width = "10 mm"', "cage_width must be at least roller_length"),
     ('pocket_clearance = "1 m"', "pockets do not fit"),
     # cages are of polymers (polyamide, 1140 kg/m^3) to bronze (8900)
     ('cage_density = "1 kg/m^3"', "cage_density"),
@@ -95,9 +100,12 @@ def test_a_cage_that_cannot_be_is_refused_before_computing(model, fixed, words):
             '[axes]\nradial_load = ["400 N", "800 N"]\n')
     with pytest.raises(spec.SpecError, match=words):
         spec.parse(text)
-    if model == "cage_dynamics_6dof":
+    if model == "cage_dynamics_6dof":  # half the 13 mm cage's width: 6.5 mm
         with pytest.raises(spec.SpecError, match="mass centre lies within its outline"):
-            spec.parse(text.replace(fixed, 'cage_axial_eccentricity = "-5 mm"'))
+            spec.parse(text.replace(fixed, 'cage_axial_eccentricity = "-7 mm"'))
+        spec.parse(text.replace(fixed, 'cage_axial_eccentricity = "-6 mm"'))
+    spec.parse(text.replace(fixed, 'cage_eccentricity = "11.5 mm"'))
+    spec.parse(text.replace(fixed, 'cage_width = "11 mm"'))
 
 
 def test_a_cage_softer_than_any_cage_material_is_refused():

@@ -22,7 +22,7 @@ MM, RPM = 1e-3, 2 * np.pi / 60
 BEARING = dict(roller_count=13, inner_raceway_diameter=44 * MM, roller_diameter=10 * MM,
                roller_length=11 * MM, effective_length=7.2 * MM, clearance=0.02 * MM,
                cage_inner_diameter=48.5 * MM, cage_outer_diameter=59 * MM,
-               cage_width=9 * MM, pocket_clearance=0.1 * MM, end_film_thickness=0.015 * MM)
+               cage_width=13 * MM, pocket_clearance=0.1 * MM, end_film_thickness=0.015 * MM)
 COUNT = BEARING["roller_count"]
 CAGE = rhs.RING + rhs.ROLLER_SIZE * COUNT  # the cage's first entry in the state
 SWITCHES = (rhs.RACEWAYS, rhs.POCKETS, rhs.ENDS, rhs.DRAG, rhs.GRAVITY)

@@ -13,7 +13,7 @@ MM, RPM = 1e-3, 2 * np.pi / 60
 #: The test bearing of paper 002, Table 2 (outer raceway from di + 2D + Pd).
 TEST = dict(roller_count=13, inner_raceway_diameter=44 * MM, roller_diameter=10 * MM,
             roller_length=11 * MM, effective_length=7.2 * MM, clearance=0.02 * MM,
-            cage_inner_diameter=48.5 * MM, cage_outer_diameter=59 * MM, cage_width=9 * MM)
+            cage_inner_diameter=48.5 * MM, cage_outer_diameter=59 * MM, cage_width=13 * MM)
 LOADS = np.array([200.0, 400.0, 600.0, 800.0, 1000.0])
 
 
@@ -309,3 +309,16 @@ def test_the_transient_models_carry_the_flag_of_a_speed_no_bearing_runs_at():
                                      output_interval=5e-4)
     for result in (planar, spatial):
         assert result["status"].tolist() == [NOT_CONVERGED | OUT_OF_VALIDITY]
+
+
+def test_a_cage_narrower_than_its_rollers_is_refused():
+    # Each pocket holds a whole roller: the cage is at least as wide as the rollers are long
+    # (11 mm on paper 002's test bearing); 0 stands for no cage windage.
+    from bearing_sweep import spec
+
+    text = ('[sweep]\nmodel = "cage_slip"\nbearing = "paper002-test"\n[fixed]\n'
+            'speed = "9000 rpm"\nradial_load = "800 N"\ncage_width = "{}"\n')
+    with pytest.raises(spec.SpecError, match="cage_width must be at least roller_length"):
+        spec.parse(text.format("10.9 mm"))
+    for width in ("11 mm", "0 mm"):
+        assert spec.parse(text.format(width)).fixed["cage_width"] is not None

@@ -214,3 +214,24 @@ def test_a_report_tells_how_to_run_a_study_in_the_folders_it_was_given(tmp_path)
     assert cli("report", cwd=tmp_path).returncode == 0  # the default folders: no options
     assert "- runout: not run yet (`bearing-sweep study runout`)" in \
         (tmp_path / "figures" / "README.md").read_text()
+
+
+def test_a_result_of_a_preset_since_changed_is_stale(tmp_path, monkeypatch):
+    # The definition's text names the preset only: a catalogue that changes the preset's
+    # values (an assumption corrected) must rerun the study's result, not draw the old one.
+    import dataclasses
+
+    from bearing_sweep import spec
+    from bearing_sweep.compute import Executor, run_sweep
+    from bearing_sweep.models.catalogue import PRESETS
+    from bearing_sweep.study import is_stale
+
+    definition = tmp_path / "loads.toml"
+    definition.write_text(DEFINITION)
+    result = tmp_path / "loads.nc"
+    run_sweep(spec.load(definition), result, Executor(workers=0), progress=False)
+    assert not is_stale(definition, result, spec.load(definition))
+    preset = PRESETS["paper000-D"]
+    monkeypatch.setitem(PRESETS, "paper000-D", dataclasses.replace(
+        preset, values={**preset.values, "pitch_diameter": "66 mm"}))
+    assert is_stale(definition, result, spec.load(definition))
