@@ -38,7 +38,7 @@ FIGURES = {
 _LIFE_UNIT = "Mturn"  # millions of revolutions, the unit of both standards
 _LIFE_SHOWN = "$10^6$ rev"  # the same, as the standards write it
 #: What the rings on a life curve mean (the models flag the points so).
-_HEAVY = "P > 0.5 Cr: beyond ISO 281's life equation"
+_HEAVY = "P > 0.5 Cr, beyond ISO 281"
 
 
 def draw(results: Path, figures: Path):
@@ -163,7 +163,7 @@ def _tapered(results, figures):
         left.annotate(text, (value, 0.02), xycoords=("data", "axes fraction"), fontsize=7,
                       rotation=90, ha="right")
     left.set(xlabel="Fa/Fr", ylabel=f"rating life [{_LIFE_SHOWN}]", title="Rating lives")
-    left.legend(fontsize=7, loc="upper right")
+    left.legend(fontsize=7)
     right.plot(ratio, in_unit(data.largest_contact_pressure, "MPa"), color="C0")
     right.set(xlabel="Fa/Fr", title="Largest contact pressure and loaded rollers")
     right.set_ylabel("largest contact pressure [MPa]", color="C0")
