@@ -16,6 +16,7 @@ from .parts import OutputLock, check_output, check_outside_results, write_durabl
 from .compute import (RESULT_COMPLETE, ClusterFailure, Executor, Interrupts, WorkerMismatch,
                       check_scheduler_address, run_sweep)
 from .dependence import InconsistentOutput
+from .interrupts import Terminated, terminated_as_interrupt
 from .spec import SpecError
 
 #: Exit status for a mistake in the user's input (a definition, a name, an option).
@@ -308,14 +309,15 @@ def main(argv=None) -> int:
         print(f"error: {where}{error.strerror or error}; any earlier result is left as it was",
               file=sys.stderr)
         return 1
-    except KeyboardInterrupt:
+    except KeyboardInterrupt as error:
         if interrupts.result_in_place:  # after the run's own cleanup: the result is complete
             print(RESULT_COMPLETE, file=sys.stderr)
             return 0
         computing = args is not None and args.command in ("run", "study")
-        print("interrupted: the finished chunks are kept; run the same command again to resume"
-              if computing else "interrupted", file=sys.stderr)
-        return 130
+        word = "terminated" if isinstance(error, Terminated) else "interrupted"
+        print(f"{word}: the finished chunks are kept; run the same command again to resume"
+              if computing else word, file=sys.stderr)
+        return 143 if isinstance(error, Terminated) else 130
     return 0
 
 
@@ -325,7 +327,8 @@ def program(argv=None) -> int:
     at the interpreter's shutdown, which would otherwise search every object numba, pint and
     the model left for cycles: a fifth of a second of a small run's second. Every file is
     closed by then, and exit handlers still run."""
-    code = main(argv)
+    with terminated_as_interrupt():
+        code = main(argv)
     gc.freeze()
     return code
 

@@ -21,6 +21,33 @@ RESULT_COMPLETE = "interrupt ignored: the result was already complete"
 INTERRUPTIONS = (KeyboardInterrupt, SystemExit)
 
 
+class Terminated(KeyboardInterrupt):
+    """A SIGTERM (``kill``, a batch system's time limit), raised where the program is: it
+    stops a run as a Ctrl-C does, the finished chunks kept (:func:`terminated_as_interrupt`)."""
+
+
+def _terminate(signum, frame):
+    Interrupts.raised += 1
+    Interrupts.last = Terminated
+    raise Terminated()
+
+
+@contextmanager
+def terminated_as_interrupt():
+    """SIGTERM raises :class:`Terminated` in the main thread while the block runs (Python's
+    own handling ends the process at once, with no cleanup: temporary files left, no word
+    said); the previous handler is restored after. For the program, not the library: a
+    caller's own handling of SIGTERM is left alone."""
+    if threading.current_thread() is not threading.main_thread():
+        yield
+        return
+    previous = signal.signal(signal.SIGTERM, _terminate)
+    try:
+        yield
+    finally:
+        signal.signal(signal.SIGTERM, previous)
+
+
 class Interrupts:
     """Ctrl-C (SIGINT) during a run, in the main thread. Until the result is about to take its
     name it stops the run as usual (``KeyboardInterrupt``: the finished chunks are kept);
@@ -33,35 +60,40 @@ class Interrupts:
     Every interrupt that the handler raises is counted (:attr:`raised`, for the process), so
     that :func:`interruptions_raised` knows of one that the code it wraps dropped."""
 
-    #: How many interrupts the handlers of this process have raised.
+    #: How many interrupts the handlers of this process have raised, and the last one's kind.
     raised = 0
+    last = KeyboardInterrupt
 
     def __init__(self):
         self.result_in_place = False
         self.ignored = False
-        self.previous = None
+        self.previous = {}
 
     def __enter__(self):
         if threading.current_thread() is threading.main_thread():
             previous = signal.getsignal(signal.SIGINT)
             if callable(previous):
-                self.previous = previous
-                signal.signal(signal.SIGINT, self._interrupted)
+                self.previous[signal.SIGINT] = previous
+            if signal.getsignal(signal.SIGTERM) is _terminate:  # the program's, not a caller's
+                self.previous[signal.SIGTERM] = _terminate
+            for signum in self.previous:
+                signal.signal(signum, self._interrupted)
         return self
 
     def __exit__(self, *exc):
-        if self.previous is not None:
-            signal.signal(signal.SIGINT, self.previous)
-            self.previous = None
+        for signum, previous in self.previous.items():
+            signal.signal(signum, previous)
+        self.previous = {}
 
     def _interrupted(self, signum, frame):
         if self.result_in_place:
             self.ignored = True
             return
         try:
-            self.previous(signum, frame)
-        except BaseException:
+            self.previous[signum](signum, frame)
+        except BaseException as error:
             Interrupts.raised += 1
+            Interrupts.last = type(error)
             raise
 
     def result_taking_its_name(self):
@@ -101,7 +133,7 @@ def interruptions_raised():
         if found is not None:
             raise found from None
         if main and Interrupts.raised != before:
-            raise KeyboardInterrupt from error
+            raise Interrupts.last() from error
         raise
     if main and Interrupts.raised != before:
-        raise KeyboardInterrupt
+        raise Interrupts.last()

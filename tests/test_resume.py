@@ -802,3 +802,30 @@ def test_an_analysis_store_left_half_written_is_removed_by_the_next_writer(tmp_p
         assert list(written.x.values) == [1.0, 2.0]
     with OutputLock(output), pytest.raises(OutputBusy):  # and two writers do not mix
         zarr_store.write_dataset(xr.Dataset({"x": ("t", [3.0])}), tmp_path / "r_analysis.zarr")
+
+
+@pytest.mark.parametrize("workers", ["0", "2"])
+def test_a_sigterm_stops_the_run_as_ctrl_c_does_and_it_resumes(tmp_path, workers):
+    # kill, or a batch system's time limit, sends SIGTERM to the program alone: it stops as
+    # a Ctrl-C does, in one line, exit 143 (128 + 15), its workers stopped, the finished
+    # chunks kept and no temporary file left; the same command resumes.
+    (tmp_path / "slow.toml").write_text(SLOW)
+    common = ["--workers", workers, "--chunk-size", "1000", "--quiet"]
+    first = cli_run("slow.toml", "-o", "out.nc", *common, cwd=tmp_path)
+    parts = tmp_path / "out.nc.parts"
+    deadline = time.monotonic() + 120
+    while len(list(parts.glob("chunk-*.npz"))) < 3 and time.monotonic() < deadline:
+        time.sleep(0.05)
+    first.send_signal(signal.SIGTERM)
+    _, err = first.communicate(timeout=120)
+    assert first.returncode == 143, err
+    assert err.strip() == ("terminated: the finished chunks are kept; run the same command "
+                           "again to resume")
+    kept = len(list(parts.glob("chunk-*.npz")))
+    assert 3 <= kept < 40 and not (tmp_path / "out.nc").exists()
+    assert not list(tmp_path.glob(".*.tmp")) and not list(parts.glob("*.tmp"))
+    second = cli_run("slow.toml", "-o", "out.nc", *common, cwd=tmp_path)
+    _, err = second.communicate(timeout=300)
+    assert second.returncode == 0, err
+    assert re.search(rf"resuming: {kept} chunks? already computed", err)
+    assert store.open_result(tmp_path / "out.nc").status.size == 40000
