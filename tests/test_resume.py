@@ -43,14 +43,19 @@ def cli_run(*arguments, cwd):
                             cwd=cwd, stdout=subprocess.PIPE, stderr=subprocess.PIPE, text=True)
 
 
+def wait_for_chunks(parts, count, seconds=120):
+    """Until a run has saved ``count`` chunks in ``parts`` (or ``seconds`` passed)."""
+    deadline = time.monotonic() + seconds
+    while len(list(parts.glob("chunk-*.npz"))) < count and time.monotonic() < deadline:
+        time.sleep(0.05)
+
+
 def test_a_killed_run_resumes_where_it_stopped(tmp_path):
     (tmp_path / "slow.toml").write_text(SLOW)
     common = ["--workers", "0", "--chunk-size", "1000", "--quiet"]
     first = cli_run("slow.toml", "-o", "out.nc", *common, cwd=tmp_path)
     parts = tmp_path / "out.nc.parts"
-    deadline = time.monotonic() + 120
-    while len(list(parts.glob("chunk-*.npz"))) < 5 and time.monotonic() < deadline:
-        time.sleep(0.05)
+    wait_for_chunks(parts, 5)
     first.send_signal(signal.SIGKILL)
     first.wait()
     kept = len(list(parts.glob("chunk-*.npz")))
@@ -72,9 +77,7 @@ def test_a_killed_run_leaves_nothing_that_the_next_run_does_not_clear(tmp_path, 
     common = ["--workers", "0", "--chunk-size", "1000", "--quiet"]
     first = cli_run("slow.toml", "-o", output, *common, cwd=tmp_path)
     parts = tmp_path / f"{output}.parts"
-    deadline = time.monotonic() + 120
-    while len(list(parts.glob("chunk-*.npz"))) < 3 and time.monotonic() < deadline:
-        time.sleep(0.05)
+    wait_for_chunks(parts, 3)
     first.send_signal(signal.SIGKILL)
     first.wait()
     if output == "k.nc":  # the file being written, beside the output
@@ -637,9 +640,7 @@ def test_ctrl_c_on_the_local_cluster_is_one_line_and_resumes(tmp_path):
                             "--quiet"], cwd=tmp_path, stdout=subprocess.PIPE,
                            stderr=subprocess.PIPE, text=True, start_new_session=True)
     parts = tmp_path / "out.nc.parts"
-    deadline = time.monotonic() + 120
-    while not list(parts.glob("chunk-*.npz")) and time.monotonic() < deadline:
-        time.sleep(0.05)
+    wait_for_chunks(parts, 1)
     os.killpg(run.pid, signal.SIGINT)
     _, err = run.communicate(timeout=120)
     assert run.returncode == 130, err
@@ -813,9 +814,7 @@ def test_a_sigterm_stops_the_run_as_ctrl_c_does_and_it_resumes(tmp_path, workers
     common = ["--workers", workers, "--chunk-size", "1000", "--quiet"]
     first = cli_run("slow.toml", "-o", "out.nc", *common, cwd=tmp_path)
     parts = tmp_path / "out.nc.parts"
-    deadline = time.monotonic() + 120
-    while len(list(parts.glob("chunk-*.npz"))) < 3 and time.monotonic() < deadline:
-        time.sleep(0.05)
+    wait_for_chunks(parts, 3)
     first.send_signal(signal.SIGTERM)
     _, err = first.communicate(timeout=120)
     assert first.returncode == 143, err
