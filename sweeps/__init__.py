@@ -16,13 +16,42 @@ _LAZY = {"run": "api", "check": "api", "analyze": "api", "list_models": "api",
 
 def program(argv=None) -> int:
     """The ``bearing-sweep`` command (:func:`bearing_sweep.cli.program`), imported here so that
-    a Ctrl-C while its modules load is one line and exit 130, as one at any later moment."""
+    a Ctrl-C while its modules load is one line and exit 130, as one at any later moment.
+
+    An interrupt that lands in a callback Python cannot raise from (importlib's module locks
+    and weak references' callbacks call them while modules load) would be printed as
+    "Exception ignored" and dropped, the program going on: for the program's lifetime such
+    an interrupt is signalled again a moment later, from another thread, to be raised where
+    the main thread runs by then (should that be such a callback again, the same follows)."""
+    previous = sys.unraisablehook
+
+    def raise_again(unraisable):
+        if isinstance(unraisable.exc_value, KeyboardInterrupt):
+            import signal
+            import threading
+            terminated = type(unraisable.exc_value).__name__ == "Terminated"
+            signum = signal.SIGTERM if terminated else signal.SIGINT
+            if hasattr(signal, "pthread_kill"):  # a real signal: it also ends a wait
+                again = threading.Timer(0.01, signal.pthread_kill,
+                                        (threading.main_thread().ident, signum))
+            else:
+                import _thread
+                again = threading.Timer(0.01, _thread.interrupt_main, (signum,))
+            again.daemon = True
+            again.start()
+        else:
+            previous(unraisable)
+
+    sys.unraisablehook = raise_again
     try:
-        from .cli import program as command
-    except KeyboardInterrupt:
-        print("interrupted while starting: nothing was done", file=sys.stderr)
-        return 130
-    return command(argv)
+        try:
+            from .cli import program as command
+        except KeyboardInterrupt:
+            print("interrupted while starting: nothing was done", file=sys.stderr)
+            return 130
+        return command(argv)
+    finally:
+        sys.unraisablehook = previous
 
 
 def __getattr__(name):

@@ -204,6 +204,39 @@ def test_ctrl_c_while_the_program_starts_is_one_line(tmp_path):
         assert len(error.strip().splitlines()) <= 1, error
 
 
+def test_a_ctrl_c_that_lands_where_python_cannot_raise_it_is_raised_again(tmp_path):
+    # A Ctrl-C inside a weak reference's callback (importlib's module locks have one) is
+    # printed as "Exception ignored" and dropped by Python; the program signals it again so
+    # that it stops the program where the main thread is next, here in a sleep.
+    script = tmp_path / "dropped.py"
+    script.write_text(textwrap.dedent("""
+        import sys, time, weakref
+        import bearing_sweep
+        from bearing_sweep import cli
+
+        def main(argv):
+            class Body:
+                pass
+            body = Body()
+            ref = weakref.ref(body, lambda ref: (_ for _ in ()).throw(KeyboardInterrupt()))
+            started = time.monotonic()
+            try:
+                del body
+                time.sleep(30)
+            except KeyboardInterrupt:
+                print(f"raised after {time.monotonic() - started:.1f} s", file=sys.stderr)
+                return 130
+            return 0
+
+        cli.main = main
+        sys.exit(bearing_sweep.program([]))
+        """))
+    done = subprocess.run([sys.executable, str(script)], capture_output=True, text=True,
+                          timeout=60, cwd=tmp_path)
+    assert done.returncode == 130, done.stderr
+    assert done.stderr.strip() in ("raised after 0.0 s", "raised after 0.1 s"), done.stderr
+
+
 def test_a_report_tells_how_to_run_a_study_in_the_folders_it_was_given(tmp_path):
     done = cli("report", "--studies", STUDIES, "--results", "my results", "--figures", "fig",
                cwd=tmp_path)
