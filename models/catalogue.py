@@ -140,8 +140,8 @@ _PRESETS = (
               "clearance are kept; the outer raceway follows from them. The cage width is not "
               "stated: 13 mm assumed, the 11 mm roller and a 1 mm side ring each side (it "
               "sets the cage's windage and, in the transients, its mass and inertia). The end "
-              "film is the rib axial play, 0.015 mm. Oil, traction and drag are the model's documented "
-              "defaults: the paper gives none of them.",
+              "film is the rib axial play, 0.015 mm. Oil, traction and drag are the model's "
+              "documented defaults: the paper gives none of them.",
     ),
     Preset(
         name="paper002-NU2330EM1",

@@ -268,9 +268,9 @@ def slice_sums(approach, crown, tilt, floor, shape, position, counts, by_loaded,
     Contact ``i`` has the approach ``approach[i]`` and slices of ``counts`` whose gaps are
     ``crown[i] shape - tilt[i] position - floor[i]`` (``(n,)`` each, ``(m,)`` each; with
     ``rising``, the distinct slices of aligned rollers, ``shape`` rises and the loop stops at
-    the first slice that does not touch). Row ``i`` of ``sums`` ``(n, 6)`` takes its load ``Q/K``, stiffness
-    ``(dQ/d delta)/K``, the deepest slice's penetration, the share of ``K/l`` a slice's line
-    load takes per penetration to the ``n``, the laminae's life sum
+    the first slice that does not touch). Row ``i`` of ``sums`` ``(n, 6)`` takes its load
+    ``Q/K``, stiffness ``(dQ/d delta)/K``, the deepest slice's penetration, the share of
+    ``K/l`` a slice's line load takes per penetration to the ``n``, the laminae's life sum
     ``k^(7/2) divisor^(-9/2) sum pen^5`` (ISO/TS 16281's ``sum (q/q_c)^(9/2)`` up to a
     factor common to every slicing: the lamina ratings go as ``k^(-7/9)``) and its slope
     along the approach. ``by_loaded``: the paper's law, the constant shared by the loaded

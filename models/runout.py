@@ -211,9 +211,9 @@ def crb_runout(inner_raceway_diameter, outer_raceway_diameter, roller_diameter, 
     are fewer than :data:`STEPS_PER_PERIOD` (30) per period of the fastest component of the
     centre's motion (:func:`_fastest_component`: the rollers passing the bottom, or a
     raceway's or a roller's harmonic as the rollers meet it), which leaves the sampled
-    runouts up to some 3 % from the continuous ones; and, whatever the outcome, where the clearance ``d_e - d_i - 2 D`` (with the largest roller's diameter
-    error) exceeds the largest ISO 5753-1 gives
-    a cylindrical roller bearing whose bore is at most ``d_i``
+    runouts up to some 3 % from the continuous ones; and, whatever the outcome, where the
+    clearance ``d_e - d_i - 2 D`` (with the largest roller's diameter error) exceeds the
+    largest ISO 5753-1 gives a cylindrical roller bearing whose bore is at most ``d_i``
     (:func:`models.limits.clearance_beyond_bearings`): paper 004's NU208 has 0.05-0.08 mm,
     its model takes the centre's movement small against the radii, and a bearing with more
     play than any group of the standard is none the paper or the makers describe.
