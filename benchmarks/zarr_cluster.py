@@ -34,7 +34,7 @@ import cloudpickle
 import numpy as np
 import psutil
 
-from bearing_sweep import spec, store
+from bearing_sweep import spec, stores
 from bearing_sweep.compute import Executor, run_sweep
 from bearing_sweep.grid import Grid
 
@@ -123,7 +123,7 @@ def paired_times(folder: Path, address: str) -> tuple[np.ndarray, np.ndarray]:
                 began = time.perf_counter()
                 run_sweep(sweep, folder / output, executor, CHUNK, progress=False)
                 times[kind].append(time.perf_counter() - began)
-    a, b = (store.open_result(folder / name) for name in ("timed.nc", "timed.zarr"))
+    a, b = (stores.open_result(folder / name) for name in ("timed.nc", "timed.zarr"))
     for name in a.data_vars:  # the same numbers, whatever the format and the cluster
         np.testing.assert_array_equal(a[name].values, b[name].values, err_msg=name)
     return np.array(times["zarr"]), np.array(times["netcdf"])

@@ -18,14 +18,14 @@ from dataclasses import dataclass, field
 import numpy as np
 
 from .models.registry import MODEL_ERROR, known_status, values_kept
-from . import hdf5_chunks, quiet, store, units
-from .footprint import Footprint, InsufficientSpace, duration
+from . import quiet, stores, units
+from .footprint import duration
 from .grid import Grid, block_shape
 # RESULT_COMPLETE and Interrupts: the command and the API take them from here.
 from .interrupts import RESULT_COMPLETE, Interrupts, interruptions_raised  # noqa: F401
 from .labels import stored_unit
-from .output_paths import check_output, check_parts_folder, is_zarr
-from .parts import HeldChunks, OutputLock, Parts
+from .stores import structure
+from .stores.blocks import chunk_tally
 from .spec import SpecError, Sweep
 
 #: Below this estimated single-core time [s] a sweep runs in-process: starting a cluster
@@ -64,7 +64,7 @@ def available_cores() -> int:
 def versions(model) -> dict:
     """What a chunk's numbers depend on besides the definition: the package's and the model's
     versions in the process that computes it."""
-    return {"package": store.package_version(), "model": model.version}
+    return {"package": structure.package_version(), "model": model.version}
 
 
 def evaluate_chunk(grid: Grid, start: int, stop: int) -> dict:
@@ -131,10 +131,10 @@ def evaluate_chunk(grid: Grid, start: int, stop: int) -> dict:
 
 def evaluate_into(writer, expected: dict, grid: Grid, start: int, stop: int) -> dict:
     """Run the model on points ``start..stop-1`` and write or encode them with ``writer`` (a
-    :class:`zarr_store.StoreWriter`, or an :class:`hdf5_chunks.ChunkEncoder`) in the process
-    that computed them.
+    :class:`stores.zarr.StoreWriter`, or a :class:`stores.hdf5_chunks.ChunkEncoder`) in the
+    process that computed them.
 
-    Returns ``{"tally": store.chunk_tally, "versions": dict}`` and what the writer returns:
+    Returns ``{"tally": stores.blocks.chunk_tally, "versions": dict}`` and what the writer returns:
     one value per cell of the outputs stored on fewer dimensions (``firsts``), for a netCDF
     file the encoded HDF5 chunks (``chunks``); the values themselves never travel. Values
     computed by other :func:`versions` than ``expected`` are neither written nor encoded
@@ -142,7 +142,7 @@ def evaluate_into(writer, expected: dict, grid: Grid, start: int, stop: int) -> 
     """
     result = evaluate_chunk(grid, start, stop)
     written = writer.write(grid, start, stop, result) if result["versions"] == expected else {}
-    return {"tally": store.chunk_tally(grid.model, result), "versions": result["versions"],
+    return {"tally": chunk_tally(grid.model, result), "versions": result["versions"],
             **written}
 
 
@@ -498,7 +498,7 @@ def choose_chunk_size(grid: Grid, workers: int) -> int:
     return max(1, min(largest, math.ceil(grid.size / (8 * workers)) if workers else grid.size))
 
 
-def _check_versions(found: dict, expected: dict, executor: Executor, parts: Parts):
+def _check_versions(found: dict, expected: dict, executor: Executor, parts):
     """Refuse a chunk computed by another version of the package or the model: the file
     would mix two sets of numbers under one provenance."""
     if found == expected:
@@ -514,39 +514,27 @@ def _check_versions(found: dict, expected: dict, executor: Executor, parts: Part
         f"{expected['model']}): install the same on every worker{kept}")
 
 
-def _stored_bytes(result: dict) -> int | None:
-    """The bytes a computed chunk takes in the result (encoded for a netCDF file, or written
-    into a zarr store); None for values not yet encoded."""
-    if "chunks" in result:
-        return sum(len(data) for _, data in result["chunks"].values())
-    return result.get("stored_bytes")
-
-
 def run_sweep(sweep: Sweep, output=None, executor: Executor | None = None,
               chunk_size: int | None = None, progress: bool = True, fresh: bool = False,
               log=None, interrupts: Interrupts | None = None) -> Summary:
-    """Compute ``sweep`` and write its netCDF file atomically at ``output``, or, when
-    ``output`` is None, return its dataset in :attr:`Summary.dataset` without a file.
+    """Compute ``sweep`` and write its result atomically at ``output`` (a netCDF file, or a
+    zarr store for a path ending in ``.zarr``), or, when ``output`` is None, return its
+    dataset in :attr:`Summary.dataset` without a file.
 
-    Finished chunks are kept as part files beside ``output`` until the file is written, so a
-    run after an interruption computes only what is missing (``fresh`` discards them). Each
-    chunk is written into the file as it arrives, while the others compute: memory is bounded
-    by the chunk size, and the file is complete soon after the last chunk. An output ending
-    in ``.zarr`` is a zarr store that each chunk is written into by the worker that computes
-    it (:mod:`zarr_store`). A cluster, when the sweep is worth one, starts while the grid is
-    made and the parts are looked at. Nothing in the parts folder changes until every refusal
-    that may come before computing has passed (:meth:`parts.Parts.begin`): a result the disk
-    cannot hold, a cluster that cannot start, workers of another version (a chunk computed
-    by one later is refused too). ``log`` receives messages for the user
-    (resuming, discarding, and with ``progress`` the estimate of a long or large run:
-    :mod:`footprint`). A result the disk cannot hold raises
-    :class:`footprint.InsufficientSpace`. ``interrupts``: the caller's :class:`Interrupts`,
-    entered by the caller for as long as it has cleanup to do after the run (by default the
-    run's own).
+    The result goes to its store (:mod:`stores`), which keeps the finished chunks until the
+    result is in place, so a run after an interruption computes only what is missing
+    (``fresh`` discards them), and writes each chunk as it arrives, while the others compute:
+    memory is bounded by the chunk size, and the result is complete soon after the last
+    chunk. A cluster, when the sweep is worth one, starts while the grid is made and the
+    resume state is looked at. Nothing of an earlier run's changes until every refusal that
+    may come before computing has passed: a result the disk cannot hold
+    (:class:`footprint.InsufficientSpace`), a cluster that cannot start, workers of another
+    version (a chunk computed by one later is refused too). ``log`` receives messages for the
+    user (resuming, discarding, and with ``progress`` the estimate of a long or large run:
+    :mod:`footprint`). ``interrupts``: the caller's :class:`Interrupts`, entered by the caller
+    for as long as it has cleanup to do after the run (by default the run's own).
     """
-    if output is not None:
-        check_output(output, sweep.path)
-        check_parts_folder(output)
+    store = stores.for_output(output, sweep)
     own = executor is None
     executor = executor or Executor()
     log = log or (lambda message: None)
@@ -555,7 +543,7 @@ def run_sweep(sweep: Sweep, output=None, executor: Executor | None = None,
     interrupts.result_in_place = False
     began = time.monotonic()
     try:
-        with guard, OutputLock(output) if output is not None else contextlib.nullcontext():
+        with guard, store.locked():
             grid = Grid.from_sweep(sweep)
             model = grid.model
             expected = versions(model)
@@ -565,98 +553,50 @@ def run_sweep(sweep: Sweep, output=None, executor: Executor | None = None,
                 executor.start()
             size = chunk_size or choose_chunk_size(
                 grid, executor.worker_count() if parallel else 0)
-            zarr = is_zarr(output)
-            if zarr:
-                from . import zarr_store  # zarr: only for a store
-            # A netCDF file's chunks encoded by the workers, the driver writing their bytes.
-            direct = output is not None and not zarr and hdf5_chunks.writes_directly(
-                sweep.storage, grid)
             key = {"definition_sha256": sweep.sha256, "values_sha256": grid.values_sha256,
                    "model_version": model.version, "points": grid.size,
                    "package_version": expected["package"]}
-            if output is not None and not zarr:
-                key["parts_hold"] = hdf5_chunks.parts_hold(direct, sweep.storage, grid)
-            parts = HeldChunks() if output is None else (
-                zarr_store.StoreParts if zarr else hdf5_chunks.EncodedParts if direct
-                else Parts)(output, key, grid, sweep.storage)
             # Looked at only: nothing of an earlier run's changes before every refusal that
             # may come before computing has passed.
-            size = parts.open(size, fresh, grid.chunks)
+            size = store.open(grid, key, size, fresh)
             chunks = grid.chunks(size)
-            done = parts.finished()
+            done = store.finished()
             todo = [chunk for chunk in chunks if chunk not in done]
-            footprint = None if output is None else _footprint(
-                sweep, grid, output, todo, executor, parallel)
+            workers = executor.worker_count() if parallel else 1
+            footprint = store.footprint(sum(stop - start for start, stop in todo), workers)
             if parallel:  # the cluster started, its workers of this version
-                _check_workers(executor, model, expected, parts)
-            parts.begin(log)
+                _check_workers(executor, model, expected, store.parts)
+            store.begin(log)
             if footprint is not None and progress and footprint.announced():
-                workers = executor.worker_count() if parallel else 1
                 log(footprint.text(model.name, f"{workers} worker{'s' * (workers != 1)}"
                                    if parallel else "one core, in this process"))
             scheduler = executor.describe(parallel)
-            task = None
-            if zarr:  # each chunk is written into the store by the worker that computes it
-                parts.prepare(sweep, grid, size, scheduler)
-                task = functools.partial(evaluate_into, parts.writer, expected)
-            tallies = []
-            with contextlib.nullcontext() if output is None or zarr else store.result_file(
-                    sweep, grid, output, store.provenance(scheduler), size, direct,
-                    interrupts.result_taking_its_name) as writer:
-                if direct:  # each chunk encoded by the process that computes it
-                    task = functools.partial(evaluate_into, writer.encoder, expected)
-
-                def finished(start: int, stop: int, part: dict):
-                    tallies.append(part["tally"] if direct else store.chunk_tally(model, part))
-                    if writer is not None:
-                        writer.write(start, stop, part)
-
-                if not zarr:  # an interrupted run's chunks (a zarr store holds them already)
-                    for start, stop in sorted(done):
-                        finished(start, stop, parts.load(start, stop))
+            with store.recording(size, scheduler, interrupts.result_taking_its_name) as writer:
+                # A writer: each chunk written or encoded by the process that computes it.
+                task = None if writer is None else functools.partial(evaluate_into, writer,
+                                                                     expected)
                 bar = Progress(grid.size, model.name, progress)
                 bar.advance(sum(stop - start for start, stop in done))
                 kept = len(done)
                 try:
                     for start, stop, result in executor.map(grid, todo, parallel, task):
-                        _check_versions(result.pop("versions"), expected, executor, parts)
-                        parts.save(start, stop, result)
+                        _check_versions(result.pop("versions"), expected, executor,
+                                        store.parts)
+                        store.record(start, stop, result)
                         kept += 1
-                        stored = _stored_bytes(result)
-                        if not zarr:  # a zarr chunk is in the store, its counts in its mark
-                            finished(start, stop, result)
+                        stored = store.stored_bytes(result)
                         bar.advance(stop - start)
                         if footprint is not None and stored is not None:
                             footprint.check(stop - start, stored, kept)
                 finally:
                     bar.close()
-                counts, errors, noted = (parts.tally(model, chunks) if zarr
-                                         else store.summed(model, tallies))
-                dataset = None
-                if output is None:
-                    dataset = store.gather(sweep, grid, parts, chunks, scheduler, errors)
-                else:
-                    check_output(output, sweep.path)  # nothing has taken its place meanwhile
-                    if zarr:
-                        parts.finish(sweep, grid, chunks, output, scheduler, errors,
-                                     interrupts.result_taking_its_name)
-            parts.remove()
-        return Summary(model.name, grid.size, counts, time.monotonic() - began,
-                       "(in memory)" if output is None else str(output), scheduler, errors, noted,
-                       dataset)
+                counts, errors, noted = store.counts(chunks)
+            store.remove()
+        return Summary(model.name, grid.size, counts, time.monotonic() - began, store.where,
+                       scheduler, errors, noted, store.dataset)
     finally:
         if own:
             executor.close()
-
-
-def _footprint(sweep, grid, output, todo, executor, parallel) -> Footprint:
-    """The run's :class:`footprint.Footprint`; a result stored uncompressed that the disk
-    cannot hold is refused (:class:`footprint.InsufficientSpace`) before any computing."""
-    workers = executor.worker_count() if parallel else 1
-    footprint = Footprint.of(sweep, grid, output, sum(stop - start for start, stop in todo),
-                             workers, netcdf=not is_zarr(output))
-    footprint.refuse_if_too_large()
-    return footprint
 
 
 def installed_versions(model_name: str) -> dict | None:

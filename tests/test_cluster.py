@@ -11,7 +11,7 @@ from pathlib import Path
 import numpy as np
 import pytest
 
-from bearing_sweep import store
+from bearing_sweep import stores
 
 BIN = Path(sys.executable).parent
 
@@ -84,8 +84,8 @@ def equals_local_run(folder, remote_name):
                             "--workers", "0", "--quiet"], cwd=folder, capture_output=True,
                            text=True)
     assert local.returncode == 0, local.stderr
-    a = store.open_result(folder / remote_name)
-    b = store.open_result(folder / "local.nc")
+    a = stores.open_result(folder / remote_name)
+    b = stores.open_result(folder / "local.nc")
     for name in b.data_vars:
         np.testing.assert_array_equal(a[name].values, b[name].values, err_msg=name)
     return a
@@ -123,8 +123,8 @@ def workers_of_another_version_are_refused(address, folder):
     from distributed import Client
 
     with Client(address, timeout="60s") as client:  # the workers' installation now differs
-        client.run(exec, "import bearing_sweep.store\n"
-                         "bearing_sweep.store.package_version = lambda: '0.0.1'", {})
+        client.run(exec, "import bearing_sweep.stores.structure\n"
+                         "bearing_sweep.stores.structure.package_version = lambda: '0.0.1'", {})
     done, _ = run_on(address, folder, "--chunk-size", "7", "--quiet", output="other.nc")
     assert done.returncode == 1, done.stderr
     assert len(done.stderr.strip().splitlines()) == 1, done.stderr
@@ -270,8 +270,8 @@ def test_no_more_workers_than_cores_nor_than_chunks(tmp_path, capsys, monkeypatc
                               "100"]) == 0
     out, err = capsys.readouterr()
     assert "on dask LocalCluster (1 single-threaded worker processes)" in out and not err
-    np.testing.assert_array_equal(store.open_result(tmp_path / "one.nc").radial_stiffness,
-                                  store.open_result(tmp_path / "few.nc").radial_stiffness)
+    np.testing.assert_array_equal(stores.open_result(tmp_path / "one.nc").radial_stiffness,
+                                  stores.open_result(tmp_path / "few.nc").radial_stiffness)
 
 
 def dies(**inputs):

@@ -226,6 +226,6 @@ def test_a_refused_rerun_leaves_the_earlier_runs_parts_as_they_were(tmp_path, ca
     assert capsys.readouterr().err == f"resuming: 2 chunks already computed in {parts}\n"
     whole = tmp_path / "whole.nc"
     run_sweep(spec.parse(SMALL), whole, Executor(workers=0), progress=False)
-    for name, values in bearing_sweep.store.open_result(whole).data_vars.items():
+    for name, values in bearing_sweep.stores.open_result(whole).data_vars.items():
         np.testing.assert_array_equal(
-            bearing_sweep.store.open_result(tmp_path / "r.nc")[name].values, values.values)
+            bearing_sweep.stores.open_result(tmp_path / "r.nc")[name].values, values.values)

@@ -9,7 +9,7 @@ import xarray as xr
 
 from bearing_sweep.quicklook import plot
 from bearing_sweep.spec import SpecError
-from bearing_sweep.store import open_result
+from bearing_sweep.stores import open_result
 
 EVERY_MODEL = Path(__file__).resolve().parent / "data" / "every_model"
 ONE_AXIS = """
