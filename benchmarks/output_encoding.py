@@ -24,7 +24,7 @@ from pathlib import Path
 import numpy as np
 
 from bearing_sweep import spec, stores
-from bearing_sweep.compute import choose_chunk_size, evaluate_chunk
+from bearing_sweep.evaluate import choose_chunk_size, evaluate_chunk
 from bearing_sweep.dependence import on_grid, stored_dims
 from bearing_sweep.grid import Grid
 from bearing_sweep.stores.blocks import chunk_tally

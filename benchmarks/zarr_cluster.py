@@ -53,11 +53,11 @@ clearance = {{ start = "0 mm", stop = "0.05 mm", num = 200 }}
 #: Load steps of the timed pairs, and of the smaller and larger memory runs (x 200 points).
 TIMED, SMALL, LARGE = 400, 100, 400
 #: Points per chunk of every run: half a second's work at crb_radial's declared cost, as the
-#: default chunking makes them in a large sweep (``compute.CHUNK_SECONDS``: 20000 points).
+#: default chunking makes them in a large sweep (``evaluate.CHUNK_SECONDS``: 20000 points).
 CHUNK = 10000
 PAIRS = 3
 #: What the README asks of a cluster's workers: dask's nanny would otherwise set
-#: MALLOC_TRIM_THRESHOLD_=65536, which doubles the model's time (see compute.Executor.connect).
+#: MALLOC_TRIM_THRESHOLD_=65536, which doubles the model's time (see executor.Executor.connect).
 WORKER_CONFIG = """
 distributed:
   nanny:

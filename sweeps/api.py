@@ -71,7 +71,7 @@ def run(definition, *, output=None, client=None, workers=None, progress=True, en
         (:class:`~bearing_sweep.footprint.InsufficientSpace`, before computing, or once the
         first chunks show it), another run writing ``output``; the finished chunks are kept.
     RuntimeError
-        A local cluster that cannot start (:class:`~bearing_sweep.compute.ClusterFailure`),
+        A local cluster that cannot start (:class:`~bearing_sweep.executor.ClusterFailure`),
         workers of another version.
     """
     sweep = _sweep(definition)

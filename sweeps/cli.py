@@ -14,8 +14,8 @@ from .models.registry import all_models
 from . import schema, spec, stores
 from .stores.durable import OutputLock, write_durably
 from .stores.paths import check_output, check_outside_results
-from .compute import (RESULT_COMPLETE, ClusterFailure, Executor, Interrupts, WorkerMismatch,
-                      check_scheduler_address, run_sweep)
+from .compute import RESULT_COMPLETE, Interrupts, WorkerMismatch, run_sweep
+from .executor import ClusterFailure, Executor, check_scheduler_address
 from .dependence import InconsistentOutput
 from .interrupts import Terminated, terminated_as_interrupt
 from .spec import SpecError

@@ -199,7 +199,7 @@ def test_any_failure_to_start_the_cluster_is_one_line(tmp_path, capsys, monkeypa
     import distributed
 
     from bearing_sweep import api, cli, spec
-    from bearing_sweep.compute import ClusterFailure
+    from bearing_sweep.executor import ClusterFailure
 
     def failing(*args, **kwargs):
         raise TimeoutError("Nanny failed to start in 60 s\nand a second line")
@@ -232,7 +232,7 @@ def test_a_thousand_workers_asked_for_start_no_more_than_the_cores(tmp_path, cap
     monkeypatch.setattr(distributed, "LocalCluster", recorded)
     one_load = DEFINITION.replace('{ start = "1 kN", stop = "10 kN", num = 10 }', '["1 kN"]')
     (tmp_path / "def.toml").write_text(one_load.replace("num = 5", "num = 3"))  # 3 points
-    monkeypatch.setattr("bearing_sweep.compute.available_cores", lambda: 4)
+    monkeypatch.setattr("bearing_sweep.executor.available_cores", lambda: 4)
     # By default, no more workers than seconds of work (the chunks of a second each): one;
     # in chunks of 2 points, two chunks: two workers; of 1 point, three.
     for chunk, expected, why in (
@@ -258,7 +258,7 @@ def test_no_more_workers_than_cores_nor_than_chunks(tmp_path, capsys, monkeypatc
 
     (tmp_path / "def.toml").write_text(DEFINITION)  # 50 points
     common = ["run", str(tmp_path / "def.toml"), "--quiet"]
-    monkeypatch.setattr("bearing_sweep.compute.available_cores", lambda: 1)
+    monkeypatch.setattr("bearing_sweep.executor.available_cores", lambda: 1)
     assert cli.main(common + ["-o", str(tmp_path / "few.nc"), "--workers", "2"]) == 0
     out, err = capsys.readouterr()
     assert err == ("2 workers asked for, 1 core available to this process: a local cluster of "

@@ -7,7 +7,7 @@ import xarray as xr
 
 import bearing_sweep.models.registry as registry
 from bearing_sweep import analyze, cli, run, spec, stores
-from bearing_sweep.compute import evaluate_chunk
+from bearing_sweep.evaluate import evaluate_chunk
 from bearing_sweep.dependence import InconsistentOutput, Reduction, on_grid
 from bearing_sweep.grid import Grid
 from bearing_sweep.models.registry import CONVERGED, INFEASIBLE, Input, Model, Output

@@ -84,7 +84,7 @@ def test_an_uncompressed_result_larger_than_the_disk_is_refused_before_computing
     per_point = bytes_a_point(tmp_path)
     (tmp_path / "huge.toml").write_text(HUGE + UNCOMPRESSED)
     disk(FREE)
-    monkeypatch.setattr("bearing_sweep.compute.evaluate_chunk", None)  # refused before it
+    monkeypatch.setattr("bearing_sweep.evaluate.evaluate_chunk", None)  # refused before it
     code = cli.main(["run", str(tmp_path / "huge.toml"), "-o", str(tmp_path / output),
                      "--workers", "0"])
     err = capsys.readouterr().err
@@ -129,7 +129,7 @@ def test_a_long_or_large_run_says_what_it_will_take_unless_quiet(tmp_path, capsy
     def stop(*args):
         raise KeyboardInterrupt
 
-    monkeypatch.setattr("bearing_sweep.compute.evaluate_chunk", stop)
+    monkeypatch.setattr("bearing_sweep.evaluate.evaluate_chunk", stop)
     arguments = ["run", str(tmp_path / "huge.toml"), "-o", str(tmp_path / "huge.nc"),
                  "--workers", "0"]
     assert cli.main(arguments) == 130
@@ -151,12 +151,12 @@ def test_a_long_or_large_run_says_what_it_will_take_unless_quiet(tmp_path, capsy
 def interrupted_run(tmp_path, monkeypatch):
     """The arguments of a run of SMALL (27 points, compressed) into ``r.nc`` in chunks of 9,
     interrupted once two are kept; its parts folder."""
-    import bearing_sweep.compute as compute
+    import bearing_sweep.evaluate as evaluate
 
     (tmp_path / "small.toml").write_text(SMALL)
     arguments = ["run", str(tmp_path / "small.toml"), "-o", str(tmp_path / "r.nc"),
                  "--chunk-size", "9", "--quiet"]
-    original, calls = compute.evaluate_chunk, []
+    original, calls = evaluate.evaluate_chunk, []
 
     def interrupted(grid, start, stop):
         calls.append(start)
@@ -165,7 +165,7 @@ def interrupted_run(tmp_path, monkeypatch):
         return original(grid, start, stop)
 
     with monkeypatch.context() as patched:
-        patched.setattr(compute, "evaluate_chunk", interrupted)
+        patched.setattr(evaluate, "evaluate_chunk", interrupted)
         assert cli.main(arguments + ["--workers", "0"]) == 130
     return arguments, tmp_path / "r.nc.parts"
 

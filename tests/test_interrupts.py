@@ -9,7 +9,8 @@ import pytest
 
 import bearing_sweep.models.registry as registry
 from bearing_sweep import cli, spec, stores
-from bearing_sweep.compute import Executor, Interrupts, evaluate_chunk, run_sweep
+from bearing_sweep.compute import Executor, Interrupts, run_sweep
+from bearing_sweep.evaluate import evaluate_chunk
 from bearing_sweep.grid import Grid
 from bearing_sweep.interrupts import interruption
 

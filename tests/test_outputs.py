@@ -35,7 +35,7 @@ def no_computing(monkeypatch):
         raise AssertionError("computing started before the output was checked")
 
     monkeypatch.setattr("bearing_sweep.stores.base.OutputLock", computed)
-    monkeypatch.setattr("bearing_sweep.compute.evaluate_chunk", computed)
+    monkeypatch.setattr("bearing_sweep.evaluate.evaluate_chunk", computed)
 
 
 def refused(tmp_path, capsys, output, definition=None):

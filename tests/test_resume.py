@@ -286,7 +286,7 @@ def test_an_output_that_cannot_be_a_file_is_one_line(tmp_path, capsys, monkeypat
     def computed(*args):
         raise AssertionError("computed before the output was refused")
 
-    monkeypatch.setattr("bearing_sweep.compute.evaluate_chunk", computed)
+    monkeypatch.setattr("bearing_sweep.evaluate.evaluate_chunk", computed)
     code = cli.main(["run", str(definition), "-o", str(occupied), "--workers", "0"])
     err = capsys.readouterr().err
     assert code == 2 and len(err.strip().splitlines()) == 1 and "Traceback" not in err

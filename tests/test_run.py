@@ -8,7 +8,8 @@ from bearing_sweep.models.registry import MODEL_ERROR
 from bearing_sweep import spec, stores
 from bearing_sweep.stores import structure
 from bearing_sweep.stores.netcdf import write_netcdf
-from bearing_sweep.compute import CHUNKS_IN_FLIGHT, Executor, Summary, run_sweep
+from bearing_sweep.compute import Executor, Summary, run_sweep
+from bearing_sweep.executor import CHUNKS_IN_FLIGHT
 from bearing_sweep.grid import Grid
 
 TEXT = """
@@ -238,7 +239,7 @@ def test_writing_a_result_closes_its_file_and_leaves_the_others(tmp_path):
 
 def test_each_chunk_reports_the_versions_it_was_computed_with():
     from bearing_sweep.grid import Grid
-    from bearing_sweep.compute import evaluate_chunk
+    from bearing_sweep.evaluate import evaluate_chunk
 
     grid = Grid.from_sweep(spec.parse(TEXT))
     result = evaluate_chunk(grid, 0, 5)
@@ -248,9 +249,9 @@ def test_each_chunk_reports_the_versions_it_was_computed_with():
 
 def test_chunks_of_another_version_are_refused_and_the_others_kept(tmp_path, capsys,
                                                                   monkeypatch):
-    from bearing_sweep import cli, compute
+    from bearing_sweep import cli, evaluate
 
-    original = compute.evaluate_chunk
+    original = evaluate.evaluate_chunk
 
     def elsewhere(grid, start, stop):  # as a worker with another installation would answer
         result = original(grid, start, stop)
@@ -258,7 +259,7 @@ def test_chunks_of_another_version_are_refused_and_the_others_kept(tmp_path, cap
             result["versions"] = dict(result["versions"], package="0.0.1")
         return result
 
-    monkeypatch.setattr(compute, "evaluate_chunk", elsewhere)
+    monkeypatch.setattr(evaluate, "evaluate_chunk", elsewhere)
     definition = tmp_path / "inv.toml"
     definition.write_text(TEXT)
     output = tmp_path / "out.nc"
@@ -277,11 +278,11 @@ def test_each_chunk_is_written_into_the_file_before_the_next_is_computed(tmp_pat
                                                                         monkeypatch):
     # Writing while the others compute keeps the file's assembly out of the sweep's end: the
     # file is complete soon after its last chunk.
-    import bearing_sweep.compute as compute_module
+    import bearing_sweep.evaluate as evaluate_module
     from bearing_sweep.stores.hdf5_chunks import DirectWriter
 
     events = []
-    evaluate, write = compute_module.evaluate_chunk, DirectWriter.write
+    evaluate, write = evaluate_module.evaluate_chunk, DirectWriter.write
 
     def evaluated(grid, start, stop):
         events.append(("computed", start))
@@ -291,7 +292,7 @@ def test_each_chunk_is_written_into_the_file_before_the_next_is_computed(tmp_pat
         events.append(("written", start))
         return write(self, start, stop, part)
 
-    monkeypatch.setattr(compute_module, "evaluate_chunk", evaluated)
+    monkeypatch.setattr(evaluate_module, "evaluate_chunk", evaluated)
     monkeypatch.setattr(DirectWriter, "write", written)
     summary, data = compute(tmp_path, "streamed", chunk_size=36)
     starts = range(0, 108, 36)

@@ -341,7 +341,7 @@ def test_an_interrupted_run_writes_its_encoded_chunks_on_resuming(tmp_path, caps
     def computed(*args):
         raise AssertionError("a finished chunk computed again")
 
-    monkeypatch.setattr("bearing_sweep.compute.evaluate_chunk", computed)
+    monkeypatch.setattr("bearing_sweep.evaluate.evaluate_chunk", computed)
     assert cli.main(arguments) == 0
     assert "resuming: 3 chunks already computed" in capsys.readouterr().err
     monkeypatch.undo()
@@ -349,7 +349,7 @@ def test_an_interrupted_run_writes_its_encoded_chunks_on_resuming(tmp_path, caps
 
 
 def test_a_chunk_leaves_its_worker_compressed_as_the_file_stores_it(tmp_path):
-    from bearing_sweep.compute import evaluate_chunk, evaluate_into, versions
+    from bearing_sweep.evaluate import evaluate_chunk, evaluate_into, versions
     from bearing_sweep.grid import Grid
     from bearing_sweep.stores.hdf5_chunks import ChunkEncoder, layouts
 

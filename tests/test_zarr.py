@@ -105,9 +105,9 @@ def test_the_output_table_stores_alike_in_both_formats(tmp_path):
 def interrupted_store(monkeypatch, sweep, output, computed: list):
     """Run ``sweep`` into the store ``output`` in chunks of 3 points, interrupted when 3 are
     computed (their sizes in ``computed``); its parts folder."""
-    import bearing_sweep.compute as compute
+    import bearing_sweep.evaluate as evaluate
 
-    original = compute.evaluate_chunk
+    original = evaluate.evaluate_chunk
 
     def interrupted(grid, start, stop):
         if len(computed) == 3:
@@ -116,7 +116,7 @@ def interrupted_store(monkeypatch, sweep, output, computed: list):
         return original(grid, start, stop)
 
     with monkeypatch.context() as patched, pytest.raises(KeyboardInterrupt):
-        patched.setattr(compute, "evaluate_chunk", interrupted)
+        patched.setattr(evaluate, "evaluate_chunk", interrupted)
         run_sweep(sweep, output, Executor(workers=0), chunk_size=3, progress=False)
     return Path(f"{output}.parts")
 
@@ -124,9 +124,9 @@ def interrupted_store(monkeypatch, sweep, output, computed: list):
 def test_an_interrupted_zarr_run_resumes_with_only_what_is_missing(tmp_path, monkeypatch):
     sweep = spec.parse(DEFINITION, "three_axes.toml")
     output = tmp_path / "out.zarr"
-    import bearing_sweep.compute as compute
+    import bearing_sweep.evaluate as evaluate
 
-    original = compute.evaluate_chunk
+    original = evaluate.evaluate_chunk
     computed = []
     parts = interrupted_store(monkeypatch, sweep, output, computed)
     assert not output.exists() and (parts / "store.zarr").is_dir()
@@ -136,7 +136,7 @@ def test_an_interrupted_zarr_run_resumes_with_only_what_is_missing(tmp_path, mon
     damaged.write_bytes(damaged.read_bytes()[:40])  # cut short by a power loss: computed again
     computed.clear()
     messages = []
-    monkeypatch.setattr(compute, "evaluate_chunk", lambda grid, start, stop: (
+    monkeypatch.setattr(evaluate, "evaluate_chunk", lambda grid, start, stop: (
         computed.append(stop - start), original(grid, start, stop))[1])
     summary = run_sweep(sweep, output, Executor(workers=0), chunk_size=99, progress=False,
                         log=messages.append)  # the interrupted run's chunking is kept
@@ -208,14 +208,14 @@ def test_marks_without_their_store_are_computed_again(tmp_path, monkeypatch):
 
 def test_values_of_another_version_are_never_written(tmp_path, monkeypatch):
     sweep = spec.parse(DEFINITION, "three_axes.toml")
-    import bearing_sweep.compute as compute
+    import bearing_sweep.evaluate as evaluate
 
-    original = compute.evaluate_chunk
+    original = evaluate.evaluate_chunk
 
     def elsewhere(grid, start, stop):  # a worker with another installation
         return original(grid, start, stop) | {"versions": {"package": "0.0.1", "model": "1"}}
 
-    monkeypatch.setattr(compute, "evaluate_chunk", elsewhere)
+    monkeypatch.setattr(evaluate, "evaluate_chunk", elsewhere)
     with pytest.raises(WorkerMismatch, match="runs bearing-sweep 0.0.1"):
         run_sweep(sweep, tmp_path / "out.zarr", Executor(workers=0), progress=False)
     written = tmp_path / "out.zarr.parts" / "store.zarr"
@@ -252,7 +252,7 @@ def test_a_store_open_in_a_reader_is_never_replaced_under_it(tmp_path, capsys, m
     run_sweep(spec.load(definition), output, Executor(workers=0), progress=False)
     reader = xr.open_dataset(output, engine="zarr")
     expected = stores.open_result(output)
-    monkeypatch.setattr("bearing_sweep.compute.evaluate_chunk", None)  # refused before it
+    monkeypatch.setattr("bearing_sweep.evaluate.evaluate_chunk", None)  # refused before it
     definition.write_text(DEFINITION.replace('stop = "6 kN"', 'stop = "9 kN"'))
     err = refused(tmp_path, capsys, output, definition)
     assert "holds an earlier zarr store of bearing-sweep, which is never replaced" in err
