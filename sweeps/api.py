@@ -68,7 +68,7 @@ def run(definition, *, output=None, client=None, workers=None, progress=True, en
         nothing is written.
     OSError
         A failure of the machine: a full disk, a result the disk cannot hold
-        (:class:`~bearing_sweep.footprint.InsufficientSpace`, before computing, or once the
+        (:class:`~bearing_sweep.stores.footprint.InsufficientSpace`, before computing, or once the
         first chunks show it), another run writing ``output``; the finished chunks are kept.
     RuntimeError
         A local cluster that cannot start (:class:`~bearing_sweep.executor.ClusterFailure`),

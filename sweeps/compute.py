@@ -111,10 +111,10 @@ def run_sweep(sweep: Sweep, output=None, executor: Executor | None = None,
     chunk. A cluster, when the sweep is worth one, starts while the grid is made and the
     resume state is looked at. Nothing of an earlier run's changes until every refusal that
     may come before computing has passed: a result the disk cannot hold
-    (:class:`footprint.InsufficientSpace`), a cluster that cannot start, workers of another
+    (:class:`stores.footprint.InsufficientSpace`), a cluster that cannot start, workers of another
     version (a chunk computed by one later is refused too). ``log`` receives messages for the
     user (resuming, discarding, and with ``progress`` the estimate of a long or large run:
-    :mod:`footprint`). ``interrupts``: the caller's :class:`Interrupts`, entered by the caller
+    :mod:`stores.footprint`). ``interrupts``: the caller's :class:`Interrupts`, entered by the caller
     for as long as it has cleanup to do after the run (by default the run's own).
     """
     store = stores.for_output(output, sweep)

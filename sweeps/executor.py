@@ -14,7 +14,7 @@ from concurrent.futures import ThreadPoolExecutor
 
 from . import evaluate
 from .evaluate import largest_chunk
-from .footprint import duration
+from .stores.footprint import duration
 from .grid import Grid, block_shape
 from .interrupts import interruptions_raised
 from .spec import SpecError

@@ -11,7 +11,7 @@ import bearing_sweep
 import bearing_sweep.models.registry as registry
 from bearing_sweep import cli, spec
 from bearing_sweep.compute import Executor, run_sweep
-from bearing_sweep.footprint import InsufficientSpace, result_bytes
+from bearing_sweep.stores.footprint import InsufficientSpace, result_bytes
 from bearing_sweep.grid import Grid
 
 #: 1000 x 1000 x 1000 points; crown, load and clearance vary, so every output but the
@@ -52,7 +52,7 @@ def disk(monkeypatch):
 
     def free(count: float):
         usage = shutil.disk_usage(".")
-        monkeypatch.setattr("bearing_sweep.footprint.shutil.disk_usage",
+        monkeypatch.setattr("bearing_sweep.stores.footprint.shutil.disk_usage",
                             lambda path: usage._replace(free=int(count)))
 
     return free

@@ -4,8 +4,9 @@ A result at a path ending in ``.zarr`` is a zarr store (:mod:`.zarr`), any other
 file (:mod:`.netcdf`, its chunks encoded by the workers where it can: :mod:`.hdf5_chunks`), no
 path a dataset in memory (:mod:`.memory`). What they share: which paths may be written
 (:mod:`.paths`), locks and atomic, durable writes (:mod:`.durable`), the resume state of an
-interrupted run (:mod:`.resume`), a chunk's regions and counts (:mod:`.blocks`) and a result's
-structure (:mod:`.structure`). A store is added as one module with a :class:`.base.Store`
+interrupted run (:mod:`.resume`), a chunk's regions and counts (:mod:`.blocks`), a result's
+structure (:mod:`.structure`) and its size on the disk, said before computing
+(:mod:`.footprint`). A store is added as one module with a :class:`.base.Store`
 and a line in :data:`BACKENDS`.
 """
 from __future__ import annotations

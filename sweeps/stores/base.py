@@ -14,7 +14,7 @@ from __future__ import annotations
 
 import contextlib
 
-from ..footprint import Footprint
+from .footprint import Footprint
 from .durable import OutputLock
 from .paths import check_output, check_parts_folder
 
@@ -59,8 +59,8 @@ class Store:
         return self.parts.finished()
 
     def footprint(self, points: int, workers: int):
-        """The run's :class:`footprint.Footprint` for ``points`` to compute, or None where it
-        takes no disk; ``footprint.InsufficientSpace`` where the disk cannot hold it."""
+        """The run's :class:`.footprint.Footprint` for ``points`` to compute, or None where it
+        takes no disk; ``.footprint.InsufficientSpace`` where the disk cannot hold it."""
         return None
 
     def begin(self, log):

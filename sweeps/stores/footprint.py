@@ -21,7 +21,7 @@ from pathlib import Path
 
 import numpy as np
 
-from .stores.structure import stored_as, structure
+from .structure import stored_as, structure
 
 #: A run that the estimate says takes longer [s], or writes more [bytes], says so as it starts.
 ANNOUNCED_SECONDS = 10.0
