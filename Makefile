@@ -2,12 +2,22 @@
 VENV := .venv
 PYTHON := $(VENV)/bin/python
 STAMP := $(VENV)/.installed
+# The editable install is a tree of links to the package's files (docs/contributing.md, "The
+# layout"), which editors and type checkers follow: it is made again when a file is added or
+# removed.
+FILES := $(sort $(wildcard sweeps/*.py sweeps/*/*.py sweeps/py.typed models/*.py studies/*.py \
+                           studies/*/*.toml studies/*/*.md studies/*/*.py))
+ifneq ($(FILES),$(shell cat $(VENV)/.files 2>/dev/null))
+.PHONY: $(STAMP)
+endif
 
 .PHONY: test reproduce bench clean
 
 $(STAMP): pyproject.toml
 	python3 -m venv $(VENV)
-	$(PYTHON) -m pip install --quiet --disable-pip-version-check -e '.[test]'
+	$(PYTHON) -m pip install --quiet --disable-pip-version-check \
+		--config-settings editable_mode=strict -e '.[test]'
+	echo '$(FILES)' > $(VENV)/.files
 	touch $(STAMP)
 
 test: $(STAMP)

@@ -13,7 +13,7 @@ elimination; then the stiffness matrix, ball loads, contact angles and contact p
 solution.
 
 Model: ``ball_5dof`` through the engine's chunk evaluation
-(``bearing_sweep.compute.evaluate_chunk`` on a Grid), in blocks of its declared
+(``bearing_sweep.evaluate.evaluate_chunk`` on a Grid), in blocks of its declared
 ``points_per_call``: all a sweep computes (Hertz contacts, status and validity, pressures,
 rating lives, units).
 
@@ -33,7 +33,7 @@ import numpy as np
 from numba import njit
 
 from bearing_sweep import spec
-from bearing_sweep.compute import evaluate_chunk
+from bearing_sweep.evaluate import evaluate_chunk
 from bearing_sweep.grid import Grid
 from bearing_sweep.models.ball import MODELS, raceway_contacts
 

@@ -6,7 +6,7 @@ single-threaded workers started for the run (as the command starts it: in the ba
 and closed at the end), in interleaved pairs, each from the parsed definition to the written
 file. The cluster's time is nearly a fixed start plus a fraction of the in-process time; where
 the medians first cross (interpolated between the two sizes around it) is the break-even, in
-seconds of in-process time, which ``compute.IN_PROCESS_SECONDS`` (estimated single-core seconds, from the declared cost)
+seconds of in-process time, which ``executor.IN_PROCESS_SECONDS`` (estimated single-core seconds, from the declared cost)
 should match. Prints the declared threshold over the measured break-even (goal: 0.5x to
 2x), with the machine's load average: a busy machine starts and feeds the cluster slower
 (it says "machine too busy to measure" when others' load exceeds half a core).
@@ -20,7 +20,8 @@ from pathlib import Path
 import numpy as np
 
 from bearing_sweep import spec
-from bearing_sweep.compute import IN_PROCESS_SECONDS, Executor, run_sweep
+from bearing_sweep.compute import Executor, run_sweep
+from bearing_sweep.executor import IN_PROCESS_SECONDS
 from worker_scaling import BUSY, DEFINITION  # the same crb_radial sweep, by its size
 
 SIZES = (4_000, 8_000, 16_000, 32_000, 64_000, 128_000)

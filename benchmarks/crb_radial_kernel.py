@@ -21,7 +21,7 @@ Both run on one core (CPU time of this process, which others' load on the shared
 disturbs less than wall time) on the grid of benchmarks/crb_radial_throughput.py (bearing D of
 paper 000, crown, speed, clearance) with as many loads as make one block of the model's
 declared ``points_per_call``: the model through the engine's chunk path
-(``bearing_sweep.compute.evaluate_chunk``, inputs built, outputs converted) and the kernel on
+(``bearing_sweep.evaluate.evaluate_chunk``, inputs built, outputs converted) and the kernel on
 the same points, in interleaved pairs. The answers are compared first (the run fails beyond
 ``AGREEMENT``). Prints the median of the pairs' ratios of model over kernel time (goal: within
 1.2x), and the model against the per-point scipy baseline of crb_radial_throughput.py.
@@ -35,7 +35,7 @@ import numpy as np
 from numba import njit
 
 from bearing_sweep import spec
-from bearing_sweep.compute import evaluate_chunk
+from bearing_sweep.evaluate import evaluate_chunk
 from bearing_sweep.grid import Grid
 from bearing_sweep.models.contact import effective_modulus, palmgren_constant
 from bearing_sweep.models.cylindrical import centrifugal_force

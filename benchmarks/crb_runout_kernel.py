@@ -28,7 +28,7 @@ import numpy as np
 from numba import njit
 
 from bearing_sweep import spec
-from bearing_sweep.compute import evaluate_chunk
+from bearing_sweep.evaluate import evaluate_chunk
 from bearing_sweep.grid import Grid
 from bearing_sweep.models.runout import MODELS
 

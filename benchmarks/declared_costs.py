@@ -28,7 +28,7 @@ from pathlib import Path
 import numpy as np
 
 from bearing_sweep import spec
-from bearing_sweep.compute import evaluate_chunk
+from bearing_sweep.evaluate import evaluate_chunk
 from bearing_sweep.grid import Grid
 
 ROOT = Path(__file__).resolve().parents[1]

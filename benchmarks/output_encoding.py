@@ -3,9 +3,9 @@
 Baseline: the same result written as the engine wrote every file before the [output] table,
 float64 and uncompressed. The result, 1e5 points of bearing D of paper 000 (load x clearance x
 crown x speed, 60 slices, 14 rollers), is computed once; each setting then writes it through
-the engine's own path (``store.result_file``, one chunk at a time, each encoded as a worker
+the engine's own path (``stores.netcdf.result_file``, one chunk at a time, each encoded as a worker
 encodes it) and reads it back whole
-(``store.open_result``). Times are the best of three; float64 settings must read back bit for
+(``stores.open_result``). Times are the best of three; float64 settings must read back bit for
 bit, float32 within its rounding. Prints one row per setting, as ratios against the baseline,
 and the chosen default's size ratio (goal: at most 0.5, with writing under a tenth of the
 computing time and float64 kept).
@@ -23,11 +23,14 @@ from pathlib import Path
 
 import numpy as np
 
-from bearing_sweep import spec, store
-from bearing_sweep.compute import choose_chunk_size, evaluate_chunk
+from bearing_sweep import spec, stores
+from bearing_sweep.evaluate import choose_chunk_size, evaluate_chunk
 from bearing_sweep.dependence import on_grid, stored_dims
 from bearing_sweep.grid import Grid
-from bearing_sweep.parts import HeldChunks
+from bearing_sweep.stores.blocks import chunk_tally
+from bearing_sweep.stores.memory import HeldChunks
+from bearing_sweep.stores.netcdf import result_file
+from bearing_sweep.stores.structure import provenance
 from bearing_sweep.storage import Storage
 
 DEFINITION = """
@@ -55,11 +58,11 @@ def write(sweep, grid, parts, chunks, path: Path):
     """Write the result at ``path`` through the engine's own path, one chunk at a time: each
     encoded as a worker encodes it, its bytes then written (``hdf5_chunks``)."""
     size = chunks[0][1] - chunks[0][0]
-    with store.result_file(sweep, grid, path, store.provenance("benchmark"), size,
+    with result_file(sweep, grid, path, provenance("benchmark"), size,
                            direct=True) as writer:
         for start, stop in chunks:
             part = parts.load(start, stop)
-            writer.write(start, stop, {"tally": store.chunk_tally(grid.model, part),
+            writer.write(start, stop, {"tally": chunk_tally(grid.model, part),
                                        **writer.encoder.write(grid, start, stop, part)})
 
 
@@ -71,7 +74,7 @@ def measure(sweep, grid, parts, chunks, path: Path):
         write(sweep, grid, parts, chunks, path)
         writing = min(writing, time.perf_counter() - began)
         began = time.perf_counter()
-        data = store.open_result(path)
+        data = stores.open_result(path)
         reading = min(reading, time.perf_counter() - began)
     return writing, reading, path.stat().st_size, data
 
@@ -124,7 +127,7 @@ def folded_sizes(sweep, grid, parts, chunks, path: Path):
         for layout in (every_point, grid):
             write(sweep, layout, parts, chunks, path)
             sizes.append(path.stat().st_size)
-            results.append(on_grid(store.open_result(path)))
+            results.append(on_grid(stores.open_result(path)))
         for name in folded:
             assert np.array_equal(results[0][name], results[1][name], equal_nan=True), name
         print(f"  {storage.text()}: {sizes[0] / 1e6:.3f} MB -> {sizes[1] / 1e6:.3f} MB, "

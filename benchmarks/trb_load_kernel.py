@@ -31,7 +31,7 @@ from numba import njit
 from scipy.optimize import root
 
 from bearing_sweep import spec
-from bearing_sweep.compute import evaluate_chunk
+from bearing_sweep.evaluate import evaluate_chunk
 from bearing_sweep.grid import Grid
 from bearing_sweep.models.contact import effective_modulus
 from bearing_sweep.models.tapered import (LOAD_EXPONENT, MODELS, cone_curvature_sum,

@@ -23,7 +23,7 @@ from pathlib import Path
 
 import numpy as np
 
-from bearing_sweep import spec, store
+from bearing_sweep import spec, stores
 from bearing_sweep.compute import Executor, run_sweep
 
 DEFINITION = """
@@ -77,7 +77,7 @@ def main(points: int = POINTS, pairs: int = PAIRS):
     before = settled_load()
     with tempfile.TemporaryDirectory() as folder:
         one, two, loads = paired_times(Path(folder), points, pairs)
-        a, b = (store.open_result(Path(folder) / f"w{w}.nc") for w in (1, 2))
+        a, b = (stores.open_result(Path(folder) / f"w{w}.nc") for w in (1, 2))
     for name in a.data_vars:
         np.testing.assert_array_equal(a[name].values, b[name].values)
     ratios = one / two

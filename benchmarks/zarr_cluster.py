@@ -34,7 +34,7 @@ import cloudpickle
 import numpy as np
 import psutil
 
-from bearing_sweep import spec, store
+from bearing_sweep import spec, stores
 from bearing_sweep.compute import Executor, run_sweep
 from bearing_sweep.grid import Grid
 
@@ -53,11 +53,11 @@ clearance = {{ start = "0 mm", stop = "0.05 mm", num = 200 }}
 #: Load steps of the timed pairs, and of the smaller and larger memory runs (x 200 points).
 TIMED, SMALL, LARGE = 400, 100, 400
 #: Points per chunk of every run: half a second's work at crb_radial's declared cost, as the
-#: default chunking makes them in a large sweep (``compute.CHUNK_SECONDS``: 20000 points).
+#: default chunking makes them in a large sweep (``evaluate.CHUNK_SECONDS``: 20000 points).
 CHUNK = 10000
 PAIRS = 3
 #: What the README asks of a cluster's workers: dask's nanny would otherwise set
-#: MALLOC_TRIM_THRESHOLD_=65536, which doubles the model's time (see compute.Executor.connect).
+#: MALLOC_TRIM_THRESHOLD_=65536, which doubles the model's time (see executor.Executor.connect).
 WORKER_CONFIG = """
 distributed:
   nanny:
@@ -123,7 +123,7 @@ def paired_times(folder: Path, address: str) -> tuple[np.ndarray, np.ndarray]:
                 began = time.perf_counter()
                 run_sweep(sweep, folder / output, executor, CHUNK, progress=False)
                 times[kind].append(time.perf_counter() - began)
-    a, b = (store.open_result(folder / name) for name in ("timed.nc", "timed.zarr"))
+    a, b = (stores.open_result(folder / name) for name in ("timed.nc", "timed.zarr"))
     for name in a.data_vars:  # the same numbers, whatever the format and the cluster
         np.testing.assert_array_equal(a[name].values, b[name].values, err_msg=name)
     return np.array(times["zarr"]), np.array(times["netcdf"])

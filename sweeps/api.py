@@ -13,11 +13,13 @@ from pathlib import Path
 import xarray as xr
 
 from .models.registry import REQUIRED, STATUS_DESCRIPTIONS, all_models
-from . import spec, zarr_store
+from . import spec
 from .compute import RESULT_COMPLETE, Executor, Interrupts, run_sweep
-from .parts import ZARR_SUFFIX, argument_text, check_output, is_zarr, path_argument
+from .stores import is_result, open_result, result_engine
+from .stores.netcdf import write_netcdf
+from .stores.paths import ZARR_SUFFIX, argument_text, check_output, is_zarr, path_argument
+from .stores.zarr import write_dataset as write_zarr
 from .spec import SpecError, Sweep
-from .store import is_result, open_result, result_engine, write_netcdf
 
 
 def run(definition, *, output=None, client=None, workers=None, progress=True, encoding=None,
@@ -66,10 +68,10 @@ def run(definition, *, output=None, client=None, workers=None, progress=True, en
         nothing is written.
     OSError
         A failure of the machine: a full disk, a result the disk cannot hold
-        (:class:`~bearing_sweep.footprint.InsufficientSpace`, before computing, or once the
+        (:class:`~bearing_sweep.stores.footprint.InsufficientSpace`, before computing, or once the
         first chunks show it), another run writing ``output``; the finished chunks are kept.
     RuntimeError
-        A local cluster that cannot start (:class:`~bearing_sweep.compute.ClusterFailure`),
+        A local cluster that cannot start (:class:`~bearing_sweep.executor.ClusterFailure`),
         workers of another version.
     """
     sweep = _sweep(definition)
@@ -155,7 +157,7 @@ def analyze(result, *, output=None) -> xr.Dataset:
 
     analyzed = analysis.analyze(result, where)
     if is_zarr(output):
-        zarr_store.write_dataset(analyzed, output)
+        write_zarr(analyzed, output)
     elif output is not None:
         write_netcdf(analyzed, output)
     return analyzed

@@ -11,10 +11,11 @@ from pathlib import Path
 
 from .models.catalogue import PRESETS
 from .models.registry import all_models
-from . import schema, spec, store
-from .parts import OutputLock, check_output, check_outside_results, write_durably
-from .compute import (RESULT_COMPLETE, ClusterFailure, Executor, Interrupts, WorkerMismatch,
-                      check_scheduler_address, run_sweep)
+from . import schema, spec, stores
+from .stores.durable import OutputLock, write_durably
+from .stores.paths import check_output, check_outside_results
+from .compute import RESULT_COMPLETE, Interrupts, WorkerMismatch, run_sweep
+from .executor import ClusterFailure, Executor, check_scheduler_address
 from .dependence import InconsistentOutput
 from .interrupts import Terminated, terminated_as_interrupt
 from .spec import SpecError
@@ -242,7 +243,7 @@ def main(argv=None) -> int:
         elif args.command == "schema":
             _schema(args.model, args.output)
         elif args.command == "plot":
-            if not store.is_result(args.result):
+            if not stores.is_result(args.result):
                 raise SpecError(f"{args.result}: no such result file")
             output = args.output or args.result.with_suffix(".png")
             from . import quicklook  # matplotlib only for who plots

@@ -35,7 +35,7 @@ STATUS_COMMENT = (
 @dataclass
 class Labelled:
     """A labelled dataset as plain data, for xarray (:meth:`dataset`) or for writing without
-    it (:mod:`netcdf_structure`): ``data_vars`` and ``coords`` map names to ``(dims, values,
+    it (:mod:`stores.structure`): ``data_vars`` and ``coords`` map names to ``(dims, values,
     attrs)`` in the dataset's order, ``encodings`` names to how the file stores them."""
 
     data_vars: dict

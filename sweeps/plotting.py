@@ -15,7 +15,7 @@ from matplotlib.figure import Figure
 
 from . import units
 from .spec import SpecError, suggestion
-from .store import open_result
+from .stores import open_result
 
 
 def result(results: Path, name: str) -> xr.Dataset:

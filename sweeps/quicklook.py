@@ -21,11 +21,11 @@ from matplotlib.lines import Line2D
 
 from .dependence import flag_holds, held_points, on_grid
 from .models.registry import get_model
-from .parts import (OutputLock, argument_text, check_outside_results, is_zarr, path_argument,
-                    write_durably)
+from .stores import open_result
+from .stores.durable import OutputLock, write_durably
+from .stores.paths import argument_text, check_outside_results, is_zarr, path_argument
 from .plotting import MAKER, conditions, in_unit, label, metadata, shown_unit, subplots
 from .spec import SpecError, suggestion
-from .store import open_result
 
 #: Figure formats ``plot`` writes, with the first bytes of such a file: only a figure is ever
 #: replaced by another one.
@@ -406,7 +406,7 @@ def check_figure_path(output, result=None) -> Path:
     """Refuse a figure path that must not be written: the result itself, a folder or any
     other kind of file than a regular one, a suffix other than ``FORMATS``', an existing file
     that is not a figure of that format, a folder that does not exist, a path inside a zarr
-    store or a parts folder (:func:`output_paths.check_outside_results`)."""
+    store or a parts folder (:func:`stores.paths.check_outside_results`)."""
     check_outside_results(output)
     output = Path(output)
     if result is not None and output.exists() and output.resolve() == Path(result).resolve():

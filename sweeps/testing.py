@@ -21,7 +21,7 @@ from pathlib import Path
 import numpy as np
 
 from .models.registry import Model, declaration_problems
-from . import spec, store, units
+from . import spec, stores, units
 from .compute import Executor, run_sweep
 
 
@@ -99,7 +99,7 @@ def assert_chunking_invariant(definition: str, folder, chunk_size: int = 1):
         for name, size in (("whole", spec.MAX_POINTS), ("chunked", chunk_size)):
             path = Path(folder) / f"{name}.nc"
             run_sweep(sweep, path, executor, chunk_size=size, progress=False)
-            results.append(store.open_result(path))
+            results.append(stores.open_result(path))
     assert_same_numbers(*results, label=sweep.model.name)
 
 

@@ -6,7 +6,8 @@ import pytest
 import xarray as xr
 
 import bearing_sweep
-from bearing_sweep import cli, store
+from bearing_sweep import cli, stores
+from bearing_sweep.stores import netcdf
 from bearing_sweep.models.cylindrical import crb_radial
 from bearing_sweep.models.registry import all_models
 
@@ -41,7 +42,7 @@ def cli_result(tmp_path, *options):
     path.write_text(TEXT)
     assert cli.main(["run", str(path), "-o", str(tmp_path / "cli.nc"), "--quiet",
                      *options]) == 0
-    return path, store.open_result(tmp_path / "cli.nc")
+    return path, stores.open_result(tmp_path / "cli.nc")
 
 
 def assert_same_result(ours: xr.Dataset, theirs: xr.Dataset, attributes=None):
@@ -90,23 +91,23 @@ def test_with_an_output_the_file_is_the_clis_and_is_returned_opened(tmp_path):
     with bearing_sweep.run(path, output=output, workers=0, progress=False) as data:
         assert data.encoding["source"] == str(output)
         assert_same_result(data.load(), expected)
-    assert_same_result(store.open_result(output), expected)
+    assert_same_result(stores.open_result(output), expected)
 
 
 def test_an_interrupted_run_to_an_output_resumes(tmp_path, monkeypatch, capsys):
     path = tmp_path / "sweep.toml"
     path.write_text(TEXT)
     output = tmp_path / "out.nc"
-    original = store.ChunkWriter.finish
+    original = netcdf.ChunkWriter.finish
 
     def interrupted(*args):  # every chunk computed, the file not yet written
         raise KeyboardInterrupt
 
-    monkeypatch.setattr(store.ChunkWriter, "finish", interrupted)
+    monkeypatch.setattr(netcdf.ChunkWriter, "finish", interrupted)
     with pytest.raises(KeyboardInterrupt):
         bearing_sweep.run(path, output=output, workers=0)
     assert not output.exists() and (tmp_path / "out.nc.parts").is_dir()
-    monkeypatch.setattr(store.ChunkWriter, "finish", original)
+    monkeypatch.setattr(netcdf.ChunkWriter, "finish", original)
     capsys.readouterr()
     bearing_sweep.run(path, output=output, workers=0).close()
     err = capsys.readouterr().err

@@ -7,7 +7,7 @@ import pytest
 from hypothesis import HealthCheck, given, settings
 from hypothesis import strategies as st
 
-from bearing_sweep import cli, store
+from bearing_sweep import cli, stores
 
 CORPUS = sorted((Path(__file__).parent / "data" / "bad_definitions").glob("*.toml"))
 
@@ -73,7 +73,7 @@ def test_random_definitions_give_a_clean_error_or_a_dataset(fixed, axis, tmp_pat
     code, err = run(definition, output, capsys)
     assert "Traceback" not in err
     if code == 0:
-        store.open_result(output)  # a readable dataset
+        stores.open_result(output)  # a readable dataset
     else:
         assert code == 2, err
         assert len(err.strip().splitlines()) == 1, err

@@ -63,7 +63,7 @@ def test_mistakes_in_ball_definitions_are_one_line(old, new, words):
 def test_the_dataset_labels_dofs_and_stores_a_symmetric_matrix_in_si(tmp_path):
     sweep = spec.parse(GOOD, "def.toml")
     compute.run_sweep(sweep, tmp_path / "out.nc", compute.Executor(workers=0), progress=False)
-    data = compute.store.open_result(tmp_path / "out.nc")
+    data = compute.stores.open_result(tmp_path / "out.nc")
     assert list(data.dof.values) == ["axial", "radial_y", "radial_z", "tilt_y", "tilt_z"]
     # One unit system (SI), so that the matrix can go as it is into a rotor-dynamics code:
     # dFx/d(phi_y) in N/rad, dMy/d(delta_x) in N*m/m = N.
@@ -100,8 +100,8 @@ def test_chunking_does_not_change_the_numbers(tmp_path):
     many = compute.run_sweep(sweep, tmp_path / "many.nc", compute.Executor(workers=0), chunk_size=2,
                          progress=False)
     assert one.points == many.points == 21
-    first = compute.store.open_result(tmp_path / "one.nc")
-    second = compute.store.open_result(tmp_path / "many.nc")
+    first = compute.stores.open_result(tmp_path / "one.nc")
+    second = compute.stores.open_result(tmp_path / "many.nc")
     for name in ("stiffness_matrix", "ball_load", "displacement"):
         np.testing.assert_array_equal(first[name].values, second[name].values)
 

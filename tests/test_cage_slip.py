@@ -7,7 +7,7 @@ import bearing_sweep.models.cage_slip as steady_module
 from bearing_sweep.models.cage_slip import cage_slip, cage_torque_residual, cage_windage, kinematic_cage_speed
 from bearing_sweep.models.lubrication import TractionCurve, walther_viscosity
 from bearing_sweep.models.registry import CONVERGED, NO_ROOT_IN_RANGE, NOT_CONVERGED, OUT_OF_VALIDITY
-from bearing_sweep import compute, spec, store
+from bearing_sweep import compute, spec, stores
 
 MM, RPM = 1e-3, 2 * np.pi / 60
 #: The test bearing of paper 002, Table 2 (outer raceway from di + 2D + Pd).
@@ -81,7 +81,7 @@ def test_chunking_does_not_change_the_numbers(tmp_path):
     compute.run_sweep(sweep, tmp_path / "one.nc", compute.Executor(workers=0), progress=False)
     compute.run_sweep(sweep, tmp_path / "many.nc", compute.Executor(workers=0), chunk_size=3,
                   progress=False)
-    one, many = store.open_result(tmp_path / "one.nc"), store.open_result(tmp_path / "many.nc")
+    one, many = stores.open_result(tmp_path / "one.nc"), stores.open_result(tmp_path / "many.nc")
     for name in ("cage_slip", "roller_slip", "cage_speed"):
         np.testing.assert_allclose(one[name].values, many[name].values, rtol=1e-12)
 

@@ -11,7 +11,7 @@ from pathlib import Path
 import numpy as np
 import pytest
 
-from bearing_sweep import store
+from bearing_sweep import stores
 
 BIN = Path(sys.executable).parent
 
@@ -84,8 +84,8 @@ def equals_local_run(folder, remote_name):
                             "--workers", "0", "--quiet"], cwd=folder, capture_output=True,
                            text=True)
     assert local.returncode == 0, local.stderr
-    a = store.open_result(folder / remote_name)
-    b = store.open_result(folder / "local.nc")
+    a = stores.open_result(folder / remote_name)
+    b = stores.open_result(folder / "local.nc")
     for name in b.data_vars:
         np.testing.assert_array_equal(a[name].values, b[name].values, err_msg=name)
     return a
@@ -123,8 +123,8 @@ def workers_of_another_version_are_refused(address, folder):
     from distributed import Client
 
     with Client(address, timeout="60s") as client:  # the workers' installation now differs
-        client.run(exec, "import bearing_sweep.store\n"
-                         "bearing_sweep.store.package_version = lambda: '0.0.1'", {})
+        client.run(exec, "import bearing_sweep.stores.structure\n"
+                         "bearing_sweep.stores.structure.package_version = lambda: '0.0.1'", {})
     done, _ = run_on(address, folder, "--chunk-size", "7", "--quiet", output="other.nc")
     assert done.returncode == 1, done.stderr
     assert len(done.stderr.strip().splitlines()) == 1, done.stderr
@@ -199,7 +199,7 @@ def test_any_failure_to_start_the_cluster_is_one_line(tmp_path, capsys, monkeypa
     import distributed
 
     from bearing_sweep import api, cli, spec
-    from bearing_sweep.compute import ClusterFailure
+    from bearing_sweep.executor import ClusterFailure
 
     def failing(*args, **kwargs):
         raise TimeoutError("Nanny failed to start in 60 s\nand a second line")
@@ -232,7 +232,7 @@ def test_a_thousand_workers_asked_for_start_no_more_than_the_cores(tmp_path, cap
     monkeypatch.setattr(distributed, "LocalCluster", recorded)
     one_load = DEFINITION.replace('{ start = "1 kN", stop = "10 kN", num = 10 }', '["1 kN"]')
     (tmp_path / "def.toml").write_text(one_load.replace("num = 5", "num = 3"))  # 3 points
-    monkeypatch.setattr("bearing_sweep.compute.available_cores", lambda: 4)
+    monkeypatch.setattr("bearing_sweep.executor.available_cores", lambda: 4)
     # By default, no more workers than seconds of work (the chunks of a second each): one;
     # in chunks of 2 points, two chunks: two workers; of 1 point, three.
     for chunk, expected, why in (
@@ -258,7 +258,7 @@ def test_no_more_workers_than_cores_nor_than_chunks(tmp_path, capsys, monkeypatc
 
     (tmp_path / "def.toml").write_text(DEFINITION)  # 50 points
     common = ["run", str(tmp_path / "def.toml"), "--quiet"]
-    monkeypatch.setattr("bearing_sweep.compute.available_cores", lambda: 1)
+    monkeypatch.setattr("bearing_sweep.executor.available_cores", lambda: 1)
     assert cli.main(common + ["-o", str(tmp_path / "few.nc"), "--workers", "2"]) == 0
     out, err = capsys.readouterr()
     assert err == ("2 workers asked for, 1 core available to this process: a local cluster of "
@@ -270,8 +270,8 @@ def test_no_more_workers_than_cores_nor_than_chunks(tmp_path, capsys, monkeypatc
                               "100"]) == 0
     out, err = capsys.readouterr()
     assert "on dask LocalCluster (1 single-threaded worker processes)" in out and not err
-    np.testing.assert_array_equal(store.open_result(tmp_path / "one.nc").radial_stiffness,
-                                  store.open_result(tmp_path / "few.nc").radial_stiffness)
+    np.testing.assert_array_equal(stores.open_result(tmp_path / "one.nc").radial_stiffness,
+                                  stores.open_result(tmp_path / "few.nc").radial_stiffness)
 
 
 def dies(**inputs):

@@ -9,7 +9,8 @@ import pint_xarray  # noqa: F401  (registers the .pint accessor)
 import pytest
 
 from bearing_sweep.models.registry import all_models
-from bearing_sweep import spec, store, units
+from bearing_sweep import spec, stores, units
+from bearing_sweep.stores.netcdf import write_netcdf
 from bearing_sweep.compute import Executor, run_sweep
 from bearing_sweep.testing import assert_same_numbers
 
@@ -67,7 +68,7 @@ def runs(tmp_path_factory):
                 paths.append(folder / f"{name}-{chunk}.nc")
                 run_sweep(sweep, paths[-1], executor, chunk_size=chunk, progress=False)
             in_memory = run_sweep(sweep, None, executor, progress=False).dataset
-            paths.append(store.write_netcdf(in_memory, folder / f"{name}-xarray.nc"))
+            paths.append(write_netcdf(in_memory, folder / f"{name}-xarray.nc"))
             made[name] = paths
     return made
 
@@ -75,7 +76,7 @@ def runs(tmp_path_factory):
 @pytest.fixture(scope="module")
 def files(runs):
     """Each model's sweep computed whole and one point per chunk, opened."""
-    return {name: [store.open_result(runs[name][chunk]) for chunk in (0, 1)] for name in MODELS}
+    return {name: [stores.open_result(runs[name][chunk]) for chunk in (0, 1)] for name in MODELS}
 
 
 @pytest.mark.parametrize("name", MODELS + [p.stem for p in STRUCTURES])
@@ -198,7 +199,7 @@ def test_a_point_outside_validity_shows_it_beside_its_other_status(name, tmp_pat
     sweep = spec.parse(f'[sweep]\nmodel = "{name}"\n{head}\n[axes]\n{axis}\n')
     with Executor(workers=0) as executor:
         run_sweep(sweep, tmp_path / "outside.nc", executor, progress=False)
-    status = store.open_result(tmp_path / "outside.nc")["status"]
+    status = stores.open_result(tmp_path / "outside.nc")["status"]
     last = status.isel({status.dims[0]: -1})
     assert bool(flag_holds(last, "out_of_validity")), (name, int(last))
     assert bool(flag_holds(last, other)), (name, int(last), other)

@@ -6,8 +6,8 @@ import pytest
 import xarray as xr
 
 import bearing_sweep.models.registry as registry
-from bearing_sweep import analyze, cli, run, spec, store
-from bearing_sweep.compute import evaluate_chunk
+from bearing_sweep import analyze, cli, run, spec, stores
+from bearing_sweep.evaluate import evaluate_chunk
 from bearing_sweep.dependence import InconsistentOutput, Reduction, on_grid
 from bearing_sweep.grid import Grid
 from bearing_sweep.models.registry import CONVERGED, INFEASIBLE, Input, Model, Output
@@ -64,7 +64,7 @@ def test_the_file_holds_the_same_on_the_same_dims_whatever_the_chunks(toy, tmp_p
     # The first row (a = -1) fails: chunks of one point take each value from a later chunk.
     assert_chunking_invariant(GRID, tmp_path, chunk_size=1)
     assert_chunking_invariant(GRID, tmp_path, chunk_size=5)
-    in_file = store.open_result(tmp_path / "chunked.nc")
+    in_file = stores.open_result(tmp_path / "chunked.nc")
     assert in_file["product"].dims == ("b",)
     np.testing.assert_array_equal(in_file["product"].values,
                                   run(GRID, workers=0, progress=False)["product"].values)

@@ -11,7 +11,7 @@ import bearing_sweep
 import bearing_sweep.models.registry as registry
 from bearing_sweep import cli, spec
 from bearing_sweep.compute import Executor, run_sweep
-from bearing_sweep.footprint import InsufficientSpace, result_bytes
+from bearing_sweep.stores.footprint import InsufficientSpace, result_bytes
 from bearing_sweep.grid import Grid
 
 #: 1000 x 1000 x 1000 points; crown, load and clearance vary, so every output but the
@@ -52,7 +52,7 @@ def disk(monkeypatch):
 
     def free(count: float):
         usage = shutil.disk_usage(".")
-        monkeypatch.setattr("bearing_sweep.footprint.shutil.disk_usage",
+        monkeypatch.setattr("bearing_sweep.stores.footprint.shutil.disk_usage",
                             lambda path: usage._replace(free=int(count)))
 
     return free
@@ -84,7 +84,7 @@ def test_an_uncompressed_result_larger_than_the_disk_is_refused_before_computing
     per_point = bytes_a_point(tmp_path)
     (tmp_path / "huge.toml").write_text(HUGE + UNCOMPRESSED)
     disk(FREE)
-    monkeypatch.setattr("bearing_sweep.compute.evaluate_chunk", None)  # refused before it
+    monkeypatch.setattr("bearing_sweep.evaluate.evaluate_chunk", None)  # refused before it
     code = cli.main(["run", str(tmp_path / "huge.toml"), "-o", str(tmp_path / output),
                      "--workers", "0"])
     err = capsys.readouterr().err
@@ -129,7 +129,7 @@ def test_a_long_or_large_run_says_what_it_will_take_unless_quiet(tmp_path, capsy
     def stop(*args):
         raise KeyboardInterrupt
 
-    monkeypatch.setattr("bearing_sweep.compute.evaluate_chunk", stop)
+    monkeypatch.setattr("bearing_sweep.evaluate.evaluate_chunk", stop)
     arguments = ["run", str(tmp_path / "huge.toml"), "-o", str(tmp_path / "huge.nc"),
                  "--workers", "0"]
     assert cli.main(arguments) == 130
@@ -151,12 +151,12 @@ def test_a_long_or_large_run_says_what_it_will_take_unless_quiet(tmp_path, capsy
 def interrupted_run(tmp_path, monkeypatch):
     """The arguments of a run of SMALL (27 points, compressed) into ``r.nc`` in chunks of 9,
     interrupted once two are kept; its parts folder."""
-    import bearing_sweep.compute as compute
+    import bearing_sweep.evaluate as evaluate
 
     (tmp_path / "small.toml").write_text(SMALL)
     arguments = ["run", str(tmp_path / "small.toml"), "-o", str(tmp_path / "r.nc"),
                  "--chunk-size", "9", "--quiet"]
-    original, calls = compute.evaluate_chunk, []
+    original, calls = evaluate.evaluate_chunk, []
 
     def interrupted(grid, start, stop):
         calls.append(start)
@@ -165,7 +165,7 @@ def interrupted_run(tmp_path, monkeypatch):
         return original(grid, start, stop)
 
     with monkeypatch.context() as patched:
-        patched.setattr(compute, "evaluate_chunk", interrupted)
+        patched.setattr(evaluate, "evaluate_chunk", interrupted)
         assert cli.main(arguments + ["--workers", "0"]) == 130
     return arguments, tmp_path / "r.nc.parts"
 
@@ -226,6 +226,6 @@ def test_a_refused_rerun_leaves_the_earlier_runs_parts_as_they_were(tmp_path, ca
     assert capsys.readouterr().err == f"resuming: 2 chunks already computed in {parts}\n"
     whole = tmp_path / "whole.nc"
     run_sweep(spec.parse(SMALL), whole, Executor(workers=0), progress=False)
-    for name, values in bearing_sweep.store.open_result(whole).data_vars.items():
+    for name, values in bearing_sweep.stores.open_result(whole).data_vars.items():
         np.testing.assert_array_equal(
-            bearing_sweep.store.open_result(tmp_path / "r.nc")[name].values, values.values)
+            bearing_sweep.stores.open_result(tmp_path / "r.nc")[name].values, values.values)

@@ -8,8 +8,9 @@ import time
 import pytest
 
 import bearing_sweep.models.registry as registry
-from bearing_sweep import cli, spec, store
-from bearing_sweep.compute import Executor, Interrupts, evaluate_chunk, run_sweep
+from bearing_sweep import cli, spec, stores
+from bearing_sweep.compute import Executor, Interrupts, run_sweep
+from bearing_sweep.evaluate import evaluate_chunk
 from bearing_sweep.grid import Grid
 from bearing_sweep.interrupts import interruption
 
@@ -107,7 +108,7 @@ def test_a_ctrl_c_in_any_form_stops_the_run_and_keeps_the_chunks(tmp_path, capsy
     out, err = capsys.readouterr()
     assert "8 points (8 converged)" in out and "model errors" not in out
     assert err == f"resuming: 2 chunks already computed in {tmp_path / 'k.nc.parts'}\n"
-    assert (store.open_result(output).status == 0).all()
+    assert (stores.open_result(output).status == 0).all()
 
 
 @pytest.mark.parametrize("form", FORMS)

@@ -346,7 +346,7 @@ def test_lives_beyond_iso_281s_life_equation_are_counted_and_kept(tmp_path):
     # status (its load distribution) untouched, and the run's summary counts the two.
     from bearing_sweep import spec
     from bearing_sweep.compute import Executor, run_sweep
-    from bearing_sweep.store import open_result
+    from bearing_sweep.stores import open_result
 
     text = ('[sweep]\nmodel = "crb_radial"\nbearing = "paper000-D"\n'
             '[fixed]\ndynamic_load_rating = "48.4 kN"\n'

@@ -16,7 +16,8 @@ import netCDF4
 import pytest
 
 import bearing_sweep
-from bearing_sweep import cli, parts, store
+from bearing_sweep import cli, stores
+from bearing_sweep.stores import paths
 from test_cli import DEFINITION  # a four-point sweep
 
 
@@ -33,8 +34,8 @@ def no_computing(monkeypatch):
     def computed(*args, **kwargs):
         raise AssertionError("computing started before the output was checked")
 
-    monkeypatch.setattr("bearing_sweep.compute.OutputLock", computed)
-    monkeypatch.setattr("bearing_sweep.compute.evaluate_chunk", computed)
+    monkeypatch.setattr("bearing_sweep.stores.base.OutputLock", computed)
+    monkeypatch.setattr("bearing_sweep.evaluate.evaluate_chunk", computed)
 
 
 def refused(tmp_path, capsys, output, definition=None):
@@ -109,7 +110,7 @@ def test_an_earlier_result_is_replaced(tmp_path, capsys):
     assert cli.main(arguments) == 0
     (tmp_path / "def.toml").write_text(DEFINITION.replace('"4 kN"', '"5 kN"'))
     assert cli.main(arguments) == 0, capsys.readouterr().err
-    assert store.open_result(output).radial_load.values.tolist() == [2000, 5000]
+    assert stores.open_result(output).radial_load.values.tolist() == [2000, 5000]
 
 
 def test_dev_null_is_refused_by_looking_only(monkeypatch):
@@ -124,8 +125,8 @@ def test_dev_null_is_refused_by_looking_only(monkeypatch):
         monkeypatch.setattr(os, name, written)
     monkeypatch.setattr(netCDF4, "Dataset", written)
     monkeypatch.setattr("builtins.open", written)
-    with pytest.raises(parts.UnsafeOutput, match="is a device"):
-        parts.check_output(device)
+    with pytest.raises(paths.UnsafeOutput, match="is a device"):
+        paths.check_output(device)
     after = os.stat(device)
     assert (after.st_ino, after.st_mode, after.st_rdev) == \
         (before.st_ino, before.st_mode, before.st_rdev)
@@ -167,7 +168,7 @@ ODD_NAMES = {".zarr": "is only a suffix; name the store, as result.zarr",
 def test_an_odd_output_name_is_refused(tmp_path, capsys, no_computing, name):
     err = refused(tmp_path, capsys, f"{tmp_path}/{name}")
     assert f"{tmp_path}/{name}: {ODD_NAMES[name]}" in err
-    with pytest.raises(parts.UnsafeOutput, match=re.escape(ODD_NAMES[name])):
+    with pytest.raises(paths.UnsafeOutput, match=re.escape(ODD_NAMES[name])):
         bearing_sweep.run(DEFINITION, output=f"{tmp_path}/{name}", workers=0, progress=False)
 
 
@@ -179,7 +180,7 @@ def test_a_store_is_named_by_its_suffix_in_any_case_with_or_without_a_slash(tmp_
     capsys.readouterr()
     for name in ("upper.ZARR", "slashed.zarr"):
         assert (tmp_path / name / ".zgroup").is_file()
-        assert store.open_result(tmp_path / name).status.shape == (2, 2)
+        assert stores.open_result(tmp_path / name).status.shape == (2, 2)
 
 
 def test_a_file_where_a_store_goes_is_refused(tmp_path, capsys, no_computing):
@@ -287,6 +288,6 @@ def test_an_analysis_or_a_figure_inside_a_store_is_refused(tmp_path, capsys):
         assert cli.main(command) == 2
         err = capsys.readouterr().err
         assert err.count("\n") == 1 and "a .zarr folder is a zarr store" in err, err
-    with pytest.raises(parts.UnsafeOutput, match="is inside"):
+    with pytest.raises(paths.UnsafeOutput, match="is inside"):
         bearing_sweep.analyze(tmp_path / "s.zarr", output=tmp_path / "s.zarr" / "a.zarr")
     assert tree(tmp_path) == before

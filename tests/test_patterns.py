@@ -4,7 +4,7 @@ import pytest
 
 import bearing_sweep.models.registry as registry
 from bearing_sweep.models.registry import Input, Model, Output
-from bearing_sweep import spec, store
+from bearing_sweep import spec, stores
 from bearing_sweep.compute import Executor, run_sweep
 from bearing_sweep.spec import SpecError
 
@@ -39,7 +39,7 @@ def test_fixed_pattern_and_a_pattern_per_label(toy_model, tmp_path):
     """
     sweep = spec.parse(text.replace("    ", ""), "p.toml")
     run_sweep(sweep, tmp_path / "p.nc", Executor(workers=0), progress=False)
-    data = store.open_result(tmp_path / "p.nc")
+    data = stores.open_result(tmp_path / "p.nc")
     np.testing.assert_allclose(data.total.values, [[6, 6], [12, 12]])
     assert data.pattern.dims == ("arrangement", "roller")
     np.testing.assert_allclose(data.pattern.values, [[1, 2, 3], [3, 1, 2]])
@@ -88,7 +88,7 @@ def test_one_value_stands_for_every_roller_where_the_input_allows(tmp_path):
     sweep = spec.parse(text, "def.toml")
     assert sweep.fixed["roller_roundness_amplitude"].si.tolist() == [0.5e-6]
     run_sweep(sweep, tmp_path / "out.nc", Executor(workers=0), progress=False)
-    data = store.open_result(tmp_path / "out.nc")
+    data = stores.open_result(tmp_path / "out.nc")
     assert data.roller_roundness_amplitude.dims == ()
     assert data.roller_roundness_order.dims == ("roller_roundness_order",)
     assert data.roller_roundness_phase.dims == ("rows", "roller")

@@ -19,7 +19,7 @@ import numpy as np
 import pytest
 
 import bearing_sweep.models.registry as registry
-from bearing_sweep import store
+from bearing_sweep import stores
 from bearing_sweep.models.registry import Input, Model, Output
 from bearing_sweep.testing import assert_chunking_invariant, assert_valid_declaration
 
@@ -140,7 +140,7 @@ def test_the_readme_example_sweeps_through_the_cli(site, tmp_path):
     assert "crb_radial" in listed.stdout
     run = run_cli("run", "springs.toml", "--quiet", cwd=work, path=[site])
     assert run.returncode == 0, run.stderr
-    check_springs_result(store.open_result(work / "results" / "springs.nc"))
+    check_springs_result(stores.open_result(work / "results" / "springs.nc"))
 
 
 @pytest.mark.slow
@@ -150,7 +150,7 @@ def test_the_readme_example_sweeps_on_local_workers(site, tmp_path):
     run = run_cli("run", "springs.toml", "--quiet", "--workers", "1", "--chunk-size", "1",
                   cwd=tmp_path, path=[site])
     assert run.returncode == 0, run.stderr
-    check_springs_result(store.open_result(tmp_path / "results" / "springs.nc"))
+    check_springs_result(stores.open_result(tmp_path / "results" / "springs.nc"))
 
 
 @pytest.mark.slow

@@ -9,7 +9,7 @@ import xarray as xr
 
 from bearing_sweep.quicklook import plot
 from bearing_sweep.spec import SpecError
-from bearing_sweep.store import open_result
+from bearing_sweep.stores import open_result
 
 EVERY_MODEL = Path(__file__).resolve().parent / "data" / "every_model"
 ONE_AXIS = """
@@ -360,7 +360,8 @@ def _engine_modules() -> list[str]:
     import bearing_sweep
 
     return sorted(m.name for m in pkgutil.walk_packages(bearing_sweep.__path__, "bearing_sweep.")
-                  if not m.name.endswith("__main__"))  # that one runs the program
+                  if not m.name.endswith("__main__")  # that one runs the program
+                  and not m.name.startswith(("bearing_sweep.models", "bearing_sweep.studies")))
 
 
 #: The package, each module of the engine, and the API's names imported when first asked for.

@@ -16,8 +16,10 @@ from pathlib import Path
 import numpy as np
 import pytest
 
-from bearing_sweep import cli, spec, store
-from bearing_sweep.parts import OutputBusy, OutputLock, Parts, UnreadablePart
+from bearing_sweep import cli, spec, stores
+from bearing_sweep.stores.netcdf import write_netcdf
+from bearing_sweep.stores.durable import OutputBusy, OutputLock
+from bearing_sweep.stores.resume import Parts, UnreadablePart
 from bearing_sweep.compute import Executor, run_sweep
 
 # About 40 chunks of 0.1 s each in one process: long enough to be killed part-way.
@@ -68,7 +70,7 @@ def test_a_killed_run_resumes_where_it_stopped(tmp_path):
     assert not parts.exists()
     whole = cli_run("slow.toml", "-o", "whole.nc", *common, cwd=tmp_path)
     whole.communicate(timeout=300)
-    same_data(store.open_result(tmp_path / "out.nc"), store.open_result(tmp_path / "whole.nc"))
+    same_data(stores.open_result(tmp_path / "out.nc"), stores.open_result(tmp_path / "whole.nc"))
 
 
 @pytest.mark.parametrize("output", ["k.nc", "k.zarr"])
@@ -113,10 +115,10 @@ def test_writing_an_analysis_removes_its_stale_temporaries_too(tmp_path):
     output = tmp_path / "r_analysis.nc"
     stale = tmp_path / ".r_analysis.nc.99999999.tmp"
     stale.write_bytes(b"half an analysis")
-    store.write_netcdf(xr.Dataset({"x": ("t", [1.0, 2.0])}), output)
+    write_netcdf(xr.Dataset({"x": ("t", [1.0, 2.0])}), output)
     assert sorted(p.name for p in tmp_path.iterdir()) == ["r_analysis.nc"]
     with OutputLock(output), pytest.raises(OutputBusy):  # and two writers do not mix
-        store.write_netcdf(xr.Dataset({"x": ("t", [3.0])}), output)
+        write_netcdf(xr.Dataset({"x": ("t", [3.0])}), output)
 
 
 def test_a_changed_definition_discards_old_parts(tmp_path, capsys):
@@ -131,7 +133,7 @@ def test_a_changed_definition_discards_old_parts(tmp_path, capsys):
     assert cli.main(["run", str(definition), "-o", str(output), "--workers", "0"]) == 0
     assert "the definition, model, package or storage changed: discarding 1 finished chunks" in \
         capsys.readouterr().err
-    assert store.open_result(output).status.size == 16
+    assert stores.open_result(output).status.size == 16
 
 
 def test_two_runs_on_one_output_do_not_mix(tmp_path, capsys):
@@ -156,7 +158,7 @@ def test_a_full_disk_leaves_the_earlier_result(tmp_path, capsys, monkeypatch):
     def full(*args, **kwargs):  # the disk fills while the values are being written
         raise OSError(errno.ENOSPC, os.strerror(errno.ENOSPC), str(output))
 
-    monkeypatch.setattr("bearing_sweep.store._regions", full)
+    monkeypatch.setattr("bearing_sweep.stores.blocks.regions", full)
     definition.write_text(SLOW.replace("num = 200", "num = 2"))
     code = cli.main(["run", str(definition), "-o", str(output), "--workers", "0"])
     err = capsys.readouterr().err
@@ -216,13 +218,13 @@ def test_a_disk_full_while_writing_is_one_line_and_loses_nothing(tmp_path, case)
     whole = subprocess.run([sys.executable, "-m", "bearing_sweep", *common, "-o", "whole.nc"],
                            cwd=tmp_path, capture_output=True, text=True, timeout=300)
     assert whole.returncode == 0, whole.stderr
-    same_data(store.open_result(tmp_path / output), store.open_result(tmp_path / "whole.nc"))
+    same_data(stores.open_result(tmp_path / output), stores.open_result(tmp_path / "whole.nc"))
 
 
 def test_a_writer_that_cannot_close_after_a_failure_does_not_hide_it(tmp_path):
     # HDF5 flushes a file as it closes it: on a full disk the close fails too, and used to
     # raise its own error ("Can't decrement id ref count") over the one that said why.
-    from bearing_sweep.store import closed_after
+    from bearing_sweep.stores.durable import closed_after
 
     class Unclosable:
         def close(self):
@@ -271,8 +273,8 @@ def test_a_killed_worker_costs_only_a_retry(tmp_path):
         assert victim not in client.run(os.getpid).values()  # and was replaced
     assert summary.points == reference.points == 40000
     assert summary.status_counts == reference.status_counts
-    same_data(store.open_result(tmp_path / "reference.nc"),
-              store.open_result(tmp_path / "killed.nc"))
+    same_data(stores.open_result(tmp_path / "reference.nc"),
+              stores.open_result(tmp_path / "killed.nc"))
 
 
 def test_an_output_that_cannot_be_a_file_is_one_line(tmp_path, capsys, monkeypatch):
@@ -284,7 +286,7 @@ def test_an_output_that_cannot_be_a_file_is_one_line(tmp_path, capsys, monkeypat
     def computed(*args):
         raise AssertionError("computed before the output was refused")
 
-    monkeypatch.setattr("bearing_sweep.compute.evaluate_chunk", computed)
+    monkeypatch.setattr("bearing_sweep.evaluate.evaluate_chunk", computed)
     code = cli.main(["run", str(definition), "-o", str(occupied), "--workers", "0"])
     err = capsys.readouterr().err
     assert code == 2 and len(err.strip().splitlines()) == 1 and "Traceback" not in err
@@ -301,7 +303,7 @@ def test_a_part_emptied_by_a_power_loss_is_computed_again(tmp_path, capsys, monk
     def power_loss(*args):  # every chunk is computed, the file not yet written
         raise KeyboardInterrupt
 
-    monkeypatch.setattr("bearing_sweep.store.ChunkWriter.finish", power_loss)
+    monkeypatch.setattr("bearing_sweep.stores.netcdf.ChunkWriter.finish", power_loss)
     assert cli.main(arguments) == 130
     monkeypatch.undo()
     kept = sorted((tmp_path / "out.nc.parts").glob("chunk-*.npz"))
@@ -316,7 +318,7 @@ def test_a_part_emptied_by_a_power_loss_is_computed_again(tmp_path, capsys, monk
     assert "resuming: 3 chunks already computed" in err
     whole = tmp_path / "whole.nc"
     assert cli.main(["run", str(definition), "-o", str(whole), "--workers", "0"]) == 0
-    same_data(store.open_result(output), store.open_result(whole))
+    same_data(stores.open_result(output), stores.open_result(whole))
 
 
 def interrupted_parts(tmp_path, monkeypatch, capsys):
@@ -333,7 +335,7 @@ def interrupted_parts(tmp_path, monkeypatch, capsys):
         raise KeyboardInterrupt
 
     with monkeypatch.context() as patched:
-        patched.setattr("bearing_sweep.store.ChunkWriter.finish", interrupted)
+        patched.setattr("bearing_sweep.stores.netcdf.ChunkWriter.finish", interrupted)
         assert cli.main(arguments) == 130
     capsys.readouterr()
     parts = tmp_path / "out.nc.parts"
@@ -381,7 +383,7 @@ def test_a_damaged_manifest_discards_the_parts_with_a_line(tmp_path, monkeypatch
     assert err.count("\n") == 1 and said in err, err
     assert err.endswith(f" in {parts}: discarding the folder and its 4 finished chunks\n")
     assert not parts.exists()
-    same_data(store.open_result(tmp_path / "out.nc"), store.open_result(whole))
+    same_data(stores.open_result(tmp_path / "out.nc"), stores.open_result(whole))
 
 
 def test_files_that_are_no_part_of_the_run_are_removed_with_a_line(tmp_path, monkeypatch,
@@ -403,7 +405,7 @@ def test_files_that_are_no_part_of_the_run_are_removed_with_a_line(tmp_path, mon
                     "chunk-000000000200-000000000300.npz", "chunk-000000000300-000000000400.npz",
                     "manifest.json"]
     assert not parts.exists()
-    same_data(store.open_result(tmp_path / "out.nc"), store.open_result(whole))
+    same_data(stores.open_result(tmp_path / "out.nc"), stores.open_result(whole))
 
 
 def rewritten(path, change):
@@ -472,7 +474,7 @@ def test_a_part_that_is_not_what_its_name_says_is_computed_again(tmp_path, monke
     assert err.endswith(f") in {parts}: computing it again\nresuming: 3 chunks already "
                         f"computed in {parts}\n")
     assert "400 points (400 converged)" in out
-    same_data(store.open_result(tmp_path / "out.nc"), store.open_result(whole))
+    same_data(stores.open_result(tmp_path / "out.nc"), stores.open_result(whole))
 
 
 #: A one-point sweep: its single chunk kept as arrays (a grid without axes has no HDF5 chunks).
@@ -495,7 +497,7 @@ def test_a_part_of_arrays_is_checked_alike(tmp_path, monkeypatch, capsys, change
                  "--quiet"]
     assert cli.main(arguments[:3] + [str(tmp_path / "whole.nc")] + arguments[4:]) == 0
     with monkeypatch.context() as patched:
-        patched.setattr("bearing_sweep.store.ChunkWriter.finish", interrupt_now)
+        patched.setattr("bearing_sweep.stores.netcdf.ChunkWriter.finish", interrupt_now)
         assert cli.main(arguments) == 130
     capsys.readouterr()
     part, = (tmp_path / "one.nc.parts").glob("chunk-*.npz")
@@ -504,7 +506,7 @@ def test_a_part_of_arrays_is_checked_alike(tmp_path, monkeypatch, capsys, change
     err = capsys.readouterr().err
     assert err.startswith(f"a part that does not hold what its name says, {part.name} "
                           f"(") and reason in err and err.count("\n") == 1, err
-    same_data(store.open_result(tmp_path / "one.nc"), store.open_result(tmp_path / "whole.nc"))
+    same_data(stores.open_result(tmp_path / "one.nc"), stores.open_result(tmp_path / "whole.nc"))
 
 
 def interrupt_now(*args):
@@ -618,7 +620,7 @@ def test_two_runs_started_at_once_one_computes_the_other_is_refused(tmp_path):
     assert "crb_radial: 40000 points (40000 converged)" in out
     assert len(refusal.strip().splitlines()) == 1
     assert "another bearing-sweep run is writing this output" in refusal
-    result = store.open_result(tmp_path / "out.nc")
+    result = stores.open_result(tmp_path / "out.nc")
     assert result.status.size == 40000 and int(result.status.max()) == 0
     assert not (tmp_path / "out.nc.parts").exists()
 
@@ -626,7 +628,7 @@ def test_two_runs_started_at_once_one_computes_the_other_is_refused(tmp_path):
 def test_the_command_line_imports_without_fcntl():
     # As on Windows, which has no fcntl module.
     done = subprocess.run([sys.executable, "-c", "import sys; sys.modules['fcntl'] = None; "
-                           "import bearing_sweep.cli, bearing_sweep.parts"], capture_output=True, text=True)
+                           "import bearing_sweep.cli, bearing_sweep.stores.durable"], capture_output=True, text=True)
     assert done.returncode == 0, done.stderr
 
 
@@ -684,12 +686,12 @@ def interrupted_in(monkeypatch, target: str, when=lambda *args: True):
 #: Where a Ctrl-C may come once the result has its name: the folder's fsync that makes the
 #: rename durable, the parts' removal, the cluster's closing, the summary.
 AFTER_THE_RENAME = {
-    "netCDF, the rename's fsync": ("k.nc", "bearing_sweep.parts.fsync_path",
+    "netCDF, the rename's fsync": ("k.nc", "bearing_sweep.stores.durable.fsync_path",
                                    lambda tmp_path: lambda path: Path(path) == tmp_path),
-    "zarr, the rename's fsync": ("k.zarr", "bearing_sweep.zarr_store.fsync_path",
+    "zarr, the rename's fsync": ("k.zarr", "bearing_sweep.stores.zarr.fsync_path",
                                  lambda tmp_path: lambda path: Path(path) == tmp_path),
-    "the parts removed": ("k.nc", "bearing_sweep.parts.Parts.remove", None),
-    "zarr, the parts removed": ("k.zarr", "bearing_sweep.parts.Parts.remove", None),
+    "the parts removed": ("k.nc", "bearing_sweep.stores.resume.Parts.remove", None),
+    "zarr, the parts removed": ("k.zarr", "bearing_sweep.stores.resume.Parts.remove", None),
     "the cluster closed": ("k.nc", "bearing_sweep.compute.Executor.close", None),
     "the summary": ("k.nc", "bearing_sweep.compute.Summary.text", None),
 }
@@ -708,7 +710,7 @@ def test_ctrl_c_once_the_result_is_in_place_says_it_is_complete(tmp_path, capsys
     assert code == 0, err
     assert err == "interrupt ignored: the result was already complete\n"
     assert f"9 points (9 converged)" in out
-    assert store.open_result(tmp_path / output).status.shape == (3, 3)
+    assert stores.open_result(tmp_path / output).status.shape == (3, 3)
     assert sorted(p.name for p in tmp_path.iterdir()) == ["d.toml", output]
     assert signal.getsignal(signal.SIGINT) is signal.default_int_handler
 
@@ -716,7 +718,7 @@ def test_ctrl_c_once_the_result_is_in_place_says_it_is_complete(tmp_path, capsys
 def test_ctrl_c_before_the_rename_still_keeps_the_chunks(tmp_path, capsys, monkeypatch):
     definition = tmp_path / "d.toml"
     definition.write_text(SLOW.replace("num = 200", "num = 3"))
-    interrupted_in(monkeypatch, "bearing_sweep.store.ChunkWriter.finish")
+    interrupted_in(monkeypatch, "bearing_sweep.stores.netcdf.ChunkWriter.finish")
     code = cli.main(["run", str(definition), "-o", str(tmp_path / "k.nc"), "--workers", "0",
                      "--chunk-size", "3", "--quiet"])
     assert code == 130
@@ -729,7 +731,7 @@ def test_ctrl_c_before_the_rename_still_keeps_the_chunks(tmp_path, capsys, monke
 def test_the_api_too_finishes_a_run_whose_result_is_in_place(tmp_path, capsys, monkeypatch):
     import bearing_sweep
 
-    interrupted_in(monkeypatch, "bearing_sweep.parts.Parts.remove")
+    interrupted_in(monkeypatch, "bearing_sweep.stores.resume.Parts.remove")
     with bearing_sweep.run(SLOW.replace("num = 200", "num = 3"), output=tmp_path / "k.nc",
                            workers=0) as data:
         assert data.status.shape == (3, 3)
@@ -760,8 +762,8 @@ def test_parts_of_another_package_version_are_discarded(tmp_path, capsys, monkey
     def interrupted(*args):  # every chunk computed, the file not yet written
         raise KeyboardInterrupt
 
-    monkeypatch.setattr("bearing_sweep.store.ChunkWriter.finish", interrupted)
-    monkeypatch.setattr("bearing_sweep.store.package_version", lambda: "0.0.1")
+    monkeypatch.setattr("bearing_sweep.stores.netcdf.ChunkWriter.finish", interrupted)
+    monkeypatch.setattr("bearing_sweep.stores.structure.package_version", lambda: "0.0.1")
     assert cli.main(arguments) == 130
     monkeypatch.undo()  # the package is upgraded before the run is resumed
     capsys.readouterr()
@@ -791,7 +793,7 @@ def test_parts_of_other_input_values_are_not_resumed(tmp_path):
 def test_an_analysis_store_left_half_written_is_removed_by_the_next_writer(tmp_path):
     import xarray as xr
 
-    from bearing_sweep import zarr_store
+    from bearing_sweep.stores import zarr as zarr_store
 
     output = tmp_path / "r_analysis.zarr"
     stale = tmp_path / ".r_analysis.zarr.99999999.tmp"
@@ -827,4 +829,4 @@ def test_a_sigterm_stops_the_run_as_ctrl_c_does_and_it_resumes(tmp_path, workers
     _, err = second.communicate(timeout=300)
     assert second.returncode == 0, err
     assert re.search(rf"resuming: {kept} chunks? already computed", err)
-    assert store.open_result(tmp_path / "out.nc").status.size == 40000
+    assert stores.open_result(tmp_path / "out.nc").status.size == 40000

@@ -5,8 +5,11 @@ import xarray as xr
 
 import bearing_sweep.models.registry as registry
 from bearing_sweep.models.registry import MODEL_ERROR
-from bearing_sweep import spec, store
-from bearing_sweep.compute import CHUNKS_IN_FLIGHT, Executor, Summary, run_sweep
+from bearing_sweep import spec, stores
+from bearing_sweep.stores import structure
+from bearing_sweep.stores.netcdf import write_netcdf
+from bearing_sweep.compute import Executor, Summary, run_sweep
+from bearing_sweep.executor import CHUNKS_IN_FLIGHT
 from bearing_sweep.grid import Grid
 
 TEXT = """
@@ -31,7 +34,7 @@ def compute(tmp_path, name, executor=None, chunk_size=None):
     path = tmp_path / f"{name}.nc"
     summary = run_sweep(spec.parse(TEXT, "inv.toml"), path, executor or Executor(workers=0),
                         chunk_size, progress=False)
-    return summary, store.open_result(path)
+    return summary, stores.open_result(path)
 
 
 def assert_same_numbers(a: xr.Dataset, b: xr.Dataset):
@@ -82,8 +85,8 @@ def test_netcdf_round_trip_keeps_values_and_attributes(tmp_path):
     assert data.speed.attrs["units"] == "rpm" and float(data.speed) == 6000
     assert "speed" not in data.coords  # a fixed input: kept, but not in every plot's title
     again = tmp_path / "again.nc"
-    store.write_netcdf(data, again)
-    xr.testing.assert_identical(store.open_result(again), data)
+    write_netcdf(data, again)
+    xr.testing.assert_identical(stores.open_result(again), data)
 
 
 def test_atomic_write_leaves_the_previous_file_intact_on_failure(tmp_path, monkeypatch):
@@ -97,7 +100,7 @@ def test_atomic_write_leaves_the_previous_file_intact_on_failure(tmp_path, monke
 
     monkeypatch.setattr(xr.Dataset, "to_netcdf", broken)
     with pytest.raises(OSError):
-        store.write_netcdf(data, path)
+        write_netcdf(data, path)
     assert path.read_bytes() == before
     assert [p.name for p in tmp_path.iterdir()] == ["result.nc"]
 
@@ -222,7 +225,7 @@ def test_writing_a_result_closes_its_file_and_leaves_the_others(tmp_path):
     # interface, not by emptying that cache under the feet of whoever else uses it.
     from xarray.backends.file_manager import FILE_CACHE
 
-    store.write_netcdf(xr.Dataset({"x": ("i", np.arange(3.0))}), tmp_path / "mine.nc")
+    write_netcdf(xr.Dataset({"x": ("i", np.arange(3.0))}), tmp_path / "mine.nc")
     mine = xr.open_dataset(tmp_path / "mine.nc")
     mine.x.values  # read: xarray holds the file open in its cache
     cached = dict(FILE_CACHE)
@@ -236,19 +239,19 @@ def test_writing_a_result_closes_its_file_and_leaves_the_others(tmp_path):
 
 def test_each_chunk_reports_the_versions_it_was_computed_with():
     from bearing_sweep.grid import Grid
-    from bearing_sweep.compute import evaluate_chunk
+    from bearing_sweep.evaluate import evaluate_chunk
 
     grid = Grid.from_sweep(spec.parse(TEXT))
     result = evaluate_chunk(grid, 0, 5)
-    assert result["versions"] == {"package": store.package_version(),
+    assert result["versions"] == {"package": structure.package_version(),
                                   "model": registry.get_model("crb_radial").version}
 
 
 def test_chunks_of_another_version_are_refused_and_the_others_kept(tmp_path, capsys,
                                                                   monkeypatch):
-    from bearing_sweep import cli, compute
+    from bearing_sweep import cli, evaluate
 
-    original = compute.evaluate_chunk
+    original = evaluate.evaluate_chunk
 
     def elsewhere(grid, start, stop):  # as a worker with another installation would answer
         result = original(grid, start, stop)
@@ -256,7 +259,7 @@ def test_chunks_of_another_version_are_refused_and_the_others_kept(tmp_path, cap
             result["versions"] = dict(result["versions"], package="0.0.1")
         return result
 
-    monkeypatch.setattr(compute, "evaluate_chunk", elsewhere)
+    monkeypatch.setattr(evaluate, "evaluate_chunk", elsewhere)
     definition = tmp_path / "inv.toml"
     definition.write_text(TEXT)
     output = tmp_path / "out.nc"
@@ -265,7 +268,7 @@ def test_chunks_of_another_version_are_refused_and_the_others_kept(tmp_path, cap
     err = capsys.readouterr().err
     assert code == 1 and len(err.strip().splitlines()) == 1, err
     assert "runs bearing-sweep 0.0.1 (model version" in err
-    assert f"where this run has bearing-sweep {store.package_version()} (model version" in err
+    assert f"where this run has bearing-sweep {structure.package_version()} (model version" in err
     assert "2 chunks computed so far are kept" in err
     assert not output.exists()
     assert len(list((tmp_path / "out.nc.parts").glob("chunk-*.npz"))) == 2
@@ -275,11 +278,11 @@ def test_each_chunk_is_written_into_the_file_before_the_next_is_computed(tmp_pat
                                                                         monkeypatch):
     # Writing while the others compute keeps the file's assembly out of the sweep's end: the
     # file is complete soon after its last chunk.
-    import bearing_sweep.compute as compute_module
-    from bearing_sweep.hdf5_chunks import DirectWriter
+    import bearing_sweep.evaluate as evaluate_module
+    from bearing_sweep.stores.hdf5_chunks import DirectWriter
 
     events = []
-    evaluate, write = compute_module.evaluate_chunk, DirectWriter.write
+    evaluate, write = evaluate_module.evaluate_chunk, DirectWriter.write
 
     def evaluated(grid, start, stop):
         events.append(("computed", start))
@@ -289,7 +292,7 @@ def test_each_chunk_is_written_into_the_file_before_the_next_is_computed(tmp_pat
         events.append(("written", start))
         return write(self, start, stop, part)
 
-    monkeypatch.setattr(compute_module, "evaluate_chunk", evaluated)
+    monkeypatch.setattr(evaluate_module, "evaluate_chunk", evaluated)
     monkeypatch.setattr(DirectWriter, "write", written)
     summary, data = compute(tmp_path, "streamed", chunk_size=36)
     starts = range(0, 108, 36)

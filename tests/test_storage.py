@@ -10,7 +10,8 @@ import xarray as xr
 from jsonschema import Draft7Validator
 
 import bearing_sweep.models.registry as registry
-from bearing_sweep import api, cli, spec, store
+from bearing_sweep import api, cli, spec, stores
+from bearing_sweep.stores.netcdf import write_netcdf
 from bearing_sweep.compute import Executor, run_sweep
 from bearing_sweep.schema import schema
 from bearing_sweep.storage import INTEGER_FILL, integral_values
@@ -48,7 +49,7 @@ def test_every_compression_reads_back_bit_for_bit(tmp_path):
     in_memory = run_sweep(spec.parse(TEXT), None, Executor(workers=0), progress=False).dataset
     for name, table in (("default", ""), ("zlib9", 'compression = "zlib:9"\nshuffle = true'),
                         ("zstd", 'compression = "zstd:1"')):
-        found = store.open_result(written(tmp_path, "[output]\n" + table, name))
+        found = stores.open_result(written(tmp_path, "[output]\n" + table, name))
         for output, variable in in_memory.data_vars.items():
             assert found[output].dtype == variable.dtype, output
             np.testing.assert_array_equal(found[output].values, variable.values, err_msg=output)
@@ -57,16 +58,16 @@ def test_every_compression_reads_back_bit_for_bit(tmp_path):
     # the default: zlib at level 1, no shuffle (benchmarks/output_encoding.py)
     default, _ = filters(tmp_path / "default.nc", "roller_load")
     assert default["zlib"] and default["complevel"] == 1 and not default["shuffle"]
-    assert store.open_result(tmp_path / "default.nc").attrs["output_encoding"] == \
+    assert stores.open_result(tmp_path / "default.nc").attrs["output_encoding"] == \
         "float64, zlib level 1"
 
 
 def test_float32_is_stored_on_request_and_said_so(tmp_path):
-    double = store.open_result(written(tmp_path, name="double"))
+    double = stores.open_result(written(tmp_path, name="double"))
     path = written(tmp_path, '[output]\nencoding = "float32"\ncompression = "none"\n')
     stored, dtype = filters(path, "radial_stiffness")
     assert dtype == np.float32 and not stored["zlib"]
-    single = store.open_result(path)
+    single = stores.open_result(path)
     assert "stored as float32" in single.radial_stiffness.attrs["comment"]
     assert single.attrs["output_encoding"] == "float32, uncompressed"
     # numpy's own rounding of the float64 values: what netCDF stores
@@ -88,7 +89,7 @@ def test_a_value_beyond_float32_is_stored_infinite_without_a_warning(tmp_path, o
         warnings.simplefilter("always")
         run_sweep(sweep, tmp_path / output, Executor(workers=0), progress=False)
     assert [str(w.message) for w in shown] == []
-    found = store.open_result(tmp_path / output).max_pressure.values  # p0 ~ load^(1/3)
+    found = stores.open_result(tmp_path / output).max_pressure.values  # p0 ~ load^(1/3)
     assert found[-1] == np.inf and (output == "one.nc" or np.isfinite(found[0]))
 
 
@@ -102,7 +103,7 @@ def test_integral_outputs_are_integers_with_a_fill_value_where_a_point_failed(
         raw = rollers[:]  # radial_load, clearance, arrangement (uniform, paper)
         assert (raw[..., 1] == INTEGER_FILL).all() and (raw[..., 0] > 0).all()
         assert data["status"].dtype == np.int8
-    found = store.open_result(path)
+    found = stores.open_result(path)
     assert found.loaded_rollers.sel(arrangement="paper").isnull().all()
     assert "_FillValue" in found.loaded_rollers.attrs["comment"]
 
@@ -184,15 +185,15 @@ def test_an_interrupted_run_stored_otherwise_computes_its_chunks_again(tmp_path,
     def interrupted(*args):  # every chunk computed, the file not yet written
         raise KeyboardInterrupt
 
-    monkeypatch.setattr("bearing_sweep.store.ChunkWriter.finish", interrupted)
+    monkeypatch.setattr("bearing_sweep.stores.netcdf.ChunkWriter.finish", interrupted)
     assert cli.main(arguments) == 130
     monkeypatch.undo()
     capsys.readouterr()
     assert cli.main(arguments + ["--encoding", "float32"]) == 0
     assert "storage changed: discarding 2 finished chunks" in capsys.readouterr().err
     assert filters(output, "roller_load")[1] == np.float32
-    double = store.open_result(written(tmp_path, name="double"))
-    np.testing.assert_array_equal(store.open_result(output).roller_load.values,
+    double = stores.open_result(written(tmp_path, name="double"))
+    np.testing.assert_array_equal(stores.open_result(output).roller_load.values,
                                   double.roller_load.values.astype(np.float32))
 
 
@@ -257,9 +258,9 @@ def direct_sweep(case: str):
 
 
 def netcdf4_written(tmp_path, sweep):
-    """The sweep's dataset in memory (``store.gather``), written by xarray and netCDF4."""
+    """The sweep's dataset in memory (``stores.memory.gather``), written by xarray and netCDF4."""
     data = run_sweep(sweep, None, Executor(workers=0), progress=False).dataset
-    return store.write_netcdf(data, tmp_path / "netcdf4.nc")
+    return write_netcdf(data, tmp_path / "netcdf4.nc")
 
 
 def assert_same_file(path, reference, block):
@@ -322,7 +323,7 @@ def interrupted_run(tmp_path, monkeypatch, case: str, *options):
     def interrupted(*args):
         raise KeyboardInterrupt
 
-    monkeypatch.setattr("bearing_sweep.store.ChunkWriter.finish", interrupted)
+    monkeypatch.setattr("bearing_sweep.stores.netcdf.ChunkWriter.finish", interrupted)
     assert cli.main(arguments + list(options)) == 130
     monkeypatch.undo()
     return definition, output, arguments, block
@@ -340,7 +341,7 @@ def test_an_interrupted_run_writes_its_encoded_chunks_on_resuming(tmp_path, caps
     def computed(*args):
         raise AssertionError("a finished chunk computed again")
 
-    monkeypatch.setattr("bearing_sweep.compute.evaluate_chunk", computed)
+    monkeypatch.setattr("bearing_sweep.evaluate.evaluate_chunk", computed)
     assert cli.main(arguments) == 0
     assert "resuming: 3 chunks already computed" in capsys.readouterr().err
     monkeypatch.undo()
@@ -348,9 +349,9 @@ def test_an_interrupted_run_writes_its_encoded_chunks_on_resuming(tmp_path, caps
 
 
 def test_a_chunk_leaves_its_worker_compressed_as_the_file_stores_it(tmp_path):
-    from bearing_sweep.compute import evaluate_chunk, evaluate_into, versions
+    from bearing_sweep.evaluate import evaluate_chunk, evaluate_into, versions
     from bearing_sweep.grid import Grid
-    from bearing_sweep.hdf5_chunks import ChunkEncoder, layouts
+    from bearing_sweep.stores.hdf5_chunks import ChunkEncoder, layouts
 
     sweep, size, block = direct_sweep("1 axis, edge")
     run_sweep(sweep, tmp_path / "direct.nc", Executor(workers=0), chunk_size=size,

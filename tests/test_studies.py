@@ -12,7 +12,7 @@ import bearing_sweep
 from bearing_sweep import units
 from bearing_sweep.figure_checks import figure_problems
 from bearing_sweep.plotting import at, conditions, in_unit
-from bearing_sweep.store import open_result
+from bearing_sweep.stores import open_result
 from bearing_sweep.study import find_studies
 
 STUDIES = Path(__file__).resolve().parents[1] / "studies"

@@ -7,7 +7,7 @@ import sys
 import numpy as np
 
 from bearing_sweep import spec
-from bearing_sweep.compute import evaluate_chunk
+from bearing_sweep.evaluate import evaluate_chunk
 from bearing_sweep.grid import Grid
 from bearing_sweep.models import tapered
 from bearing_sweep.models.kernels import Kernels

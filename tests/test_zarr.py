@@ -11,12 +11,12 @@ import xarray as xr
 import zarr
 
 import bearing_sweep
-from bearing_sweep import cli, spec, store
+from bearing_sweep import cli, spec, stores
 from bearing_sweep.compute import Executor, WorkerMismatch, run_sweep
 from bearing_sweep.dependence import InconsistentOutput
 from bearing_sweep.grid import Grid
-from bearing_sweep.parts import is_zarr
-from bearing_sweep.store import _regions
+from bearing_sweep.stores.paths import is_zarr
+from bearing_sweep.stores.blocks import regions
 from bearing_sweep.grid import block_chunks, block_shape
 from test_conventions import assert_cf_labelled
 from test_dependence import GRID as TOY_GRID, toy  # noqa: F401  (a fixture)
@@ -47,7 +47,7 @@ def without_provenance(dataset):
 
 def assert_same_result(netcdf, zarr_store):
     """Identical data, dtypes, coordinates and attributes, provenance aside."""
-    a, b = store.open_result(netcdf), store.open_result(zarr_store)
+    a, b = stores.open_result(netcdf), stores.open_result(zarr_store)
     xr.testing.assert_identical(without_provenance(a), without_provenance(b))
     for name, variable in a.variables.items():
         assert variable.dtype == b[name].dtype, name
@@ -63,7 +63,7 @@ def test_each_chunk_is_one_whole_zarr_chunk(shape, size):
     assert all(a[1] == b[0] for a, b in zip(chunks, chunks[1:]))  # in order, no gap
     assert max(stop - start for start, stop in chunks) <= size
     for start, stop in chunks:
-        (index, low, high), = _regions(shape, start, stop)  # one rectangle
+        (index, low, high), = regions(shape, start, stop)  # one rectangle
         assert (low, high) == (start, stop)
         # ... that is one block of the grid of zarr chunks
         assert all(s.start % b == 0 and s.stop - s.start == min(b, n - s.start)
@@ -105,9 +105,9 @@ def test_the_output_table_stores_alike_in_both_formats(tmp_path):
 def interrupted_store(monkeypatch, sweep, output, computed: list):
     """Run ``sweep`` into the store ``output`` in chunks of 3 points, interrupted when 3 are
     computed (their sizes in ``computed``); its parts folder."""
-    import bearing_sweep.compute as compute
+    import bearing_sweep.evaluate as evaluate
 
-    original = compute.evaluate_chunk
+    original = evaluate.evaluate_chunk
 
     def interrupted(grid, start, stop):
         if len(computed) == 3:
@@ -116,7 +116,7 @@ def interrupted_store(monkeypatch, sweep, output, computed: list):
         return original(grid, start, stop)
 
     with monkeypatch.context() as patched, pytest.raises(KeyboardInterrupt):
-        patched.setattr(compute, "evaluate_chunk", interrupted)
+        patched.setattr(evaluate, "evaluate_chunk", interrupted)
         run_sweep(sweep, output, Executor(workers=0), chunk_size=3, progress=False)
     return Path(f"{output}.parts")
 
@@ -124,9 +124,9 @@ def interrupted_store(monkeypatch, sweep, output, computed: list):
 def test_an_interrupted_zarr_run_resumes_with_only_what_is_missing(tmp_path, monkeypatch):
     sweep = spec.parse(DEFINITION, "three_axes.toml")
     output = tmp_path / "out.zarr"
-    import bearing_sweep.compute as compute
+    import bearing_sweep.evaluate as evaluate
 
-    original = compute.evaluate_chunk
+    original = evaluate.evaluate_chunk
     computed = []
     parts = interrupted_store(monkeypatch, sweep, output, computed)
     assert not output.exists() and (parts / "store.zarr").is_dir()
@@ -136,7 +136,7 @@ def test_an_interrupted_zarr_run_resumes_with_only_what_is_missing(tmp_path, mon
     damaged.write_bytes(damaged.read_bytes()[:40])  # cut short by a power loss: computed again
     computed.clear()
     messages = []
-    monkeypatch.setattr(compute, "evaluate_chunk", lambda grid, start, stop: (
+    monkeypatch.setattr(evaluate, "evaluate_chunk", lambda grid, start, stop: (
         computed.append(stop - start), original(grid, start, stop))[1])
     summary = run_sweep(sweep, output, Executor(workers=0), chunk_size=99, progress=False,
                         log=messages.append)  # the interrupted run's chunking is kept
@@ -208,14 +208,14 @@ def test_marks_without_their_store_are_computed_again(tmp_path, monkeypatch):
 
 def test_values_of_another_version_are_never_written(tmp_path, monkeypatch):
     sweep = spec.parse(DEFINITION, "three_axes.toml")
-    import bearing_sweep.compute as compute
+    import bearing_sweep.evaluate as evaluate
 
-    original = compute.evaluate_chunk
+    original = evaluate.evaluate_chunk
 
     def elsewhere(grid, start, stop):  # a worker with another installation
         return original(grid, start, stop) | {"versions": {"package": "0.0.1", "model": "1"}}
 
-    monkeypatch.setattr(compute, "evaluate_chunk", elsewhere)
+    monkeypatch.setattr(evaluate, "evaluate_chunk", elsewhere)
     with pytest.raises(WorkerMismatch, match="runs bearing-sweep 0.0.1"):
         run_sweep(sweep, tmp_path / "out.zarr", Executor(workers=0), progress=False)
     written = tmp_path / "out.zarr.parts" / "store.zarr"
@@ -232,7 +232,7 @@ def test_the_command_and_the_api_write_a_store(tmp_path, capsys):
     assert cli.main(["run", str(definition), "-o", str(output), "--workers", "0",
                      "--quiet"]) == 0
     assert f"-> {output}" in capsys.readouterr().out
-    by_command = store.open_result(output)
+    by_command = stores.open_result(output)
     assert by_command.status.shape == (3, 4, 2)
     with bearing_sweep.run(definition, output=tmp_path / "api.zarr", workers=0,
                            progress=False) as by_api:  # returned opened from the store
@@ -251,8 +251,8 @@ def test_a_store_open_in_a_reader_is_never_replaced_under_it(tmp_path, capsys, m
     output = tmp_path / "r.zarr"
     run_sweep(spec.load(definition), output, Executor(workers=0), progress=False)
     reader = xr.open_dataset(output, engine="zarr")
-    expected = store.open_result(output)
-    monkeypatch.setattr("bearing_sweep.compute.evaluate_chunk", None)  # refused before it
+    expected = stores.open_result(output)
+    monkeypatch.setattr("bearing_sweep.evaluate.evaluate_chunk", None)  # refused before it
     definition.write_text(DEFINITION.replace('stop = "6 kN"', 'stop = "9 kN"'))
     err = refused(tmp_path, capsys, output, definition)
     assert "holds an earlier zarr store of bearing-sweep, which is never replaced" in err
@@ -302,7 +302,7 @@ def test_analyze_and_plot_take_a_store(tmp_path, capsys):
     assert cli.main(["run", str(definition), "-o", str(result), "--workers", "0",
                      "--quiet"]) == 0
     assert cli.main(["analyze", str(result)]) == 0
-    assert store.open_result(tmp_path / "sampled_analysis.nc").attrs["sample_size"] == 4
+    assert stores.open_result(tmp_path / "sampled_analysis.nc").attrs["sample_size"] == 4
     assert cli.main(["plot", str(result), "radial_stiffness"]) == 0
     assert (tmp_path / "sampled.png").stat().st_size > 0
 

@@ -10,7 +10,7 @@ import zarr
 from bearing_sweep import spec
 from bearing_sweep.compute import Executor, run_sweep
 from bearing_sweep.grid import Grid, block_shape
-from bearing_sweep.zarr_store import ZARR_FORMAT
+from bearing_sweep.stores.zarr import ZARR_FORMAT
 from test_conventions import DEFINITIONS, MODELS, STRUCTURES
 
 #: Points per chunk: several zarr chunks along the grid's axes.

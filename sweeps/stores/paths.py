@@ -13,7 +13,7 @@ import os
 import stat
 from pathlib import Path
 
-from .spec import SpecError
+from ..spec import SpecError
 
 
 class UnsafeOutput(SpecError):

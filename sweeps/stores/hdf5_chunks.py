@@ -14,7 +14,7 @@ whole sweep while the workers wait for it.
 How each variable is stored is read from the file netCDF4 has just created (its type, byte
 order, chunk shape, filters and fill value: :func:`layouts`), so that the bytes are what HDF5
 itself would have written. netCDF4 and h5py each bundle their own HDF5 library: the file is
-never open in both at once (:func:`store.result_file`). A grid of one point is written through
+never open in both at once (:func:`.netcdf.result_file`). A grid of one point is written through
 netCDF4 (its variables are not chunked).
 
 An interrupted run keeps each chunk as the worker returned it (:class:`EncodedParts`); the
@@ -31,11 +31,12 @@ from dataclasses import dataclass
 
 import numpy as np
 
-from .dependence import reduced_outputs, split_reduced, stored_dims
-from .grid import Grid, block_shape
-from .interrupts import interruptions_raised
-from .parts import Parts, counts_damage, load_counts, saved_counts, status_damage
-from .store import STATUS_CODES, _regions, closed_after, stored_blocks, writing
+from ..dependence import reduced_outputs, split_reduced, stored_dims
+from ..grid import Grid, block_shape
+from ..interrupts import interruptions_raised
+from .blocks import STATUS_CODES, regions, stored_blocks
+from .durable import closed_after, writing
+from .resume import Parts, counts_damage, load_counts, saved_counts, status_damage
 
 #: The compressions whose HDF5 filters :func:`encoded` applies, as ``storage.Storage`` and
 #: netCDF4's ``Variable.filters()`` name them (HDF5's deflate, the zstd plugin, or none).
@@ -168,7 +169,7 @@ def reopened(open_file):
 class DirectWriter:
     """Writes encoded chunks (:meth:`ChunkEncoder.write`) into the file at ``path``, opened
     with h5py; the values of the outputs stored on fewer dimensions and the model's errors go
-    to ``writer`` (the ``store.ChunkWriter`` that wrote the file's structure), for its
+    to ``writer`` (the ``netcdf.ChunkWriter`` that wrote the file's structure), for its
     ``finish``."""
 
     def __init__(self, path, encoder: ChunkEncoder, writer):
@@ -198,8 +199,8 @@ class DirectWriter:
 
 class EncodedParts(Parts):
     """The parts of an interrupted netCDF run whose chunks are encoded by the workers: each
-    chunk's :meth:`ChunkEncoder.write` result and counts (``store.chunk_tally``), as the
-    driver writes them. The interface of :class:`parts.Parts`; what a part says of itself is
+    chunk's :meth:`ChunkEncoder.write` result and counts (``blocks.chunk_tally``), as the
+    driver writes them. The interface of :class:`.resume.Parts`; what a part says of itself is
     checked against its grid and storage (:meth:`damage`)."""
 
     def arrays(self, result: dict) -> dict:
@@ -217,7 +218,7 @@ class EncodedParts(Parts):
         return {"chunks": chunks, "tally": tally, "firsts": firsts}
 
     def damage(self, data, start: int, stop: int) -> str | None:
-        """:func:`parts.counts_damage`, then: an HDF5 chunk for each variable the file
+        """:func:`.resume.counts_damage`, then: an HDF5 chunk for each variable the file
         stores per point, each at the block of points ``start..stop-1``, and statuses that
         are the counts' (the status chunk decoded: one byte a point)."""
         reason = counts_damage(data, self.grid, start, stop)
@@ -229,7 +230,7 @@ class EncodedParts(Parts):
         found = sorted(key[len("chunk_"):] for key in data.files if key.startswith("chunk_"))
         if found != expected:
             return f"chunks of {found}, not of {expected}"
-        (index, _, _), = _regions(self.grid.shape, start, stop)
+        (index, _, _), = regions(self.grid.shape, start, stop)
         for name in found:
             offset = tuple(data[f"offset_{name}"].tolist())
             if offset[:len(index)] != tuple(s.start for s in index) or any(offset[len(index):]):

@@ -1,52 +1,35 @@
-"""Finished chunks kept on disk beside a sweep's output, so that an interrupted sweep resumes.
+"""Resume state: the finished chunks kept on disk beside a sweep's output, so that an
+interrupted sweep resumes.
 
 ``<output>.parts/`` holds a manifest (what the parts belong to: the definition's sha256, the
 model's and the package's versions, the grid's size, the chunk size and what the parts hold:
-a netCDF file's encoded chunks, ``hdf5_chunks``, for one storage) and one ``.npz`` file per
+a netCDF file's encoded chunks, :mod:`hdf5_chunks`, for one storage) and one ``.npz`` file per
 finished chunk, each written atomically and flushed to the disk before it is renamed into
-place (a zarr output keeps its chunks' values in its store instead: ``zarr_store``). Parts of
+place (a zarr output keeps its chunks' values in its store instead: :mod:`.zarr`). Parts of
 another definition, model, package version or storage are discarded, with a message, and so
 is a folder whose manifest is not one this program writes; a part that cannot be read (a power
 loss before it reached the disk) or that does not hold what its name says (each records its
 range; :meth:`Parts.damage`) is computed again, and a file in the folder that is no part of
 the run is removed, with a message. Nothing changes in the folder before :meth:`Parts.begin`.
-A lock on ``.<output>.lock`` keeps two runs from writing the same output; the run that holds it
-removes the temporary files that a killed run left (:func:`remove_stale_temporaries`).
-Which output paths may be written is :mod:`output_paths`' to say.
 """
 from __future__ import annotations
 
-import errno
 import json
-import os
 import re
 import shutil
-import tempfile
 import zipfile
-from contextlib import contextmanager
 from pathlib import Path
 
-import filelock
 import numpy as np
 
-from .models.registry import known_status
-# Output paths' checks, here for who imports them from this module.
-from .output_paths import (PARTS_SUFFIX, ZARR_SUFFIX, UnsafeOutput,  # noqa: F401
-                           check_output, check_outside_results, check_parts_folder,
-                           argument_text, is_zarr, path_argument)
-
-
-class OutputBusy(OSError):
-    """Another run holds the output; the message is for the user."""
+from ..models.registry import known_status
+from .blocks import STATUS_CODES
+from .durable import TEMPORARY, write_durably
+from .paths import PARTS_SUFFIX, UnsafeOutput
 
 
 class UnreadablePart(OSError):
     """A part file that cannot be read; the message is for the user."""
-
-
-#: The errors of a file that cannot be written on (a full disk or quota, a file larger than
-#: the process may write, a disk failing or read-only).
-WRITING_ERRORS = (errno.ENOSPC, errno.EFBIG, errno.EDQUOT, errno.EIO, errno.EROFS)
 
 
 class Parts:
@@ -109,7 +92,7 @@ class Parts:
         """A folder without a manifest holds only what a run writes (its manifest is written
         first, durably): anything else is someone's, and refused rather than removed."""
         for entry in sorted(self.folder.iterdir()):
-            if not (entry.name in self.own_entries or _TEMPORARY.fullmatch(entry.name)
+            if not (entry.name in self.own_entries or TEMPORARY.fullmatch(entry.name)
                     or self.bounds(entry.name)):
                 raise UnsafeOutput(f"{self.folder}: holds {entry.name} and no manifest.json: "
                                    "not the folder of an interrupted run's parts; refusing to "
@@ -127,7 +110,7 @@ class Parts:
                 continue
             bounds = self.bounds(entry.name)
             if bounds is None or (chunks is not None and bounds not in chunks):
-                kind = "temporary" if _TEMPORARY.fullmatch(entry.name) else "stray"
+                kind = "temporary" if TEMPORARY.fullmatch(entry.name) else "stray"
                 self.unusable[kind].append((entry, None))
                 continue
             found = self.unusable_part(entry, *bounds)
@@ -273,119 +256,6 @@ class Parts:
         shutil.rmtree(self.folder, ignore_errors=True)
 
 
-class HeldChunks:
-    """Finished chunks held in memory, for a sweep returned without a file: the interface of
-    :class:`Parts`, with nothing to resume."""
-
-    folder = None
-
-    def __init__(self):
-        self.chunks = {}
-
-    def open(self, chunk_size: int, fresh: bool, chunks_of=None) -> int:
-        return chunk_size
-
-    def begin(self, log):
-        pass
-
-    def finished(self) -> set:
-        return set(self.chunks)
-
-    def save(self, start: int, stop: int, result: dict):
-        self.chunks[start, stop] = result
-
-    def load(self, start: int, stop: int) -> dict:
-        return self.chunks[start, stop]
-
-    def remove(self):
-        self.chunks.clear()
-
-
-class OutputLock:
-    """An exclusive lock on an output path, released when the process ends, however it ends.
-
-    The lock file is removed while it is still locked, never after: a run that opened it
-    meanwhile then finds, once it gets the lock, that the file has no name any more (filelock
-    checks it) and is refused, instead of holding the lock of a file that no other run sees.
-    """
-
-    def __init__(self, output):
-        self.output = Path(output)
-        self.path = self.output.with_name(f".{self.output.name}.lock")
-        self.lock = filelock.FileLock(self.path, timeout=0)
-
-    def __enter__(self):
-        """Take the lock; :class:`OutputBusy` if another run holds it, and a lock file that
-        cannot be made (a read-only folder, a filesystem that takes no files: /proc) is one
-        of :meth:`_not_made`."""
-        try:
-            self.path.parent.mkdir(parents=True, exist_ok=True)
-        except OSError as error:
-            raise self._not_made(error, f"its folder {self.path.parent} cannot be made") \
-                from None
-        for _ in range(3):  # again if the holder let it go while it was looked at
-            try:
-                self.lock.acquire()
-            except filelock.Timeout:  # said also where the file cannot be made: look
-                failure = _creation_failure(self.path)
-                if failure is None:
-                    raise OutputBusy(f"{self.output}: another bearing-sweep run is writing this "
-                                     "output; wait for it to finish or choose another -o") \
-                        from None
-            except OSError as error:
-                failure = error
-            else:
-                break
-            if failure is not False:
-                raise self._not_made(failure, f"its lock file {self.path.name} cannot be "
-                                              f"made in {self.path.parent}") from None
-        else:
-            raise OutputBusy(f"{self.output}: another bearing-sweep run keeps taking and "
-                             "leaving this output's lock; wait for it to finish or choose "
-                             "another -o")
-        remove_stale_temporaries(self.output)
-        return self
-
-    def _not_made(self, error: OSError, what: str) -> OSError:
-        """The error of a lock that cannot be made (``what``, for ``error``): a full disk's
-        is an ``OSError`` (a failure of the machine), any other an :class:`UnsafeOutput` (an
-        output where nothing can be written)."""
-        reason = error.strerror or str(error) or type(error).__name__
-        if error.errno in WRITING_ERRORS and error.errno != errno.EROFS:
-            return OSError(error.errno, f"{what}: {reason}", str(self.output))
-        return UnsafeOutput(f"{self.output}: cannot be written: {what} ({reason}); choose "
-                            "another output")
-
-    def __exit__(self, *exc):
-        try:
-            self.path.unlink(missing_ok=True)
-        except OSError:  # Windows cannot remove an open file: filelock removes it on release
-            pass
-        self.lock.release()
-
-
-def _creation_failure(path: Path) -> OSError | bool | None:
-    """Why no file can be opened or made at ``path`` (an ``OSError``); None where one exists
-    that opens (its lock is another process's), False where one could be made (the holder
-    has just removed it). Nothing is made at ``path`` itself: a file made and removed there
-    could be the one another process has just opened to lock."""
-    try:
-        os.close(os.open(path, os.O_RDWR | getattr(os, "O_NOFOLLOW", 0)))
-        return None
-    except FileNotFoundError:
-        pass  # not there, or a folder that takes no files (/proc says so too)
-    except OSError as error:
-        return error
-    try:  # whether the folder takes a new file, tried under a name of its own
-        handle, probe = tempfile.mkstemp(prefix=f".{path.name}.", suffix=".probe",
-                                         dir=path.parent)
-    except OSError as error:
-        return error
-    os.close(handle)
-    os.unlink(probe)
-    return False
-
-
 def _read_manifest(path: Path, key: dict) -> tuple:
     """A parts folder's manifest at ``path`` and what makes it other than a manifest this
     program writes with ``key``, in words (None for one it writes, of this run or of
@@ -410,42 +280,11 @@ def _manifest_damage(found, key: dict) -> str | None:
     return None
 
 
-#: A temporary file of :func:`written_atomically`: ``.<name>.<process id>.tmp``.
-_TEMPORARY = re.compile(r"\..+\.\d+\.tmp")
-
-
 def _remove(path: Path):
     if path.is_dir() and not path.is_symlink():
         shutil.rmtree(path)
     else:
         path.unlink(missing_ok=True)
-
-
-def remove_stale_temporaries(output) -> list[str]:
-    """Remove the temporary files of ``output`` (``.<name>.<process id>.tmp``, beside it, a
-    file or a zarr store's folder) that a run killed while writing it left. Called by the holder of the output's lock
-    (:class:`OutputLock`): every writer of such a file holds the lock as long as the file
-    exists, and a process's lock dies with it, however it ends, so none of them is being
-    written (on this host or another sharing the folder, whatever became of the process
-    id). Returns their names."""
-    output = Path(output)
-    ours = re.compile(rf"\.{re.escape(output.name)}\.\d+\.tmp")
-    removed = []
-    try:
-        entries = list(os.scandir(output.parent))
-    except OSError:  # no folder yet: nothing left there
-        return removed
-    for entry in entries:
-        if not ours.fullmatch(entry.name) or entry.is_symlink():
-            continue
-        if entry.is_dir():  # only a zarr store's is a folder (an analysis written as one)
-            if not is_zarr(output):
-                continue
-            shutil.rmtree(entry.path, ignore_errors=True)
-        else:
-            Path(entry.path).unlink(missing_ok=True)
-        removed.append(entry.name)
-    return removed
 
 
 def range_damage(data, start: int, stop: int) -> str | None:
@@ -494,8 +333,7 @@ def counts_damage(data, grid, start: int, stop: int) -> str | None:
     it gives the outputs stored on fewer dimensions (one per cell, at points of the chunk, of
     the output's own shape); None where it says nothing else. ``KeyError`` or ``ValueError``
     for what cannot be read."""
-    from .dependence import reduced_outputs
-    from .store import STATUS_CODES
+    from ..dependence import reduced_outputs
 
     reason = range_damage(data, start, stop)
     if reason:
@@ -531,57 +369,3 @@ def counts_damage(data, grid, start: int, stop: int) -> str | None:
     return None
 
 
-def write_durably(path: Path, write):
-    """Write ``path`` atomically: ``write(handle)`` fills a temporary file beside it."""
-    with written_atomically(path) as temporary, open(temporary, "wb") as handle:
-        write(handle)
-
-
-@contextmanager
-def written_atomically(path, before_rename=None):
-    """A temporary path beside ``path`` for the block to write; when the block ends without
-    an error it takes ``path``'s place (:func:`replace_durably`; ``before_rename()`` is
-    called just before), otherwise it is removed. An existing file at ``path`` stays intact
-    until then; the folder is made if need be. An ``OSError`` of writing that names no file
-    (a full disk met by a library writing the temporary file: ``WRITING_ERRORS``) names
-    ``path``."""
-    path = Path(path)
-    path.parent.mkdir(parents=True, exist_ok=True)
-    temporary = path.with_name(f".{path.name}.{os.getpid()}.tmp")
-    try:
-        yield temporary
-        replace_durably(temporary, path, before_rename)
-    except OSError as error:
-        if error.filename is not None or error.errno not in WRITING_ERRORS:
-            raise
-        raise OSError(error.errno, os.strerror(error.errno), str(path)) from None
-    finally:
-        if temporary.exists():
-            temporary.unlink()
-
-
-def replace_durably(temporary: Path, path: Path, before_rename=None):
-    """Rename the finished ``temporary`` to ``path`` so that a power loss leaves the old file
-    or the new one, never a renamed but empty one: the data reaches the disk before the
-    rename, and the rename then too. ``before_rename()``, if given, is called once the data
-    is on the disk, just before the rename."""
-    with open(temporary, "rb+") as handle:
-        os.fsync(handle.fileno())
-    if before_rename is not None:
-        before_rename()
-    os.replace(temporary, path)
-    fsync_path(path.parent)
-
-
-def fsync_path(path):
-    """fsync the file or folder at ``path`` (a folder: the names just made or changed in it
-    reach the disk). Nothing happens where it cannot be opened: a file that is not there, a
-    folder on some systems (Windows, where the rename stands)."""
-    try:
-        handle = os.open(path, os.O_RDONLY)
-    except OSError:
-        return
-    try:
-        os.fsync(handle)
-    finally:
-        os.close(handle)

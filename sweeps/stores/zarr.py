@@ -14,7 +14,7 @@ output stored on fewer axes (``dependence``) is the exception: each task returns
 cell of those axes, and the driver writes them once every chunk has given its own.
 
 Until the sweep is complete the store lives in ``<output>.parts/store.zarr``, beside the
-manifest of ``parts.Parts`` and one small mark per finished chunk (its counts and its values
+manifest of :class:`.resume.Parts` and one small mark per finished chunk (its counts and its values
 of the outputs on fewer axes), written once the worker has written the chunk's values and
 flushed them to the disk: an interrupted run resumes from the chunks so marked. At the end
 the global attributes are completed (model errors, scheduler, history), the metadata
@@ -27,17 +27,20 @@ import os
 import shutil
 from concurrent.futures import ThreadPoolExecutor
 from dataclasses import dataclass
+from contextlib import contextmanager
 from pathlib import Path
 
 import numpy as np
 
-from . import zarr_structure
-from .dependence import reductions, split_reduced
-from .grid import Grid, block_shape
-from .netcdf_structure import global_attributes, stored_as
-from .parts import OutputLock, Parts, counts_damage, fsync_path, load_counts, saved_counts
-from .spec import Sweep
-from .store import provenance, stored_blocks, stored_reduction, structure, summed, writing
+from ..dependence import reductions, split_reduced
+from ..grid import Grid, block_shape
+from ..spec import Sweep
+from .base import FileStore
+from .blocks import stored_blocks, stored_reduction, summed
+from .durable import OutputLock, fsync_path, writing
+from .resume import Parts, counts_damage, load_counts, saved_counts
+from .structure import (coordinate_lists, global_attributes, provenance, stored_as,
+                        structure)
 
 #: How many files a task flushes to the disk at once.
 FLUSHING_THREADS = 8
@@ -59,7 +62,7 @@ def write_structure(sweep: Sweep, grid: Grid, block: tuple, scheduler: str, path
         stored, _ = stored_as(values, labelled.encodings[name])
         layouts[name] = sweep.storage.zarr_codecs(stored.itemsize) | {
             "chunks": tuple(sizes.get(d, n) for d, n in zip(dims, values.shape))}
-    zarr_structure.write_structure(labelled, path, layouts, ZARR_FORMAT)
+    write_labelled(labelled, path, layouts, ZARR_FORMAT)
 
 
 @dataclass(frozen=True)
@@ -105,9 +108,9 @@ class StoreWriter:
 class StoreParts(Parts):
     """A zarr output on its way: ``<output>.parts/`` with the manifest, the store being written
     (``store.zarr``) and, for each chunk whose values are in it, a mark: an ``.npz`` file of
-    its counts (``store.chunk_tally``) and of the values it gives the outputs stored on fewer
+    its counts (``blocks.chunk_tally``) and of the values it gives the outputs stored on fewer
     dimensions (one per cell, :meth:`StoreWriter.write`). The interface of
-    :class:`parts.Parts`, which it extends."""
+    :class:`.resume.Parts`, which it extends."""
 
     own_entries = Parts.own_entries + ("store.zarr", ".store.zarr.tmp")
 
@@ -136,7 +139,7 @@ class StoreParts(Parts):
         return StoreWriter(str(self.store.absolute()), self.output)
 
     def damage(self, data, start: int, stop: int) -> str | None:
-        """:func:`parts.counts_damage`; a mark without the store it vouches for is none."""
+        """:func:`.resume.counts_damage`; a mark without the store it vouches for is none."""
         if not self.store.is_dir():
             return "no store beside it"
         return counts_damage(data, self.grid, start, stop)
@@ -153,7 +156,7 @@ class StoreParts(Parts):
             return load_counts(data)
 
     def tally(self, model, chunks) -> tuple[dict, list, dict]:
-        """The sweep's counts (as ``store.summed`` gives them) from its chunks' marks."""
+        """The sweep's counts (as ``blocks.summed`` gives them) from its chunks' marks."""
         return summed(model, (self.load(self.path(start, stop))[0] for start, stop in chunks))
 
     def finish(self, sweep: Sweep, grid: Grid, chunks, output, scheduler: str, errors=(),
@@ -161,7 +164,7 @@ class StoreParts(Parts):
         """Write the outputs stored on fewer dimensions from the ``chunks``' marks, complete
         the store's global attributes (as the netCDF file's: model errors, scheduler,
         history), consolidate its metadata, and give it the output's name (calling
-        ``before_rename()`` just before), where nothing is (``output_paths.check_output`` refuses
+        ``before_rename()`` just before), where nothing is (``paths.check_output`` refuses
         an earlier store: it is never replaced)."""
         import zarr
 
@@ -175,7 +178,7 @@ class StoreParts(Parts):
         with writing(self.output):
             for name, reduction in reduced.items():
                 group[name][...] = stored_reduction(reduction, reduction.output.dtype == "int")
-            group.attrs.put(zarr_structure.attribute_values(attributes))
+            group.attrs.put(attribute_values(attributes))
             zarr.consolidate_metadata(str(self.store), zarr_format=ZARR_FORMAT)
             flush([self.store / ".zattrs", self.store / ".zmetadata", self.store])
         if before_rename is not None:
@@ -183,6 +186,33 @@ class StoreParts(Parts):
         # Fails where something holds the name (but an empty folder): nothing is replaced.
         os.replace(self.store, output)
         fsync_path(Path(output).parent)
+
+
+class ZarrStore(FileStore):
+    """A result written as a zarr store at ``output``, each chunk by the worker that computed
+    it (:class:`StoreWriter`), the store kept in its parts folder until complete
+    (:class:`StoreParts`); an earlier store is never replaced (:func:`.paths.check_output`)."""
+
+    netcdf = False
+
+    def resume_state(self, key: dict):
+        return StoreParts(self.output, key, self.grid, self.sweep.storage)
+
+    @contextmanager
+    def recording(self, chunk_size: int, scheduler: str, before_rename=None):
+        self.parts.prepare(self.sweep, self.grid, chunk_size, scheduler)
+        yield self.parts.writer  # the chunks and their counts are in the store and its marks
+        self.finishing()  # nothing has taken its place meanwhile
+        self.parts.finish(self.sweep, self.grid, self.chunks, self.output, scheduler,
+                          self.errors, before_rename)
+
+    def stored_bytes(self, result: dict) -> int | None:
+        return result.get("stored_bytes")
+
+    def counts(self, chunks) -> tuple[dict, list, dict]:
+        self.chunks = chunks
+        counts, self.errors, noted = self.parts.tally(self.grid.model, chunks)
+        return counts, self.errors, noted
 
 
 def write_dataset(dataset, path):
@@ -211,3 +241,37 @@ def flush(paths):
         list(pool.map(fsync_path, paths))
 
 
+def write_labelled(labelled, path, layouts: dict, zarr_format: int):
+    """Write ``labelled`` as a new zarr group at ``path``, its metadata consolidated. The
+    arrays named in ``layouts`` (``{name: {"chunks": ..., "compressors": ..., "filters":
+    ...}}``, as xarray's encoding gives them) are created so and left without values, for
+    them to be written later; the others get zarr's defaults and their values.
+
+    As xarray's ``to_zarr`` writes it (``tests`` compare the two stores), without xarray: a
+    run writes its store's structure so, its workers the values. What xarray does on writing
+    zarr format 2 that matters here, beside what it does for netCDF (:mod:`.structure`): the
+    fill value is the array's (``.zarray``), not an attribute; each array's dimensions are its
+    attribute ``_ARRAY_DIMENSIONS``; arrays without an encoding get zarr's default chunks and
+    compressor; attribute values are plain JSON (an array a list)."""
+    import zarr
+
+    group = zarr.open_group(path, mode="w", zarr_format=zarr_format)
+    group.attrs.put(attribute_values(global_attributes(labelled)))
+    listed = coordinate_lists(labelled)
+    for name, (dims, values, attrs) in {**labelled.data_vars, **labelled.coords}.items():
+        values = np.asarray(values)
+        stored, fill = stored_as(values, labelled.encodings.get(name, {}))
+        array = group.create(name, shape=values.shape, dtype=stored, fill_value=fill,
+                             overwrite=True, **layouts.get(name, {"chunks": "auto"}))
+        attrs = dict(attrs) | ({"coordinates": listed[name]} if name in listed else {})
+        array.attrs.put(attribute_values(attrs | {"_ARRAY_DIMENSIONS": list(dims)}))
+        if name not in layouts:
+            array[...] = values.astype(stored)
+    zarr.consolidate_metadata(str(path), zarr_format=zarr_format)
+
+
+def attribute_values(attributes: dict) -> dict:
+    """``attributes`` as JSON holds them, as xarray stores them: an array as a list, a numpy
+    number as a Python one."""
+    return {key: value.tolist() if isinstance(value, (np.ndarray, np.generic)) else value
+            for key, value in attributes.items()}

@@ -21,7 +21,7 @@ from pathlib import Path
 
 import numpy as np
 
-from .netcdf_structure import stored_as
+from .structure import stored_as, structure
 
 #: A run that the estimate says takes longer [s], or writes more [bytes], says so as it starts.
 ANNOUNCED_SECONDS = 10.0
@@ -36,7 +36,6 @@ def result_bytes(sweep, grid) -> int:
     """The size of the sweep's result uncompressed [bytes]: every variable's values in the
     type it is stored in (what compression can shrink, never grow but by a few bytes a
     chunk)."""
-    from .store import structure
 
     labelled = structure(sweep, grid, {"scheduler": "", "package_version": "",
                                        "git_commit": None})
