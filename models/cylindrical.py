@@ -23,7 +23,6 @@ from .lubrication import CELSIUS
 from .profiles import PROFILES, crown_shape, distinct_slices, slice_centres
 from .registry import (CONVERGED, NOT_CONVERGED, OUT_OF_VALIDITY, Constraint, Input,
                              Model, Output)
-from .solvers import solve_increasing
 
 OUTER_CONTACTS = ("crowned", "paper")
 
@@ -32,6 +31,8 @@ _ONE_SLICE = np.ones(1)
 # A roller counts as loaded when it carries more than this fraction of the radial load.
 _LOADED_FRACTION = 1e-9
 _XTOL = 1e-13  # relative tolerance of the displacement solves [-]
+#: Iterations of the ring's solve and of a free roller's before they are given up.
+_MAX_ITERATIONS = 200
 #: Largest error of the forward-difference stiffness, estimated as half the change of the
 #: analytic stiffness across its step (the leading term of a forward difference's error), as
 #: a share of the stiffness [-]: the step must be small against the displacement over which
@@ -309,7 +310,7 @@ class _RollerSet:
         # Every slice is in contact beyond the largest gap, so Qo >= K (delta - gap)^n.
         free_outer_approaches(self.sorted_gaps, self.gap_count, self.constant, self.centrifugal,
                               self.slice_law == "paper", self.largest_gap + plain, _XTOL,
-                              approach, converged)
+                              approach, converged, _MAX_ITERATIONS)
         return approach, converged.all(axis=-1)
 
     def loads(self, displacement, points, split, roller_load, inner_deflection):
@@ -346,6 +347,19 @@ class _RollerSet:
             self.slice_law == "paper", self.outer_contact == "crowned", _XTOL, split,
             roller_load, inner_deflection)
 
+
+    def balance(self, load, lower, upper, preloaded, perturbation, split, *filled):
+        """The ring's balance of every bearing under ``load`` in its bracket
+        ``[lower, upper]`` (widened where ``preloaded``), with the forward difference's state
+        where ``perturbation`` is finite: :func:`models.cylindrical_balance.ring_balances`,
+        which fills ``filled``."""
+        from .cylindrical_balance import ring_balances  # numba: only when solving
+
+        ring_balances(load, lower, upper, preloaded, perturbation, self.cos,
+                      self.half_clearance, self.floor, self.free_outer_approach,
+                      self.sorted_gaps, self.gap_count, self.constant, self.centrifugal,
+                      self.slice_law == "paper", self.outer_contact == "crowned", _XTOL, split,
+                      *filled, _MAX_ITERATIONS)
 
 def crb_radial(radial_load, roller_count, pitch_diameter, roller_diameter, effective_length,
                clearance=0.0, crown=0.0, crown_profile="logarithmic", slices=60,
@@ -484,12 +498,12 @@ def crb_radial(radial_load, roller_count, pitch_diameter, roller_diameter, effec
     pressure its centrifugal force causes (1e6 r/min gives bearing D some 16 GPa at the
     outer contact).
 
-    Solution: the ring's displacement by the safeguarded Newton of
-    :func:`models.solvers.solve_increasing`, all points at once; at each displacement tried,
-    every roller's force balance point by point in compiled code
-    (:mod:`models.cylindrical_balance`, numba), started from a first-order prediction of its
-    split from its last solution and summing only the slices that touch. A point's results do
-    not depend on the other points of the call.
+    Solution: each point's whole equilibrium in compiled code, one point after the other
+    (:mod:`models.cylindrical_balance`, numba): the ring's displacement by the safeguarded
+    Newton of :func:`models.solvers.solve_increasing`; at each displacement tried, every
+    roller's force balance, started from a first-order prediction of its split from its last
+    solution and summing only the slices that touch. A point's results do not depend on the
+    other points of the call.
 
     References
     ----------
@@ -579,10 +593,9 @@ def _solve(rollers, load, perturbation):
     count, n = load.size, LINE_CONTACT_EXPONENT
     split = np.full(cos_azimuth.shape + (3,), np.nan)  # no roller solved yet
     # Where each solve's roller loads and approaches go, and where those of other calls do.
-    cache = {"converged": np.ones(count, dtype=bool), "load": np.empty(count),
-             "stiffness": np.empty(count), "roller_load": np.empty(cos_azimuth.shape),
+    cache = {"load": np.empty(count), "stiffness": np.empty(count),
+             "roller_load": np.empty(cos_azimuth.shape),
              "deflection": np.empty(cos_azimuth.shape)}
-    spare = np.empty(cos_azimuth.shape), np.empty(cos_azimuth.shape)
     # Bracket: no roller touches below max(Pd/2, 0); at the upper bound the best-placed roller
     # (at cos_max) alone carries F / cos_max through both contacts, each needing at most the
     # largest gap plus ((F / cos_max + Fc)/K)^(1/n) of approach. With preload, rollers opposite
@@ -594,42 +607,24 @@ def _solve(rollers, load, perturbation):
     reach = (half_clearance + 2.0 * rollers.largest_gap
              + 2.0 * ((load / cos_max + centrifugal) / constant) ** (1.0 / n))
     upper = np.maximum(1.001 * reach / cos_max, lower) + 1e-12
-    preloaded = np.flatnonzero(play < 0.0)
-    for _ in range(64):
-        if preloaded.size == 0:
-            break
-        short = rollers.loads(upper[preloaded], preloaded, split, *spare)[0] < load[preloaded]
-        lower[preloaded[short]] = upper[preloaded[short]]
-        upper[preloaded[short]] *= 2.0
-        preloaded = preloaded[short]
-
     # At zero load the ring of a bearing with clearance may sit anywhere in its play: take the
     # limit of a vanishing load, resting on the best-placed roller, which carries nothing.
     resting = (load == 0.0) & (play >= 0.0)
     touch = (play + rollers.free_outer_approach.max(axis=-1)) / cos_max
     lower = np.where(resting, touch, lower)
     upper = np.where(resting, touch, upper)
-
-    def residual(displacement, index):
-        radial_load, stiffness, converged = rollers.loads(
-            displacement, index, split, cache["roller_load"], cache["deflection"])
-        cache["load"][index], cache["stiffness"][index] = radial_load, stiffness
-        cache["converged"][index] &= converged
-        return radial_load - load[index], stiffness
-
-    displacement, converged = solve_increasing(residual, lower, upper, upper, _XTOL * upper)
+    displacement, converged = np.empty(count), np.empty(count, dtype=bool)
+    rollers_converged = np.empty(count, dtype=bool)
+    perturbed, perturbed_stiffness = np.full(count, np.nan), np.full(count, np.nan)
+    # Each point's whole balance compiled, one point after the other.
+    rollers.balance(load, lower, upper, play < 0.0, perturbation, split, displacement,
+                    cache["load"], cache["stiffness"], converged, rollers_converged,
+                    cache["roller_load"], cache["deflection"], perturbed, perturbed_stiffness)
     # The limit itself: the best-placed roller just touches and carries nothing (evaluated
     # there, rounding in the displacement leaves it a few mN with spinning rollers).
     for name in ("roller_load", "stiffness", "load"):
         cache[name][resting] = 0.0
-    cache["converged"][resting] = True
-    # Forward-difference stiffness with the paper's perturbation (section 2.3), where asked
-    # for, and the analytic stiffness at its other end.
-    perturbed, perturbed_stiffness = np.full(count, np.nan), np.full(count, np.nan)
-    asked = np.flatnonzero(np.isfinite(perturbation))
-    if asked.size:
-        perturbed[asked], perturbed_stiffness[asked] = rollers.loads(
-            displacement[asked] + perturbation[asked], asked, split.copy(), *spare)[:2]
+    cache["converged"] = rollers_converged | resting
     balanced = np.abs(cache["load"] - load) <= 1e-9 * load + 1e-6
     ok = converged & cache["converged"] & balanced & rollers.free_outer_converged
     outputs = {
