@@ -68,6 +68,11 @@ def parse_unit(text: str) -> pint.Unit:
     """The pint unit for ``text`` ("mm", "N/mm^(10/9)", "rpm", "1", ...)."""
     if not isinstance(text, str):
         raise UnitError(f"{text!r} is not a unit: expected a string")
+    return _parsed_unit(text)
+
+
+@lru_cache(maxsize=1024)  # every value of an axis names its unit: parse each unit once
+def _parsed_unit(text: str) -> pint.Unit:
     problem = _unreadable(text)
     if problem:
         raise UnitError(f"unknown unit {_short(text)!r} ({problem})")
@@ -151,6 +156,7 @@ def revolutions(unit: pint.Unit, declared: pint.Unit) -> pint.Unit:
     return unit
 
 
+@lru_cache(maxsize=1024)  # once per pair of units, not per value converted
 def _read_as_revolutions(unit: pint.Unit, target: pint.Unit) -> tuple[pint.Unit, pint.Unit]:
     """``unit`` and ``target`` with a plain reciprocal time on either side read as revolutions
     when the other is a rotational speed (:func:`revolutions`); a conversion between a
@@ -183,7 +189,20 @@ def convert(magnitude, unit: pint.Unit, target: pint.Unit):
     rotational speed on either side ("3000 1/min" is 3000 rpm), never radians.
     """
     unit, target = _read_as_revolutions(unit, target)
-    return UREG.Quantity(np.asarray(magnitude, dtype=float), unit).to(target).magnitude
+    magnitude = np.asarray(magnitude, dtype=float)
+    factor = _factor(unit, target)
+    if factor is None:
+        return UREG.Quantity(magnitude, unit).to(target).magnitude
+    return magnitude * factor  # as pint multiplies, without its cost for every value
+
+
+@lru_cache(maxsize=1024)
+def _factor(unit: pint.Unit, target: pint.Unit) -> float | None:
+    """The factor pint multiplies a value in ``unit`` by to express it in ``target``; None
+    where either has a shifted zero (pint adds the offsets)."""
+    if is_offset(unit) or is_offset(target):
+        return None
+    return UREG.Quantity(1.0, unit).to(target).magnitude
 
 
 def tidy(values, scale: float = 0.0) -> np.ndarray:
@@ -198,6 +217,7 @@ def tidy(values, scale: float = 0.0) -> np.ndarray:
     return np.array([float(f"{v:.15g}") for v in values.ravel()]).reshape(values.shape)
 
 
+@lru_cache(maxsize=1024)
 def conversion_scale(unit: pint.Unit, target: pint.Unit) -> float:
     """The size of the numbers a conversion from ``unit`` to ``target`` goes through: an
     offset unit's zero (absolute zero in degC is -273.15), else 0."""
