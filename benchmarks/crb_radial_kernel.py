@@ -26,15 +26,18 @@ the same points, in interleaved pairs. The answers are compared first (the run f
 ``AGREEMENT``). Prints the median of the pairs' ratios of model over kernel time (goal: within
 1.2x), and the model against the per-point scipy baseline of crb_radial_throughput.py.
 """
+import contextlib
+import io
 import math
 import os
 import sys
+import tempfile
 import time
 
 import numpy as np
 from numba import njit
 
-from bearing_sweep import spec
+from bearing_sweep import cli, spec
 from bearing_sweep.compute import evaluate_chunk
 from bearing_sweep.grid import Grid
 from bearing_sweep.models.contact import effective_modulus, palmgren_constant
@@ -43,7 +46,7 @@ from bearing_sweep.models.profiles import distinct_slices
 
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
 from crb_radial_throughput import GEOMETRY, MM, per_point  # noqa: E402  the scipy baseline
-from pairs import interleaved, ratio_line  # noqa: E402
+from pairs import interleaved, ratio_line, timed  # noqa: E402
 
 N = 10.0 / 9.0  # line-contact exponent
 XTOL = 1e-13  # relative tolerance of every solve, as the model's
@@ -58,6 +61,8 @@ CLEARANCES = 4  # clearances on the grid; the loads fill the model's block
 # stiffness divides a difference of loads by a small step (about tenfold the loads' error).
 AGREEMENT = 1e-9
 PAIRS = 9
+#: Points of the end-to-end runs (as the issue measured them) and their pairs.
+END_TO_END_POINTS, END_TO_END_PAIRS = 20_000, 5
 # Bits of x^(-1/9) from those of x (the exponent field divided by -9; 3 % at worst), then
 # Newton: four steps for x^(-1/9) without division, one for x^(1/9) (within 1 ulp of pow).
 ROOT_MAGIC = 5118851384464337920
@@ -391,18 +396,42 @@ def kernel(load, clearance, roller_count, pitch_diameter, roller_diameter, effec
     return out
 
 
-def model_grid(points: int) -> Grid:
-    """The throughput benchmark's bearing and grid, with enough loads for ``points``."""
+def definition(points: int) -> str:
+    """The throughput benchmark's bearing and grid, with enough loads for ``points``, as TOML."""
     loads = math.ceil(points / CLEARANCES)
     geometry = "\n".join(f'{name} = "{value / MM:g} mm"' for name, value in GEOMETRY.items()
                          if name != "roller_count")
-    text = (f'[sweep]\nmodel = "crb_radial"\n[fixed]\n'
+    return (f'[sweep]\nmodel = "crb_radial"\n[fixed]\n'
             f'roller_count = {GEOMETRY["roller_count"]}\n{geometry}\n'
             f'crown = "{CROWN / MM * 1e3:g} um"\nspeed = "5000 rpm"\nslices = {SLICES}\n'
             'perturbation = "0.001 mm"\n'
             f'[axes]\nradial_load = {{ start = "1 kN", stop = "12 kN", num = {loads} }}\n'
             f'clearance = {{ start = "0 mm", stop = "0.04 mm", num = {CLEARANCES} }}\n')
-    return Grid.from_sweep(spec.parse(text, "crb_radial_kernel"))
+
+
+def model_grid(points: int) -> Grid:
+    """:func:`definition`'s grid."""
+    return Grid.from_sweep(spec.parse(definition(points), "crb_radial_kernel"))
+
+
+class InProcessRuns:
+    """``bearing-sweep run DEFINITION -o OUTPUT --workers 0 --quiet`` in this process, as the
+    command runs it (the definition parsed, the inputs built, the outputs converted, the
+    netCDF file written and completed), each run into a fresh file of a temporary folder."""
+
+    def __init__(self, folder: str, points: int):
+        self.folder, self.runs = folder, 0
+        self.definition = os.path.join(folder, f"crb_{points}.toml")
+        with open(self.definition, "w") as file:
+            file.write(definition(points))
+
+    def __call__(self):
+        self.runs += 1
+        output = os.path.join(self.folder, f"run{self.runs}.nc")
+        with contextlib.redirect_stderr(io.StringIO()) as said:  # its closing summary
+            if cli.program(["run", self.definition, "-o", output, "--workers", "0", "--quiet"]):
+                raise SystemExit(f"the in-process run failed: {said.getvalue()}")
+        os.remove(output)
 
 
 def largest_difference(model, ours) -> float:
@@ -467,6 +496,27 @@ def main():
     print(ratio_line(tuple(r * per_point_scale for r in scipy_timing[:3]) + scipy_timing[3:],
                      "at least 50x"))
 
+    end_to_end(points_in_process=END_TO_END_POINTS)
+
+
+def end_to_end(points_in_process: int):
+    """The command's whole path in this process against the kernel on the same points."""
+    grid = model_grid(points_in_process)
+    varying, _ = grid.inputs(0, grid.size)
+    points = (varying["radial_load"], varying["clearance"], *GEOMETRY.values())
+    with tempfile.TemporaryDirectory() as folder:
+        run, smallest = InProcessRuns(folder, grid.size), InProcessRuns(folder, 2 * CLEARANCES)
+        run(), smallest()  # the first runs open what later runs reuse, untimed
+        # A run's fixed cost, that of a run of a few points, is subtracted from each run.
+        fixed = min(timed(smallest, clock=time.process_time) for _ in range(3))
+        timing = interleaved(run, lambda: kernel(*points), END_TO_END_PAIRS, time.process_time,
+                             fixed)
+    print(f"crb_radial end to end in-process (bearing-sweep run --workers 0 into a netCDF "
+          f"file), {grid.size} points, against the kernel on the same points")
+    print(f"  numba kernel baseline: {timing[4] / grid.size * 1e6:7.2f} us/point (CPU); run: "
+          f"{timing[3] / grid.size * 1e6:7.2f} us/point, fixed cost {fixed * 1e3:.0f} ms "
+          "subtracted (a run of 8 points)")
+    print(ratio_line(timing, "within 1.2x"))
 
 if __name__ == "__main__":
     main()
