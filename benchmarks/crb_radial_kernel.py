@@ -428,7 +428,7 @@ class InProcessRuns:
     def __call__(self):
         self.runs += 1
         output = os.path.join(self.folder, f"run{self.runs}.nc")
-        with contextlib.redirect_stderr(io.StringIO()) as said:  # its closing summary
+        with contextlib.redirect_stdout(io.StringIO()) as said:  # its closing summary
             if cli.program(["run", self.definition, "-o", output, "--workers", "0", "--quiet"]):
                 raise SystemExit(f"the in-process run failed: {said.getvalue()}")
         os.remove(output)
