@@ -197,7 +197,8 @@ class _RollerSet:
         return inner, slice_loads(outer_approach, gaps, self.gap_count, constant,
                                   self.slice_law)
 
-    def slicing_error(self, inner_approach, outer_approach, inner_curvature, outer_curvature):
+    def slicing_error(self, inner_approach, outer_approach, inner_curvature, outer_curvature,
+                      asked=True):
         """Estimated relative error that the slicing leaves in the outputs of each bearing
         ``(P,)`` [-]: the largest of those in its loaded rollers' radial load and stiffness
         (so its displacement and stiffness), its largest contact pressure and its laminae's
@@ -213,13 +214,14 @@ class _RollerSet:
         edge; a sixteenth where it falls as 1/k^2), so the difference estimates the error of
         the ``k`` slices. A straight, aligned roller's slices are all alike and any ``k``
         gives it exactly: zero. ``inner_curvature``, ``outer_curvature``: ``sum(rho)`` of
-        each contact [1/m], ``(P,)``.
+        each contact [1/m], ``(P,)``. Only the bearings ``asked`` (``(P,)`` bool) are
+        estimated; the others' error is zero.
         """
         from .cylindrical_balance import slice_sums  # numba: only when solving
 
         error = np.zeros(self.crown.size)
         tilted = False if self.tilt is None else np.any(self.tilt != 0.0, axis=-1)
-        profiled = np.flatnonzero(((self.crown > 0.0) | tilted)
+        profiled = np.flatnonzero(((self.crown > 0.0) | tilted) & asked
                                   & np.all(np.isfinite(inner_approach), axis=-1))
         loaded = inner_approach[profiled] > 0.0  # (p, Z)
         rows, rollers = np.nonzero(loaded)
@@ -572,9 +574,10 @@ def crb_radial(radial_load, roller_count, pitch_diameter, roller_diameter, effec
               | (inner + outer + perturbation[:, None] > approach_limit)).any(axis=-1)
     with np.errstate(invalid="ignore"):
         beyond |= perturbation_error > PERTURBATION_ERROR_LIMIT
-    # Slices too few to resolve the crown or the tilt.
-    beyond |= rollers.slicing_error(inner, outer, inner_curvature,
-                                    outer_curvature) > SLICING_ERROR_LIMIT
+    # Slices too few to resolve the crown or the tilt (an estimate as costly as a third of
+    # the solution: made only where it can still change the status).
+    beyond |= rollers.slicing_error(inner, outer, inner_curvature, outer_curvature,
+                                    ~beyond) > SLICING_ERROR_LIMIT
     # Inputs that describe no bearing, whatever the outcome.
     no_bearing = (clearance_beyond_bearings(clearance, pitch - diameter)
                   | outside_operation(speed, pitch, *life[4:])
