@@ -156,7 +156,6 @@ def revolutions(unit: pint.Unit, declared: pint.Unit) -> pint.Unit:
     return unit
 
 
-@lru_cache(maxsize=1024)  # once per pair of units, not per value converted
 def _read_as_revolutions(unit: pint.Unit, target: pint.Unit) -> tuple[pint.Unit, pint.Unit]:
     """``unit`` and ``target`` with a plain reciprocal time on either side read as revolutions
     when the other is a rotational speed (:func:`revolutions`); a conversion between a
@@ -188,21 +187,22 @@ def convert(magnitude, unit: pint.Unit, target: pint.Unit):
     the stored unit): a plain reciprocal time is revolutions per that time against a
     rotational speed on either side ("3000 1/min" is 3000 rpm), never radians.
     """
-    unit, target = _read_as_revolutions(unit, target)
+    unit, target, factor = _conversion(unit, target)
     magnitude = np.asarray(magnitude, dtype=float)
-    factor = _factor(unit, target)
     if factor is None:
         return UREG.Quantity(magnitude, unit).to(target).magnitude
     return magnitude * factor  # as pint multiplies, without its cost for every value
 
 
-@lru_cache(maxsize=1024)
-def _factor(unit: pint.Unit, target: pint.Unit) -> float | None:
-    """The factor pint multiplies a value in ``unit`` by to express it in ``target``; None
-    where either has a shifted zero (pint adds the offsets)."""
+@lru_cache(maxsize=1024)  # once per pair of units, not per value converted
+def _conversion(unit: pint.Unit, target: pint.Unit) -> tuple:
+    """:func:`_read_as_revolutions`' units and the factor pint multiplies a value in the one
+    by to express it in the other; None where either has a shifted zero (pint adds the
+    offsets)."""
+    unit, target = _read_as_revolutions(unit, target)
     if is_offset(unit) or is_offset(target):
-        return None
-    return UREG.Quantity(1.0, unit).to(target).magnitude
+        return unit, target, None
+    return unit, target, UREG.Quantity(1.0, unit).to(target).magnitude
 
 
 def tidy(values, scale: float = 0.0) -> np.ndarray:
@@ -214,6 +214,8 @@ def tidy(values, scale: float = 0.0) -> np.ndarray:
     values = np.asarray(values, dtype=float)
     if scale:  # at the 15th digit of the scale
         values = np.round(values, int(14 - np.floor(np.log10(abs(scale))))) + 0.0  # not -0
+    if values.ndim == 0:  # one value of an axis: most of them
+        return np.array(float(f"{values:.15g}"))
     return np.array([float(f"{v:.15g}") for v in values.ravel()]).reshape(values.shape)
 
 
