@@ -9,7 +9,10 @@ tolerances, on the same equations (sliced crowned rollers with their distinct ga
 centrifugal force, clearance; no misalignment). It computes what the model
 computes for such a point apart from the lives (the grid gives no load rating): the
 displacement, the implicit and the forward-difference stiffness, the roller loads and inner
-approaches, each roller's largest contact pressure and the status. Each slice is summed only
+approaches, each roller's largest contact pressure and the status, with every validity check
+the status holds: pressure, approach, the forward difference's step and the slicing (the
+model's estimate against four times as many slices, skipped where the point is already out of
+validity). Each slice is summed only
 while it touches (the gaps are sorted), and its ``(delta - c)^(1/9)`` is taken for a whole
 roller at once by a loop the compiler vectorises, ``error_model="numpy"`` keeping division
 checks out of it (numpy's own SIMD ``pow`` is otherwise faster than a scalar one). The model
@@ -25,16 +28,24 @@ declared ``points_per_call``: the model through the engine's chunk path
 the same points, in interleaved pairs. The answers are compared first (the run fails beyond
 ``AGREEMENT``). Prints the median of the pairs' ratios of model over kernel time (goal: within
 1.2x), and the model against the per-point scipy baseline of crb_radial_throughput.py.
+
+Then end to end: ``bearing-sweep run --workers 0`` in this process over 20 000 points (the
+definition parsed, the grid's inputs built, the outputs converted, a netCDF file written and
+completed), less a run's fixed cost (that of a run of 8 points), against the kernel on the same
+points, in interleaved pairs on CPU time (goal: within 1.2x).
 """
+import contextlib
+import io
 import math
 import os
 import sys
+import tempfile
 import time
 
 import numpy as np
 from numba import njit
 
-from bearing_sweep import spec
+from bearing_sweep import cli, spec
 from bearing_sweep.evaluate import evaluate_chunk
 from bearing_sweep.grid import Grid
 from bearing_sweep.models.contact import effective_modulus, palmgren_constant
@@ -43,7 +54,7 @@ from bearing_sweep.models.profiles import distinct_slices
 
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
 from crb_radial_throughput import GEOMETRY, MM, per_point  # noqa: E402  the scipy baseline
-from pairs import interleaved, ratio_line  # noqa: E402
+from pairs import interleaved, ratio_line, timed  # noqa: E402
 
 N = 10.0 / 9.0  # line-contact exponent
 XTOL = 1e-13  # relative tolerance of every solve, as the model's
@@ -51,12 +62,15 @@ MAX_ITER = 200  # as solve_increasing's
 CROWN, SPEED, SLICES, DENSITY = 0.004 * MM, 5000 * 2 * np.pi / 60, 60, 7850.0
 MODULUS = effective_modulus(207e9, 0.3)
 PRESSURE_LIMIT, APPROACH_LIMIT, PERTURBATION_ERROR = 4000e6, 0.02, 0.02
+SLICING_ERROR, REFERENCE_SLICES = 0.02, 240  # the model's check of its slicing
 CLEARANCES = 4  # clearances on the grid; the loads fill the model's block
 # The solves stop within XTOL (relative) of the root, each at its own last iterate: the two
 # codes may stop one Newton step apart where rounding differs, and the forward-difference
 # stiffness divides a difference of loads by a small step (about tenfold the loads' error).
 AGREEMENT = 1e-9
 PAIRS = 9
+#: Points of the end-to-end runs (as the issue measured them) and their pairs.
+END_TO_END_POINTS, END_TO_END_PAIRS = 20_000, 5
 # Bits of x^(-1/9) from those of x (the exponent field divided by -9; 3 % at worst), then
 # Newton: four steps for x^(-1/9) without division, one for x^(1/9) (within 1 ulp of pow).
 ROOT_MAGIC = 5118851384464337920
@@ -193,14 +207,92 @@ def bearing_loads(displacement, cos, half_clearance, free, gaps, counts, scale, 
 
 
 @njit(cache=True, error_model="numpy")
+def contact_sums(approach, gaps, counts, slices, work, roots, sums):
+    """What a sliced contact gives in units of its constant: load, stiffness, deepest
+    penetration, the laminae's life sum ``sum pen^5 / k`` and its slope along the approach
+    (``sums[:5]``); the gaps are sorted."""
+    touching = 0
+    while touching < gaps.size and approach - gaps[touching] > 1e-300:
+        work[touching] = approach - gaps[touching]
+        touching += 1
+    ninth_roots(work, roots, touching)
+    load = stiffness = life = slope = 0.0
+    for t in range(touching):
+        fourth = work[t] * work[t]
+        fourth = fourth * fourth * counts[t]
+        load += work[t] * roots[t] * counts[t]
+        stiffness += roots[t] * counts[t]
+        life += fourth * work[t]
+        slope += fourth
+    sums[0], sums[1] = load / slices, N * stiffness / slices
+    sums[2] = work[0] if touching else 0.0
+    sums[3], sums[4] = life / slices, 5.0 * slope / slices
+
+
+@njit(cache=True, error_model="numpy")
+def slicing_error(inner, outer, cos, gaps, counts, fine_gaps, fine_counts, work, roots, sums,
+                  inner_stiffness):
+    """The model's estimate of the error the slicing leaves (its ``_RollerSet.slicing_error``
+    for aligned rollers): in the loaded rollers' radial load and stiffness, the largest line
+    load (as pressure) and the life sum, the ``k`` slices against ``max(4 k, 240)``, the
+    finer slicing's approach also moved by one Newton step to carry the coarser's load."""
+    slices, fine_slices = counts.sum(), fine_counts.sum()
+    load_coarse = load_fine = radial_coarse = radial_fine = error = 0.0
+    for contact in range(2):
+        pressure, life = np.zeros(4), np.zeros(4)  # coarse, fine; unmoved, then moved
+        for j in range(cos.size):
+            if not inner[j] > 0.0:
+                continue
+            approach = inner[j] if contact == 0 else outer[j]
+            contact_sums(approach, gaps, counts, slices, work, roots, sums[0])
+            contact_sums(approach, fine_gaps, fine_counts, fine_slices, work, roots, sums[1])
+            if contact == 0:
+                load_coarse += cos[j] * sums[0, 0]
+                load_fine += cos[j] * sums[1, 0]
+                inner_stiffness[j, 0], inner_stiffness[j, 1] = sums[0, 1], sums[1, 1]
+            else:  # each roller's two contacts in series
+                ki, ko = inner_stiffness[j, 0], sums[0, 1]
+                if ki + ko > 0.0:
+                    radial_coarse += cos[j] * cos[j] * (ki * ko / (ki + ko))
+                ki, ko = inner_stiffness[j, 1], sums[1, 1]
+                if ki + ko > 0.0:
+                    radial_fine += cos[j] * cos[j] * (ki * ko / (ki + ko))
+            shift = (sums[0, 0] - sums[1, 0]) / sums[1, 1]
+            if not math.isfinite(shift):
+                shift = 0.0
+            for moved in range(2):
+                step = shift if moved else 0.0
+                pressure[2 * moved] = max(pressure[2 * moved], sums[0, 2] ** N)
+                pressure[2 * moved + 1] = max(pressure[2 * moved + 1],
+                                              max(sums[1, 2] + step, 0.0) ** N)
+                life[2 * moved] += sums[0, 3]
+                life[2 * moved + 1] += sums[1, 3] + step * sums[1, 4]
+        for moved in range(2):
+            departure = abs(math.sqrt(pressure[2 * moved] / pressure[2 * moved + 1]) - 1.0)
+            if departure > error:
+                error = departure
+            departure = abs((life[2 * moved] / life[2 * moved + 1]) ** (-8.0 / 9.0) - 1.0)
+            if departure > error:
+                error = departure
+    for departure in (abs(load_coarse / load_fine - 1.0), abs(radial_coarse / radial_fine - 1.0)):
+        if departure > error:
+            error = departure
+    return error
+
+
+@njit(cache=True, error_model="numpy")
 def crb_points(load, half_clearance, crown, constant, centrifugal, perturbation, cos,
-               gap_shape, counts, contact_length, diameter, inner_curvature, outer_curvature,
-               displacement, stiffness, perturbation_stiffness, loaded_rollers, roller_load,
-               deflection, pressure, status):
+               gap_shape, counts, fine_shape, fine_counts, contact_length, diameter,
+               inner_curvature, outer_curvature, displacement, stiffness,
+               perturbation_stiffness, loaded_rollers, roller_load, deflection, pressure,
+               status):
     """The equilibrium of every point, one after the other (outputs filled in place, SI)."""
     rollers, slices = cos.size, counts.sum()
     cos_max = cos.max()
-    work, roots = np.empty(gap_shape.size), np.empty(gap_shape.size)
+    size = max(gap_shape.size, fine_shape.size)
+    work, roots = np.empty(size), np.empty(size)
+    sums, inner_stiffness = np.empty((2, 5)), np.empty((rollers, 2))
+    inner_approach, outer_approach = np.empty(rollers), np.empty(rollers)
     state, ring_state = np.empty(8), np.empty(8)
     split = np.empty((rollers, 3))
     spare_load, spare_deflection = np.empty(rollers), np.empty(rollers)
@@ -267,15 +359,18 @@ def crb_points(load, half_clearance, crown, constant, centrifugal, perturbation,
             ok = ok and math.isfinite(roller_load[p, j]) and math.isfinite(deflection[p, j])
             count += roller_load[p, j] > 1e-9 * load[p]
             total = d * cos[j] - hc
-            inner = max(deflection[p, j], 0.0)
-            outer_approach = total - deflection[p, j] if total - free > 0.0 else free
+            inner = inner_approach[j] = max(deflection[p, j], 0.0)
+            outer = outer_approach[j] = total - deflection[p, j] if total - free > 0.0 else free
             line_inner = constant[p] / contact_length[p] * max(inner - gaps[0], 0.0) ** N
-            line_outer = constant[p] / contact_length[p] * max(outer_approach - gaps[0],
-                                                               0.0) ** N
+            line_outer = constant[p] / contact_length[p] * max(outer - gaps[0], 0.0) ** N
             pressure[p, j] = max(math.sqrt(line_inner * MODULUS * inner_curvature[p] / np.pi),
                                  math.sqrt(line_outer * MODULUS * outer_curvature[p] / np.pi))
             beyond = beyond or pressure[p, j] > PRESSURE_LIMIT or \
-                inner + outer_approach > APPROACH_LIMIT * diameter[p]
+                inner + outer > APPROACH_LIMIT * diameter[p]
+        if crown[p] > 0.0 and ok and not beyond:  # slices too few for the crown
+            beyond = slicing_error(inner_approach, outer_approach, cos, gaps, counts,
+                                   crown[p] * fine_shape, fine_counts, work, roots, sums,
+                                   inner_stiffness) > SLICING_ERROR
         loaded_rollers[p] = count
         status[p] = (4 if beyond else 0) if ok else 1
         if not ok:
@@ -287,6 +382,7 @@ def kernel(load, clearance, roller_count, pitch_diameter, roller_diameter, effec
     """The kernel's outputs (SI) for the points ``load``, ``clearance`` of one bearing."""
     size = load.size
     gap_shape, counts = distinct_slices(SLICES, "logarithmic")
+    fine_shape, fine_counts = distinct_slices(max(4 * SLICES, REFERENCE_SLICES), "logarithmic")
     cos = np.cos(2.0 * np.pi * np.arange(roller_count) / roller_count)
     full = np.ones(size)
     out = dict(displacement=np.empty(size), stiffness=np.empty(size),
@@ -299,7 +395,8 @@ def kernel(load, clearance, roller_count, pitch_diameter, roller_diameter, effec
                palmgren_constant(effective_length) * full,
                centrifugal_force(roller_diameter, effective_length, pitch_diameter, SPEED,
                                  DENSITY) * full,
-               1e-6 * full, cos, gap_shape, counts, effective_length * full,
+               1e-6 * full, cos, gap_shape, counts, fine_shape, fine_counts,
+               effective_length * full,
                roller_diameter * full,
                (2.0 / roller_diameter + 2.0 / (pitch_diameter - roller_diameter)) * full,
                (2.0 / roller_diameter - 2.0 / (pitch_diameter + roller_diameter)) * full,
@@ -307,18 +404,42 @@ def kernel(load, clearance, roller_count, pitch_diameter, roller_diameter, effec
     return out
 
 
-def model_grid(points: int) -> Grid:
-    """The throughput benchmark's bearing and grid, with enough loads for ``points``."""
+def definition(points: int) -> str:
+    """The throughput benchmark's bearing and grid, with enough loads for ``points``, as TOML."""
     loads = math.ceil(points / CLEARANCES)
     geometry = "\n".join(f'{name} = "{value / MM:g} mm"' for name, value in GEOMETRY.items()
                          if name != "roller_count")
-    text = (f'[sweep]\nmodel = "crb_radial"\n[fixed]\n'
+    return (f'[sweep]\nmodel = "crb_radial"\n[fixed]\n'
             f'roller_count = {GEOMETRY["roller_count"]}\n{geometry}\n'
             f'crown = "{CROWN / MM * 1e3:g} um"\nspeed = "5000 rpm"\nslices = {SLICES}\n'
             'perturbation = "0.001 mm"\n'
             f'[axes]\nradial_load = {{ start = "1 kN", stop = "12 kN", num = {loads} }}\n'
             f'clearance = {{ start = "0 mm", stop = "0.04 mm", num = {CLEARANCES} }}\n')
-    return Grid.from_sweep(spec.parse(text, "crb_radial_kernel"))
+
+
+def model_grid(points: int) -> Grid:
+    """:func:`definition`'s grid."""
+    return Grid.from_sweep(spec.parse(definition(points), "crb_radial_kernel"))
+
+
+class InProcessRuns:
+    """``bearing-sweep run DEFINITION -o OUTPUT --workers 0 --quiet`` in this process, as the
+    command runs it (the definition parsed, the inputs built, the outputs converted, the
+    netCDF file written and completed), each run into a fresh file of a temporary folder."""
+
+    def __init__(self, folder: str, points: int):
+        self.folder, self.runs = folder, 0
+        self.definition = os.path.join(folder, f"crb_{points}.toml")
+        with open(self.definition, "w") as file:
+            file.write(definition(points))
+
+    def __call__(self):
+        self.runs += 1
+        output = os.path.join(self.folder, f"run{self.runs}.nc")
+        with contextlib.redirect_stdout(io.StringIO()) as said:  # its closing summary
+            if cli.program(["run", self.definition, "-o", output, "--workers", "0", "--quiet"]):
+                raise SystemExit(f"the in-process run failed: {said.getvalue()}")
+        os.remove(output)
 
 
 def largest_difference(model, ours) -> float:
@@ -343,7 +464,7 @@ def largest_difference(model, ours) -> float:
 
 
 def main():
-    probe = model_grid(1)
+    probe = model_grid(2 * CLEARANCES)  # a range needs two loads
     block = probe.model.points_per_call
     grid = model_grid(block)
     varying, _ = grid.inputs(0, grid.size)
@@ -383,6 +504,27 @@ def main():
     print(ratio_line(tuple(r * per_point_scale for r in scipy_timing[:3]) + scipy_timing[3:],
                      "at least 50x"))
 
+    end_to_end(points_in_process=END_TO_END_POINTS)
+
+
+def end_to_end(points_in_process: int):
+    """The command's whole path in this process against the kernel on the same points."""
+    grid = model_grid(points_in_process)
+    varying, _ = grid.inputs(0, grid.size)
+    points = (varying["radial_load"], varying["clearance"], *GEOMETRY.values())
+    with tempfile.TemporaryDirectory() as folder:
+        run, smallest = InProcessRuns(folder, grid.size), InProcessRuns(folder, 2 * CLEARANCES)
+        run(), smallest()  # the first runs open what later runs reuse, untimed
+        # A run's fixed cost, that of a run of a few points, is subtracted from each run.
+        fixed = min(timed(smallest, clock=time.process_time) for _ in range(3))
+        timing = interleaved(run, lambda: kernel(*points), END_TO_END_PAIRS, time.process_time,
+                             fixed)
+    print(f"crb_radial end to end in-process (bearing-sweep run --workers 0 into a netCDF "
+          f"file), {grid.size} points, against the kernel on the same points")
+    print(f"  numba kernel baseline: {timing[4] / grid.size * 1e6:7.2f} us/point (CPU); run: "
+          f"{timing[3] / grid.size * 1e6:7.2f} us/point, fixed cost {fixed * 1e3:.0f} ms "
+          "subtracted (a run of 8 points)")
+    print(ratio_line(timing, "within 1.2x"))
 
 if __name__ == "__main__":
     main()

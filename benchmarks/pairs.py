@@ -13,22 +13,24 @@ SECONDS = 0.3  # of each side's runs in a pair
 
 
 def timed(work, seconds=SECONDS, clock=time.perf_counter) -> float:
-    """Seconds per call of ``work`` on ``clock``, called until ``seconds`` have passed."""
+    """Seconds per call of ``work`` on ``clock``, called at least once and until ``seconds``
+    have passed."""
     calls, start = 0, clock()
-    while clock() - start < seconds:
+    while calls == 0 or clock() - start < seconds:
         work()
         calls += 1
     return (clock() - start) / calls
 
 
-def interleaved(measured, baseline, pairs=PAIRS, clock=time.perf_counter):
+def interleaved(measured, baseline, pairs=PAIRS, clock=time.perf_counter, fixed=0.0):
     """``(median ratio, lowest, highest, measured s/call, baseline s/call, load average)``
     of ``measured`` over ``baseline`` (callables), timed in ``pairs`` pairs on ``clock``
-    (``time.process_time``: this process's CPU time, which others' load disturbs less)."""
+    (``time.process_time``: this process's CPU time, which others' load disturbs less);
+    ``fixed`` seconds are subtracted from each of ``measured``'s calls."""
     load = os.getloadavg()
     ours, theirs = [], []
     for _ in range(pairs):
-        ours.append(timed(measured, clock=clock))
+        ours.append(timed(measured, clock=clock) - fixed)
         theirs.append(timed(baseline, clock=clock))
     ratios = [a / b for a, b in zip(ours, theirs)]
     return (statistics.median(ratios), min(ratios), max(ratios), statistics.median(ours),

@@ -23,7 +23,6 @@ from .lubrication import CELSIUS
 from .profiles import PROFILES, crown_shape, distinct_slices, slice_centres
 from .registry import (CONVERGED, NOT_CONVERGED, OUT_OF_VALIDITY, Constraint, Input,
                              Model, Output)
-from .solvers import solve_increasing
 
 OUTER_CONTACTS = ("crowned", "paper")
 
@@ -32,6 +31,8 @@ _ONE_SLICE = np.ones(1)
 # A roller counts as loaded when it carries more than this fraction of the radial load.
 _LOADED_FRACTION = 1e-9
 _XTOL = 1e-13  # relative tolerance of the displacement solves [-]
+#: Iterations of the ring's solve and of a free roller's before they are given up.
+_MAX_ITERATIONS = 200
 #: Largest error of the forward-difference stiffness, estimated as half the change of the
 #: analytic stiffness across its step (the leading term of a forward difference's error), as
 #: a share of the stiffness [-]: the step must be small against the displacement over which
@@ -196,7 +197,8 @@ class _RollerSet:
         return inner, slice_loads(outer_approach, gaps, self.gap_count, constant,
                                   self.slice_law)
 
-    def slicing_error(self, inner_approach, outer_approach, inner_curvature, outer_curvature):
+    def slicing_error(self, inner_approach, outer_approach, inner_curvature, outer_curvature,
+                      asked=True):
         """Estimated relative error that the slicing leaves in the outputs of each bearing
         ``(P,)`` [-]: the largest of those in its loaded rollers' radial load and stiffness
         (so its displacement and stiffness), its largest contact pressure and its laminae's
@@ -212,13 +214,14 @@ class _RollerSet:
         edge; a sixteenth where it falls as 1/k^2), so the difference estimates the error of
         the ``k`` slices. A straight, aligned roller's slices are all alike and any ``k``
         gives it exactly: zero. ``inner_curvature``, ``outer_curvature``: ``sum(rho)`` of
-        each contact [1/m], ``(P,)``.
+        each contact [1/m], ``(P,)``. Only the bearings ``asked`` (``(P,)`` bool) are
+        estimated; the others' error is zero.
         """
         from .cylindrical_balance import slice_sums  # numba: only when solving
 
         error = np.zeros(self.crown.size)
         tilted = False if self.tilt is None else np.any(self.tilt != 0.0, axis=-1)
-        profiled = np.flatnonzero(((self.crown > 0.0) | tilted)
+        profiled = np.flatnonzero(((self.crown > 0.0) | tilted) & asked
                                   & np.all(np.isfinite(inner_approach), axis=-1))
         loaded = inner_approach[profiled] > 0.0  # (p, Z)
         rows, rollers = np.nonzero(loaded)
@@ -309,7 +312,7 @@ class _RollerSet:
         # Every slice is in contact beyond the largest gap, so Qo >= K (delta - gap)^n.
         free_outer_approaches(self.sorted_gaps, self.gap_count, self.constant, self.centrifugal,
                               self.slice_law == "paper", self.largest_gap + plain, _XTOL,
-                              approach, converged)
+                              approach, converged, _MAX_ITERATIONS)
         return approach, converged.all(axis=-1)
 
     def loads(self, displacement, points, split, roller_load, inner_deflection):
@@ -346,6 +349,19 @@ class _RollerSet:
             self.slice_law == "paper", self.outer_contact == "crowned", _XTOL, split,
             roller_load, inner_deflection)
 
+
+    def balance(self, load, lower, upper, preloaded, perturbation, split, *filled):
+        """The ring's balance of every bearing under ``load`` in its bracket
+        ``[lower, upper]`` (widened where ``preloaded``), with the forward difference's state
+        where ``perturbation`` is finite: :func:`models.cylindrical_balance.ring_balances`,
+        which fills ``filled``."""
+        from .cylindrical_balance import ring_balances  # numba: only when solving
+
+        ring_balances(load, lower, upper, preloaded, perturbation, self.cos,
+                      self.half_clearance, self.floor, self.free_outer_approach,
+                      self.sorted_gaps, self.gap_count, self.constant, self.centrifugal,
+                      self.slice_law == "paper", self.outer_contact == "crowned", _XTOL, split,
+                      *filled, _MAX_ITERATIONS)
 
 def crb_radial(radial_load, roller_count, pitch_diameter, roller_diameter, effective_length,
                clearance=0.0, crown=0.0, crown_profile="logarithmic", slices=60,
@@ -484,12 +500,12 @@ def crb_radial(radial_load, roller_count, pitch_diameter, roller_diameter, effec
     pressure its centrifugal force causes (1e6 r/min gives bearing D some 16 GPa at the
     outer contact).
 
-    Solution: the ring's displacement by the safeguarded Newton of
-    :func:`models.solvers.solve_increasing`, all points at once; at each displacement tried,
-    every roller's force balance point by point in compiled code
-    (:mod:`models.cylindrical_balance`, numba), started from a first-order prediction of its
-    split from its last solution and summing only the slices that touch. A point's results do
-    not depend on the other points of the call.
+    Solution: each point's whole equilibrium in compiled code, one point after the other
+    (:mod:`models.cylindrical_balance`, numba): the ring's displacement by the safeguarded
+    Newton of :func:`models.solvers.solve_increasing`; at each displacement tried, every
+    roller's force balance, started from a first-order prediction of its split from its last
+    solution and summing only the slices that touch. A point's results do not depend on the
+    other points of the call.
 
     References
     ----------
@@ -558,9 +574,10 @@ def crb_radial(radial_load, roller_count, pitch_diameter, roller_diameter, effec
               | (inner + outer + perturbation[:, None] > approach_limit)).any(axis=-1)
     with np.errstate(invalid="ignore"):
         beyond |= perturbation_error > PERTURBATION_ERROR_LIMIT
-    # Slices too few to resolve the crown or the tilt.
-    beyond |= rollers.slicing_error(inner, outer, inner_curvature,
-                                    outer_curvature) > SLICING_ERROR_LIMIT
+    # Slices too few to resolve the crown or the tilt (an estimate as costly as a third of
+    # the solution: made only where it can still change the status).
+    beyond |= rollers.slicing_error(inner, outer, inner_curvature, outer_curvature,
+                                    ~beyond) > SLICING_ERROR_LIMIT
     # Inputs that describe no bearing, whatever the outcome.
     no_bearing = (clearance_beyond_bearings(clearance, pitch - diameter)
                   | outside_operation(speed, pitch, *life[4:])
@@ -579,10 +596,9 @@ def _solve(rollers, load, perturbation):
     count, n = load.size, LINE_CONTACT_EXPONENT
     split = np.full(cos_azimuth.shape + (3,), np.nan)  # no roller solved yet
     # Where each solve's roller loads and approaches go, and where those of other calls do.
-    cache = {"converged": np.ones(count, dtype=bool), "load": np.empty(count),
-             "stiffness": np.empty(count), "roller_load": np.empty(cos_azimuth.shape),
+    cache = {"load": np.empty(count), "stiffness": np.empty(count),
+             "roller_load": np.empty(cos_azimuth.shape),
              "deflection": np.empty(cos_azimuth.shape)}
-    spare = np.empty(cos_azimuth.shape), np.empty(cos_azimuth.shape)
     # Bracket: no roller touches below max(Pd/2, 0); at the upper bound the best-placed roller
     # (at cos_max) alone carries F / cos_max through both contacts, each needing at most the
     # largest gap plus ((F / cos_max + Fc)/K)^(1/n) of approach. With preload, rollers opposite
@@ -594,42 +610,24 @@ def _solve(rollers, load, perturbation):
     reach = (half_clearance + 2.0 * rollers.largest_gap
              + 2.0 * ((load / cos_max + centrifugal) / constant) ** (1.0 / n))
     upper = np.maximum(1.001 * reach / cos_max, lower) + 1e-12
-    preloaded = np.flatnonzero(play < 0.0)
-    for _ in range(64):
-        if preloaded.size == 0:
-            break
-        short = rollers.loads(upper[preloaded], preloaded, split, *spare)[0] < load[preloaded]
-        lower[preloaded[short]] = upper[preloaded[short]]
-        upper[preloaded[short]] *= 2.0
-        preloaded = preloaded[short]
-
     # At zero load the ring of a bearing with clearance may sit anywhere in its play: take the
     # limit of a vanishing load, resting on the best-placed roller, which carries nothing.
     resting = (load == 0.0) & (play >= 0.0)
     touch = (play + rollers.free_outer_approach.max(axis=-1)) / cos_max
     lower = np.where(resting, touch, lower)
     upper = np.where(resting, touch, upper)
-
-    def residual(displacement, index):
-        radial_load, stiffness, converged = rollers.loads(
-            displacement, index, split, cache["roller_load"], cache["deflection"])
-        cache["load"][index], cache["stiffness"][index] = radial_load, stiffness
-        cache["converged"][index] &= converged
-        return radial_load - load[index], stiffness
-
-    displacement, converged = solve_increasing(residual, lower, upper, upper, _XTOL * upper)
+    displacement, converged = np.empty(count), np.empty(count, dtype=bool)
+    rollers_converged = np.empty(count, dtype=bool)
+    perturbed, perturbed_stiffness = np.full(count, np.nan), np.full(count, np.nan)
+    # Each point's whole balance compiled, one point after the other.
+    rollers.balance(load, lower, upper, play < 0.0, perturbation, split, displacement,
+                    cache["load"], cache["stiffness"], converged, rollers_converged,
+                    cache["roller_load"], cache["deflection"], perturbed, perturbed_stiffness)
     # The limit itself: the best-placed roller just touches and carries nothing (evaluated
     # there, rounding in the displacement leaves it a few mN with spinning rollers).
     for name in ("roller_load", "stiffness", "load"):
         cache[name][resting] = 0.0
-    cache["converged"][resting] = True
-    # Forward-difference stiffness with the paper's perturbation (section 2.3), where asked
-    # for, and the analytic stiffness at its other end.
-    perturbed, perturbed_stiffness = np.full(count, np.nan), np.full(count, np.nan)
-    asked = np.flatnonzero(np.isfinite(perturbation))
-    if asked.size:
-        perturbed[asked], perturbed_stiffness[asked] = rollers.loads(
-            displacement[asked] + perturbation[asked], asked, split.copy(), *spare)[:2]
+    cache["converged"] = rollers_converged | resting
     balanced = np.abs(cache["load"] - load) <= 1e-9 * load + 1e-6
     ok = converged & cache["converged"] & balanced & rollers.free_outer_converged
     outputs = {

@@ -1,10 +1,11 @@
-"""The force balance of every roller of :func:`models.cylindrical.crb_radial`, compiled.
+"""The equilibrium of every point of :func:`models.cylindrical.crb_radial`, compiled.
 
-A roller's balance ``Qo(total - x) = Qt(x) + Fc`` is solved for its inner approach ``x`` at
-each radial displacement the ring's solve tries: the hot loop of the model. Here it runs one
-roller at a time with numba, each slice summed only while it touches (the roller's gaps are
-sorted) and the slices' ``(delta - c)^(1/9)`` of a contact taken at once by a loop of plain
-arithmetic that the compiler vectorises. ``error_model="numpy"`` keeps division checks out of
+The ring's radial balance is solved one point after the other (:func:`ring_balances`), so a
+point's data stay at hand; at each radial displacement it tries, every roller's balance
+``Qo(total - x) = Qt(x) + Fc`` is solved for its inner approach ``x``: the hot loop of the
+model. It runs one roller at a time, each slice summed only while it touches (the roller's
+gaps are sorted) and the slices' ``(delta - c)^(1/9)`` of a contact taken at once by a loop of
+plain arithmetic that the compiler vectorises. ``error_model="numpy"`` keeps division checks out of
 the loops. Imported only when a crb_radial point is solved (numba costs half a second to
 import); ``cache=True`` keeps the compiled code beside this file, so workers load it.
 """
@@ -116,6 +117,72 @@ def newton_step(state, x, value, slope):
 
 
 @njit(cache=True, error_model="numpy")
+def bearing_balance(displacement, cos, half_clearance, floor, free, gaps, counts, slices, k,
+                    fc, by_loaded, crowned_outer, xtol, split, roller_load, deflection, work,
+                    roots, state):
+    """:func:`roller_balances` of one bearing at one displacement, its arrays its own rows
+    (``cos``, ``split``, ``roller_load``, ``deflection`` ``(Z, ...)``; ``floor``, ``free``,
+    ``gaps`` ``(1 or Z, ...)``); ``work``, ``roots`` ``(m,)`` and ``state`` ``(8,)`` scratch.
+    Returns the radial load, its stiffness and whether every roller converged."""
+    straight, one = np.zeros(1), np.ones(1)
+    load_sum = stiffness_sum = 0.0
+    converged = True
+    for j in range(cos.size):
+        c = cos[j]
+        # In total_approach's order, so that both give the same bits.
+        reach = displacement * c - half_clearance
+        reach = reach - 2.0 * floor[j if floor.size > 1 else 0]
+        spare = free[j if free.size > 1 else 0]
+        room = reach - spare
+        roller_load[j], deflection[j] = 0.0, room
+        if not room > 0.0:
+            continue
+        own = gaps[j if gaps.shape[0] > 1 else 0]
+        if own[-1] != own[-1]:  # a NaN gap (NaN sorts last): no balance
+            roller_load[j] = deflection[j] = np.nan
+            converged = False
+            continue
+        # A first-order prediction of the split from the last solution: what the total
+        # gained, shared as the contacts' stiffnesses share it. The paper's law, whose
+        # load drops each time a slice comes into contact, may balance a roller at
+        # several splits: there the start stays the last split's fraction of the room,
+        # which finds the balance the model has always found.
+        last, last_total, share = split[j, 0], split[j, 1], split[j, 2]
+        if not math.isfinite(last):
+            start = 0.5 * room
+        elif by_loaded:
+            start = last / (last_total - spare) * room
+        else:
+            start = last + share * (reach - last_total)
+        x = start_solve(state, 0.0, room, start, xtol * room)
+        qi = ki = ko = kt = np.nan
+        done = ok = False
+        for _ in range(MAX_ITER):
+            qi, ki = sliced_contact(x, own, counts, slices, k, by_loaded, work, roots)
+            if crowned_outer:
+                qo, ko = sliced_contact(reach - x, own, counts, slices, k, by_loaded, work,
+                                        roots)
+                qt, kt = qi, ki
+            else:
+                qo, ko = sliced_contact(reach - x, straight, one, 1.0, k, False, work, roots)
+                qt, kt = sliced_contact(x, straight, one, 1.0, k, False, work, roots)
+            x, done, ok = newton_step(state, x, qt + fc - qo, kt + ko)
+            if done:
+                break
+        converged = converged and ok
+        roller_load[j], deflection[j] = qi, x
+        # Series contacts: dQi/d(total) = Qi' Qo' / (Qo' + Qt') (eq. 14, generalised).
+        stiffness = ki * ko / (ko + kt)
+        if stiffness != stiffness:  # 0/0 just at contact
+            stiffness = 0.0
+        split[j, 0], split[j, 1] = x, reach
+        split[j, 2] = ko / (ko + kt) if ko + kt > 0.0 else 1.0
+        load_sum += qi * c
+        stiffness_sum += stiffness * (c * c)  # eq. 13-16
+    return load_sum, stiffness_sum, converged
+
+
+@njit(cache=True, error_model="numpy")
 def roller_balances(displacement, points, cos, half_clearance, floor, free, gaps, counts,
                     constant, centrifugal, by_loaded, crowned_outer, xtol, split, roller_load,
                     deflection):
@@ -162,81 +229,87 @@ def roller_balances(displacement, points, cos, half_clearance, floor, free, gaps
         ``(p,)`` every loaded roller's balance converged.
     """
     slices = counts.sum()
-    straight, one = np.zeros(1), np.ones(1)
     work, roots = np.empty(gaps.shape[-1]), np.empty(gaps.shape[-1])
     state = np.empty(8)
     radial_load, radial_stiffness = np.empty(points.size), np.empty(points.size)
     converged = np.ones(points.size, dtype=np.bool_)
     for i in range(points.size):
         point = points[i]
-        k, fc = constant[point], centrifugal[point]
-        load_sum = stiffness_sum = 0.0
-        for j in range(cos.shape[1]):
-            c = cos[point, j]
-            # In total_approach's order, so that both give the same bits.
-            reach = displacement[i] * c - half_clearance[point]
-            reach = reach - 2.0 * floor[point, j if floor.shape[1] > 1 else 0]
-            spare = free[point, j if free.shape[1] > 1 else 0]
-            room = reach - spare
-            roller_load[point, j], deflection[point, j] = 0.0, room
-            if not room > 0.0:
-                continue
-            own = gaps[point, j if gaps.shape[1] > 1 else 0]
-            if own[-1] != own[-1]:  # a NaN gap (NaN sorts last): no balance
-                roller_load[point, j] = deflection[point, j] = np.nan
-                converged[i] = False
-                continue
-            # A first-order prediction of the split from the last solution: what the total
-            # gained, shared as the contacts' stiffnesses share it. The paper's law, whose
-            # load drops each time a slice comes into contact, may balance a roller at
-            # several splits: there the start stays the last split's fraction of the room,
-            # which finds the balance the model has always found.
-            last, last_total, share = split[point, j, 0], split[point, j, 1], split[point, j, 2]
-            if not math.isfinite(last):
-                start = 0.5 * room
-            elif by_loaded:
-                start = last / (last_total - spare) * room
-            else:
-                start = last + share * (reach - last_total)
-            x = start_solve(state, 0.0, room, start, xtol * room)
-            qi = ki = ko = kt = np.nan
-            done = ok = False
-            for _ in range(MAX_ITER):
-                qi, ki = sliced_contact(x, own, counts, slices, k, by_loaded, work, roots)
-                if crowned_outer:
-                    qo, ko = sliced_contact(reach - x, own, counts, slices, k, by_loaded, work,
-                                            roots)
-                    qt, kt = qi, ki
-                else:
-                    qo, ko = sliced_contact(reach - x, straight, one, 1.0, k, False, work,
-                                            roots)
-                    qt, kt = sliced_contact(x, straight, one, 1.0, k, False, work, roots)
-                x, done, ok = newton_step(state, x, qt + fc - qo, kt + ko)
-                if done:
-                    break
-            converged[i] = converged[i] and ok
-            roller_load[point, j], deflection[point, j] = qi, x
-            # Series contacts: dQi/d(total) = Qi' Qo' / (Qo' + Qt') (eq. 14, generalised).
-            stiffness = ki * ko / (ko + kt)
-            if stiffness != stiffness:  # 0/0 just at contact
-                stiffness = 0.0
-            split[point, j, 0], split[point, j, 1] = x, reach
-            split[point, j, 2] = ko / (ko + kt) if ko + kt > 0.0 else 1.0
-            load_sum += qi * c
-            stiffness_sum += stiffness * (c * c)  # eq. 13-16
-        radial_load[i], radial_stiffness[i] = load_sum, stiffness_sum
+        radial_load[i], radial_stiffness[i], converged[i] = bearing_balance(
+            displacement[i], cos[point], half_clearance[point], floor[point], free[point],
+            gaps[point], counts, slices, constant[point], centrifugal[point], by_loaded,
+            crowned_outer, xtol, split[point], roller_load[point], deflection[point], work,
+            roots, state)
     return radial_load, radial_stiffness, converged
 
 
 @njit(cache=True, error_model="numpy")
+def ring_balances(load, lower, upper, preloaded, perturbation, cos, half_clearance, floor,
+                  free, gaps, counts, constant, centrifugal, by_loaded, crowned_outer, xtol,
+                  split, displacement, radial_load, radial_stiffness, converged,
+                  rollers_converged, roller_load, deflection, perturbed_load,
+                  perturbed_stiffness, max_iter):
+    """The ring's radial balance ``F_r(delta_r) = load`` of every bearing, point by point: the
+    safeguarded Newton of :func:`models.solvers.solve_increasing` (one entry, started at
+    ``upper``, to ``xtol`` relative to it, given up after ``max_iter`` iterations) around
+    :func:`bearing_balance`, each point's data at hand while it is solved.
+
+    ``load``, ``lower``, ``upper`` ``(P,)``: the load and the bracket; where ``preloaded``,
+    the upper end is first doubled (up to 64 times, the lower end following) until the
+    rollers carry the load there. ``perturbation`` ``(P,)``: where finite, the load and
+    stiffness with the ring moved on by it from the solution (from each roller's solved
+    split) go to ``perturbed_load``, ``perturbed_stiffness`` (left as they are elsewhere).
+    The other arrays are :func:`roller_balances`'; filled: ``displacement``, ``radial_load``,
+    ``radial_stiffness``, ``converged`` (the ring's solve) and ``rollers_converged`` (every
+    roller's balance at every displacement tried) ``(P,)``, ``roller_load`` and
+    ``deflection`` ``(P, Z)`` at the solution, ``split`` ``(P, Z, 3)`` (NaN on entry) at the
+    solution.
+    """
+    slices = counts.sum()
+    rollers = cos.shape[1]
+    work, roots = np.empty(gaps.shape[-1]), np.empty(gaps.shape[-1])
+    state, ring = np.empty(8), np.empty(8)
+    spare_load, spare_deflection = np.empty(rollers), np.empty(rollers)
+    moved = np.empty((rollers, 3))
+    for p in range(load.size):
+        args = (cos[p], half_clearance[p], floor[p], free[p], gaps[p], counts, slices,
+                constant[p], centrifugal[p], by_loaded, crowned_outer, xtol)
+        low, high = lower[p], upper[p]
+        if preloaded[p]:  # rollers opposite the load push back: widen until it holds
+            for _ in range(64):
+                pushed = bearing_balance(high, *args, split[p], spare_load, spare_deflection,
+                                         work, roots, state)[0]
+                if not pushed < load[p]:
+                    break
+                low, high = high, 2.0 * high
+        d = start_solve(ring, low, high, high, xtol * high)
+        rollers_ok, ok = True, False
+        for _ in range(max_iter):
+            radial, stiffness, balanced = bearing_balance(d, *args, split[p], roller_load[p],
+                                                          deflection[p], work, roots, state)
+            radial_load[p], radial_stiffness[p] = radial, stiffness
+            rollers_ok = rollers_ok and balanced
+            d, done, ok = newton_step(ring, d, radial - load[p], stiffness)
+            if done:
+                break
+        displacement[p], converged[p], rollers_converged[p] = d, ok, rollers_ok
+        if math.isfinite(perturbation[p]):
+            moved[:] = split[p]
+            perturbed_load[p], perturbed_stiffness[p], _ = bearing_balance(
+                d + perturbation[p], *args, moved, spare_load, spare_deflection, work, roots,
+                state)
+
+
+@njit(cache=True, error_model="numpy")
 def free_outer_approaches(gaps, counts, constant, centrifugal, by_loaded, upper, xtol,
-                          approach, converged):
+                          approach, converged, max_iter):
     """Outer approach of a roller held by its centrifugal force alone, ``Qo(a) = Fc``.
 
     For every row of ``gaps`` (``(P, 1 or Z, m)``, sorted) whose bearing spins
     (``centrifugal > 0``), solved in ``[0, upper]`` (``(P,)``, where every slice already
-    touches) to ``xtol`` relative to ``upper``: ``approach`` and ``converged`` (``(P, 1 or Z)``)
-    are set there and left as they are elsewhere.
+    touches) to ``xtol`` relative to ``upper`` (given up after ``max_iter`` iterations):
+    ``approach`` and ``converged`` (``(P, 1 or Z)``) are set there and left as they are
+    elsewhere.
     """
     slices = counts.sum()
     work, roots = np.empty(gaps.shape[-1]), np.empty(gaps.shape[-1])
@@ -251,7 +324,7 @@ def free_outer_approaches(gaps, counts, constant, centrifugal, by_loaded, upper,
                 continue
             a = start_solve(state, 0.0, top, 0.5 * top, xtol * top)
             ok = False
-            for _ in range(MAX_ITER):
+            for _ in range(max_iter):
                 load, stiffness = sliced_contact(a, gaps[p, r], counts, slices, k, by_loaded,
                                                  work, roots)
                 a, done, ok = newton_step(state, a, load - fc, stiffness)

@@ -68,6 +68,11 @@ def parse_unit(text: str) -> pint.Unit:
     """The pint unit for ``text`` ("mm", "N/mm^(10/9)", "rpm", "1", ...)."""
     if not isinstance(text, str):
         raise UnitError(f"{text!r} is not a unit: expected a string")
+    return _parsed_unit(text)
+
+
+@lru_cache(maxsize=1024)  # every value of an axis names its unit: parse each unit once
+def _parsed_unit(text: str) -> pint.Unit:
     problem = _unreadable(text)
     if problem:
         raise UnitError(f"unknown unit {_short(text)!r} ({problem})")
@@ -182,8 +187,22 @@ def convert(magnitude, unit: pint.Unit, target: pint.Unit):
     the stored unit): a plain reciprocal time is revolutions per that time against a
     rotational speed on either side ("3000 1/min" is 3000 rpm), never radians.
     """
+    unit, target, factor = _conversion(unit, target)
+    magnitude = np.asarray(magnitude, dtype=float)
+    if factor is None:
+        return UREG.Quantity(magnitude, unit).to(target).magnitude
+    return magnitude * factor  # as pint multiplies, without its cost for every value
+
+
+@lru_cache(maxsize=1024)  # once per pair of units, not per value converted
+def _conversion(unit: pint.Unit, target: pint.Unit) -> tuple:
+    """:func:`_read_as_revolutions`' units and the factor pint multiplies a value in the one
+    by to express it in the other; None where either has a shifted zero (pint adds the
+    offsets)."""
     unit, target = _read_as_revolutions(unit, target)
-    return UREG.Quantity(np.asarray(magnitude, dtype=float), unit).to(target).magnitude
+    if is_offset(unit) or is_offset(target):
+        return unit, target, None
+    return unit, target, UREG.Quantity(1.0, unit).to(target).magnitude
 
 
 def tidy(values, scale: float = 0.0) -> np.ndarray:
@@ -195,9 +214,12 @@ def tidy(values, scale: float = 0.0) -> np.ndarray:
     values = np.asarray(values, dtype=float)
     if scale:  # at the 15th digit of the scale
         values = np.round(values, int(14 - np.floor(np.log10(abs(scale))))) + 0.0  # not -0
+    if values.ndim == 0:  # one value of an axis: most of them
+        return np.array(float(f"{values:.15g}"))
     return np.array([float(f"{v:.15g}") for v in values.ravel()]).reshape(values.shape)
 
 
+@lru_cache(maxsize=1024)
 def conversion_scale(unit: pint.Unit, target: pint.Unit) -> float:
     """The size of the numbers a conversion from ``unit`` to ``target`` goes through: an
     offset unit's zero (absolute zero in degC is -273.15), else 0."""
