@@ -45,7 +45,12 @@ def cage_dynamics(radial_load, speed, roller_count, inner_raceway_diameter, roll
 
     Parameters
     ----------
-    radial_load ... pocket_friction
+    radial_load, speed, roller_count, inner_raceway_diameter, roller_diameter,
+    roller_length, effective_length, clearance, cage_inner_diameter, cage_outer_diameter,
+    cage_width, roller_density, oil_temperature, viscosity_40, viscosity_100, oil_density,
+    pressure_viscosity, youngs_modulus, poisson_ratio, traction_peak, traction_peak_speed,
+    traction_limit, oil_fraction, drag_coefficient, pocket_clearance,
+    pocket_wrap_angle, pocket_film_fill, end_film_thickness, end_film_fill, pocket_friction
         As :func:`models.cage_slip.cage_slip`.
     cage_density : array_like
         [kg/m^3]; the cage is an annulus of the given diameters and width, less its pockets.

@@ -60,7 +60,11 @@ def cage_dynamics_6dof(radial_load, speed, roller_count, inner_raceway_diameter,
 
     Parameters
     ----------
-    radial_load ... pocket_friction, branch
+    radial_load, speed, roller_count, inner_raceway_diameter, roller_diameter,
+    roller_length, effective_length, clearance, cage_inner_diameter, cage_outer_diameter,
+    cage_width, roller_density, oil_temperature, viscosity_40, viscosity_100, oil_density,
+    pressure_viscosity, youngs_modulus, poisson_ratio, traction_peak, traction_peak_speed,
+    traction_limit, oil_fraction, drag_coefficient, pocket_clearance, pocket_friction, branch
         As :func:`models.cage_slip.cage_slip`; ``pocket_friction`` is the Coulomb coefficient
         of every dry element (eq. 2, 0.1 in the paper).
     pocket_film_fill : array_like
@@ -105,7 +109,9 @@ def cage_dynamics_6dof(radial_load, speed, roller_count, inner_raceway_diameter,
         pocket films, not by the tolerance.
     integrator : {"adaptive", "rk4"}
         Dormand-Prince 5(4) with step control, or the paper's fixed-step fourth-order
-        Runge-Kutta method at ``rk4_step`` [s].
+        Runge-Kutta method at ``rk4_step``.
+    rk4_step : float
+        The fixed step of ``integrator="rk4"`` [s].
 
     Returns
     -------

@@ -89,7 +89,9 @@ def cage_slip(radial_load, speed, roller_count, inner_raceway_diameter, roller_d
     Parameters
     ----------
     radial_load : array_like
-        ``F_r`` [N]. speed : inner-ring speed ``omega_i`` [rad/s].
+        ``F_r`` [N].
+    speed : array_like
+        Inner-ring speed ``omega_i`` [rad/s].
     roller_count : int
     inner_raceway_diameter, roller_diameter, clearance : array_like
         ``d_i``, ``D``, diametral clearance ``P_d`` [m]; the outer raceway is
@@ -102,9 +104,13 @@ def cage_slip(radial_load, speed, roller_count, inner_raceway_diameter, roller_d
     roller_density : array_like
         [kg/m^3].
     oil_temperature : array_like
-        [K]. viscosity_40, viscosity_100 : kinematic viscosity at 40 and 100 deg C [m^2/s]
-        (Walther's law between them). oil_density [kg/m^3]. pressure_viscosity ``alpha``
-        [1/Pa] (film thickness only).
+        [K].
+    viscosity_40, viscosity_100 : array_like
+        Kinematic viscosity at 40 and 100 deg C [m^2/s] (Walther's law between them).
+    oil_density : array_like
+        [kg/m^3].
+    pressure_viscosity : array_like
+        ``alpha`` [1/Pa] (film thickness only).
     youngs_modulus, poisson_ratio : array_like
         Rollers and rings.
     traction_peak, traction_peak_speed, traction_limit : array_like

@@ -368,8 +368,9 @@ def hertz_point(load, curvature_1x, curvature_1y, curvature_2x=0.0, curvature_2y
         positive convex, zero flat, negative concave. Both relative curvatures
         ``rho_1x + rho_2x`` and ``rho_1y + rho_2y`` must be positive.
     youngs_modulus, poisson_ratio : array_like
-        ``E_1`` [Pa] and ``nu_1`` [-]; ``youngs_modulus_2``, ``poisson_ratio_2`` for body 2
-        (default: the same material).
+        ``E_1`` [Pa] and ``nu_1`` [-] of body 1.
+    youngs_modulus_2, poisson_ratio_2 : array_like or None
+        ``E_2`` [Pa] and ``nu_2`` [-] of body 2 (None: the same material as body 1).
     formula : {'exact', 'hamrock_brewe'}
         Ellipticity and elliptic integrals exact or by Hamrock and Brewe's closed forms.
 

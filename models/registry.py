@@ -14,13 +14,12 @@ other models stay available.
 """
 from __future__ import annotations
 
-import importlib
 import inspect
 import logging
 import re
 import types
 from dataclasses import dataclass, field
-from importlib.metadata import EntryPoint, entry_points
+from importlib.metadata import EntryPoint, PackageNotFoundError, distribution, entry_points
 from typing import Callable
 
 import numpy as np
@@ -371,8 +370,12 @@ def all_models() -> dict[str, Model]:
     """
     if not _MODELS:
         origins: dict[str, str] = {}  # model name -> "distribution version" that declared it
+        read = set()  # a module named by several entry points (one per model) is read once
         for entry_point in sorted(entry_points(group=ENTRY_POINT_GROUP), key=_loading_order):
-            _MODELS.update(_models_of(entry_point, origins))
+            source = (entry_point.dist.name if entry_point.dist else None, entry_point.value)
+            if source not in read:
+                read.add(source)
+                _MODELS.update(_models_of(entry_point, origins))
     return dict(_MODELS)
 
 
@@ -416,27 +419,28 @@ def _models_of(entry_point: EntryPoint, origins: dict[str, str]) -> dict[str, Mo
     return found
 
 
-#: Our own models and the module of this package that declares each, so that a sweep of one
-#: of them imports that module alone (the cage models' numba and scipy.integrate cost half a
-#: second to import); a test holds it equal to what the entry points declare.
-OWN_MODEL_MODULES = {
-    "crb_radial": "cylindrical", "ball_5dof": "ball", "trb_load": "tapered",
-    "trb_rib": "tapered", "hertz_point": "contact", "crb_runout": "runout",
-    "cage_slip": "cage_slip", "cage_dynamics": "cage_dynamics",
-    "cage_dynamics_6dof": "cage_dynamics_6dof",
-}
+def own_entry_points() -> dict[str, EntryPoint]:
+    """This package's own entry points of the group, by name: each is named after the model
+    it declares. Read from this distribution's metadata alone (the whole group's reads every
+    installed distribution's); empty where the package runs uninstalled."""
+    try:
+        found = distribution(_OWN_DISTRIBUTION).entry_points.select(group=ENTRY_POINT_GROUP)
+    except PackageNotFoundError:
+        return {}
+    return {entry_point.name: entry_point for entry_point in found}
 
 
 def get_model(name: str) -> Model:
     """The model called ``name``; ``KeyError`` if there is none.
 
-    One of ours is found in its own module without importing the others (ours keep their
-    names whatever plug-ins declare, so the answer is the same); any other name loads every
-    entry point.
+    One of ours is found through the entry point named after it, in its own module, without
+    importing the others (the cage models' numba and scipy.integrate cost half a second to
+    import; ours keep their names whatever plug-ins declare, so the answer is the same); any
+    other name loads every entry point.
     """
-    if not _MODELS and name in OWN_MODEL_MODULES:
-        module = importlib.import_module(f"{__package__}.{OWN_MODEL_MODULES[name]}")
-        for model in module.MODELS:
+    if not _MODELS:
+        entry_point = own_entry_points().get(name)
+        for model in getattr(entry_point.load(), "MODELS", ()) if entry_point else ():
             if model.name == name:
                 return model
     return all_models()[name]

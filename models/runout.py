@@ -171,8 +171,10 @@ def crb_runout(inner_raceway_diameter, outer_raceway_diameter, roller_diameter, 
     roller_roundness_order, roller_roundness_amplitude, roller_roundness_phase : array_like
         One harmonic per roller (eq. 6): order ``n`` (0: none), amplitude ``C`` [m] (peak
         deviation of the radius), phase ``psi`` [rad]; ``(Z,)`` or one value for all.
-    inner_roundness_*, outer_roundness_* : array_like
-        The raceways' harmonics (eq. 4-5), one entry per harmonic.
+    inner_roundness_order, inner_roundness_amplitude, inner_roundness_phase,
+    outer_roundness_order, outer_roundness_amplitude, outer_roundness_phase : array_like
+        The raceways' harmonics (eq. 4-5), one entry per harmonic: order, amplitude [m],
+        phase [rad].
     revolutions, steps_per_revolution : int
         Inner-ring revolutions computed and steps in each.
     roller_spin : {'absolute', 'paper'}

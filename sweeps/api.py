@@ -9,21 +9,35 @@ from __future__ import annotations
 import os
 import sys
 from pathlib import Path
-
-import xarray as xr
+from typing import TYPE_CHECKING
 
 from .models.registry import REQUIRED, STATUS_DESCRIPTIONS, all_models
 from . import spec
-from .compute import RESULT_COMPLETE, Executor, Interrupts, run_sweep
+from .compute import RESULT_COMPLETE, Interrupts, run_sweep
+from .executor import Executor, check_scheduler_address
 from .stores import is_result, open_result, result_engine
 from .stores.netcdf import write_netcdf
 from .stores.paths import ZARR_SUFFIX, argument_text, check_output, is_zarr, path_argument
 from .stores.zarr import write_dataset as write_zarr
 from .spec import SpecError, Sweep
 
+if TYPE_CHECKING:  # xarray only once a dataset is made or read: `bearing-sweep run` needs none
+    import xarray as xr
 
-def run(definition, *, output=None, client=None, workers=None, progress=True, encoding=None,
-        compression=None) -> xr.Dataset:
+
+def argument_named(key: str, *value) -> str:
+    """How a message of the API names its argument ``key`` (with its value: ``workers=-1``);
+    the command line names its options instead (``--workers -1``)."""
+    return f"{key}={argument_text(value[0])}" if value else f"argument {key}"
+
+
+def _stderr(message: str):
+    print(message, file=sys.stderr)
+
+
+def run(definition, *, output=None, client=None, scheduler=None, workers=None, chunk_size=None,
+        fresh=False, progress=True, log=None, summary=None, encoding=None, compression=None,
+        open_output=True, named=argument_named) -> xr.Dataset | None:
     """Compute a sweep and return its labelled dataset.
 
     Parameters
@@ -41,20 +55,41 @@ def run(definition, *, output=None, client=None, workers=None, progress=True, en
         An existing client to compute the chunks on (a ``dask_jobqueue.SLURMCluster``'s, for
         one); it is left open. Its workers need the same bearing-sweep installed, and to
         write a zarr ``output`` the same filesystem at the same path.
+    scheduler : str, optional
+        The address of a running dask.distributed scheduler to compute on
+        (``"tcp://HOST:PORT"``), instead of ``client``; with the same needs of its workers.
     workers : int, optional
         Without ``client``: a local dask cluster of this many single-threaded processes, 0 to
         compute in this process (default: two, or in this process for a small sweep).
+    chunk_size : int, optional
+        Grid points per task (default: chosen from the model's cost).
+    fresh : bool
+        Discard the finished chunks an interrupted run with the same ``output`` left, and
+        start over (by default the run resumes from them).
     progress : bool
-        A progress bar and a closing summary on stderr.
+        A progress bar on stderr, and there too by default the messages and the summary.
+    log : callable, optional
+        Called with each message for the user, one line of text: resuming an interrupted
+        run, discarding its chunks, the estimate of a long or large run, an interrupt that
+        came once the result was complete (default: printed on stderr with ``progress``).
+    summary : callable, optional
+        Called with the closing summary (points, statuses, time; default: printed on stderr
+        with ``progress``).
     encoding, compression : str, optional
         How ``output`` stores the outputs, over the definition's ``[output]`` table, as
         ``bearing-sweep run --encoding --compression`` takes them: ``"float32"``,
         ``"zlib:4"``, ``"none"`` (the returned dataset carries them as its variables'
         ``encoding``, for ``to_netcdf``).
+    open_output : bool
+        False: with ``output``, return None once it is written rather than open it (a script
+        that only writes results then needs no xarray).
+    named : callable
+        How a message names an argument: ``named(key)``, ``named(key, value)``; the command
+        line gives its options' names (``--workers -1`` rather than ``workers=-1``).
 
     Returns
     -------
-    xarray.Dataset
+    xarray.Dataset or None
         The sweep's axes as dimensions, every output (on the axes of the inputs it depends
         on, where it declares them: ``xarray.broadcast`` spreads it over the others) and the
         ``status`` of every point, with units and provenance: the same variables, values and
@@ -74,32 +109,58 @@ def run(definition, *, output=None, client=None, workers=None, progress=True, en
         A local cluster that cannot start (:class:`~bearing_sweep.executor.ClusterFailure`),
         workers of another version.
     """
-    sweep = _sweep(definition)
-    sweep.storage = spec.storage_options(sweep.storage, encoding, compression,
-                                         lambda key: f"argument {key}")
+    check_cluster_arguments(workers, scheduler, client, named)
+    if chunk_size is not None and (isinstance(chunk_size, bool) or not isinstance(chunk_size, int)
+                                   or chunk_size < 1):
+        raise SpecError(f"{named('chunk_size', chunk_size)}: expected a positive integer")
+    for flag, value in (("fresh", fresh), ("progress", progress), ("open_output", open_output)):
+        _flag_argument(value, flag)
     output = path_argument(output, "output")
-    _flag_argument(progress, "progress")
+    sweep = _sweep(definition)
+    sweep.storage = spec.storage_options(sweep.storage, encoding, compression, named)
+    default = _stderr if progress else None
+    log = default if log is None else log
+    summary = default if summary is None else summary
+    # A Ctrl-C once the result is in place waits for the cleanup: the result is complete.
+    with Interrupts() as interrupts:
+        with Executor(workers, scheduler, client) as executor:
+            done = run_sweep(sweep, output, executor, chunk_size, progress, fresh, log,
+                             interrupts)
+        if summary is not None:
+            summary(done.text())
+        if interrupts.ignored and log is not None:
+            log(RESULT_COMPLETE)
+        if output is None:
+            return done.dataset
+        if not open_output:
+            return None
+        import xarray as xr
+
+        return xr.open_dataset(output, engine=result_engine(output))
+
+
+def check_cluster_arguments(workers=None, scheduler=None, client=None, named=argument_named):
+    """Refuse (:class:`SpecError`) a cluster asked for in a way that cannot be, before anything
+    starts: a negative or non-integer ``workers``, ``workers=0`` (in this process) with a
+    ``scheduler``, ``workers`` or ``scheduler`` with a ``client``, an address that names no
+    scheduler, a ``client`` that is not a dask.distributed Client."""
     if workers is not None and (isinstance(workers, bool) or not isinstance(workers, int)
                                 or workers < 0):
-        raise SpecError(f"workers={argument_text(workers)}: expected 0 (in this process) or "
-                        "more workers")
+        raise SpecError(f"{named('workers', workers)}: expected 0 (in-process) or more workers")
     if workers is not None and client is not None:
         raise SpecError("workers and client exclude each other: the client's cluster has its "
                         "own workers")
+    if scheduler is not None and client is not None:
+        raise SpecError("scheduler and client exclude each other: the client is connected to "
+                        "its own scheduler")
+    if workers == 0 and scheduler:
+        raise SpecError(f"{named('workers', 0)} and {named('scheduler')} exclude each other")
+    if scheduler is not None:
+        if not isinstance(scheduler, str):
+            raise SpecError(f"{named('scheduler', scheduler)}: expected a scheduler's address, "
+                            "a string (tcp://HOST:PORT)")
+        check_scheduler_address(scheduler, named("scheduler", scheduler))
     _client_argument(client)
-    note = (lambda message: print(message, file=sys.stderr)) if progress else None
-    # A Ctrl-C once the result is in place waits for the cleanup: the result is complete.
-    with Interrupts() as interrupts:
-        with Executor(workers, client=client) as executor:
-            summary = run_sweep(sweep, output, executor, progress=progress, log=note,
-                                interrupts=interrupts)
-        if progress:
-            print(summary.text(), file=sys.stderr)
-            if interrupts.ignored:
-                print(RESULT_COMPLETE, file=sys.stderr)
-        if output is None:
-            return summary.dataset
-        return xr.open_dataset(output, engine=result_engine(output))
 
 
 def check(definition) -> None:
@@ -138,6 +199,8 @@ def analyze(result, *, output=None) -> xr.Dataset:
     output = path_argument(output, "output")
     if output is not None:
         _check_analysis_output(output)
+    import xarray as xr
+
     if not isinstance(result, xr.Dataset):
         result = path_argument(result, "result", "a sampled result: an xarray.Dataset or",
                                optional=False)

@@ -10,12 +10,11 @@ import sys
 from pathlib import Path
 
 from .models.catalogue import PRESETS
-from .models.registry import all_models
-from . import schema, spec, stores
+from . import api, schema, spec
 from .stores.durable import OutputLock, write_durably
 from .stores.paths import check_output, check_outside_results
-from .compute import RESULT_COMPLETE, Interrupts, WorkerMismatch, run_sweep
-from .executor import ClusterFailure, Executor, check_scheduler_address
+from .compute import WorkerMismatch
+from .executor import ClusterFailure, Executor
 from .dependence import InconsistentOutput
 from .interrupts import Terminated, terminated_as_interrupt
 from .spec import SpecError
@@ -109,13 +108,10 @@ def _parser() -> argparse.ArgumentParser:
     return parser
 
 
-def _check_cluster_options(args):
-    if args.workers is not None and args.workers < 0:
-        raise SpecError(f"--workers {args.workers}: expected 0 (in-process) or more workers")
-    if args.workers == 0 and args.scheduler:
-        raise SpecError("--workers 0 and --scheduler exclude each other")
-    if args.scheduler:
-        check_scheduler_address(args.scheduler)
+def _option(key: str, *value) -> str:
+    """An argument of the API as the option that gives it: ``--chunk-size 0``."""
+    option = "--" + key.replace("_", "-")
+    return f"{option} {value[0]}" if value else option
 
 
 def _note(message: str):
@@ -124,8 +120,6 @@ def _note(message: str):
 
 def _describe(name: str) -> str:
     """The text of the declaration :func:`bearing_sweep.describe` gives as data."""
-    from . import api
-
     model = api.describe(name)
     lines = [f"{model['name']} (version {model['version']}): {model['summary']}",
              f"Reference: {model['reference']}", "", "Inputs:"]
@@ -225,13 +219,12 @@ def _our_schema(path: Path) -> bool:
 
 
 def main(argv=None) -> int:
-    interrupts = Interrupts()  # of a run: once its result is in place, it is complete
     args = None
     try:
         args = _parser().parse_args(argv)
         if args.command == "models":
-            for model in all_models().values():
-                print(f"{model.name}: {model.summary}")
+            for model in api.list_models():
+                print(f"{model['name']}: {model['summary']}")
         elif args.command == "describe":
             print(_describe(args.model))
         elif args.command == "presets":
@@ -243,38 +236,26 @@ def main(argv=None) -> int:
         elif args.command == "schema":
             _schema(args.model, args.output)
         elif args.command == "plot":
-            if not stores.is_result(args.result):
-                raise SpecError(f"{args.result}: no such result file")
             output = args.output or args.result.with_suffix(".png")
             from . import quicklook  # matplotlib only for who plots
 
-            quicklook.check_figure_path(output, args.result)
             quicklook.plot(args.result, args.variable, x=args.x, output=output)
             print(f"wrote {output}")
         elif args.command == "run":
-            _check_cluster_options(args)
-            if args.chunk_size is not None and args.chunk_size < 1:
-                raise SpecError(f"--chunk-size {args.chunk_size}: expected a positive integer")
-            sweep = spec.load(args.definition)
-            sweep.storage = spec.storage_options(sweep.storage, args.encoding, args.compression)
             output = args.output or Path("results") / f"{args.definition.stem}.nc"
-            with interrupts:
-                with Executor(args.workers, args.scheduler) as executor:
-                    summary = run_sweep(sweep, output, executor, args.chunk_size,
-                                        not args.quiet, args.fresh, _note, interrupts)
-                print(summary.text())
-                if interrupts.ignored:
-                    _note(RESULT_COMPLETE)
+            api.run(args.definition, output=output, scheduler=args.scheduler or None,
+                    workers=args.workers, chunk_size=args.chunk_size,
+                    fresh=args.fresh, progress=not args.quiet, log=_note, summary=print,
+                    encoding=args.encoding, compression=args.compression, open_output=False,
+                    named=_option)
         elif args.command == "analyze":
-            from . import api  # xarray: not for a run, which writes its file without it
-
             output = args.output or args.result.with_name(f"{args.result.stem}_analysis.nc")
             print(_indices_table(api.analyze(args.result, output=output)))
             print(f"wrote {output}")
         elif args.command == "study":
             from . import study
 
-            _check_cluster_options(args)
+            api.check_cluster_arguments(args.workers, args.scheduler or None, named=_option)
             chosen = study.select(args.studies or study.default_studies_folder(), args.name)
             study.check_folders(chosen, args.results, args.figures)
             for one in chosen:  # every result it may write, before any computing
@@ -311,9 +292,6 @@ def main(argv=None) -> int:
               file=sys.stderr)
         return 1
     except KeyboardInterrupt as error:
-        if interrupts.result_in_place:  # after the run's own cleanup: the result is complete
-            print(RESULT_COMPLETE, file=sys.stderr)
-            return 0
         computing = args is not None and args.command in ("run", "study")
         word = "terminated" if isinstance(error, Terminated) else "interrupted"
         print(f"{word}: the finished chunks are kept; run the same command again to resume"

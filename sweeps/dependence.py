@@ -85,7 +85,7 @@ def first_held(grid: Grid, output, start: int, stop: int, values: np.ndarray,
 
 
 def split_reduced(grid: Grid, start: int, stop: int, part: dict) -> tuple[dict, dict]:
-    """A computed chunk of points ``start..stop-1`` (``part``, as ``compute.evaluate_chunk``
+    """A computed chunk of points ``start..stop-1`` (``part``, as ``evaluate.evaluate_chunk``
     returns it) as the process that computed it sends it on: the :func:`first_held` points
     and values of each output stored on fewer dimensions, ``{name: (points, values)}``, and
     the other outputs' values, ``{name: values}``."""

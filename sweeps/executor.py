@@ -51,12 +51,14 @@ def available_cores() -> int:
         return os.cpu_count() or 1
 
 
-def check_scheduler_address(address: str) -> str:
-    """Refuse at once (:class:`SpecError`) an address that names no dask scheduler."""
+def check_scheduler_address(address: str, named: str | None = None) -> str:
+    """Refuse at once (:class:`SpecError`) an address that names no dask scheduler; the
+    message names it as ``named`` (default: as the command line's option)."""
     from distributed.comm import parse_address, parse_host_port
     from distributed.comm.registry import backends
 
-    expected = f"--scheduler {address}: not a scheduler address (expected tcp://HOST:PORT)"
+    named = named or f"--scheduler {address}"
+    expected = f"{named}: not a scheduler address (expected tcp://HOST:PORT)"
     try:
         scheme, location = parse_address(address, strict=False)
         if scheme not in backends:

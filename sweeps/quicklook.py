@@ -21,7 +21,7 @@ from matplotlib.lines import Line2D
 
 from .dependence import flag_holds, held_points, on_grid
 from .models.registry import get_model
-from .stores import open_result
+from .stores import is_result, open_result
 from .stores.durable import OutputLock, write_durably
 from .stores.paths import argument_text, check_outside_results, is_zarr, path_argument
 from .plotting import MAKER, conditions, in_unit, label, metadata, shown_unit, subplots
@@ -83,6 +83,10 @@ def plot(result, variable: str | None = None, *, x: str | None = None, output=No
             raise SpecError(f"{name}={argument_text(value)}: expected the name of "
                             + ("an output" if name == "variable" else "an axis") + ", a string")
     source = "the dataset" if isinstance(result, xr.Dataset) else str(result)
+    if source != "the dataset" and not is_result(result):
+        raise SpecError(f"{result}: no such result file")
+    if output is not None:  # before the result is read: a path refused costs nothing
+        output = check_figure_path(output, None if isinstance(result, xr.Dataset) else result)
     data = result if isinstance(result, xr.Dataset) else _open(result)
     if "status" not in data or "flag_meanings" not in data["status"].attrs:
         raise SpecError(f"{source}: not a result of bearing-sweep run (it has no status "
@@ -104,8 +108,6 @@ def plot(result, variable: str | None = None, *, x: str | None = None, output=No
     along = data[x].dims[0]  # the dimension x lies along: a zipped or sampled input's axis
     if along in distributed:
         distributed.remove(along)
-    if output is not None:
-        output = check_figure_path(output, None if isinstance(result, xr.Dataset) else result)
     rest = [d for d in axes + categorical if d != along and data.sizes[d] > 1]
     lines, columns, rows = (rest + [None] * 3)[:3]
     held = rest[3:]

@@ -15,6 +15,7 @@ A package that adds models (README "Add your own model") can call these from its
 from __future__ import annotations
 
 import inspect
+import re
 import textwrap
 from pathlib import Path
 
@@ -32,15 +33,16 @@ def assert_valid_declaration(model: Model):
     (:func:`bearing_sweep.models.registry.declaration_problems`: parameters and inputs alike
     and in order, required inputs without defaults, choice and count defaults equal, output
     dimensions sized, no name twice), every declared unit must read, each entry unit of an
-    output must match the shape of its dimensions, and the function's default of a quantity
-    must be the declared default in SI base units.
+    output must match the shape of its dimensions, the function's default of a quantity
+    must be the declared default in SI base units, and the Parameters section of the
+    function's docstring (numpydoc) must describe each declared input once, and nothing else.
 
     Raises
     ------
     AssertionError
         Naming the model and every problem found.
     """
-    problems = declaration_problems(model) + _unit_problems(model)
+    problems = declaration_problems(model) + _unit_problems(model) + _docstring_problems(model)
     assert not problems, f"model {model.name!r}: " + "; ".join(problems)
 
 
@@ -77,6 +79,49 @@ def _unit_problems(model: Model) -> list[str]:
                             f"{parameters[item.name].default!r} is not the declared "
                             f"{item.default!r} {item.unit} in SI base units "
                             f"({np.asarray(si).tolist()!r})")
+    return problems
+
+
+#: A section title of a numpydoc docstring: a line, then a line of dashes.
+_SECTION = re.compile(r"^(\w[\w ]*)\n-+$", re.MULTILINE)
+
+
+def documented_parameters(function) -> list[str] | None:
+    """The names the Parameters section of ``function``'s numpydoc docstring describes, in
+    order (None without such a section): each entry's header, its unindented lines, a list
+    of names that goes on after a trailing comma, then `` : type``."""
+    doc = inspect.getdoc(function) or ""
+    sections = {m.group(1): m.end() for m in _SECTION.finditer(doc)}
+    if "Parameters" not in sections:
+        return None
+    body = doc[sections["Parameters"]:]
+    following = _SECTION.search(body)
+    headers, continued = [], False
+    for line in (body[:following.start()] if following else body).splitlines():
+        if not line.strip() or line.startswith(" "):
+            continued = False
+            continue
+        if continued:
+            headers[-1] += " " + line
+        else:
+            headers.append(line)
+        continued = line.rstrip().endswith(",")
+    return [name.strip() for header in headers for name in header.split(" : ")[0].split(",")]
+
+
+def _docstring_problems(model: Model) -> list[str]:
+    documented = documented_parameters(model.function)
+    if documented is None:
+        return ["its function's docstring has no Parameters section (numpydoc)"]
+    declared = [i.name for i in model.inputs]
+    problems = []
+    for words, names in (("documented but not declared", set(documented) - set(declared)),
+                         ("declared but not documented", set(declared) - set(documented)),
+                         ("documented twice", {n for n in documented
+                                               if documented.count(n) > 1})):
+        if names:
+            problems.append(f"the docstring's Parameters: {', '.join(sorted(names))} "
+                            f"{words}")
     return problems
 
 

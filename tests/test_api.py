@@ -161,7 +161,7 @@ def test_a_missing_file_is_one_line():
 
 
 @pytest.mark.parametrize("workers, client, message", [
-    (-1, None, r"workers=-1: expected 0 \(in this process\) or more workers"),
+    (-1, None, r"workers=-1: expected 0 \(in-process\) or more workers"),
     (1.5, None, r"workers=1.5: expected"),
     (2, object(), "workers and client exclude each other"),
 ])

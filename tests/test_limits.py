@@ -88,9 +88,9 @@ def test_steel_is_the_band_of_bearing_steels(modulus, poisson, far):
 
 
 def _own_models():
-    from bearing_sweep.models.registry import OWN_MODEL_MODULES, get_model
+    from bearing_sweep.models.registry import get_model, own_entry_points
 
-    return [get_model(name) for name in OWN_MODEL_MODULES]
+    return [get_model(name) for name in own_entry_points()]
 
 
 def test_every_dimensionless_coefficient_has_a_valid_range():

@@ -34,15 +34,20 @@ def test_every_preset_is_a_valid_definition_and_returns_every_output(name):
     assert preset.source.startswith("Paper")
 
 
-def test_our_models_are_found_in_the_modules_the_index_names():
-    # get_model finds one of ours in its own module alone: the index must say exactly what
-    # the entry points declare, or a model would be missed or taken from the wrong module.
-    from bearing_sweep.models.registry import OWN_MODEL_MODULES, all_models
+def test_each_of_our_models_has_an_entry_point_named_after_it_in_its_module(monkeypatch):
+    # get_model finds one of ours in its own module alone, through the entry point of its
+    # name: every model of ours needs one, naming the module that declares it, and every
+    # such entry point a model, or a model would be missed or taken from the wrong module.
+    from bearing_sweep.models import registry
 
-    ours = {name: model.function.__module__.rsplit(".", 1)[1]
-            for name, model in all_models().items()
+    ours = {name: model for name, model in registry.all_models().items()
             if model.function.__module__.startswith("bearing_sweep.models.")}
-    assert ours == OWN_MODEL_MODULES
+    entry_points = registry.own_entry_points()
+    assert {name: e.value for name, e in entry_points.items()} == {
+        name: model.function.__module__ for name, model in ours.items()}
+    monkeypatch.setattr(registry, "_MODELS", {})  # the path a sweep of one model takes
+    assert all(registry.get_model(name) is ours[name] for name in ours)
+    assert registry._MODELS == {}
 
 
 def test_a_sweep_of_one_model_imports_no_other_models_module(tmp_path):

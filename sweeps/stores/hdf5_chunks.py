@@ -136,7 +136,7 @@ class ChunkEncoder:
     layouts: dict
 
     def write(self, grid: Grid, start: int, stop: int, part: dict) -> dict:
-        """Points ``start..stop-1`` (a computed ``part``, as ``compute.evaluate_chunk`` returns
+        """Points ``start..stop-1`` (a computed ``part``, as ``evaluate.evaluate_chunk`` returns
         it) as the driver writes them: ``{"chunks": {name: (offset, bytes)}, "firsts":
         {name: (points, values)}}``, one HDF5 chunk per variable at ``offset`` (its first
         index on each dimension), and the :func:`dependence.first_held` values of the outputs

@@ -224,7 +224,7 @@ class Parts:
         write_durably(self.path(start, stop), lambda handle: np.savez(handle, **arrays))
 
     def arrays(self, result: dict) -> dict:
-        """What a part file holds of a computed chunk (as ``compute.evaluate_chunk`` returns
+        """What a part file holds of a computed chunk (as ``evaluate.evaluate_chunk`` returns
         it): its outputs, statuses and error messages."""
         arrays = {f"output_{name}": values for name, values in result["outputs"].items()}
         arrays["status"] = result["status"]
