@@ -16,6 +16,7 @@ from .models.registry import REQUIRED, STATUS_DESCRIPTIONS, all_models
 from . import spec, zarr_store
 from .compute import RESULT_COMPLETE, Executor, Interrupts, run_sweep
 from .parts import ZARR_SUFFIX, argument_text, check_output, is_zarr, path_argument
+from .definition.output import storage_options
 from .spec import SpecError, Sweep
 from .store import is_result, open_result, result_engine, write_netcdf
 
@@ -73,7 +74,7 @@ def run(definition, *, output=None, client=None, workers=None, progress=True, en
         workers of another version.
     """
     sweep = _sweep(definition)
-    sweep.storage = spec.storage_options(sweep.storage, encoding, compression,
+    sweep.storage = storage_options(sweep.storage, encoding, compression,
                                          lambda key: f"argument {key}")
     output = path_argument(output, "output")
     _flag_argument(progress, "progress")

@@ -17,6 +17,8 @@ from .compute import (RESULT_COMPLETE, ClusterFailure, Executor, Interrupts, Wor
                       check_scheduler_address, run_sweep)
 from .dependence import InconsistentOutput
 from .interrupts import Terminated, terminated_as_interrupt
+from .definition.output import storage_options
+from .definition.tables import suggestion
 from .spec import SpecError
 
 #: Exit status for a mistake in the user's input (a definition, a name, an option).
@@ -184,7 +186,7 @@ def _indices_table(analyzed) -> str:
 
 def _preset(name: str) -> str:
     if name not in PRESETS:
-        raise SpecError(f"unknown preset {name!r}" + spec.suggestion(name, PRESETS)
+        raise SpecError(f"unknown preset {name!r}" + suggestion(name, PRESETS)
                         + " (`bearing-sweep presets` lists them)")
     preset = PRESETS[name]
     lines = [f"{preset.name}: for {', '.join(preset.models)}", f"Source: {preset.source}"]
@@ -255,7 +257,7 @@ def main(argv=None) -> int:
             if args.chunk_size is not None and args.chunk_size < 1:
                 raise SpecError(f"--chunk-size {args.chunk_size}: expected a positive integer")
             sweep = spec.load(args.definition)
-            sweep.storage = spec.storage_options(sweep.storage, args.encoding, args.compression)
+            sweep.storage = storage_options(sweep.storage, args.encoding, args.compression)
             output = args.output or Path("results") / f"{args.definition.stem}.nc"
             with interrupts:
                 with Executor(args.workers, args.scheduler) as executor:

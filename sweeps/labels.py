@@ -18,7 +18,8 @@ from . import units
 from .dependence import stored_dims, stored_shape
 from .grid import Grid
 from .sample import saltelli_rows
-from .spec import Sweep, Value
+from .definition.values import Value
+from .spec import Sweep
 
 if TYPE_CHECKING:
     import xarray as xr

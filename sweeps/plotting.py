@@ -14,7 +14,8 @@ import xarray as xr
 from matplotlib.figure import Figure
 
 from . import units
-from .spec import SpecError, suggestion
+from .definition.tables import suggestion
+from .spec import SpecError
 from .store import open_result
 
 

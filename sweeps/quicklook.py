@@ -24,7 +24,8 @@ from .models.registry import get_model
 from .parts import (OutputLock, argument_text, check_outside_results, is_zarr, path_argument,
                     write_durably)
 from .plotting import MAKER, conditions, in_unit, label, metadata, shown_unit, subplots
-from .spec import SpecError, suggestion
+from .definition.tables import suggestion
+from .spec import SpecError
 from .store import open_result
 
 #: Figure formats ``plot`` writes, with the first bytes of such a file: only a figure is ever

@@ -6,6 +6,7 @@ import pytest
 
 from bearing_sweep import spec
 from bearing_sweep.cli import main
+from bearing_sweep.definition.axes import RESERVED_NAMES
 from bearing_sweep.spec import SpecError
 
 GOOD = """
@@ -225,13 +226,15 @@ def test_a_long_range_converts_at_once_exactly_as_value_by_value():
     # A range's values are converted in one array operation (a 1e5-value axis used to cost a
     # unit parse per value); each must be bitwise the value the one-by-one path gives, also
     # for an offset unit (degC) and a rotational speed.
-    from bearing_sweep.spec import _Parser, parse
+    from bearing_sweep.definition.tables import Reader
+    from bearing_sweep.definition.values import ValueReader
+    from bearing_sweep.spec import parse
 
     sweep = parse('[sweep]\nmodel = "cage_slip"\nbearing = "paper002-test"\n'
                   '[fixed]\nradial_load = "800 N"\n'
                   '[axes]\noil_temperature = { start = "-20 degC", stop = "120 degC", num = 57 }\n'
                   'speed = { start = "100 rpm", stop = "20000 rpm", step = "137 rpm" }\n')
-    checker = _Parser("<test>")
+    checker = ValueReader(Reader("<test>"))
     for axis in sweep.axes:
         declared = sweep.model.input(axis.name)
         for value in axis.values[axis.name]:
@@ -285,7 +288,7 @@ def test_an_axis_name_a_file_cannot_hold_is_refused(name):
         parse(text)
 
 
-@pytest.mark.parametrize("name", sorted(spec.RESERVED_NAMES))
+@pytest.mark.parametrize("name", sorted(RESERVED_NAMES))
 def test_an_axis_name_a_result_or_its_analysis_uses_is_refused(name):
     text = GOOD + f'[axes.{name}]\nlabels = ["a", "b"]\neffective_length = ["9 mm", "9.6 mm"]\n'
     with pytest.raises(SpecError, match="reserved"):
