@@ -242,6 +242,30 @@ def test_a_long_range_converts_at_once_exactly_as_value_by_value():
             assert one.si == value.si and one.shown == value.shown
 
 
+def test_a_models_inputs_read_below_a_dotted_path_are_those_read_at_the_top():
+    # One model's inputs are read from any table of a definition: a sub-table (a shaft's
+    # support A, say) gives the same values as the top, and its keys in messages carry its
+    # path.
+    import tomllib
+
+    from bearing_sweep.definition.inputs import ModelInputs
+    from bearing_sweep.definition.tables import Reader
+
+    sweep = parse(GOOD)
+    below = Reader("shaft.toml").within("supports").within("A")
+    table = tomllib.loads(GOOD)
+    fixed, origin, axes, sampling = ModelInputs(below, sweep.model).read(
+        table, "paper000-D", "bearing")
+    assert fixed == sweep.fixed and origin == sweep.origin and sampling is None
+    assert [(a.name, a.values) for a in axes] == [(a.name, a.values) for a in sweep.axes]
+    table["fixed"]["clearence"] = "10 um"
+    with pytest.raises(SpecError, match=r"^shaft\.toml: supports\.A\.fixed\.clearence: unknown "
+                       r"parameter 'clearence' of model crb_radial; did you mean 'clearance'\?"):
+        ModelInputs(below, sweep.model).read(table, "paper000-D", "bearing")
+    with pytest.raises(SpecError, match=r"^shaft\.toml: supports\.A\.bearing: unknown preset"):
+        ModelInputs(below, sweep.model).read(table, "paper000-X", "bearing")
+
+
 def test_a_byte_order_mark_before_the_definition_is_read_past(tmp_path):
     path = tmp_path / "bom.toml"
     path.write_bytes("\ufeff".encode() + GOOD.encode())
