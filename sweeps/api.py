@@ -19,6 +19,7 @@ from .stores import is_result, open_result, result_engine
 from .stores.netcdf import write_netcdf
 from .stores.paths import ZARR_SUFFIX, argument_text, check_output, is_zarr, path_argument
 from .stores.zarr import write_dataset as write_zarr
+from .definition.output import storage_options
 from .spec import SpecError, Sweep
 
 if TYPE_CHECKING:  # xarray only once a dataset is made or read: `bearing-sweep run` needs none
@@ -117,7 +118,7 @@ def run(definition, *, output=None, client=None, scheduler=None, workers=None, c
         _flag_argument(value, flag)
     output = path_argument(output, "output")
     sweep = _sweep(definition)
-    sweep.storage = spec.storage_options(sweep.storage, encoding, compression, named)
+    sweep.storage = storage_options(sweep.storage, encoding, compression, named)
     default = _stderr if progress else None
     log = default if log is None else log
     summary = default if summary is None else summary

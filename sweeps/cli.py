@@ -17,6 +17,7 @@ from .compute import WorkerMismatch
 from .executor import ClusterFailure, Executor
 from .dependence import InconsistentOutput
 from .interrupts import Terminated, terminated_as_interrupt
+from .definition.tables import suggestion
 from .spec import SpecError
 
 #: Exit status for a mistake in the user's input (a definition, a name, an option).
@@ -179,7 +180,7 @@ def _indices_table(analyzed) -> str:
 
 def _preset(name: str) -> str:
     if name not in PRESETS:
-        raise SpecError(f"unknown preset {name!r}" + spec.suggestion(name, PRESETS)
+        raise SpecError(f"unknown preset {name!r}" + suggestion(name, PRESETS)
                         + " (`bearing-sweep presets` lists them)")
     preset = PRESETS[name]
     lines = [f"{preset.name}: for {', '.join(preset.models)}", f"Source: {preset.source}"]

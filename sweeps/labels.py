@@ -18,7 +18,8 @@ from . import units
 from .dependence import stored_dims, stored_shape
 from .grid import Grid
 from .sample import saltelli_rows
-from .spec import Sweep, Value
+from .definition.values import Value, convert_written
+from .spec import Sweep
 
 if TYPE_CHECKING:
     import xarray as xr
@@ -247,16 +248,12 @@ def declared_values(sweep: Sweep, name: str, values: list[Value]) -> np.ndarray:
     if isinstance(first, str):
         return np.array([v.shown for v in values])
     target = stored_unit(spec.unit)
-    declared = units.parse_unit(target) if spec.kind == "quantity" else None
     shown = []
     for value in values:
         magnitude = np.asarray(value.shown, dtype=float)
-        if declared is not None and value.unit != target:
-            # One conversion from what was written, tidied to 15 digits so that "4 kN" is
-            # stored as 4000 N, not 4000.0000000000005.
-            written = units.parse_unit(value.unit)
-            magnitude = units.tidy(units.convert(magnitude, written, declared),
-                                   units.conversion_scale(written, declared))
+        if spec.kind == "quantity" and value.unit != target:
+            # Tidied to 15 digits so that "4 kN" is stored as 4000 N, not 4000.0000000000005.
+            magnitude = convert_written(magnitude, value.unit, target, tidy=True)
         shown.append(magnitude)
     size = max(np.size(a) for a in shown)
     if any(a.ndim for a in shown):  # a single value on a zipped axis of patterns: repeat it

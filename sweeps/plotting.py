@@ -14,7 +14,9 @@ import xarray as xr
 from matplotlib.figure import Figure
 
 from . import units
-from .spec import SpecError, suggestion
+from .definition.tables import suggestion
+from .definition.values import convert_written
+from .spec import SpecError
 from .stores import open_result
 
 
@@ -133,8 +135,7 @@ def at(data, method=None, **where):
         unit = stored_unit(data[name])
         try:
             number, written = units.split_quantity(value)
-            return float(units.convert(number, units.parse_unit(written or "1"),
-                                       units.parse_unit("1" if unit == "SI" else unit)))
+            return float(convert_written(number, written or "1", "1" if unit == "SI" else unit))
         except units.UnitError as error:
             raise SpecError(f"{name} = {value!r}: {error}") from None
         except units.pint.errors.DimensionalityError:
@@ -170,8 +171,7 @@ def in_unit(variable: xr.DataArray, unit: str) -> xr.DataArray:
     if stored == "SI":
         values = units.from_si(variable.values, unit)
     else:
-        values = units.convert(variable.values, units.parse_unit(stored),
-                               units.parse_unit(unit))
+        values = convert_written(variable.values, stored, unit)
     converted = variable.copy(data=values)
     converted.attrs["units"] = unit
     if variable.name in variable.dims:

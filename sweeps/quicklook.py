@@ -25,7 +25,8 @@ from .stores import is_result, open_result
 from .stores.durable import OutputLock, write_durably
 from .stores.paths import argument_text, check_outside_results, is_zarr, path_argument
 from .plotting import MAKER, conditions, in_unit, label, metadata, shown_unit, subplots
-from .spec import SpecError, suggestion
+from .definition.tables import suggestion
+from .spec import SpecError
 
 #: Figure formats ``plot`` writes, with the first bytes of such a file: only a figure is ever
 #: replaced by another one.

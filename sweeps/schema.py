@@ -21,7 +21,7 @@ from dataclasses import replace
 from .models.catalogue import PRESETS
 from .models.registry import Input, Model, all_models
 from . import sample, units
-from .spec import AXIS_NAME, RESERVED_NAMES
+from .definition.axes import AXIS_NAME, RESERVED_NAMES
 from .storage import ENCODINGS, Storage
 
 DRAFT = "http://json-schema.org/draft-07/schema#"
@@ -107,7 +107,7 @@ def _definition(model: Model) -> dict:
                 "output": OUTPUT}}
 
 
-#: The [output] table: how the result file stores the outputs (``spec.storage_options``).
+#: The [output] table: how the result file stores the outputs (``definition.output.storage_options``).
 OUTPUT = {"type": "object", "additionalProperties": False,
           "description": "how the result file stores the outputs",
           "properties": {

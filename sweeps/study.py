@@ -20,6 +20,7 @@ import xarray as xr
 from . import spec as spec_module
 from .compute import Executor, run_sweep
 from .grid import Grid
+from .definition.tables import suggestion
 from .spec import SpecError
 
 
@@ -95,7 +96,7 @@ def select(folder: Path, name: str) -> list[Study]:
         raise SpecError(f"{folder}: holds no study (--studies: {LAYOUT})")
     if name != "all" and name not in studies:
         raise SpecError(f"study {name!r}: no such study in {folder}"
-                        + spec_module.suggestion(name, studies) + " (studies: "
+                        + suggestion(name, studies) + " (studies: "
                         + ", ".join(sorted(studies) + ["all"]) + ")")
     chosen = list(studies.values()) if name == "all" else [studies[name]]
     for study in chosen:

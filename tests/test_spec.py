@@ -6,6 +6,7 @@ import pytest
 
 from bearing_sweep import spec
 from bearing_sweep.cli import main
+from bearing_sweep.definition.axes import RESERVED_NAMES
 from bearing_sweep.spec import SpecError
 
 GOOD = """
@@ -225,18 +226,44 @@ def test_a_long_range_converts_at_once_exactly_as_value_by_value():
     # A range's values are converted in one array operation (a 1e5-value axis used to cost a
     # unit parse per value); each must be bitwise the value the one-by-one path gives, also
     # for an offset unit (degC) and a rotational speed.
-    from bearing_sweep.spec import _Parser, parse
+    from bearing_sweep.definition.tables import Reader
+    from bearing_sweep.definition.values import ValueReader
+    from bearing_sweep.spec import parse
 
     sweep = parse('[sweep]\nmodel = "cage_slip"\nbearing = "paper002-test"\n'
                   '[fixed]\nradial_load = "800 N"\n'
                   '[axes]\noil_temperature = { start = "-20 degC", stop = "120 degC", num = 57 }\n'
                   'speed = { start = "100 rpm", stop = "20000 rpm", step = "137 rpm" }\n')
-    checker = _Parser("<test>")
+    checker = ValueReader(Reader("<test>"))
     for axis in sweep.axes:
         declared = sweep.model.input(axis.name)
         for value in axis.values[axis.name]:
             one = checker.value(declared, value.shown, axis.name, value.unit)
             assert one.si == value.si and one.shown == value.shown
+
+
+def test_a_models_inputs_read_below_a_dotted_path_are_those_read_at_the_top():
+    # One model's inputs are read from any table of a definition: a sub-table (a shaft's
+    # support A, say) gives the same values as the top, and its keys in messages carry its
+    # path.
+    import tomllib
+
+    from bearing_sweep.definition.inputs import ModelInputs
+    from bearing_sweep.definition.tables import Reader
+
+    sweep = parse(GOOD)
+    below = Reader("shaft.toml").within("supports").within("A")
+    table = tomllib.loads(GOOD)
+    fixed, origin, axes, sampling = ModelInputs(below, sweep.model).read(
+        table, "paper000-D", "bearing")
+    assert fixed == sweep.fixed and origin == sweep.origin and sampling is None
+    assert [(a.name, a.values) for a in axes] == [(a.name, a.values) for a in sweep.axes]
+    table["fixed"]["clearence"] = "10 um"
+    with pytest.raises(SpecError, match=r"^shaft\.toml: supports\.A\.fixed\.clearence: unknown "
+                       r"parameter 'clearence' of model crb_radial; did you mean 'clearance'\?"):
+        ModelInputs(below, sweep.model).read(table, "paper000-D", "bearing")
+    with pytest.raises(SpecError, match=r"^shaft\.toml: supports\.A\.bearing: unknown preset"):
+        ModelInputs(below, sweep.model).read(table, "paper000-X", "bearing")
 
 
 def test_a_byte_order_mark_before_the_definition_is_read_past(tmp_path):
@@ -285,7 +312,7 @@ def test_an_axis_name_a_file_cannot_hold_is_refused(name):
         parse(text)
 
 
-@pytest.mark.parametrize("name", sorted(spec.RESERVED_NAMES))
+@pytest.mark.parametrize("name", sorted(RESERVED_NAMES))
 def test_an_axis_name_a_result_or_its_analysis_uses_is_refused(name):
     text = GOOD + f'[axes.{name}]\nlabels = ["a", "b"]\neffective_length = ["9 mm", "9.6 mm"]\n'
     with pytest.raises(SpecError, match="reserved"):
