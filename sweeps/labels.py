@@ -248,11 +248,21 @@ def declared_values(sweep: Sweep, name: str, values: list[Value]) -> np.ndarray:
     if isinstance(first, str):
         return np.array([v.shown for v in values])
     target = stored_unit(spec.unit)
+    quantity = spec.kind == "quantity"
+    if all(np.ndim(value.shown) == 0 for value in values):  # an axis of single values
+        stacked = np.array([value.shown for value in values], dtype=float)
+        if quantity:
+            # Each unit's values converted at once, tidied to 15 digits so that "4 kN" is
+            # stored as 4000 N, not 4000.0000000000005 (value by value the same numbers).
+            written = np.array([value.unit for value in values], dtype=object)
+            for unit in set(written.tolist()) - {target}:
+                where = written == unit
+                stacked[where] = convert_written(stacked[where], unit, target, tidy=True)
+        return stacked.astype(np.int64) if spec.kind == "count" else stacked
     shown = []
-    for value in values:
+    for value in values:  # patterns: an array each
         magnitude = np.asarray(value.shown, dtype=float)
-        if spec.kind == "quantity" and value.unit != target:
-            # Tidied to 15 digits so that "4 kN" is stored as 4000 N, not 4000.0000000000005.
+        if quantity and value.unit != target:
             magnitude = convert_written(magnitude, value.unit, target, tidy=True)
         shown.append(magnitude)
     size = max(np.size(a) for a in shown)
