@@ -394,7 +394,7 @@ def _equilibrium(rings: _Rings, load, free, ball_count):
 
 
 #: Points this process may compute with the interpreted equilibrium before it loads the
-#: compiled one: about as long (1.6 ms a point) as numba takes to import and load it (0.5 s).
+#: compiled one: about as long as numba takes to import and load it (benchmarks/RESULTS.md).
 INTERPRETED_POINTS = 300
 _EQUILIBRIUM = Kernels(f"{__package__}.ball_equilibrium", INTERPRETED_POINTS)
 #: :mod:`models.ball_equilibrium` for a call of a number of points, compiled or interpreted.
@@ -540,10 +540,8 @@ MODELS = [Model(
                    "with a radial shift changes no ball's approach; hold the tilts (fixed_dofs "
                    "= [\"tilt_y\", \"tilt_z\"]) or use geometry 'jones'"),
     ) + LIFE_CONSTRAINTS,
-    # benchmarks/declared_costs.py (the studies' sweeps, each repeated to a block): 6.1e-6 s
-    # CPU a point at a load of 0.7; 1.1e-5 to 1.6e-5 with others' load of 3-4 on the two
-    # cores. Compiled point by point, the model keeps few temporaries: blocks of 4096 points
-    # pay its per-call overhead (~1 ms) seldom.
+    # Measured by benchmarks/declared_costs.py. Compiled point by point, the model keeps few
+    # temporaries: large blocks pay its per-call overhead seldom.
     seconds_per_point=8e-6,
     points_per_call=4096,
     validity="max_contact_pressure above pressure_limit (default 4200 MPa, ISO 76:2006: the "

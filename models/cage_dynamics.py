@@ -24,8 +24,8 @@ from .registry import (CONVERGED, NOT_CONVERGED, Constraint, DimCoordinate, Inpu
 
 GRAVITY = 9.81
 _SETTLED = 0.5  # the settled part: the last half of the run
-# Relative tolerance of the integration: 1e-4 moves the settled mean slip by 0.1 % of itself
-# against 1e-6 (0.1 s at 800 N, 12000 r/min) at a third of the cost.
+# Relative tolerance of the integration: the settled mean slip hardly moves against a
+# hundredfold tighter one, at a fraction of the cost (benchmarks/RESULTS.md).
 _RELATIVE_TOLERANCE = 1e-4
 
 

@@ -597,7 +597,7 @@ MODELS = [Model(
         Constraint(("duration", "rk4_step"), _rk4_steps_fit,
                    "duration / rk4_step must not exceed 1e9 steps"),
     ),
-    seconds_per_point=30.0,  # at the default 0.05 s of bearing time (measured: 25-35 s)
+    seconds_per_point=30.0,  # at the default 0.05 s of bearing time (benchmarks/RESULTS.md)
     points_per_call=1,
     validity="cage_slip's, for the steady state it starts from: " + STEADY_VALIDITY,
 )]

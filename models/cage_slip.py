@@ -663,7 +663,7 @@ MODELS = [Model(
                    "sin(180 deg / roller_count) away"),
         VISCOSITY_ORDER,
     ),
-    seconds_per_point=4.5e-3,  # benchmarks/declared_costs.py: 4.5-4.6e-3 on the studies' sweeps
+    seconds_per_point=4.5e-3,  # measured by benchmarks/declared_costs.py
     points_per_call=64,
     validity=VALIDITY,
 )]

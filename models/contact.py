@@ -476,7 +476,7 @@ MODELS = [Model(
                    "curvature_2x and curvature_1y + curvature_2y must both be positive (zero is "
                    "a line contact)"),
     ),
-    seconds_per_point=7e-7,  # benchmarks/declared_costs.py: 6.7-7.2e-7 in blocks of 1e5 points
+    seconds_per_point=7e-7,  # measured by benchmarks/declared_costs.py
     validity="a semi-axis above 0.5 of the smallest radius of curvature of either body "
              "(Hertz: a small contact on half-spaces) or a maximum pressure above 4200 MPa "
              "(ISO 76's reference stress for the point contacts of ball bearings; bearing "

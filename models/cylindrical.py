@@ -757,13 +757,12 @@ MODELS = [Model(
                    "the rollers do not fit on the pitch circle: pitch_diameter * sin(180 deg / "
                    "roller_count) must exceed roller_diameter"),
     ) + LIFE_CONSTRAINTS,
-    # benchmarks/declared_costs.py (the studies' sweeps, each repeated to a block): 6.4e-5 s
-    # CPU a point at a load of 0.7, misaligned and many-sliced rollers and rating lives
-    # included (a third of a rated point's cost); an aligned unrated point costs about half.
+    # Measured by benchmarks/declared_costs.py on the studies' sweeps, misaligned and
+    # many-sliced rollers and rating lives included (an aligned unrated point costs less).
     seconds_per_point=6e-5,
-    # The rollers' balances are compiled and solved point by point, so a block's temporaries
-    # are a few (points, rollers) arrays: 2000 points per call cost some 12 % less a point
-    # than 500 (the numpy parts' overhead shared), and two workers slow each other by 2-3 %.
+    # Each point's equilibrium is compiled and solved point by point, so a block's
+    # temporaries are a few (points, rollers) arrays: large blocks share the numpy parts'
+    # overhead (benchmarks/RESULTS.md).
     points_per_call=2000,
     validity="a roller's maximum contact pressure above pressure_limit (default 4000 MPa, "
              "ISO 76's reference stress for roller bearings) or its approach (both contacts) "

@@ -501,7 +501,7 @@ MODELS = [Model(
                    _raceways_have_radius, "a raceway's radius would be negative: the sum of "
                    "its roundness amplitudes must stay below half its diameter"),
     ),
-    seconds_per_point=9e-3,  # benchmarks/declared_costs.py: 9.1-9.6e-3 on the studies' sweeps
+    seconds_per_point=9e-3,  # measured by benchmarks/declared_costs.py
     points_per_call=8,
     validity="with the centre found, a roller without room between the rings (a preload: "
              "the model is unloaded); resting rollers' gaps that vary from step to step by "

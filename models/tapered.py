@@ -47,7 +47,7 @@ _MAX_ITERATIONS = 200
 #: angle by about 1', less than the 2' steps of the paper's sweep.
 LARGE_END_TOLERANCE = 0.005
 #: Points this process may compute with the interpreted equilibrium before it loads the
-#: compiled one: about as long (0.25 ms a point) as numba takes to import and load it (0.3 s).
+#: compiled one: about as long as numba takes to import and load it (benchmarks/RESULTS.md).
 INTERPRETED_POINTS = 1000
 #: :mod:`models.tapered_equilibrium` for a call of a number of points, compiled or interpreted
 #: (the same numbers).
@@ -603,11 +603,9 @@ MODELS = [
             ("roller_count", "pitch_diameter", "roller_mean_diameter"), _rollers_fit,
             "the rollers do not fit on the pitch circle: pitch_diameter * sin(180 deg / "
             "roller_count) must exceed roller_mean_diameter")) + LIFE_CONSTRAINTS,
-        # Through the engine, one core, on two cores shared with others (load average 2.4):
-        # 4.2e-6 to 4.4e-6 s/point on benchmarks/declared_costs.py's grid with lives (1.3e-5
-        # with the equilibrium vectorised in numpy, in blocks of 2000). Solved point by point:
-        # blocks of 4096 points run 1.2x the benchmark's compiled kernel, blocks of 2048 1.4x
-        # (the per-call cost of the outputs' numpy and unit conversions).
+        # Measured by benchmarks/declared_costs.py; solved point by point, large blocks share
+        # the per-call cost of the outputs' numpy and unit conversions
+        # (benchmarks/trb_load_kernel.py, benchmarks/RESULTS.md).
         seconds_per_point=5e-6,
         points_per_call=4096,
         validity="a roller's cone contact pressure above pressure_limit (default 4000 MPa, "
@@ -691,7 +689,7 @@ MODELS = [
                        _rib_rollers_fit, "the rollers do not fit on the pitch circle "
                        "(d_i - l sin(beta) + D_w cos(beta)): its chord between neighbours, "
                        "d_m sin(180 deg / roller_count), must exceed roller_mean_diameter")),
-        seconds_per_point=3.7e-4,  # benchmarks/declared_costs.py: 3.5-3.9e-4
+        seconds_per_point=3.7e-4,  # measured by benchmarks/declared_costs.py
         points_per_call=2000,
         validity="trb_load's limits for the raceways (pitch diameter from rib_diameter; its "
                  "steel constant with other elastic constants included); the "

@@ -271,7 +271,7 @@ def sobol_indices(f_a: np.ndarray, f_b: np.ndarray, f_ab: np.ndarray, replicates
         replicates' own estimates over sqrt(replicates); NaN with a single replicate and for
         an output of no variance (whose indices scipy gives as 0).
     """
-    from scipy import stats  # here: scipy.stats costs a second to import
+    from scipy import stats  # here: only an analysis pays for importing it
 
     outputs, d = f_a.shape[0], f_ab.shape[0]
     rows = f_a.shape[1]

@@ -227,10 +227,10 @@ class Executor:
         from distributed import Client, LocalCluster
 
         # dask sets MALLOC_TRIM_THRESHOLD_=65536 in its workers, which makes glibc map
-        # and unmap every large numpy temporary of a model afresh: twice the time. Its
-        # profiler serves only the dashboard; slower housekeeping cuts an idle two-worker
-        # cluster's CPU use from about 10 % to 4 % of a core, which the workers need
-        # when they occupy every core.
+        # and unmap every large numpy temporary of a model afresh, slowing the models.
+        # Its profiler serves only the dashboard; slower housekeeping leaves an idle
+        # cluster's share of a core to the workers, which need it when they occupy every
+        # core (benchmarks/RESULTS.md).
         with dask.config.set({"distributed.nanny.pre-spawn-environ."
                               "MALLOC_TRIM_THRESHOLD_": None,
                               "distributed.worker.profile.enabled": False,

@@ -55,7 +55,7 @@ class Distribution:
 
     def frozen(self):
         """The scipy.stats distribution."""
-        from scipy import stats  # here: scipy.stats costs a second to import
+        from scipy import stats  # here: only a sampled sweep pays for importing it
 
         p = self.parameters
         if self.name == "uniform":
@@ -109,7 +109,7 @@ def unit_hypercube(method: str, n: int, dimensions: int, seed: int) -> np.ndarra
     1979); ``sobol`` and ``halton``: scrambled low-discrepancy sequences. The same seed gives
     the same points.
     """
-    from scipy.stats import qmc  # here: scipy.stats costs a second to import
+    from scipy.stats import qmc  # here: only a sampled sweep pays for importing it
 
     rng = np.random.default_rng(seed)
     if method == "random":

@@ -45,7 +45,7 @@ DIRECT_COMPRESSIONS = ("none",) + COMPRESSORS
 KNOWN_FILTERS = COMPRESSORS + ("shuffle", "complevel")
 #: How long [s] an opening of the file just closed is retried. A process the cluster starts
 #: meanwhile (from another thread) holds a copy of every open file until it runs its own
-#: program, and with it HDF5's lock on the file: a few milliseconds, more on a busy machine.
+#: program, and with it HDF5's lock on the file: a moment, longer on a busy machine.
 REOPEN_SECONDS = 5.0
 
 
