@@ -11,7 +11,7 @@ from bearing_sweep.quicklook import plot
 from bearing_sweep.spec import SpecError
 from bearing_sweep.store import open_result
 
-EVERY_MODEL = Path(__file__).resolve().parent / "data" / "every_model"
+EVERY_MODEL = Path(__file__).resolve().parents[1] / "data" / "every_model"
 ONE_AXIS = """
 [sweep]
 model = "hertz_point"
@@ -368,7 +368,7 @@ def _engine_modules() -> list[str]:
 #: import adds filters for scipy's own warnings (SpecialFunctionWarning), as for any user.
 IMPORTS = (["import bearing_sweep"] + [f"import {name}" for name in _engine_modules()]
            + ["import bearing_sweep; bearing_sweep.plot", "import bearing_sweep; bearing_sweep.run"])
-STUDIES = Path(__file__).resolve().parents[1] / "studies"
+STUDIES = Path(__file__).resolve().parents[2] / "studies"
 
 
 def changes(statement: str, cwd, libraries: str = "") -> dict:

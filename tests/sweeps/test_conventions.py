@@ -13,10 +13,10 @@ from bearing_sweep import spec, store, units
 from bearing_sweep.compute import Executor, run_sweep
 from bearing_sweep.testing import assert_same_numbers
 
-DEFINITIONS = Path(__file__).parent / "data" / "every_model"
+DEFINITIONS = Path(__file__).parents[1] / "data" / "every_model"
 MODELS = sorted(all_models())
 #: Besides every model's sweep: a zipped axis with float32 shuffled outputs, a sampled design.
-STRUCTURES = sorted((Path(__file__).parent / "data" / "structure").glob("*.toml"))
+STRUCTURES = sorted((Path(__file__).parents[1] / "data" / "structure").glob("*.toml"))
 
 
 def test_there_is_a_definition_for_every_model():

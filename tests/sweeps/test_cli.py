@@ -108,7 +108,7 @@ def test_study_runs_what_is_stale_draws_and_reports(tmp_path):
     assert missing.returncode == 2 and "no such study" in missing.stderr
 
 
-STUDIES = Path(__file__).resolve().parents[1] / "studies"
+STUDIES = Path(__file__).resolve().parents[2] / "studies"
 
 
 def _mistaken_folders(tmp_path, case):

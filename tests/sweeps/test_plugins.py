@@ -23,7 +23,7 @@ from bearing_sweep import store
 from bearing_sweep.models.registry import Input, Model, Output
 from bearing_sweep.testing import assert_chunking_invariant, assert_valid_declaration
 
-ROOT = Path(__file__).resolve().parents[1]
+ROOT = Path(__file__).resolve().parents[2]
 README = (ROOT / "README.md").read_text()
 
 #: What the README example's springs.toml gives: deflection [mm] by load (1, 2 kN) and

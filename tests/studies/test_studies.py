@@ -15,7 +15,7 @@ from bearing_sweep.plotting import at, conditions, in_unit
 from bearing_sweep.store import open_result
 from bearing_sweep.study import find_studies
 
-STUDIES = Path(__file__).resolve().parents[1] / "studies"
+STUDIES = Path(__file__).resolve().parents[2] / "studies"
 
 #: Another unit for each unit the studies' inputs are stored in: a figure script that selects
 #: or draws by bare numbers in the stored unit gives other numbers in these.

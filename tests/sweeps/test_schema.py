@@ -12,7 +12,7 @@ from jsonschema import Draft7Validator
 from bearing_sweep.models.registry import all_models
 from bearing_sweep.schema import schema
 
-ROOT = Path(__file__).resolve().parents[1]
+ROOT = Path(__file__).resolve().parents[2]
 DEFINITIONS = sorted(p for p in ROOT.glob("studies/*/*.toml") if p.name != "claims.toml") + \
     sorted((ROOT / "tests/data/every_model").glob("*.toml"))
 BAD = ROOT / "tests/data/bad_definitions"
