@@ -227,7 +227,7 @@ def test_a_ctrl_c_that_lands_where_python_cannot_raise_it_is_raised_again(tmp_pa
 
 def test_a_report_tells_how_to_run_a_study_in_the_folders_it_was_given(tmp_path, run_cli):
     done = run_cli("report", "--studies", STUDIES, "--results", "my results", "--figures", "fig",
-               cwd=tmp_path)
+                   cwd=tmp_path)
     assert done.returncode == 0, done.stderr
     index = (tmp_path / "fig" / "README.md").read_text()
     assert (f"- runout: not run yet (`bearing-sweep study runout --studies {STUDIES} "

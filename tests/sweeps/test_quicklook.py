@@ -3,6 +3,7 @@ import subprocess
 import sys
 from pathlib import Path
 
+import cf_units
 import numpy as np
 import pytest
 import xarray as xr
@@ -23,7 +24,6 @@ curvature_2y = "0 1/mm"
 [axes]
 load = ["10 N", "500 N", "3 kN"]
 """
-
 
 
 @pytest.fixture(scope="module")
@@ -177,7 +177,7 @@ def shapes(tmp_path_factory, run_cli):
         (folder / f"{name}.toml").write_text(text)
         paths[name] = folder / f"{name}{suffix}"
         done = run_cli("run", folder / f"{name}.toml", "-o", paths[name], "--workers", "0",
-                   "--quiet", cwd=folder)
+                       "--quiet", cwd=folder)
         assert done.returncode == 0, done.stderr
     return paths
 
@@ -291,7 +291,7 @@ curvature_2y = ["0 1/mm", "0.01 1/mm"]
 poisson_ratio = [0.3, 0.29]
 """)
     done = run_cli("run", tmp_path / "zip.toml", "-o", tmp_path / "zip.nc", "--workers", "0",
-               "--quiet", cwd=tmp_path)
+                   "--quiet", cwd=tmp_path)
     assert done.returncode == 0, done.stderr
     [legend] = plot(tmp_path / "zip.nc").legends
     assert [t.get_text() for t in legend.get_texts()] == [
@@ -301,14 +301,25 @@ poisson_ratio = [0.3, 0.29]
     np.testing.assert_allclose(drawn_lines(axis)[0].get_xdata(), [0.3, 0.29])
 
 
+def in_label_unit(variable: xr.DataArray, axis) -> np.ndarray:
+    """``variable``'s values in the unit a figure axis' label ends with (``[kN]``), converted
+    by UDUNITS."""
+    unit = axis.get_label_text().rsplit("[", 1)[1].rstrip("]")
+    return cf_units.Unit(variable.attrs["units"]).convert(variable.values, cf_units.Unit(unit))
+
+
 def test_a_zarr_store_plots_as_a_file_does(shapes, tmp_path, run_cli):
     done = run_cli("plot", shapes["axis_zarr"], "-o", tmp_path / "z.png", cwd=tmp_path)
     assert done.returncode == 0, done.stderr
     assert (tmp_path / "z.png").read_bytes().startswith(b"\x89PNG")
     [axis] = plot(shapes["axis_zarr"]).axes
     # the model's first output, though a zarr store lists its variables by name
-    assert axis.get_ylabel().startswith(open_result(shapes["axis_zarr"])
-                                        .semi_major.attrs["long_name"])
+    with xr.open_zarr(shapes["axis_zarr"]) as stored:  # read apart from the quick look
+        assert axis.get_ylabel().startswith(stored.semi_major.attrs["long_name"])
+        [line] = drawn_lines(axis)  # the values stored, in the units the labels say
+        np.testing.assert_allclose(line.get_xdata(), in_label_unit(stored["load"], axis.xaxis))
+        np.testing.assert_allclose(line.get_ydata(),
+                                   in_label_unit(stored.semi_major, axis.yaxis))
 
 
 # -- the user's matplotlib, warnings and logging are theirs -----------------------------------
