@@ -3,15 +3,20 @@ VENV := .venv
 PYTHON := $(VENV)/bin/python
 STAMP := $(VENV)/.installed
 
-.PHONY: test reproduce bench clean
+.PHONY: test test-slow reproduce bench clean
 
 $(STAMP): pyproject.toml
 	python3 -m venv $(VENV)
 	$(PYTHON) -m pip install --quiet --disable-pip-version-check -e '.[test]'
 	touch $(STAMP)
 
+# `make test`: every test but the slow ones (clusters, interrupted and parallel runs, each
+# study at its full resolution), which `make test-slow` runs; CI runs both.
 test: $(STAMP)
-	$(PYTHON) -m pytest -q
+	$(PYTHON) -m pytest -q -m "not slow"
+
+test-slow: $(STAMP)
+	$(PYTHON) -m pytest -q -m slow
 
 reproduce: $(STAMP)
 	$(VENV)/bin/bearing-sweep study all
