@@ -345,25 +345,30 @@ def test_agreement_reads_each_comparison_and_counts_samples_one_by_one():
 
 # -- every figure reads at a glance -----------------------------------------------------------
 
-@pytest.fixture
-def drawn(monkeypatch, tmp_path):
+@pytest.fixture(scope="module")
+def drawn(tmp_path_factory):
     """``drawn(name, results)``: each figure of the study ``name`` drawn from ``results``, as
-    ``{file: Figure}``, laid out as it was saved."""
+    ``{file: Figure}``, laid out as it was saved; drawn once for all the tests of this module
+    (they only read the figures)."""
     import bearing_sweep.plotting as plotting
 
-    original = plotting.save
+    original, made = plotting.save, {}
 
     def draw(name: str, results: Path) -> dict:
+        if (name, results) in made:
+            return made[name, results]
         figures = {}
 
         def keep(figure, folder, file, tight=True):
             original(figure, folder, file, tight)
             figures[file] = figure
 
-        monkeypatch.setattr(plotting, "save", keep)  # the scripts import it when loaded
-        module = find_studies(STUDIES)[name].figures_module()
-        module.draw(results, tmp_path)
+        with pytest.MonkeyPatch.context() as patch:
+            patch.setattr(plotting, "save", keep)  # the scripts import it when loaded
+            module = find_studies(STUDIES)[name].figures_module()
+            module.draw(results, tmp_path_factory.mktemp(f"{name}-figures"))
         assert sorted(figures) == sorted(module.FIGURES)  # each one saved through save
+        made[name, results] = figures
         return figures
 
     return draw
