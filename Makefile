@@ -11,7 +11,7 @@ ifneq ($(FILES),$(shell cat $(VENV)/.files 2>/dev/null))
 .PHONY: $(STAMP)
 endif
 
-.PHONY: test reproduce bench clean
+.PHONY: test test-slow reproduce bench clean
 
 $(STAMP): pyproject.toml
 	python3 -m venv $(VENV)
@@ -20,8 +20,13 @@ $(STAMP): pyproject.toml
 	echo '$(FILES)' > $(VENV)/.files
 	touch $(STAMP)
 
+# `make test`: every test but the slow ones (clusters, interrupted and parallel runs, each
+# study at its full resolution), which `make test-slow` runs; CI runs both.
 test: $(STAMP)
-	$(PYTHON) -m pytest -q
+	$(PYTHON) -m pytest -q -m "not slow"
+
+test-slow: $(STAMP)
+	$(PYTHON) -m pytest -q -m slow
 
 reproduce: $(STAMP)
 	$(VENV)/bin/bearing-sweep study all

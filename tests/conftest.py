@@ -1,14 +1,27 @@
+"""What several test modules share, as fixtures: bearing D, sweep definitions, the command
+line run in a new process, toy models, the checks of a refusal and of CF labels, the figures
+a test saved. Test modules import no other test module (pytest imports each by its path)."""
+import math
+import stat
+import subprocess
+import sys
 import textwrap
 
 import numpy as np
 import pytest
 
 MM = 1e-3
-RPM = 2.0 * np.pi / 60.0
 
 #: Bearing D of paper 000 (Table 4) in SI, for model-level tests.
 BEARING_D = dict(roller_count=14, pitch_diameter=65 * MM, roller_diameter=10 * MM,
                  effective_length=9.6 * MM)
+
+
+@pytest.fixture(scope="session")
+def bearing_d() -> dict:
+    """Bearing D of paper 000 (Table 4) in SI: the crb_radial inputs roller_count,
+    pitch_diameter, roller_diameter and effective_length."""
+    return BEARING_D
 
 
 @pytest.fixture
@@ -27,9 +40,6 @@ def definition(tmp_path):
 def run_loads_numba(tmp_path):
     """Run a sweep definition (TOML text) with the CLI in a new process and say whether that
     process loaded numba."""
-    import subprocess
-    import sys
-
     def run(text: str) -> bool:
         (tmp_path / "d.toml").write_text(text)
         script = ("import sys\nfrom bearing_sweep import cli\n"
@@ -58,3 +68,269 @@ def paper_slice_law_fails(monkeypatch):
 
     monkeypatch.setitem(registry._MODELS, "crb_radial",
                         registry.Model(**{**model.__dict__, "function": fragile}))
+
+
+# -- definitions and the command line ------------------------------------------------------------
+
+#: A four-point crb_radial sweep of bearing D of paper 000: two loads by two speeds.
+FOUR_POINTS = """
+[sweep]
+model = "crb_radial"
+bearing = "paper000-D"
+[fixed]
+crown = "0.004 mm"
+[axes]
+radial_load = ["2 kN", "4 kN"]
+speed = { values = [0, 5000], units = "rpm" }
+"""
+
+
+@pytest.fixture(scope="session")
+def four_points() -> str:
+    """A four-point crb_radial sweep definition (TOML text): two loads by two speeds."""
+    return FOUR_POINTS
+
+
+def _run_cli(*arguments, cwd, timeout=300, **settings) -> subprocess.CompletedProcess:
+    """``bearing-sweep *arguments`` in a new process started in ``cwd``, as a user runs it;
+    the finished process with its output as text."""
+    return subprocess.run([sys.executable, "-m", "bearing_sweep", *map(str, arguments)], cwd=cwd,
+                          capture_output=True, text=True, timeout=timeout, **settings)
+
+
+@pytest.fixture(scope="session")
+def run_cli():
+    """``run_cli(*arguments, cwd=folder, timeout=300, env=..., ...)``: ``bearing-sweep
+    *arguments`` in a new process in ``folder`` (a test's own), its ``CompletedProcess``."""
+    return _run_cli
+
+
+def _assert_cf_labelled(data):
+    """Every variable has a short long_name and units UDUNITS reads (or says why not), and
+    the dataset quantifies with pint-xarray."""
+    import cf_units
+    import pint_xarray  # noqa: F401  (registers the .pint accessor)
+
+    for variable_name, variable in {**data.coords, **data.data_vars}.items():
+        attrs = variable.attrs
+        assert 0 < len(attrs["long_name"]) <= 48, (variable_name, attrs["long_name"])
+        if "units" in attrs:
+            cf_units.Unit(attrs["units"])  # UDUNITS reads it
+            assert variable.dtype.kind not in "OUS", variable_name
+        elif variable.dtype.kind not in "OUS" and "flag_meanings" not in attrs:  # CF flags
+            # numbers without units: an entry-unit output, or a unit UDUNITS cannot express
+            assert ("ancillary_variables" in attrs
+                    or "fractional powers" in attrs.get("comment", "")), variable_name
+    quantified = data.pint.quantify()
+    for variable_name, variable in data.data_vars.items():
+        if "units" in variable.attrs:
+            assert hasattr(quantified[variable_name].data, "units"), variable_name
+
+
+@pytest.fixture(scope="session")
+def assert_cf_labelled():
+    """``assert_cf_labelled(dataset)``: every variable has a short long_name and units UDUNITS
+    reads (or says why not), and the dataset quantifies with pint-xarray."""
+    return _assert_cf_labelled
+
+
+# -- toy models: outputs on fewer axes than the grid ----------------------------------------------
+
+def _toy(a, b, c=2.0):
+    """``total = a + b + c`` everywhere; ``product = b c``; a point fails where a or b is
+    negative (the model leaves its values there, the engine makes them NaN)."""
+    from bearing_sweep.models.registry import CONVERGED, INFEASIBLE
+
+    a, b, c = np.broadcast_arrays(*(np.asarray(x, dtype=float) for x in (a, b, c)))
+    failed = (a < 0) | (b < 0)
+    return {"total": a + b + c, "product": b * c, "whole_b": np.rint(b),
+            "status": np.where(failed, INFEASIBLE, CONVERGED).astype(np.int8)}
+
+
+def _liar(a, b, c=2.0):
+    """Says ``product`` depends on b and c only, but adds a."""
+    result = _toy(a, b, c)
+    result["product"] = result["product"] + a
+    return result
+
+
+def _toy_declaration(name, function=_toy):
+    from bearing_sweep.models.registry import Input, Model, Output
+
+    return Model(name, function, "a test model", "none", "1",
+                 (Input("a", "1", "a", kind="number"), Input("b", "1", "b", kind="number"),
+                  Input("c", "1", "c", kind="number", default=2.0)),
+                 (Output("total", "1", "a + b + c"),
+                  Output("product", "1", "b c", depends_on=("b", "c")),
+                  Output("whole_b", "1", "b rounded", dtype="int", depends_on=("b",))))
+
+
+@pytest.fixture
+def toy_model():
+    """``toy_model(name, function=toy's)``: the toy declaration (inputs a, b, c; ``product``
+    on b and c only, ``whole_b`` on b only) of ``function``, not registered."""
+    return _toy_declaration
+
+
+@pytest.fixture
+def toy(monkeypatch):
+    """Models ``toy`` (``_toy``) and ``liar`` (declares ``product`` on b and c, adds a)
+    registered for one test; the definition of a 3 x 4 grid of ``toy`` whose first row
+    (a = -1) and first column (b = -2) fail."""
+    import bearing_sweep.models.registry as registry
+
+    registry.all_models()  # ours first, then the test models
+    for model in (_toy_declaration("toy", _toy), _toy_declaration("liar", _liar)):
+        monkeypatch.setitem(registry._MODELS, model.name, model)
+    return '[sweep]\nmodel = "toy"\n[axes]\na = [-1, 1, 2]\nb = [-2, 1, 2, 3]\n'
+
+
+# -- the Ishigami function: a sensitivity analysis with known indices -----------------------------
+
+def _ishigami(x1, x2, x3, a=7.0):
+    """Ishigami & Homma's test function, b = 0.1 (IEEE ISUMA 1990,
+    doi:10.1109/ISUMA.1990.151285)."""
+    x1, x2, x3 = np.broadcast_arrays(x1, x2, x3)
+    y = np.sin(x1) + a * np.sin(x2) ** 2 + 0.1 * x3 ** 4 * np.sin(x1)
+    return {"y": y, "status": np.zeros(y.shape, dtype=np.int8)}
+
+
+@pytest.fixture
+def ishigami_model(monkeypatch):
+    """The Ishigami function registered as model ``ishigami`` (inputs x1, x2, x3, a) for one
+    test."""
+    import bearing_sweep.models.registry as registry
+    from bearing_sweep.models.registry import Input, Model, Output
+
+    registry.all_models()  # ours first, then the toy
+    model = Model("ishigami", _ishigami, "Ishigami function", "Ishigami & Homma 1990", "1",
+                  tuple(Input(x, "1", x, kind="number") for x in ("x1", "x2", "x3"))
+                  + (Input("a", "1", "a", default=7.0, kind="number"),),
+                  (Output("y", "1", "y"),), seconds_per_point=1e-8)
+    monkeypatch.setitem(registry._MODELS, model.name, model)
+    return model
+
+
+def _ishigami_indices(a, b=0.1):
+    """Analytic first-order and total indices of the Ishigami function on [-pi, pi]^3
+    (Homma & Saltelli, Reliab. Eng. Syst. Saf. 52(1), 1-17, 1996,
+    doi:10.1016/0951-8320(96)00002-6)."""
+    pi = math.pi
+    v1 = 0.5 * (1 + b * pi**4 / 5) ** 2
+    v2 = a**2 / 8
+    v13 = b**2 * pi**8 * (1 / 18 - 1 / 50)
+    variance = v1 + v2 + v13
+    return [v1 / variance, v2 / variance, 0.0], [(v1 + v13) / variance, v2 / variance,
+                                                  v13 / variance]
+
+
+@pytest.fixture(scope="session")
+def ishigami_indices():
+    """``ishigami_indices(a, b=0.1)``: the analytic (first-order, total) Sobol' indices of the
+    Ishigami function, each a list over x1, x2, x3."""
+    return _ishigami_indices
+
+
+@pytest.fixture
+def ishigami_sweep(ishigami_model):
+    """``ishigami_sweep(n, seed)``: a Saltelli design of ``n`` base samples of the Ishigami
+    function on [-pi, pi]^3 at a = 7 and 5, computed in this process (an xarray Dataset)."""
+    import bearing_sweep
+
+    def sweep(n: int, seed: int):
+        uniform = ('{ distribution = "uniform", low = -3.141592653589793, '
+                   'high = 3.141592653589793 }')
+        return bearing_sweep.run(f"""
+[sweep]
+model = "ishigami"
+[axes]
+a = [7, 5]
+[sample]
+n = {n}
+method = "saltelli"
+seed = {seed}
+x1 = {uniform}
+x2 = {uniform}
+x3 = {uniform}
+""", workers=0, progress=False)
+
+    return sweep
+
+
+# -- refusals: before any computing, with nothing written -----------------------------------------
+
+def _tree(folder):
+    """Every path under ``folder`` with its kind and size: what a refusal must leave as it was."""
+    return {str(p.relative_to(folder)): (stat.S_IFMT(p.lstat().st_mode), p.lstat().st_size)
+            for p in folder.rglob("*")}
+
+
+@pytest.fixture(scope="session")
+def tree():
+    """``tree(folder)``: every path under ``folder`` with its kind and size."""
+    return _tree
+
+
+@pytest.fixture
+def no_computing(monkeypatch):
+    """A refusal must come before the lock, the parts and the model."""
+
+    def computed(*args, **kwargs):
+        raise AssertionError("computing started before the output was checked")
+
+    monkeypatch.setattr("bearing_sweep.stores.base.OutputLock", computed)
+    monkeypatch.setattr("bearing_sweep.evaluate.evaluate_chunk", computed)
+
+
+@pytest.fixture
+def refused(tmp_path, capsys):
+    """``refused(output, definition=tmp_path / "def.toml")``: ``bearing-sweep run definition -o
+    output`` in this process must be refused in one line, exit status 2, with nothing in
+    tmp_path written or replaced; its error line. A missing definition is written first (the
+    four-point sweep)."""
+    from bearing_sweep import cli
+
+    def run(output, definition=None):
+        definition = definition or tmp_path / "def.toml"
+        if not definition.exists():
+            definition.write_text(FOUR_POINTS)
+        before = _tree(tmp_path)
+        code = cli.main(["run", str(definition), "-o", str(output), "--workers", "0",
+                         "--quiet"])
+        err = capsys.readouterr().err
+        assert code == 2, err
+        assert err.startswith("error: ") and len(err.strip().splitlines()) == 1, err
+        assert _tree(tmp_path) == before  # nothing written, nothing replaced
+        return err
+
+    return run
+
+
+@pytest.fixture(scope="session")
+def start_cli():
+    """``start_cli(*arguments, cwd=folder, **settings)``: ``bearing-sweep *arguments`` started
+    in a new process in ``folder``, not waited for (to be interrupted); its ``Popen``, output
+    piped as text."""
+
+    def start(*arguments, cwd, **settings) -> subprocess.Popen:
+        return subprocess.Popen([sys.executable, "-m", "bearing_sweep", *map(str, arguments)],
+                                cwd=cwd, stdout=subprocess.PIPE, stderr=subprocess.PIPE,
+                                text=True, **settings)
+
+    return start
+
+
+@pytest.fixture
+def saved_figures(monkeypatch) -> list:
+    """The matplotlib Figures saved during the test, in order (each still saved as asked):
+    what a figure shows, to compare with the data it was drawn from."""
+    from matplotlib.figure import Figure
+
+    saved, original = [], Figure.savefig
+
+    def save(figure, *args, **kwargs):
+        saved.append(figure)
+        return original(figure, *args, **kwargs)
+
+    monkeypatch.setattr(Figure, "savefig", save)
+    return saved

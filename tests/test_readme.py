@@ -11,11 +11,10 @@ def blocks(language):
     return re.findall(rf"```{language}\n(.*?)```", README, flags=re.S)
 
 
-def test_worked_example(tmp_path):
+def test_worked_example(tmp_path, run_cli):
     definition, python = blocks("toml")[0], blocks("python")[0]
     (tmp_path / "example.toml").write_text(definition)
-    run = subprocess.run([sys.executable, "-m", "bearing_sweep", "run", "example.toml"], cwd=tmp_path,
-                         capture_output=True, text=True, timeout=300)
+    run = run_cli("run", "example.toml", cwd=tmp_path, timeout=300)
     assert run.returncode == 0, run.stderr
     script = "import matplotlib\nmatplotlib.use('Agg')\n" + python
     done = subprocess.run([sys.executable, "-c", script], cwd=tmp_path, capture_output=True,
@@ -35,11 +34,10 @@ def test_python_api_example(tmp_path):
     assert not (tmp_path / "results" / "example.nc").exists()  # in memory: no file
 
 
-def test_the_documented_error_line_is_the_real_one(tmp_path):
+def test_the_documented_error_line_is_the_real_one(tmp_path, run_cli):
     definition = blocks("toml")[0].replace("crown =", "crwn =")
     (tmp_path / "example.toml").write_text(definition)
-    run = subprocess.run([sys.executable, "-m", "bearing_sweep", "run", "example.toml"], cwd=tmp_path,
-                         capture_output=True, text=True, timeout=300)
+    run = run_cli("run", "example.toml", cwd=tmp_path, timeout=300)
     assert run.returncode == 2
     assert run.stderr.strip() in README
 
@@ -56,13 +54,12 @@ def test_every_command_and_option_is_documented():
                     assert f"`{option}" in README, f"{name} {option}"
 
 
-def test_the_rating_life_example_runs_and_shows_the_clearance_optimum(tmp_path):
+def test_the_rating_life_example_runs_and_shows_the_clearance_optimum(tmp_path, run_cli):
     import xarray as xr
 
     definition = next(block for block in blocks("toml") if "dynamic_load_rating" in block)
     (tmp_path / "life.toml").write_text(definition)
-    run = subprocess.run([sys.executable, "-m", "bearing_sweep", "run", "life.toml", "-o",
-                          "life.nc"], cwd=tmp_path, capture_output=True, text=True, timeout=300)
+    run = run_cli("run", "life.toml", "-o", "life.nc", cwd=tmp_path, timeout=300)
     assert run.returncode == 0, run.stderr
     with xr.open_dataset(tmp_path / "life.nc") as result:
         assert result["modified_reference_rating_life"].notnull().all()
@@ -72,15 +69,14 @@ def test_the_rating_life_example_runs_and_shows_the_clearance_optimum(tmp_path):
         assert ((best <= 0.0) & (best >= -0.015)).all(), best.values
 
 
-def test_the_sampling_example_runs_and_analyze_names_what_drives_the_stiffness(tmp_path):
+def test_the_sampling_example_runs_and_analyze_names_what_drives_the_stiffness(tmp_path, run_cli):
     import xarray as xr
 
     definition = next(block for block in blocks("toml") if "[sample]" in block)
     script = next(block for block in blocks("python") if "bearing_sweep.analyze" in block)
     (tmp_path / "tolerances.toml").write_text(definition)
     for command in (["run", "tolerances.toml"], ["analyze", "results/tolerances.nc"]):
-        done = subprocess.run([sys.executable, "-m", "bearing_sweep", *command], cwd=tmp_path,
-                              capture_output=True, text=True, timeout=300)
+        done = run_cli(*command, cwd=tmp_path, timeout=300)
         assert done.returncode == 0, done.stderr
     assert "radial_stiffness:" in done.stdout
     done = subprocess.run([sys.executable, "-c", "import matplotlib\nmatplotlib.use('Agg')\n"

@@ -1,9 +1,9 @@
 """The papers' studies regenerate every figure and stated number from their netCDF files."""
 import re
-import subprocess
-import sys
+import shutil
 from pathlib import Path
 
+import cf_units
 import numpy as np
 import pytest
 import xarray as xr
@@ -15,7 +15,7 @@ from bearing_sweep.plotting import at, conditions, in_unit
 from bearing_sweep.stores import open_result
 from bearing_sweep.study import find_studies
 
-STUDIES = Path(__file__).resolve().parents[1] / "studies"
+STUDIES = Path(__file__).resolve().parents[2] / "studies"
 
 #: Another unit for each unit the studies' inputs are stored in: a figure script that selects
 #: or draws by bare numbers in the stored unit gives other numbers in these.
@@ -43,37 +43,98 @@ def _store_in_other_units(source: Path, target: Path) -> int:
     return converted
 
 
+#: The definitions a study runs on a smaller grid, a smaller sample or a shorter transient in
+#: ``make test`` (each replacement: the full text, then the reduced one); every value the
+#: figure scripts and the claims select stays on the grid. The slow tests run the full ones.
+REDUCED = {
+    "ball_stiffness/unstated_inputs.toml": [("n = 512", "n = 64")],
+    "radial_stiffness/unstated_inputs.toml": [("n = 512", "n = 64")],
+    # radial loads 50 to 1000 N every 10 N: the claims read 200 to 1000 N every 50 N
+    "cage_slip/fig17_load_speed.toml": [('step = "5 N"', 'step = "10 N"')],
+    "cage_slip/fig17_transient.toml": [('duration = "0.03 s"', 'duration = "0.006 s"')],
+    "cage_slip/fig18_20_eccentricity.toml": [('duration = "0.06 s"', 'duration = "0.012 s"')],
+    # runout: a quarter of the rotation steps (of a revolution, in which the rollers' orders
+    # of roundness pass), fewer random draws
+    "runout/fig07_table3.toml": [("steps_per_revolution = 720", "steps_per_revolution = 180")],
+    "runout/fig08_amplitude.toml": [("steps_per_revolution = 1800",
+                                     "steps_per_revolution = 450")],
+    "runout/fig09_10_order.toml": [("steps_per_revolution = 3600",
+                                    "steps_per_revolution = 900")],
+    "runout/fig11_table4.toml": [("steps_per_revolution = 3600", "steps_per_revolution = 900")],
+    "runout/fig12_roller_count.toml": [("steps_per_revolution = 1800",
+                                        "steps_per_revolution = 450")],
+    "runout/monte_carlo_phases.toml": [("stop = 200, step = 1", "stop = 25, step = 1"),
+                                       ("steps_per_revolution = 900",
+                                        "steps_per_revolution = 225")],
+    "runout/selective_assembly.toml": [("stop = 500, step = 1", "stop = 60, step = 1"),
+                                       ("steps_per_revolution = 360",
+                                        "steps_per_revolution = 90")],
+    "runout/tolerances.toml": [("n = 64", "n = 16"),
+                               ("steps_per_revolution = 180", "steps_per_revolution = 45")],
+}
+
+#: Each study at ``make test``'s resolution and, in the slow tests, at its own (``make
+#: reproduce`` computes the figures' numbers at that one).
+RESOLUTIONS = ["reduced", pytest.param("full", marks=pytest.mark.slow)]
+
+
+def reduced(path: Path) -> str:
+    """The text of the study definition at ``path`` (studies/<study>/<name>.toml) as ``make
+    test`` runs it: as it is, or with the replacements of ``REDUCED``."""
+    text = path.read_text()
+    for full, smaller in REDUCED.get(f"{path.parent.name}/{path.name}", []):
+        assert text.count(full) == 1, (path, full)  # a changed definition: say how to reduce it
+        text = text.replace(full, smaller)
+    return text
+
+
+def _study_copy(name: str, folder: Path, resolution: str) -> None:
+    """``folder/studies`` holding a copy of the study ``name``, its definitions ``reduced``
+    at the reduced resolution."""
+    target = folder / "studies" / name
+    shutil.copytree(STUDIES / name, target)
+    if resolution == "reduced":
+        for definition in target.glob("*.toml"):
+            definition.write_text(reduced(STUDIES / name / definition.name))
+
+
 @pytest.fixture(scope="module")
-def run_study(tmp_path_factory):
-    """``run_study(name)``: the folder holding ``results/`` and ``figures/`` of the study run
-    once for all the tests of this module (whole studies are the suite's longest runs)."""
+def run_study(tmp_path_factory, run_cli):
+    """``run_study(name, resolution="reduced")``: the folder holding ``studies/`` (the
+    study's copy), ``results/`` and ``figures/`` of the study run once for all the tests of
+    this module (whole studies are the suite's longest runs)."""
     runs = {}
 
-    def run(name: str) -> Path:
-        if name not in runs:
-            folder = tmp_path_factory.mktemp(name)
-            done = subprocess.run([sys.executable, "-m", "bearing_sweep", "study", name,
-                                   "--workers", "0", *_folders(folder)],
-                                  capture_output=True, text=True, timeout=300, cwd=folder)
+    def run(name: str, resolution: str = "reduced") -> Path:
+        if (name, resolution) not in runs:
+            folder = tmp_path_factory.mktemp(f"{name}-{resolution}")
+            _study_copy(name, folder, resolution)
+            done = run_cli("study", name, "--workers", "0", *_folders(folder),
+                           timeout=1200, cwd=folder)
             assert done.returncode == 0, done.stderr
-            runs[name] = folder
-        return runs[name]
+            runs[name, resolution] = folder
+        return runs[name, resolution]
 
     return run
 
 
 def _folders(folder: Path) -> list[str]:
-    return ["--studies", str(STUDIES), "--results", str(folder / "results"), "--figures",
-            str(folder / "figures")]
+    return ["--studies", str(folder / "studies"), "--results", str(folder / "results"),
+            "--figures", str(folder / "figures")]
+
+
+def test_every_reduction_applies_to_a_study_definition():
+    for key in REDUCED:
+        reduced(STUDIES / key)  # each text it replaces is there, once
 
 
 @pytest.mark.parametrize("name", ["ball_stiffness", "tapered_rib", "runout", "cage_slip",
                                   "radial_stiffness", "life"])
-def test_a_study_regenerates_its_figures_and_report(name, run_study):
+@pytest.mark.parametrize("resolution", RESOLUTIONS)
+def test_a_study_regenerates_its_figures_and_report(name, resolution, run_study, run_cli):
     study = find_studies(STUDIES)[name]
-    folder = run_study(name)
-    done = subprocess.run([sys.executable, "-m", "bearing_sweep", "report", *_folders(folder)],
-                          capture_output=True, text=True, timeout=300, cwd=folder)
+    folder = run_study(name, resolution)
+    done = run_cli("report", *_folders(folder), timeout=300, cwd=folder)
     assert done.returncode == 0, done.stderr
     for figure in study.figures_module().FIGURES:  # what they show: below
         assert (folder / "figures" / name / figure).read_bytes().startswith(b"\x89PNG")
@@ -93,11 +154,13 @@ def test_a_study_regenerates_its_figures_and_report(name, run_study):
 
 @pytest.mark.parametrize("name", ["ball_stiffness", "tapered_rib", "runout",
                                   "radial_stiffness", "life"])
-def test_a_study_selects_by_quantity_not_by_stored_numbers(name, run_study, tmp_path):
+@pytest.mark.parametrize("resolution", RESOLUTIONS)
+def test_a_study_selects_by_quantity_not_by_stored_numbers(name, resolution, run_study,
+                                                           tmp_path):
     """The same results with their inputs stored in other units give the same stated numbers
     and still draw: the figure scripts select by quantities and convert what they show."""
     study = find_studies(STUDIES)[name]
-    stored = run_study(name) / "results" / name
+    stored = run_study(name, resolution) / "results" / name
     assert _store_in_other_units(stored, tmp_path / "other") > 0
     module = study.figures_module()
     ours, in_other_units = module.ours(stored), module.ours(tmp_path / "other")
@@ -282,25 +345,30 @@ def test_agreement_reads_each_comparison_and_counts_samples_one_by_one():
 
 # -- every figure reads at a glance -----------------------------------------------------------
 
-@pytest.fixture
-def drawn(monkeypatch, tmp_path):
+@pytest.fixture(scope="module")
+def drawn(tmp_path_factory):
     """``drawn(name, results)``: each figure of the study ``name`` drawn from ``results``, as
-    ``{file: Figure}``, laid out as it was saved."""
+    ``{file: Figure}``, laid out as it was saved; drawn once for all the tests of this module
+    (they only read the figures)."""
     import bearing_sweep.plotting as plotting
 
-    original = plotting.save
+    original, made = plotting.save, {}
 
     def draw(name: str, results: Path) -> dict:
+        if (name, results) in made:
+            return made[name, results]
         figures = {}
 
         def keep(figure, folder, file, tight=True):
             original(figure, folder, file, tight)
             figures[file] = figure
 
-        monkeypatch.setattr(plotting, "save", keep)  # the scripts import it when loaded
-        module = find_studies(STUDIES)[name].figures_module()
-        module.draw(results, tmp_path)
+        with pytest.MonkeyPatch.context() as patch:
+            patch.setattr(plotting, "save", keep)  # the scripts import it when loaded
+            module = find_studies(STUDIES)[name].figures_module()
+            module.draw(results, tmp_path_factory.mktemp(f"{name}-figures"))
         assert sorted(figures) == sorted(module.FIGURES)  # each one saved through save
+        made[name, results] = figures
         return figures
 
     return draw
@@ -308,12 +376,60 @@ def drawn(monkeypatch, tmp_path):
 
 @pytest.mark.parametrize("name", ["ball_stiffness", "tapered_rib", "runout", "cage_slip",
                                   "radial_stiffness", "life"])
-def test_every_figure_of_a_study_reads_at_a_glance(name, run_study, drawn):
+@pytest.mark.parametrize("resolution", RESOLUTIONS)
+def test_every_figure_of_a_study_reads_at_a_glance(name, resolution, run_study, drawn):
     """Labelled axes with units, no blank panel, no internal name, no legend over data, no
     overlapping ticks, nothing cut off (bearing_sweep.figure_checks)."""
-    figures = drawn(name, run_study(name) / "results" / name)
+    figures = drawn(name, run_study(name, resolution) / "results" / name)
     assert {file: figure_problems(f) for file, f in figures.items()} == {
         file: [] for file in figures}
+
+
+#: A figure of each study and what one of its panels draws, to compare with the result it was
+#: drawn from: (figure, panel, result, (x, unit shown), (y, unit shown), the dimension with a
+#: line (or bar) per value, in order; None: one line). A unit None: shown as stored.
+DRAWN = {
+    "radial_stiffness": ("fig06_bearing_a.png", 0, "fig06_bearing_a", ("radial_load", "kN"),
+                         ("radial_stiffness", "1e5 N/mm"), None),
+    "ball_stiffness": ("fig06_07_axial.png", 1, "fig06_07_axial", ("axial_load", None),
+                       ("axial_stiffness", "kN/mm"), "form"),
+    "runout": ("fig08_amplitude.png", 0, "fig08_amplitude", ("roller_roundness_amplitude", None),
+               ("runout", None), "roller_roundness_order"),
+    "life": ("clearance.png", 1, "clearance", ("clearance", "um"),
+             ("largest_contact_pressure", "MPa"), "radial_load"),
+    "tapered_rib": ("table2_roller_loads.png", 0, "table2_load", ("roller", None),
+                    ("roller_load", None), "bars"),
+}
+
+
+def _shown(variable: xr.DataArray, unit: str | None) -> np.ndarray:
+    """``variable``'s values in ``unit`` (UDUNITS' conversion, not the plotting code's)."""
+    if unit is None:
+        return variable.values
+    return cf_units.Unit(variable.attrs["units"]).convert(variable.values, cf_units.Unit(unit))
+
+
+@pytest.mark.parametrize("name", sorted(DRAWN))
+@pytest.mark.parametrize("resolution", RESOLUTIONS)
+def test_a_figure_draws_the_values_of_its_result(name, resolution, run_study, drawn):
+    file, panel, sweep, (x, x_unit), (y, y_unit), per = DRAWN[name]
+    results = run_study(name, resolution) / "results" / name
+    axis = drawn(name, results)[file].axes[panel]
+    with xr.open_dataset(results / f"{sweep}.nc") as data:  # read apart from the script
+        if per == "bars":
+            bars = axis.patches
+            assert len(bars) == data.sizes[x]
+            np.testing.assert_allclose([bar.get_x() + bar.get_width() / 2 for bar in bars],
+                                       _shown(data[x], x_unit))
+            np.testing.assert_allclose([bar.get_height() for bar in bars],
+                                       _shown(data[y], y_unit), rtol=1e-12)
+            return
+        groups = [data] if per is None else [data.isel({per: i}) for i in range(data.sizes[per])]
+        lines = axis.get_lines()
+        assert len(lines) >= len(groups)
+        for line, group in zip(lines, groups):  # the data lines come first, in order
+            np.testing.assert_allclose(line.get_xdata(), _shown(group[x], x_unit), rtol=1e-12)
+            np.testing.assert_allclose(line.get_ydata(), _shown(group[y], y_unit), rtol=1e-12)
 
 
 def test_every_figure_of_the_3d_study_reads_at_a_glance(short_3d_results, drawn):

@@ -13,7 +13,7 @@ from bearing_sweep.models.catalogue import PRESETS
 from bearing_sweep.models.registry import all_models
 from bearing_sweep.spec import SpecError
 
-EVERY_MODEL = Path(__file__).parent / "data" / "every_model"
+EVERY_MODEL = Path(__file__).parents[1] / "data" / "every_model"
 
 INCH = 0.0254  # m, exact
 POUND = 0.45359237  # kg, exact

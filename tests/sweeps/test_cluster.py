@@ -78,11 +78,9 @@ def external_cluster(folder, nanny=True):
                 process.wait()
 
 
-def equals_local_run(folder, remote_name):
+def equals_local_run(run_cli, folder, remote_name):
     """The remote result has the data of an in-process run of the same definition."""
-    local = subprocess.run([sys.executable, "-m", "bearing_sweep", "run", "def.toml", "-o", "local.nc",
-                            "--workers", "0", "--quiet"], cwd=folder, capture_output=True,
-                           text=True)
+    local = run_cli("run", "def.toml", "-o", "local.nc", "--workers", "0", "--quiet", cwd=folder)
     assert local.returncode == 0, local.stderr
     a = stores.open_result(folder / remote_name)
     b = stores.open_result(folder / "local.nc")
@@ -91,41 +89,41 @@ def equals_local_run(folder, remote_name):
     return a
 
 
-def run_on(address, folder, *extra, output="remote.nc"):
+def run_on(run_cli, address, folder, *extra, output="remote.nc"):
     began = time.monotonic()
-    done = subprocess.run([sys.executable, "-m", "bearing_sweep", "run", "def.toml", "-o", output,
-                           "--scheduler", address, *extra], cwd=folder, capture_output=True,
-                          text=True, timeout=300)
+    done = run_cli("run", "def.toml", "-o", output, "--scheduler", address, *extra, cwd=folder,
+                   timeout=300)
     return done, time.monotonic() - began
 
 
 @pytest.mark.slow
-def test_sweep_on_a_real_scheduler_and_two_workers(tmp_path):
+def test_sweep_on_a_real_scheduler_and_two_workers(tmp_path, run_cli):
     (tmp_path / "def.toml").write_text(DEFINITION)
     with external_cluster(tmp_path) as (address, _):
-        remote = subprocess.run([sys.executable, "-m", "bearing_sweep", "run", "def.toml", "-o",
-                                 "remote.nc", "--scheduler", address, "--chunk-size", "7"],
-                                cwd=tmp_path, capture_output=True, text=True, timeout=300)
+        remote = run_cli("run", "def.toml", "-o", "remote.nc", "--scheduler", address,
+                         "--chunk-size", "7", cwd=tmp_path, timeout=300)
         assert remote.returncode == 0, remote.stderr
         assert f"dask scheduler {address} (2 workers)" in remote.stdout
         # The workers write a zarr store's chunks themselves, from their own processes.
-        stored, _ = run_on(address, tmp_path, "--chunk-size", "7", "--quiet",
+        stored, _ = run_on(run_cli, address, tmp_path, "--chunk-size", "7", "--quiet",
                            output="remote.zarr")
         assert stored.returncode == 0, stored.stderr
-        workers_of_another_version_are_refused(address, tmp_path)  # same cluster: it is slow
-    result = equals_local_run(tmp_path, "remote.nc")
+        # the same cluster: it is slow to start
+        workers_of_another_version_are_refused(run_cli, address, tmp_path)
+    result = equals_local_run(run_cli, tmp_path, "remote.nc")
     assert result.attrs["scheduler"].startswith("dask scheduler")
-    assert equals_local_run(tmp_path, "remote.zarr").attrs["scheduler"] == \
+    assert equals_local_run(run_cli, tmp_path, "remote.zarr").attrs["scheduler"] == \
         result.attrs["scheduler"]
 
 
-def workers_of_another_version_are_refused(address, folder):
+def workers_of_another_version_are_refused(run_cli, address, folder):
     from distributed import Client
 
     with Client(address, timeout="60s") as client:  # the workers' installation now differs
         client.run(exec, "import bearing_sweep.stores.structure\n"
                          "bearing_sweep.stores.structure.package_version = lambda: '0.0.1'", {})
-    done, _ = run_on(address, folder, "--chunk-size", "7", "--quiet", output="other.nc")
+    done, _ = run_on(run_cli, address, folder, "--chunk-size", "7", "--quiet",
+                     output="other.nc")
     assert done.returncode == 1, done.stderr
     assert len(done.stderr.strip().splitlines()) == 1, done.stderr
     assert f"a worker of dask scheduler {address} runs bearing-sweep 0.0.1" in done.stderr
@@ -135,15 +133,13 @@ def workers_of_another_version_are_refused(address, folder):
 
 
 @pytest.mark.slow
-def test_a_worker_killed_on_an_external_cluster_costs_only_a_retry(tmp_path):
+def test_a_worker_killed_on_an_external_cluster_costs_only_a_retry(tmp_path, run_cli, start_cli):
     definition = DEFINITION.replace("num = 10", "num = 400").replace("num = 5", "num = 100")
     (tmp_path / "def.toml").write_text(definition)
     # Without a nanny the process is the worker: killing it loses the worker for good.
     with external_cluster(tmp_path, nanny=False) as (address, workers):
-        remote = subprocess.Popen([sys.executable, "-m", "bearing_sweep", "run", "def.toml", "-o",
-                                   "remote.nc", "--scheduler", address, "--chunk-size", "1000",
-                                   "--quiet"], cwd=tmp_path, stdout=subprocess.PIPE,
-                                  stderr=subprocess.PIPE, text=True)
+        remote = start_cli("run", "def.toml", "-o", "remote.nc", "--scheduler", address,
+                           "--chunk-size", "1000", "--quiet", cwd=tmp_path)
         parts = tmp_path / "remote.nc.parts"
         end = time.monotonic() + 120
         while len(list(parts.glob("chunk-*.npz"))) < 3 and time.monotonic() < end:
@@ -152,13 +148,13 @@ def test_a_worker_killed_on_an_external_cluster_costs_only_a_retry(tmp_path):
         _, err = remote.communicate(timeout=300)
         assert remote.returncode == 0, err
         assert len(list(parts.glob("*"))) == 0 and workers[0].poll() is not None
-    equals_local_run(tmp_path, "remote.nc")
+    equals_local_run(run_cli, tmp_path, "remote.nc")
 
 
-def test_an_address_that_cannot_be_parsed_is_refused_at_once(tmp_path):
+def test_an_address_that_cannot_be_parsed_is_refused_at_once(tmp_path, run_cli):
     (tmp_path / "def.toml").write_text(DEFINITION)
     for address in ("nonsense", "tcp://127.0.0.1:99999", "carrier-pigeon://loft:1"):
-        done, seconds = run_on(address, tmp_path)
+        done, seconds = run_on(run_cli, address, tmp_path)
         assert done.returncode == 2, done.stderr
         assert done.stderr.strip() == (f"error: --scheduler {address}: not a scheduler address "
                                        "(expected tcp://HOST:PORT)")
@@ -166,10 +162,10 @@ def test_an_address_that_cannot_be_parsed_is_refused_at_once(tmp_path):
     assert sorted(p.name for p in tmp_path.iterdir()) == ["def.toml"]
 
 
-def test_an_unreachable_scheduler_is_one_line_within_seconds(tmp_path):
+def test_an_unreachable_scheduler_is_one_line_within_seconds(tmp_path, run_cli):
     (tmp_path / "def.toml").write_text(DEFINITION)
     address = f"tcp://127.0.0.1:{free_port()}"  # nothing listens there
-    done, seconds = run_on(address, tmp_path)
+    done, seconds = run_on(run_cli, address, tmp_path)
     assert done.returncode == 1, done.stderr
     assert len(done.stderr.strip().splitlines()) == 1 and "Traceback" not in done.stderr
     assert f"--scheduler {address}: cannot reach it: Connection refused" in done.stderr
@@ -177,16 +173,14 @@ def test_an_unreachable_scheduler_is_one_line_within_seconds(tmp_path):
     assert not (tmp_path / "remote.nc").exists()
 
 
-def test_a_local_cluster_that_cannot_start_is_one_line_with_the_way_out(tmp_path):
+def test_a_local_cluster_that_cannot_start_is_one_line_with_the_way_out(tmp_path, run_cli):
     # As an unprivileged user whose dask scratch folder cannot be made; here, the temporary
     # folder dask makes it in is a file.
     (tmp_path / "def.toml").write_text(DEFINITION)
     (tmp_path / "scratch").write_text("a file, not a folder")
-    done = subprocess.run([sys.executable, "-m", "bearing_sweep", "run", "def.toml", "-o",
-                           "out.nc", "--workers", "2", "--chunk-size", "25", "--quiet"],
-                          cwd=tmp_path,
-                          capture_output=True, text=True, timeout=300,
-                          env=os.environ | {"DASK_TEMPORARY_DIRECTORY": str(tmp_path / "scratch")})
+    done = run_cli("run", "def.toml", "-o", "out.nc", "--workers", "2", "--chunk-size", "25",
+                   "--quiet", cwd=tmp_path, timeout=300, env=os.environ |
+                   {"DASK_TEMPORARY_DIRECTORY": str(tmp_path / "scratch")})
     assert done.returncode == 1, done.stderr
     assert done.stderr.count("\n") == 1 and "Traceback" not in done.stderr, done.stderr
     assert done.stderr.startswith("error: the local dask cluster of 2 workers could not start (")

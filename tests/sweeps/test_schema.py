@@ -1,8 +1,6 @@
 """The JSON Schema of sweep definitions accepts every definition the engine accepts among the
 studies' and the every-model examples, and refuses the mistakes a schema can see."""
 import json
-import subprocess
-import sys
 import tomllib
 from pathlib import Path
 
@@ -12,7 +10,7 @@ from jsonschema import Draft7Validator
 from bearing_sweep.models.registry import all_models
 from bearing_sweep.schema import schema
 
-ROOT = Path(__file__).resolve().parents[1]
+ROOT = Path(__file__).resolve().parents[2]
 DEFINITIONS = sorted(p for p in ROOT.glob("studies/*/*.toml") if p.name != "claims.toml") + \
     sorted((ROOT / "tests/data/every_model").glob("*.toml"))
 BAD = ROOT / "tests/data/bad_definitions"
@@ -81,33 +79,27 @@ def test_every_form_of_an_axis(definition):
     assert errors(document, "crb_radial")
 
 
-def test_cli_writes_the_schema(tmp_path):
-    done = subprocess.run([sys.executable, "-m", "bearing_sweep", "schema", "hertz_point"],
-                          capture_output=True, text=True, timeout=120)
+def test_cli_writes_the_schema(tmp_path, run_cli):
+    done = run_cli("schema", "hertz_point", timeout=120, cwd=tmp_path)
     assert done.returncode == 0, done.stderr
     assert json.loads(done.stdout)["title"].endswith("hertz_point sweep")
     out = tmp_path / "bearing-sweep.schema.json"
-    done = subprocess.run([sys.executable, "-m", "bearing_sweep", "schema", "-o", out],
-                          capture_output=True, text=True, timeout=120)
+    done = run_cli("schema", "-o", out, timeout=120, cwd=tmp_path)
     assert done.returncode == 0, done.stderr
     assert len(json.loads(out.read_text())["oneOf"]) == len(all_models())
-    done = subprocess.run([sys.executable, "-m", "bearing_sweep", "schema", "trb_rib", "-o", out],
-                          capture_output=True, text=True, timeout=120)  # ours: replaced
+    done = run_cli("schema", "trb_rib", "-o", out, timeout=120, cwd=tmp_path)  # ours: replaced
     assert done.returncode == 0 and "oneOf" not in json.loads(out.read_text())
 
 
-def test_cli_refuses_an_unknown_model_in_one_line(tmp_path):
-    done = subprocess.run([sys.executable, "-m", "bearing_sweep", "schema", "crb_radail"],
-                          capture_output=True, text=True, timeout=120)
+def test_cli_refuses_an_unknown_model_in_one_line(tmp_path, run_cli):
+    done = run_cli("schema", "crb_radail", timeout=120, cwd=tmp_path)
     assert done.returncode == 2 and done.stdout == ""
     assert done.stderr.count("\n") == 1 and "did you mean 'crb_radial'" in done.stderr
     definition = tmp_path / "sweep.toml"
     definition.write_text("[sweep]\n")
-    done = subprocess.run([sys.executable, "-m", "bearing_sweep", "schema", "-o", definition],
-                          capture_output=True, text=True, timeout=120)
+    done = run_cli("schema", "-o", definition, timeout=120, cwd=tmp_path)
     assert done.returncode == 2 and definition.read_text() == "[sweep]\n"
     other = tmp_path / "package.json"
     other.write_text('{"name": "x"}')
-    done = subprocess.run([sys.executable, "-m", "bearing_sweep", "schema", "-o", other],
-                          capture_output=True, text=True, timeout=120)
+    done = run_cli("schema", "-o", other, timeout=120, cwd=tmp_path)
     assert done.returncode == 2 and other.read_text() == '{"name": "x"}'

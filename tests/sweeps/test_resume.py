@@ -40,11 +40,6 @@ def same_data(first, second):
         np.testing.assert_array_equal(first[name].values, second[name].values)
 
 
-def cli_run(*arguments, cwd):
-    return subprocess.Popen([sys.executable, "-m", "bearing_sweep", "run", *map(str, arguments)],
-                            cwd=cwd, stdout=subprocess.PIPE, stderr=subprocess.PIPE, text=True)
-
-
 def wait_for_chunks(parts, count, seconds=120):
     """Until a run has saved ``count`` chunks in ``parts`` (or ``seconds`` passed)."""
     deadline = time.monotonic() + seconds
@@ -52,10 +47,10 @@ def wait_for_chunks(parts, count, seconds=120):
         time.sleep(0.05)
 
 
-def test_a_killed_run_resumes_where_it_stopped(tmp_path):
+def test_a_killed_run_resumes_where_it_stopped(tmp_path, start_cli):
     (tmp_path / "slow.toml").write_text(SLOW)
     common = ["--workers", "0", "--chunk-size", "1000", "--quiet"]
-    first = cli_run("slow.toml", "-o", "out.nc", *common, cwd=tmp_path)
+    first = start_cli("run", "slow.toml", "-o", "out.nc", *common, cwd=tmp_path)
     parts = tmp_path / "out.nc.parts"
     wait_for_chunks(parts, 5)
     first.send_signal(signal.SIGKILL)
@@ -63,28 +58,28 @@ def test_a_killed_run_resumes_where_it_stopped(tmp_path):
     kept = len(list(parts.glob("chunk-*.npz")))
     assert 5 <= kept < 40 and not (tmp_path / "out.nc").exists()
 
-    second = cli_run("slow.toml", "-o", "out.nc", *common, cwd=tmp_path)
+    second = start_cli("run", "slow.toml", "-o", "out.nc", *common, cwd=tmp_path)
     _, err = second.communicate(timeout=300)
     assert second.returncode == 0, err
     assert re.search(rf"resuming: {kept} chunks? already computed", err)
     assert not parts.exists()
-    whole = cli_run("slow.toml", "-o", "whole.nc", *common, cwd=tmp_path)
+    whole = start_cli("run", "slow.toml", "-o", "whole.nc", *common, cwd=tmp_path)
     whole.communicate(timeout=300)
     same_data(stores.open_result(tmp_path / "out.nc"), stores.open_result(tmp_path / "whole.nc"))
 
 
 @pytest.mark.parametrize("output", ["k.nc", "k.zarr"])
-def test_a_killed_run_leaves_nothing_that_the_next_run_does_not_clear(tmp_path, output):
+def test_a_killed_run_leaves_nothing_that_the_next_run_does_not_clear(tmp_path, output, start_cli):
     (tmp_path / "slow.toml").write_text(SLOW)
     common = ["--workers", "0", "--chunk-size", "1000", "--quiet"]
-    first = cli_run("slow.toml", "-o", output, *common, cwd=tmp_path)
+    first = start_cli("run", "slow.toml", "-o", output, *common, cwd=tmp_path)
     parts = tmp_path / f"{output}.parts"
     wait_for_chunks(parts, 3)
     first.send_signal(signal.SIGKILL)
     first.wait()
     if output == "k.nc":  # the file being written, beside the output
         assert list(tmp_path.glob(f".k.nc.{first.pid}.tmp"))
-    second = cli_run("slow.toml", "-o", output, *common, cwd=tmp_path)
+    second = start_cli("run", "slow.toml", "-o", output, *common, cwd=tmp_path)
     _, err = second.communicate(timeout=300)
     assert second.returncode == 0, err
     assert sorted(p.name for p in tmp_path.iterdir()) == [output, "slow.toml"]
@@ -187,19 +182,17 @@ FULL = {"netCDF, compressed": ("out.nc", [], 1_000_000),
 
 
 @pytest.mark.parametrize("case", FULL)
-def test_a_disk_full_while_writing_is_one_line_and_loses_nothing(tmp_path, case):
+def test_a_disk_full_while_writing_is_one_line_and_loses_nothing(tmp_path, case, run_cli):
     output, options, limit = FULL[case]
     (tmp_path / "d.toml").write_text(SLOW.replace("num = 200", "num = 100"))
     common = ["run", "d.toml", "--workers", "0", "--chunk-size", "1000", "--quiet", *options]
     # An earlier result, beside a netCDF output or where it goes (a store is never replaced)
-    earlier = subprocess.run([sys.executable, "-m", "bearing_sweep", *common, "-o",
-                              "out.nc" if output == "out.zarr" else output, "--fresh"],
-                             cwd=tmp_path, capture_output=True, text=True, timeout=300)
+    earlier = run_cli(*common, "-o", "out.nc" if output == "out.zarr" else output, "--fresh",
+                      cwd=tmp_path, timeout=300)
     assert earlier.returncode == 0, earlier.stderr
     before = {p.name: p.read_bytes() for p in tmp_path.glob("out.nc")}
-    full = subprocess.run([sys.executable, "-m", "bearing_sweep", *common, "-o", output],
-                          cwd=tmp_path, capture_output=True, text=True, timeout=300,
-                          preexec_fn=file_size_limited(limit))
+    full = run_cli(*common, "-o", output, cwd=tmp_path, timeout=300,
+                   preexec_fn=file_size_limited(limit))
     assert full.returncode == 1, full.stderr
     assert full.stderr == (f"error: {output}: File too large; any earlier result is left as it "
                            "was\n")
@@ -210,13 +203,11 @@ def test_a_disk_full_while_writing_is_one_line_and_loses_nothing(tmp_path, case)
     # The chunks computed are kept, nothing is lost (a store's first chunk is too large to
     # write: none is finished)
     assert kept or output == "out.zarr"
-    again = subprocess.run([sys.executable, "-m", "bearing_sweep", *common, "-o", output],
-                           cwd=tmp_path, capture_output=True, text=True, timeout=300)
+    again = run_cli(*common, "-o", output, cwd=tmp_path, timeout=300)
     assert again.returncode == 0, again.stderr
     assert not kept or re.search(rf"resuming: {len(kept)} chunks? already computed",
                                  again.stderr)
-    whole = subprocess.run([sys.executable, "-m", "bearing_sweep", *common, "-o", "whole.nc"],
-                           cwd=tmp_path, capture_output=True, text=True, timeout=300)
+    whole = run_cli(*common, "-o", "whole.nc", cwd=tmp_path, timeout=300)
     assert whole.returncode == 0, whole.stderr
     same_data(stores.open_result(tmp_path / output), stores.open_result(tmp_path / "whole.nc"))
 
@@ -608,10 +599,10 @@ def test_the_output_lock_is_never_held_twice(tmp_path):
     assert acquired[0] > 20 and refused[0] > 20  # it was contended, and served
 
 
-def test_two_runs_started_at_once_one_computes_the_other_is_refused(tmp_path):
+def test_two_runs_started_at_once_one_computes_the_other_is_refused(tmp_path, start_cli):
     (tmp_path / "slow.toml").write_text(SLOW)
     common = ["slow.toml", "-o", "out.nc", "--workers", "0", "--chunk-size", "1000", "--quiet"]
-    runs = [cli_run(*common, cwd=tmp_path) for _ in range(2)]
+    runs = [start_cli("run", *common, cwd=tmp_path) for _ in range(2)]
     finished = [(run.returncode, *run.communicate(timeout=300)) for run in runs]
     finished = [(run.returncode, out, err) for run, (_, out, err) in zip(runs, finished)]
     assert sorted(code for code, _, _ in finished) == [0, 1], finished
@@ -633,14 +624,13 @@ def test_the_command_line_imports_without_fcntl():
 
 
 @pytest.mark.slow
-def test_ctrl_c_on_the_local_cluster_is_one_line_and_resumes(tmp_path):
+def test_ctrl_c_on_the_local_cluster_is_one_line_and_resumes(tmp_path, start_cli):
     # A terminal's Ctrl-C reaches the whole foreground process group: the workers too.
     # 160 000 points: enough left to compute after the first chunk is saved that the signal
     # always lands mid-run (at 90 000 a quick machine sometimes finished first).
     (tmp_path / "slow.toml").write_text(SLOW.replace("num = 200", "num = 400"))
-    run = subprocess.Popen([sys.executable, "-m", "bearing_sweep", "run", "slow.toml", "-o", "out.nc",
-                            "--quiet"], cwd=tmp_path, stdout=subprocess.PIPE,
-                           stderr=subprocess.PIPE, text=True, start_new_session=True)
+    run = start_cli("run", "slow.toml", "-o", "out.nc", "--quiet", cwd=tmp_path,
+                    start_new_session=True)
     parts = tmp_path / "out.nc.parts"
     wait_for_chunks(parts, 1)
     os.killpg(run.pid, signal.SIGINT)
@@ -650,7 +640,7 @@ def test_ctrl_c_on_the_local_cluster_is_one_line_and_resumes(tmp_path):
     assert len(err.strip().splitlines()) == 1 and "interrupted" in err
     kept = len(list(parts.glob("chunk-*.npz")))
     assert kept and not (tmp_path / "out.nc").exists()
-    again = cli_run("slow.toml", "-o", "out.nc", "--quiet", cwd=tmp_path)
+    again = start_cli("run", "slow.toml", "-o", "out.nc", "--quiet", cwd=tmp_path)
     out, err = again.communicate(timeout=300)
     assert again.returncode == 0, err
     assert re.search(rf"resuming: {kept} chunks? already computed", err)
@@ -808,13 +798,13 @@ def test_an_analysis_store_left_half_written_is_removed_by_the_next_writer(tmp_p
 
 
 @pytest.mark.parametrize("workers", ["0", "2"])
-def test_a_sigterm_stops_the_run_as_ctrl_c_does_and_it_resumes(tmp_path, workers):
+def test_a_sigterm_stops_the_run_as_ctrl_c_does_and_it_resumes(tmp_path, workers, start_cli):
     # kill, or a batch system's time limit, sends SIGTERM to the program alone: it stops as
     # a Ctrl-C does, in one line, exit 143 (128 + 15), its workers stopped, the finished
     # chunks kept and no temporary file left; the same command resumes.
     (tmp_path / "slow.toml").write_text(SLOW)
     common = ["--workers", workers, "--chunk-size", "1000", "--quiet"]
-    first = cli_run("slow.toml", "-o", "out.nc", *common, cwd=tmp_path)
+    first = start_cli("run", "slow.toml", "-o", "out.nc", *common, cwd=tmp_path)
     parts = tmp_path / "out.nc.parts"
     wait_for_chunks(parts, 3)
     first.send_signal(signal.SIGTERM)
@@ -825,7 +815,7 @@ def test_a_sigterm_stops_the_run_as_ctrl_c_does_and_it_resumes(tmp_path, workers
     kept = len(list(parts.glob("chunk-*.npz")))
     assert 3 <= kept < 40 and not (tmp_path / "out.nc").exists()
     assert not list(tmp_path.glob(".*.tmp")) and not list(parts.glob("*.tmp"))
-    second = cli_run("slow.toml", "-o", "out.nc", *common, cwd=tmp_path)
+    second = start_cli("run", "slow.toml", "-o", "out.nc", *common, cwd=tmp_path)
     _, err = second.communicate(timeout=300)
     assert second.returncode == 0, err
     assert re.search(rf"resuming: {kept} chunks? already computed", err)

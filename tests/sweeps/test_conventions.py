@@ -14,10 +14,10 @@ from bearing_sweep.stores.netcdf import write_netcdf
 from bearing_sweep.compute import Executor, run_sweep
 from bearing_sweep.testing import assert_same_numbers
 
-DEFINITIONS = Path(__file__).parent / "data" / "every_model"
+DEFINITIONS = Path(__file__).parents[1] / "data" / "every_model"
 MODELS = sorted(all_models())
 #: Besides every model's sweep: a zipped axis with float32 shuffled outputs, a sampled design.
-STRUCTURES = sorted((Path(__file__).parent / "data" / "structure").glob("*.toml"))
+STRUCTURES = sorted((Path(__file__).parents[1] / "data" / "structure").glob("*.toml"))
 
 
 def test_there_is_a_definition_for_every_model():
@@ -122,27 +122,9 @@ def test_numbers_do_not_depend_on_the_chunking_to_the_last_bit(files, name):
 
 
 @pytest.mark.parametrize("name", MODELS)
-def test_every_variable_has_cf_units_labels_and_quantifies_with_pint_xarray(files, name):
+def test_every_variable_has_cf_units_labels_and_quantifies_with_pint_xarray(files, name,
+                                                                            assert_cf_labelled):
     assert_cf_labelled(files[name][0])
-
-
-def assert_cf_labelled(data):
-    """Every variable has a short long_name and units UDUNITS reads (or says why not), and
-    the dataset quantifies with pint-xarray."""
-    for variable_name, variable in {**data.coords, **data.data_vars}.items():
-        attrs = variable.attrs
-        assert 0 < len(attrs["long_name"]) <= 48, (variable_name, attrs["long_name"])
-        if "units" in attrs:
-            cf_units.Unit(attrs["units"])  # UDUNITS reads it
-            assert variable.dtype.kind not in "OUS", variable_name
-        elif variable.dtype.kind not in "OUS" and "flag_meanings" not in attrs:  # CF flags
-            # numbers without units: an entry-unit output, or a unit UDUNITS cannot express
-            assert ("ancillary_variables" in attrs
-                    or "fractional powers" in attrs.get("comment", "")), variable_name
-    quantified = data.pint.quantify()
-    for variable_name, variable in data.data_vars.items():
-        if "units" in variable.attrs:
-            assert hasattr(quantified[variable_name].data, "units"), variable_name
 
 
 @pytest.mark.parametrize("name", MODELS)

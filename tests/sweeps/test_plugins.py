@@ -23,7 +23,7 @@ from bearing_sweep import stores
 from bearing_sweep.models.registry import Input, Model, Output
 from bearing_sweep.testing import assert_chunking_invariant, assert_valid_declaration
 
-ROOT = Path(__file__).resolve().parents[1]
+ROOT = Path(__file__).resolve().parents[2]
 README = (ROOT / "README.md").read_text()
 
 #: What the README example's springs.toml gives: deflection [mm] by load (1, 2 kN) and
@@ -99,10 +99,9 @@ def discover(monkeypatch):
             del sys.modules[name]
 
 
-def run_cli(*arguments, cwd, path):
-    environment = {**os.environ, "PYTHONPATH": os.pathsep.join(str(p) for p in path)}
-    return subprocess.run([sys.executable, "-m", "bearing_sweep", *arguments], cwd=cwd,
-                          env=environment, capture_output=True, text=True, timeout=300)
+def path_environment(path):
+    """This process's environment with ``path`` (folders) as PYTHONPATH."""
+    return {**os.environ, "PYTHONPATH": os.pathsep.join(str(p) for p in path)}
 
 
 def check_springs_result(data):
@@ -127,34 +126,34 @@ def test_our_models_are_the_modules_declared_in_the_entry_point_group():
             assert models[model.name] is model
 
 
-def test_the_readme_example_sweeps_through_the_cli(site, tmp_path):
+def test_the_readme_example_sweeps_through_the_cli(site, tmp_path, run_cli):
     example = readme_example()
     work = tmp_path / "work"
     work.mkdir()
     (work / "springs.toml").write_text(example["springs.toml"])
-    described = run_cli("describe", "spring_stack", cwd=work, path=[site])
+    described = run_cli("describe", "spring_stack", cwd=work, env=path_environment([site]))
     assert described.returncode == 0, described.stderr
     assert "spring_load [N] (dims: spring)" in described.stdout
-    listed = run_cli("models", cwd=work, path=[site])
+    listed = run_cli("models", cwd=work, env=path_environment([site]))
     assert "spring_stack: Identical springs in series" in listed.stdout
     assert "crb_radial" in listed.stdout
-    run = run_cli("run", "springs.toml", "--quiet", cwd=work, path=[site])
+    run = run_cli("run", "springs.toml", "--quiet", cwd=work, env=path_environment([site]))
     assert run.returncode == 0, run.stderr
     check_springs_result(stores.open_result(work / "results" / "springs.nc"))
 
 
 @pytest.mark.slow
-def test_the_readme_example_sweeps_on_local_workers(site, tmp_path):
+def test_the_readme_example_sweeps_on_local_workers(site, tmp_path, run_cli):
     # Worker processes find the plug-in on their own (they inherit PYTHONPATH).
     (tmp_path / "springs.toml").write_text(readme_example()["springs.toml"])
     run = run_cli("run", "springs.toml", "--quiet", "--workers", "1", "--chunk-size", "1",
-                  cwd=tmp_path, path=[site])
+                  cwd=tmp_path, env=path_environment([site]))
     assert run.returncode == 0, run.stderr
     check_springs_result(stores.open_result(tmp_path / "results" / "springs.nc"))
 
 
 @pytest.mark.slow
-def test_the_readme_example_installs_with_pip(tmp_path):
+def test_the_readme_example_installs_with_pip(tmp_path, run_cli):
     # What the other tests lay out by hand is what pip makes of the example's pyproject.
     source = tmp_path / "my-bearings"
     for relative, text in {**example_package(),
@@ -170,7 +169,8 @@ def test_the_readme_example_installs_with_pip(tmp_path):
     if installed.returncode and "satisfies the requirement setuptools" in installed.stderr:
         pytest.skip("pip cannot reach setuptools to build the example (no package index)")
     assert installed.returncode == 0, installed.stderr
-    described = run_cli("describe", "spring_stack", cwd=tmp_path, path=[tmp_path / "site"])
+    described = run_cli("describe", "spring_stack", cwd=tmp_path,
+                        env=path_environment([tmp_path / "site"]))
     assert described.returncode == 0, described.stderr
     assert described.stdout.startswith("spring_stack (version 1): Identical springs")
 
@@ -250,9 +250,9 @@ def test_a_broken_plugin_is_one_line_and_hides_no_other_model(site, broken_site,
     assert {"ball_5dof", "cage_dynamics", "hertz_point", "trb_rib"} <= set(models)
 
 
-def test_the_cli_shows_a_broken_plugin_as_one_line(site, broken_site, tmp_path):
+def test_the_cli_shows_a_broken_plugin_as_one_line(site, broken_site, tmp_path, run_cli):
     folder, words = broken_site
-    listed = run_cli("models", cwd=tmp_path, path=[site, folder])
+    listed = run_cli("models", cwd=tmp_path, env=path_environment([site, folder]))
     assert listed.returncode == 0
     assert listed.stderr.count("\n") == 1 and words in listed.stderr, listed.stderr
     assert "Traceback" not in listed.stderr

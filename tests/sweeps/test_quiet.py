@@ -1,6 +1,4 @@
 """A model's warnings stay off the screen, and nothing of the user's warnings changes."""
-import subprocess
-import sys
 import threading
 import warnings
 
@@ -26,11 +24,10 @@ radial_load = ["1 kN", "2 kN", "3 kN"]
 
 
 @pytest.mark.parametrize("workers", ["0", pytest.param("2", marks=pytest.mark.slow)])
-def test_a_model_overflowing_prints_nothing_but_the_summary(tmp_path, workers):
+def test_a_model_overflowing_prints_nothing_but_the_summary(tmp_path, workers, run_cli):
     (tmp_path / "d.toml").write_text(HUGE_SPEED)
-    done = subprocess.run([sys.executable, "-m", "bearing_sweep", "run", "d.toml", "-o", "d.nc",
-                           "--workers", workers, "--chunk-size", "1", "--quiet"], cwd=tmp_path,
-                          capture_output=True, text=True, timeout=300)
+    done = run_cli("run", "d.toml", "-o", "d.nc", "--workers", workers, "--chunk-size", "1",
+                   "--quiet", cwd=tmp_path, timeout=300)
     assert done.returncode == 0 and done.stderr == "", done.stderr
     # Points no bearing runs at: not converged, and flagged outside validity (speed factor).
     assert "3 points (3 not_converged; 3 out_of_validity)" in done.stdout

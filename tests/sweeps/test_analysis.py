@@ -11,8 +11,6 @@ import xarray as xr
 import bearing_sweep
 from bearing_sweep import analysis, cli, sample
 from bearing_sweep.spec import SpecError
-from test_conventions import assert_cf_labelled
-from test_sample import ishigami_indices, ishigami_model, ishigami_sweep  # noqa: F401
 
 REPLICATES = sample.SALTELLI_REPLICATES
 SEEDS = 40
@@ -56,9 +54,13 @@ def sobol_g_indices():
         / total_variance
 
 
-FUNCTIONS = {"linear": (linear, 3, linear_indices()),
-             "ishigami": (ishigami_unit, 3, ishigami_indices(7.0)),
-             "sobol_g": (sobol_g, 4, sobol_g_indices())}
+@pytest.fixture(scope="module")
+def functions(ishigami_indices):
+    """Each test function by name: (function of inputs uniform on [0, 1], how many inputs,
+    its exact first-order and total indices)."""
+    return {"linear": (linear, 3, linear_indices()),
+            "ishigami": (ishigami_unit, 3, ishigami_indices(7.0)),
+            "sobol_g": (sobol_g, 4, sobol_g_indices())}
 
 
 def estimated(function, inputs: int, n: int, seed: int, replicates: int = REPLICATES):
@@ -68,10 +70,10 @@ def estimated(function, inputs: int, n: int, seed: int, replicates: int = REPLIC
     return analysis.sobol_indices(values[0], values[1], values[2:], replicates)
 
 
-def over_seeds(name: str, n: int, replicates: int = REPLICATES):
+def over_seeds(test_function: tuple, n: int, replicates: int = REPLICATES):
     """Estimates (seeds, 2 inputs: first-order then total), intervals (seeds, 2 inputs, 2)
-    and the exact values (2 inputs) of one test function."""
-    function, inputs, exact = FUNCTIONS[name]
+    and the exact values (2 inputs) of one test function (an item of ``functions``)."""
+    function, inputs, exact = test_function
     found = [estimated(function, inputs, n, seed, replicates) for seed in range(SEEDS)]
     values = np.array([np.concatenate([f["first_order"][0], f["total_order"][0]])
                        for f in found])
@@ -81,10 +83,10 @@ def over_seeds(name: str, n: int, replicates: int = REPLICATES):
 
 
 @pytest.mark.parametrize("n", [sample.SALTELLI_MIN_N, 128])
-def test_the_intervals_hold_the_exact_index_about_95_percent_of_the_time(n):
+def test_the_intervals_hold_the_exact_index_about_95_percent_of_the_time(n, functions):
     held = []
-    for name in FUNCTIONS:
-        _, intervals, exact = over_seeds(name, n)
+    for name, test_function in functions.items():
+        _, intervals, exact = over_seeds(test_function, n)
         inside = (intervals[..., 0] <= exact) & (exact <= intervals[..., 1])
         # Each index: at least 34 of the 40 seeds' intervals hold it (a 95 % interval falls
         # below with probability 0.003).
@@ -96,20 +98,20 @@ def test_the_intervals_hold_the_exact_index_about_95_percent_of_the_time(n):
 
 
 @pytest.mark.parametrize("n", [sample.SALTELLI_MIN_N, 128])
-def test_the_intervals_are_as_wide_as_the_estimates_spread_over_seeds(n):
-    for name in FUNCTIONS:
-        values, intervals, _ = over_seeds(name, n)
+def test_the_intervals_are_as_wide_as_the_estimates_spread_over_seeds(n, functions):
+    for name, test_function in functions.items():
+        values, intervals, _ = over_seeds(test_function, n)
         half_width = np.mean((intervals[..., 1] - intervals[..., 0]) / 2, axis=0)
         spread = 1.96 * np.std(values, axis=0, ddof=1)  # a 95 % interval's half width
         ratio = half_width / spread
         assert np.all((0.5 <= ratio) & (ratio <= 2.0)), (name, ratio)
 
 
-def test_the_replicated_estimate_is_at_least_as_good_as_one_scrambling():
+def test_the_replicated_estimate_is_at_least_as_good_as_one_scrambling(functions):
     # The design before the replicates: one scrambled sequence of n base samples.
-    for name in FUNCTIONS:
-        replicated, _, exact = over_seeds(name, 64)
-        single, _, _ = over_seeds(name, 64, replicates=1)
+    for name, test_function in functions.items():
+        replicated, _, exact = over_seeds(test_function, 64)
+        single, _, _ = over_seeds(test_function, 64, replicates=1)
         error, single_error = (np.sqrt(np.mean((v - exact) ** 2, axis=0))
                                for v in (replicated, single))
         assert np.all(error <= single_error), (name, error, single_error)
@@ -129,7 +131,7 @@ DESIGN_SIZE = 16 * REPLICATES * 5
 
 
 @pytest.fixture
-def saltelli(ishigami_model):  # noqa: F811 (the fixture imported above)
+def saltelli(ishigami_sweep):
     return ishigami_sweep(16, seed=5)
 
 
@@ -204,9 +206,8 @@ def test_a_result_without_what_analyze_needs_is_named_in_one_line(saltelli, chan
     refused(change(saltelli), message)
 
 
-def test_a_design_of_one_replicate_gives_indices_without_intervals(ishigami_model,  # noqa: F811
-                                                                    monkeypatch, tmp_path,
-                                                                    capsys):
+def test_a_design_of_one_replicate_gives_indices_without_intervals(ishigami_sweep, monkeypatch,
+                                                                    tmp_path, capsys):
     # As a file written before the design had replicates: no replicate coordinate either.
     monkeypatch.setattr(sample, "SALTELLI_REPLICATES", 1)
     data = ishigami_sweep(64, seed=0)
@@ -271,7 +272,8 @@ def results(tmp_path_factory):
     return made
 
 
-def test_an_analysis_of_every_design_reads_back_as_netcdf_and_zarr(results, tmp_path):
+def test_an_analysis_of_every_design_reads_back_as_netcdf_and_zarr(results, tmp_path,
+                                                                   assert_cf_labelled):
     for name, path in results.items():
         for suffix, engine in ((".nc", "netcdf4"), (".zarr", "zarr"), (".ZARR", "zarr")):
             output = tmp_path / f"{name}_analysis{suffix}"

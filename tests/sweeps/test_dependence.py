@@ -10,47 +10,12 @@ from bearing_sweep import analyze, cli, run, spec, stores
 from bearing_sweep.evaluate import evaluate_chunk
 from bearing_sweep.dependence import InconsistentOutput, Reduction, on_grid
 from bearing_sweep.grid import Grid
-from bearing_sweep.models.registry import CONVERGED, INFEASIBLE, Input, Model, Output
+from bearing_sweep.models.registry import Model, Output
 from bearing_sweep.testing import assert_chunking_invariant
 
 
-def _toy(a, b, c=2.0):
-    """``total = a + b + c`` everywhere; ``product = b c``; a point fails where a or b is
-    negative (the model leaves its values there, the engine makes them NaN)."""
-    a, b, c = np.broadcast_arrays(*(np.asarray(x, dtype=float) for x in (a, b, c)))
-    failed = (a < 0) | (b < 0)
-    return {"total": a + b + c, "product": b * c, "whole_b": np.rint(b),
-            "status": np.where(failed, INFEASIBLE, CONVERGED).astype(np.int8)}
-
-
-def _liar(a, b, c=2.0):
-    """Says ``product`` depends on b and c only, but adds a."""
-    result = _toy(a, b, c)
-    result["product"] = result["product"] + a
-    return result
-
-
-def _model(name, function):
-    return Model(name, function, "a test model", "none", "1",
-                 (Input("a", "1", "a", kind="number"), Input("b", "1", "b", kind="number"),
-                  Input("c", "1", "c", kind="number", default=2.0)),
-                 (Output("total", "1", "a + b + c"),
-                  Output("product", "1", "b c", depends_on=("b", "c")),
-                  Output("whole_b", "1", "b rounded", dtype="int", depends_on=("b",))))
-
-
-@pytest.fixture
-def toy(monkeypatch):
-    registry.all_models()  # ours first, then the test models
-    for model in (_model("toy", _toy), _model("liar", _liar)):
-        monkeypatch.setitem(registry._MODELS, model.name, model)
-
-
-GRID = '[sweep]\nmodel = "toy"\n[axes]\na = [-1, 1, 2]\nb = [-2, 1, 2, 3]\n'
-
-
 def test_an_output_depending_on_one_axis_is_stored_on_it(toy):
-    data = run(GRID, workers=0, progress=False)
+    data = run(toy, workers=0, progress=False)
     assert data["total"].dims == ("a", "b")
     assert data["product"].dims == ("b",)
     assert data["whole_b"].dims == ("b",)
@@ -62,16 +27,16 @@ def test_an_output_depending_on_one_axis_is_stored_on_it(toy):
 
 def test_the_file_holds_the_same_on_the_same_dims_whatever_the_chunks(toy, tmp_path):
     # The first row (a = -1) fails: chunks of one point take each value from a later chunk.
-    assert_chunking_invariant(GRID, tmp_path, chunk_size=1)
-    assert_chunking_invariant(GRID, tmp_path, chunk_size=5)
+    assert_chunking_invariant(toy, tmp_path, chunk_size=1)
+    assert_chunking_invariant(toy, tmp_path, chunk_size=5)
     in_file = stores.open_result(tmp_path / "chunked.nc")
     assert in_file["product"].dims == ("b",)
     np.testing.assert_array_equal(in_file["product"].values,
-                                  run(GRID, workers=0, progress=False)["product"].values)
+                                  run(toy, workers=0, progress=False)["product"].values)
 
 
 def test_chunks_in_any_order_give_each_cell_its_first_held_point(toy):
-    grid = Grid.from_sweep(spec.parse(GRID))
+    grid = Grid.from_sweep(spec.parse(toy))
     chunks = [(start, stop, evaluate_chunk(grid, start, stop)) for start, stop in grid.chunks(5)]
     in_order, reversed_order = Reduction(grid, grid.model.outputs[1]), \
         Reduction(grid, grid.model.outputs[1])
@@ -125,7 +90,7 @@ def test_a_sampled_input_keeps_the_sample_dim_and_the_analysis_sees_every_sample
 
 
 def test_on_grid_gives_every_point_its_value_and_failed_points_nan(toy):
-    data = run(GRID, workers=0, progress=False)
+    data = run(toy, workers=0, progress=False)
     spread = on_grid(data)["product"]
     assert spread.dims == ("a", "b")
     expected = xr.where((data["a"] < 0) | (data["b"] < 0), np.nan,
@@ -137,7 +102,7 @@ def test_on_grid_gives_every_point_its_value_and_failed_points_nan(toy):
 
 def test_a_model_whose_output_varies_along_a_dropped_axis_stops_the_sweep(toy, tmp_path,
                                                                           capsys):
-    lying = GRID.replace('"toy"', '"liar"')
+    lying = toy.replace('"toy"', '"liar"')
     with pytest.raises(InconsistentOutput, match=r"model 'liar', output 'product': declared "
                        r"to depend on b, c only .* it differs between points that share "
                        r"those: 3 at point a\[1\], b\[1\] and 4 at point a\[2\], b\[1\]"):
@@ -156,8 +121,8 @@ def test_a_model_whose_output_varies_along_a_dropped_axis_stops_the_sweep(toy, t
     assert list((tmp_path / "liar.nc.parts").glob("chunk-*.npz"))  # a fixed model resumes
 
 
-def test_depends_on_names_declared_inputs():
-    model = _model("toy", _toy)
+def test_depends_on_names_declared_inputs(toy_model):
+    model = toy_model("toy")
     wrong = Model(**{**model.__dict__, "outputs": (Output("product", "1", "b c",
                                                           depends_on=("b", "speed")),)})
     assert registry.declaration_problems(model) == []
@@ -181,7 +146,7 @@ def test_crb_radial_stores_its_centrifugal_force_and_kappa_on_the_speed_axis():
 def test_the_quick_look_draws_an_output_stored_on_fewer_axes_at_every_point(toy):
     from bearing_sweep.quicklook import plot
 
-    figure = plot(run(GRID, workers=0, progress=False), "product", x="b")
+    figure = plot(run(toy, workers=0, progress=False), "product", x="b")
     lines = [line for line in figure.axes[0].lines if not line.get_label().startswith("_")]
     assert len(lines) == 3  # one per a; a = -1 failed everywhere: no value on its line
     np.testing.assert_array_equal(lines[0].get_ydata(), [np.nan] * 4)

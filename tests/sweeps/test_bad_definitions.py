@@ -9,7 +9,7 @@ from hypothesis import strategies as st
 
 from bearing_sweep import cli, stores
 
-CORPUS = sorted((Path(__file__).parent / "data" / "bad_definitions").glob("*.toml"))
+CORPUS = sorted((Path(__file__).parents[1] / "data" / "bad_definitions").glob("*.toml"))
 
 
 def expectation(path: Path) -> str:

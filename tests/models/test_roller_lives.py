@@ -8,35 +8,35 @@ from bearing_sweep.models.lubrication import CELSIUS
 from bearing_sweep.models.registry import CONVERGED, INFEASIBLE
 from bearing_sweep.models.tapered import trb_load
 
-from conftest import BEARING_D, MM, RPM
-
+MM = 1e-3  # m
+RPM = 2.0 * np.pi / 60.0  # rad/s
 MILLION_TURNS = 2e6 * np.pi  # the models return lives in radians
 RATING_D = 48e3  # [N], a dynamic load rating of bearing D's size (assumed for the tests)
 TAPERED = dict(roller_count=16, effective_length=21.5 * MM, roller_mean_diameter=13.71 * MM,
                outer_contact_angle=np.radians(28.0), pitch_diameter=79.537 * MM)
 
 
-def test_straight_rollers_live_as_one_lamina_each_whatever_the_slicing():
+def test_straight_rollers_live_as_one_lamina_each_whatever_the_slicing(bearing_d):
     # Straight rollers, no speed: every slice of a roller carries Q/k on both raceways. The
     # standard's lamina ratings (q_c = Q_c k^(-7/9)) make that the life of one lamina per
     # roller carrying Q, which the test forms from the model's roller loads alone.
     load = np.array([2e3, 8e3])
     result = crb_radial(load, clearance=0.01 * MM, slices=24, dynamic_load_rating=RATING_D,
-                        **BEARING_D)
+                        **bearing_d)
     one_lamina = life.roller_bearing_reference_life(
-        result["roller_load"][..., None], RATING_D, BEARING_D["roller_diameter"],
-        BEARING_D["pitch_diameter"])
+        result["roller_load"][..., None], RATING_D, bearing_d["roller_diameter"],
+        bearing_d["pitch_diameter"])
     assert result["reference_rating_life"] / MILLION_TURNS == pytest.approx(one_lamina,
                                                                             rel=1e-12)
     assert (result["status"] == CONVERGED).all()
 
 
-def test_lives_scale_with_the_load_to_the_standards_exponents():
+def test_lives_scale_with_the_load_to_the_standards_exponents(bearing_d):
     # Zero clearance, no speed: the distribution keeps its shape as the load grows (every
     # roller load is proportional to F_r), so L10r ~ F_r^-4 (ISO/TS 16281 line contacts) and
     # L10 = (C_r / F_r)^(10/3) (ISO 281, P = F_r for a cylindrical roller bearing).
     load = np.array([1e3, 2e3, 7e3])
-    result = crb_radial(load, crown=0.0, slices=10, dynamic_load_rating=RATING_D, **BEARING_D)
+    result = crb_radial(load, crown=0.0, slices=10, dynamic_load_rating=RATING_D, **bearing_d)
     reference = result["reference_rating_life"]
     assert reference / reference[0] == pytest.approx((load / load[0]) ** -4.0, rel=1e-9)
     assert result["basic_rating_life"] / MILLION_TURNS == pytest.approx(
@@ -44,12 +44,12 @@ def test_lives_scale_with_the_load_to_the_standards_exponents():
     assert result["equivalent_dynamic_load"] == pytest.approx(load)
 
 
-def test_crown_and_speed_enter_the_reference_life_through_the_slice_loads():
+def test_crown_and_speed_enter_the_reference_life_through_the_slice_loads(bearing_d):
     # A crowned roller's middle slices carry more than a straight one's at the same roller
     # load, so sum q^(9/2) grows and L10r falls; a vanishing crown gives the straight life.
     # The centrifugal force loads only the outer contacts, so L10r falls with speed while
     # ISO 281's L10 (P = F_r) does not see it.
-    common = dict(radial_load=5e3, slices=40, dynamic_load_rating=RATING_D, **BEARING_D)
+    common = dict(radial_load=5e3, slices=40, dynamic_load_rating=RATING_D, **bearing_d)
     crowned = crb_radial(crown=np.array([0.0, 1e-12, 5e-6, 15e-6]), **common)
     straight, tiny, moderate, heavy = crowned["reference_rating_life"]
     assert tiny == pytest.approx(straight, rel=1e-6)
@@ -59,7 +59,7 @@ def test_crown_and_speed_enter_the_reference_life_through_the_slice_loads():
     assert np.ptp(spinning["basic_rating_life"]) == 0.0
 
 
-def test_modified_reference_life_and_hours_against_hand_evaluated_iso281():
+def test_modified_reference_life_and_hours_against_hand_evaluated_iso281(bearing_d):
     # Oil at 40 degC: its viscosity is viscosity_40 = 68 mm^2/s (Walther's line passes
     # through its points). nu_1 = 4500 n^-0.5 d_m^-0.5 = 4500 / (sqrt(3000) sqrt(65))
     # = 10.19049 mm^2/s (ISO 281 eq. (29), n >= 1000 r/min), kappa = 6.6729, taken as 4.
@@ -70,7 +70,7 @@ def test_modified_reference_life_and_hours_against_hand_evaluated_iso281():
     result = crb_radial(6e3, speed=speed * RPM, slices=10, dynamic_load_rating=rating,
                         fatigue_load_limit=fatigue, contamination_factor=contamination,
                         oil_temperature=40.0 + CELSIUS, viscosity_40=68e-6,
-                        viscosity_100=8.7e-6, **BEARING_D)
+                        viscosity_100=8.7e-6, **bearing_d)
     assert result["viscosity_ratio"][()] == pytest.approx(68.0 / 10.19049, rel=1e-6)
     reference = result["reference_rating_life"][()] / MILLION_TURNS
     reference_load = rating / reference ** 0.3
@@ -86,16 +86,16 @@ def test_modified_reference_life_and_hours_against_hand_evaluated_iso281():
         modified * 1e6 / (60.0 * speed) * 3600.0, rel=1e-12)
 
 
-def test_lives_are_nan_without_their_data():
-    plain = crb_radial(5e3, slices=10, **BEARING_D)
+def test_lives_are_nan_without_their_data(bearing_d):
+    plain = crb_radial(5e3, slices=10, **bearing_d)
     assert np.isnan([plain[name] for name in ("reference_rating_life", "basic_rating_life",
                                               "modified_reference_rating_life")]).all()
     rated = crb_radial(5e3, slices=10, dynamic_load_rating=RATING_D, speed=3000 * RPM,
-                       **BEARING_D)  # no oil, no fatigue load limit
+                       **bearing_d)  # no oil, no fatigue load limit
     assert np.isfinite(rated["reference_rating_life"]) and np.isfinite(
         rated["reference_rating_hours"])
     assert np.isnan(rated["modified_reference_rating_life"])
-    unloaded = crb_radial(0.0, slices=10, dynamic_load_rating=RATING_D, **BEARING_D)
+    unloaded = crb_radial(0.0, slices=10, dynamic_load_rating=RATING_D, **bearing_d)
     assert unloaded["reference_rating_life"] == np.inf
 
 

@@ -10,8 +10,13 @@ import zarr
 from bearing_sweep import spec
 from bearing_sweep.compute import Executor, run_sweep
 from bearing_sweep.grid import Grid, block_shape
+from bearing_sweep.models.registry import all_models
 from bearing_sweep.stores.zarr import ZARR_FORMAT
-from test_conventions import DEFINITIONS, MODELS, STRUCTURES
+
+#: Each model's sweep and the other structures test_conventions writes as netCDF.
+DEFINITIONS = Path(__file__).parents[1] / "data" / "every_model"
+MODELS = sorted(all_models())
+STRUCTURES = sorted((Path(__file__).parents[1] / "data" / "structure").glob("*.toml"))
 
 #: Points per chunk: several zarr chunks along the grid's axes.
 CHUNK = 3

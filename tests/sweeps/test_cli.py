@@ -9,26 +9,10 @@ import xarray as xr
 
 BIN = Path(sys.executable).parent
 
-DEFINITION = """
-[sweep]
-model = "crb_radial"
-bearing = "paper000-D"
-[fixed]
-crown = "0.004 mm"
-[axes]
-radial_load = ["2 kN", "4 kN"]
-speed = { values = [0, 5000], units = "rpm" }
-"""
 
-
-def cli(*args, cwd):
-    return subprocess.run([sys.executable, "-m", "bearing_sweep", *map(str, args)], cwd=cwd,
-                          capture_output=True, text=True, timeout=300)
-
-
-def test_run_writes_a_labelled_file_and_a_summary(tmp_path):
-    (tmp_path / "example.toml").write_text(DEFINITION)
-    done = cli("run", "example.toml", cwd=tmp_path)
+def test_run_writes_a_labelled_file_and_a_summary(tmp_path, four_points, run_cli):
+    (tmp_path / "example.toml").write_text(four_points)
+    done = run_cli("run", "example.toml", cwd=tmp_path)
     assert done.returncode == 0, done.stderr
     assert "crb_radial: 4 points (4 converged) in" in done.stdout
     assert "results/example.nc" in done.stdout
@@ -37,9 +21,10 @@ def test_run_writes_a_labelled_file_and_a_summary(tmp_path):
     assert data.radial_stiffness.attrs["units"] == "N/mm"
 
 
-def test_a_misspelt_parameter_exits_2_with_one_line_and_writes_nothing(tmp_path):
-    (tmp_path / "bad.toml").write_text(DEFINITION.replace("crown =", "crwn ="))
-    done = cli("run", "bad.toml", cwd=tmp_path)
+def test_a_misspelt_parameter_exits_2_with_one_line_and_writes_nothing(tmp_path, four_points,
+                                                                       run_cli):
+    (tmp_path / "bad.toml").write_text(four_points.replace("crown =", "crwn ="))
+    done = run_cli("run", "bad.toml", cwd=tmp_path)
     assert done.returncode == 2
     assert done.stderr.strip() == ("error: bad.toml: fixed.crwn: unknown parameter 'crwn' of model "
                                    "crb_radial; did you mean 'crown'? (`bearing-sweep describe "
@@ -47,7 +32,7 @@ def test_a_misspelt_parameter_exits_2_with_one_line_and_writes_nothing(tmp_path)
     assert list(tmp_path.iterdir()) == [tmp_path / "bad.toml"]
 
 
-def test_console_script_lists_and_describes_models(tmp_path):
+def test_console_script_lists_and_describes_models(tmp_path, run_cli):
     models = subprocess.run([BIN / "bearing-sweep", "models"], capture_output=True, text=True)
     assert models.returncode == 0
     assert any(line.startswith("crb_radial: ") for line in models.stdout.splitlines())
@@ -58,14 +43,14 @@ def test_console_script_lists_and_describes_models(tmp_path):
     unknown = subprocess.run([BIN / "bearing-sweep", "describe", "crb"], capture_output=True,
                              text=True)
     assert unknown.returncode == 2 and "unknown model 'crb'" in unknown.stderr
-    presets = cli("presets", cwd=tmp_path)
+    presets = run_cli("presets", cwd=tmp_path)
     assert "paper000-D (crb_radial): Paper 000, Table 4" in presets.stdout
 
 
-def test_study_runs_what_is_stale_draws_and_reports(tmp_path):
+def test_study_runs_what_is_stale_draws_and_reports(tmp_path, four_points, run_cli):
     study = tmp_path / "studies" / "tiny"
     study.mkdir(parents=True)
-    (study / "loads.toml").write_text(DEFINITION)
+    (study / "loads.toml").write_text(four_points)
     (study / "about.md").write_text("# Tiny study\n")
     (study / "claims.toml").write_text(textwrap.dedent("""
         [[claim]]
@@ -88,27 +73,27 @@ def test_study_runs_what_is_stale_draws_and_reports(tmp_path):
         def ours(results):
             return {"points": xr.open_dataset(results / "loads.nc").status.size}
         """))
-    first = cli("study", "tiny", cwd=tmp_path)
+    first = run_cli("study", "tiny", cwd=tmp_path)
     assert first.returncode == 0, first.stderr
     assert (tmp_path / "results" / "tiny" / "loads.nc").exists()
     assert (tmp_path / "figures" / "tiny" / "stiffness.png").exists()
-    second = cli("study", "all", cwd=tmp_path)
+    second = run_cli("study", "all", cwd=tmp_path)
     assert "loads.toml: up to date" in second.stdout
-    (study / "loads.toml").write_text(DEFINITION.replace('"4 kN"', '"5 kN"'))
-    third = cli("study", "tiny", cwd=tmp_path)
+    (study / "loads.toml").write_text(four_points.replace('"4 kN"', '"5 kN"'))
+    third = run_cli("study", "tiny", cwd=tmp_path)
     assert "crb_radial: 4 points" in third.stdout  # a changed definition is stale
-    report = cli("report", cwd=tmp_path)
+    report = run_cli("report", cwd=tmp_path)
     assert report.returncode == 0, report.stderr
     page = (tmp_path / "figures" / "tiny" / "README.md").read_text()
     assert "| four points |  | 4  | 4  | agrees (within 0 ) |  |" in page
     assert "![stiffness against load](stiffness.png)" in page
     index = (tmp_path / "figures" / "README.md").read_text()
     assert "[tiny](tiny/README.md): 1 of 1 comparable stated numbers agree" in index
-    missing = cli("study", "nothing", cwd=tmp_path)
+    missing = run_cli("study", "nothing", cwd=tmp_path)
     assert missing.returncode == 2 and "no such study" in missing.stderr
 
 
-STUDIES = Path(__file__).resolve().parents[1] / "studies"
+STUDIES = Path(__file__).resolve().parents[2] / "studies"
 
 
 def _mistaken_folders(tmp_path, case):
@@ -130,11 +115,12 @@ def _mistaken_folders(tmp_path, case):
 @pytest.mark.parametrize("command", ["study", "report"])
 @pytest.mark.parametrize("case", ["figures_file", "figures_under_a_file", "results_file",
                                   "studies_file", "studies_empty", "studies_missing"])
-def test_a_mistaken_folder_is_one_line_before_anything_is_computed(tmp_path, command, case):
+def test_a_mistaken_folder_is_one_line_before_anything_is_computed(tmp_path, command, case,
+                                                                   run_cli):
     options, named = _mistaken_folders(tmp_path, case)
     before = sorted(p.name for p in tmp_path.iterdir())
     args = ["study", "tapered_rib", "--workers", "0"] if command == "study" else ["report"]
-    done = cli(*args, *options, cwd=tmp_path)
+    done = run_cli(*args, *options, cwd=tmp_path)
     assert done.returncode == 2 and done.stderr.count("\n") == 1, done.stderr
     assert done.stderr.startswith(f"error: {named}: ") and "Traceback" not in done.stderr
     assert done.stdout == ""  # no sweep run, nothing drawn or written
@@ -143,30 +129,32 @@ def test_a_mistaken_folder_is_one_line_before_anything_is_computed(tmp_path, com
         assert "figures.py" in done.stderr and "*.toml" in done.stderr
 
 
-def test_study_all_in_an_empty_folder_is_an_error(tmp_path):
+def test_study_all_in_an_empty_folder_is_an_error(tmp_path, run_cli):
     (tmp_path / "studies").mkdir()
-    done = cli("study", "all", "--workers", "0", cwd=tmp_path)  # ./studies: the default
+    done = run_cli("study", "all", "--workers", "0", cwd=tmp_path)  # ./studies: the default
     assert done.returncode == 2, done.stderr
     assert done.stderr == ("error: studies: holds no study (--studies: a folder of studies "
                            "holds a folder per study, each with its sweep definitions (*.toml) "
                            "and figures.py)\n")
 
 
-def _tiny_study(tmp_path, figures_py: str, definitions: bool = True):
+def _tiny_study(tmp_path, figures_py: str, definition: str | None):
     study = tmp_path / "studies" / "tiny"
     study.mkdir(parents=True)
-    if definitions:
-        (study / "loads.toml").write_text(DEFINITION)
+    if definition is not None:
+        (study / "loads.toml").write_text(definition)
     (study / "figures.py").write_text(textwrap.dedent(figures_py))
 
 
 @pytest.mark.parametrize("case", ["figure_is_a_folder", "script_fails", "no_definitions"])
-def test_what_would_stop_a_study_after_its_sweeps_is_refused_before_them(tmp_path, case):
+def test_what_would_stop_a_study_after_its_sweeps_is_refused_before_them(tmp_path, case, run_cli,
+                                                                        four_points):
     _tiny_study(tmp_path, 'FIGURES = {"k.png": "stiffness"}\n' if case != "script_fails"
-                else "import no_such_module_anywhere\n", definitions=case != "no_definitions")
+                else "import no_such_module_anywhere\n",
+                None if case == "no_definitions" else four_points)
     if case == "figure_is_a_folder":
         (tmp_path / "figures" / "tiny" / "k.png").mkdir(parents=True)
-    done = cli("study", "tiny", "--workers", "0", cwd=tmp_path)
+    done = run_cli("study", "tiny", "--workers", "0", cwd=tmp_path)
     assert done.returncode == 2 and done.stderr.count("\n") == 1, done.stderr
     assert {"figure_is_a_folder": "k.png: exists and is not a file",
             "script_fails": "figures.py: does not load: ModuleNotFoundError",
@@ -237,19 +225,19 @@ def test_a_ctrl_c_that_lands_where_python_cannot_raise_it_is_raised_again(tmp_pa
     assert done.stderr.strip() in ("raised after 0.0 s", "raised after 0.1 s"), done.stderr
 
 
-def test_a_report_tells_how_to_run_a_study_in_the_folders_it_was_given(tmp_path):
-    done = cli("report", "--studies", STUDIES, "--results", "my results", "--figures", "fig",
-               cwd=tmp_path)
+def test_a_report_tells_how_to_run_a_study_in_the_folders_it_was_given(tmp_path, run_cli):
+    done = run_cli("report", "--studies", STUDIES, "--results", "my results", "--figures", "fig",
+                   cwd=tmp_path)
     assert done.returncode == 0, done.stderr
     index = (tmp_path / "fig" / "README.md").read_text()
     assert (f"- runout: not run yet (`bearing-sweep study runout --studies {STUDIES} "
             "--results 'my results' --figures fig`)") in index
-    assert cli("report", cwd=tmp_path).returncode == 0  # the default folders: no options
+    assert run_cli("report", cwd=tmp_path).returncode == 0  # the default folders: no options
     assert "- runout: not run yet (`bearing-sweep study runout`)" in \
         (tmp_path / "figures" / "README.md").read_text()
 
 
-def test_a_result_of_a_preset_since_changed_is_stale(tmp_path, monkeypatch):
+def test_a_result_of_a_preset_since_changed_is_stale(tmp_path, monkeypatch, four_points):
     # The definition's text names the preset only: a catalogue that changes the preset's
     # values (an assumption corrected) must rerun the study's result, not draw the old one.
     import dataclasses
@@ -260,7 +248,7 @@ def test_a_result_of_a_preset_since_changed_is_stale(tmp_path, monkeypatch):
     from bearing_sweep.study import is_stale
 
     definition = tmp_path / "loads.toml"
-    definition.write_text(DEFINITION)
+    definition.write_text(four_points)
     result = tmp_path / "loads.nc"
     run_sweep(spec.load(definition), result, Executor(workers=0), progress=False)
     assert not is_stale(definition, result, spec.load(definition))

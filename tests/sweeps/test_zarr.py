@@ -5,6 +5,7 @@ import math
 import shutil
 from pathlib import Path
 
+import cf_units
 import numpy as np
 import pytest
 import xarray as xr
@@ -18,9 +19,6 @@ from bearing_sweep.grid import Grid
 from bearing_sweep.stores.paths import is_zarr
 from bearing_sweep.stores.blocks import regions
 from bearing_sweep.grid import block_chunks, block_shape
-from test_conventions import assert_cf_labelled
-from test_dependence import GRID as TOY_GRID, toy  # noqa: F401  (a fixture)
-from test_outputs import no_computing, refused  # noqa: F401  (a fixture)
 
 # 3 x 4 x 2 points: chunks of 3 points are blocks of (1, 1, 2), of 16 points (2, 4, 2).
 DEFINITION = """
@@ -74,7 +72,8 @@ def test_a_row_just_longer_than_a_chunk_is_split_evenly():
     assert block_shape((10, 1001), 1000) == (1, 501)
 
 
-def test_zarr_holds_the_netcdf_data_whatever_the_chunking_and_the_workers(tmp_path):
+def test_zarr_holds_the_netcdf_data_whatever_the_chunking_and_the_workers(tmp_path,
+                                                                          assert_cf_labelled):
     sweep = spec.parse(DEFINITION, "three_axes.toml")
     run_sweep(sweep, tmp_path / "whole.nc", Executor(workers=0), progress=False)
     run_sweep(sweep, tmp_path / "small.zarr", Executor(workers=0), chunk_size=3,
@@ -241,7 +240,7 @@ def test_the_command_and_the_api_write_a_store(tmp_path, capsys):
     assert sorted(p.name for p in tmp_path.iterdir()) == ["api.zarr", "d.toml", "out.zarr"]
 
 
-def test_a_store_open_in_a_reader_is_never_replaced_under_it(tmp_path, capsys, monkeypatch):
+def test_a_store_open_in_a_reader_is_never_replaced_under_it(tmp_path, monkeypatch, refused):
     # A reader reads a store's chunks by their paths when it needs them, and a chunk that
     # is not there as the fill value (NaN, and "converged" for status): replaced by any
     # means, the store would give the reader the new run's values (or fill values) under
@@ -254,7 +253,7 @@ def test_a_store_open_in_a_reader_is_never_replaced_under_it(tmp_path, capsys, m
     expected = stores.open_result(output)
     monkeypatch.setattr("bearing_sweep.evaluate.evaluate_chunk", None)  # refused before it
     definition.write_text(DEFINITION.replace('stop = "6 kN"', 'stop = "9 kN"'))
-    err = refused(tmp_path, capsys, output, definition)
+    err = refused(output, definition)
     assert "holds an earlier zarr store of bearing-sweep, which is never replaced" in err
     assert "remove it first (close its readers, then rm -r it) or choose another output" in err
     xr.testing.assert_identical(reader.load(), expected)  # coordinates and values of one run
@@ -263,37 +262,37 @@ def test_a_store_open_in_a_reader_is_never_replaced_under_it(tmp_path, capsys, m
         bearing_sweep.run(definition, output=output, workers=0, progress=False)
 
 
-def test_a_folder_that_is_not_our_store_is_refused(tmp_path, capsys, no_computing):  # noqa: F811
+def test_a_folder_that_is_not_our_store_is_refused(tmp_path, no_computing, refused):
     folder = tmp_path / "data.zarr"
     folder.mkdir()
     (folder / "notes.txt").write_text("someone's data")
-    err = refused(tmp_path, capsys, folder)
+    err = refused(folder)
     assert "data.zarr: exists and is not a zarr store written by bearing-sweep (no zarr " \
            "group of format 2 in it)" in err
     other = tmp_path / "other.zarr"
     xr.Dataset({"x": ("t", [1.0])}, attrs={"source": "another program"}).to_zarr(
         other, zarr_format=2)
-    err = refused(tmp_path, capsys, other)
+    err = refused(other)
     assert "its attributes do not name bearing-sweep" in err
 
 
-def test_outputs_on_fewer_axes_are_the_files_and_a_wrong_declaration_stops(toy,  # noqa: F811
+def test_outputs_on_fewer_axes_are_the_files_and_a_wrong_declaration_stops(toy,
                                                                             tmp_path):
     # Chunks of one point: each cell's value comes from its first held point, a later chunk
     # where the first row fails, as in the netCDF file.
-    sweep = spec.parse(TOY_GRID)
+    sweep = spec.parse(toy)
     run_sweep(sweep, tmp_path / "toy.nc", Executor(workers=0), chunk_size=1, progress=False)
     run_sweep(sweep, tmp_path / "toy.zarr", Executor(workers=0), chunk_size=1, progress=False)
     assert assert_same_result(tmp_path / "toy.nc", tmp_path / "toy.zarr")["product"].dims == (
         "b",)
-    lying = spec.parse(TOY_GRID.replace('"toy"', '"liar"'))
+    lying = spec.parse(toy.replace('"toy"', '"liar"'))
     with pytest.raises(InconsistentOutput, match="output 'product': declared to depend on b, c "
                                                  "only"):
         run_sweep(lying, tmp_path / "liar.zarr", Executor(workers=0), progress=False)
     assert not (tmp_path / "liar.zarr").exists()
 
 
-def test_analyze_and_plot_take_a_store(tmp_path, capsys):
+def test_analyze_and_plot_take_a_store(tmp_path, capsys, saved_figures):
     definition = tmp_path / "sampled.toml"
     definition.write_text(DEFINITION.split("[axes]")[0] + '[axes]\nspeed = ["0 rpm"]\n'
                           '[sample]\nmethod = "random"\nn = 4\nseed = 1\nradial_load = '
@@ -304,7 +303,20 @@ def test_analyze_and_plot_take_a_store(tmp_path, capsys):
     assert cli.main(["analyze", str(result)]) == 0
     assert stores.open_result(tmp_path / "sampled_analysis.nc").attrs["sample_size"] == 4
     assert cli.main(["plot", str(result), "radial_stiffness"]) == 0
-    assert (tmp_path / "sampled.png").stat().st_size > 0
+    assert (tmp_path / "sampled.png").is_file()  # beside the store
+    [figure] = saved_figures
+    [axis] = figure.axes
+    [points] = [line for line in axis.lines  # not the marks of failed points
+                if line.get_label() not in ("_out of validity", "_no value")]
+    with xr.open_zarr(result) as stored:  # read apart from the plotting code
+        # a point per sample against the drawn load, in the units the labels name
+        for drawn, variable, label in ((points.get_xdata(), stored.radial_load,
+                                        axis.get_xlabel()),
+                                       (points.get_ydata(), stored.radial_stiffness,
+                                        axis.get_ylabel())):
+            shown = cf_units.Unit(label.rsplit("[", 1)[1].rstrip("]"))
+            np.testing.assert_allclose(drawn, cf_units.Unit(variable.attrs["units"]).convert(
+                variable.squeeze(drop=True).values, shown))
 
 
 def test_a_store_is_named_by_its_suffix_in_any_case():

@@ -9,13 +9,10 @@ import xarray as xr
 from jsonschema import Draft7Validator
 
 import bearing_sweep
-import bearing_sweep.models.registry as registry
 from bearing_sweep import cli, sample, spec
 from bearing_sweep.compute import Executor, run_sweep
-from bearing_sweep.models.registry import Input, Model, Output
 from bearing_sweep.schema import schema
 from bearing_sweep.testing import assert_chunking_invariant, assert_same_numbers
-from test_conventions import assert_cf_labelled
 
 HEAD = '[sweep]\nmodel = "crb_radial"\nbearing = "paper000-D"\n'
 
@@ -174,7 +171,7 @@ clearance = { distribution = "normal", mean = "0.02 mm", std = "0.004 mm" }
 """
 
 
-def test_the_file_holds_the_samples_their_units_and_the_design(tmp_path):
+def test_the_file_holds_the_samples_their_units_and_the_design(tmp_path, assert_cf_labelled):
     output = tmp_path / "sampled.nc"
     bearing_sweep.run(SALTELLI, output=output, workers=0, progress=False).close()
     with xr.open_dataset(output) as data:
@@ -214,58 +211,8 @@ def test_the_same_seed_gives_the_same_dataset_whatever_the_chunks_and_workers(tm
                               local.radial_load.values * 1.0)
 
 
-def ishigami(x1, x2, x3, a=7.0):
-    """Ishigami & Homma's test function, b = 0.1 (IEEE ISUMA 1990,
-    doi:10.1109/ISUMA.1990.151285)."""
-    x1, x2, x3 = np.broadcast_arrays(x1, x2, x3)
-    y = np.sin(x1) + a * np.sin(x2) ** 2 + 0.1 * x3 ** 4 * np.sin(x1)
-    return {"y": y, "status": np.zeros(y.shape, dtype=np.int8)}
-
-
-@pytest.fixture
-def ishigami_model(monkeypatch):
-    registry.all_models()  # ours first, then the toy
-    model = Model("ishigami", ishigami, "Ishigami function", "Ishigami & Homma 1990", "1",
-                  tuple(Input(x, "1", x, kind="number") for x in ("x1", "x2", "x3"))
-                  + (Input("a", "1", "a", default=7.0, kind="number"),),
-                  (Output("y", "1", "y"),), seconds_per_point=1e-8)
-    monkeypatch.setitem(registry._MODELS, model.name, model)
-    return model
-
-
-def ishigami_indices(a, b=0.1):
-    """Analytic first-order and total indices of the Ishigami function on [-pi, pi]^3
-    (Homma & Saltelli, Reliab. Eng. Syst. Saf. 52(1), 1-17, 1996,
-    doi:10.1016/0951-8320(96)00002-6)."""
-    pi = math.pi
-    v1 = 0.5 * (1 + b * pi**4 / 5) ** 2
-    v2 = a**2 / 8
-    v13 = b**2 * pi**8 * (1 / 18 - 1 / 50)
-    variance = v1 + v2 + v13
-    return [v1 / variance, v2 / variance, 0.0], [(v1 + v13) / variance, v2 / variance,
-                                                  v13 / variance]
-
-
-def ishigami_sweep(n: int, seed: int) -> xr.Dataset:
-    """A Saltelli design of ``n`` base samples of the Ishigami function on [-pi, pi]^3, at
-    a = 7 and 5 (the model of the fixture ``ishigami_model``)."""
-    uniform = '{ distribution = "uniform", low = -3.141592653589793, high = 3.141592653589793 }'
-    return bearing_sweep.run(f"""
-[sweep]
-model = "ishigami"
-[axes]
-a = [7, 5]
-[sample]
-n = {n}
-method = "saltelli"
-seed = {seed}
-x1 = {uniform}
-x2 = {uniform}
-x3 = {uniform}
-""", workers=0, progress=False)
-
-
-def test_a_sweep_analysed_end_to_end_gives_the_ishigami_functions_indices(ishigami_model):
+def test_a_sweep_analysed_end_to_end_gives_the_ishigami_functions_indices(ishigami_sweep,
+                                                                          ishigami_indices):
     data = ishigami_sweep(128, seed=3)
     analyzed = bearing_sweep.analyze(data)
     assert analyzed.first_order.dims == ("output", "input", "a")

@@ -5,7 +5,7 @@ from pathlib import Path
 
 import pytest
 
-ROOT = Path(__file__).resolve().parents[1]
+ROOT = Path(__file__).resolve().parents[2]
 #: Each folder of the package and the import name it is installed under (pyproject.toml).
 PACKAGES = {"sweeps": "bearing_sweep", "models": "bearing_sweep.models",
             "studies": "bearing_sweep.studies"}

@@ -3,6 +3,7 @@ import subprocess
 import sys
 from pathlib import Path
 
+import cf_units
 import numpy as np
 import pytest
 import xarray as xr
@@ -11,7 +12,7 @@ from bearing_sweep.quicklook import plot
 from bearing_sweep.spec import SpecError
 from bearing_sweep.stores import open_result
 
-EVERY_MODEL = Path(__file__).resolve().parent / "data" / "every_model"
+EVERY_MODEL = Path(__file__).resolve().parents[1] / "data" / "every_model"
 ONE_AXIS = """
 [sweep]
 model = "hertz_point"
@@ -25,13 +26,8 @@ load = ["10 N", "500 N", "3 kN"]
 """
 
 
-def cli(*args, cwd=None):
-    return subprocess.run([sys.executable, "-m", "bearing_sweep", *map(str, args)], cwd=cwd,
-                          capture_output=True, text=True, timeout=300)
-
-
 @pytest.fixture(scope="module")
-def results(tmp_path_factory):
+def results(tmp_path_factory, run_cli):
     folder = tmp_path_factory.mktemp("results")
     (folder / "hertz_one_axis.toml").write_text(ONE_AXIS)
     paths = {}
@@ -39,7 +35,8 @@ def results(tmp_path_factory):
                              ("ball_5dof", EVERY_MODEL / "ball_5dof.toml"),
                              ("hertz", folder / "hertz_one_axis.toml")):
         paths[name] = folder / f"{name}.nc"
-        done = cli("run", definition, "-o", paths[name], "--workers", "0", "--quiet")
+        done = run_cli("run", definition, "-o", paths[name], "--workers", "0", "--quiet",
+                       cwd=folder)
         assert done.returncode == 0, done.stderr
     return paths
 
@@ -122,17 +119,17 @@ def test_unknown_names_have_a_close_match(results):
         plot(results["crb_radial"], x="clerance")
 
 
-def test_cli_writes_beside_the_result_and_replaces_its_own_figure(results, tmp_path):
+def test_cli_writes_beside_the_result_and_replaces_its_own_figure(results, tmp_path, run_cli):
     result = tmp_path / "r.nc"
     result.write_bytes(results["hertz"].read_bytes())
     for _ in range(2):
-        done = cli("plot", result)
+        done = run_cli("plot", result, cwd=tmp_path)
         assert done.returncode == 0, done.stderr
         assert (tmp_path / "r.png").read_bytes().startswith(b"\x89PNG")
 
 
 @pytest.mark.parametrize("case", ["result", "folder", "other_file", "variable", "axis"])
-def test_cli_refuses_in_one_line_and_writes_nothing(results, tmp_path, case):
+def test_cli_refuses_in_one_line_and_writes_nothing(results, tmp_path, case, run_cli):
     result = tmp_path / "r.nc"
     result.write_bytes(results["hertz"].read_bytes())
     (tmp_path / "folder.png").mkdir()
@@ -141,7 +138,7 @@ def test_cli_refuses_in_one_line_and_writes_nothing(results, tmp_path, case):
             "other_file": ["-o", tmp_path / "notes.png"], "variable": ["semi_majr"],
             "axis": ["--x", "lod"]}[case]
     before = sorted(p.name for p in tmp_path.iterdir())
-    done = cli("plot", result, *args)
+    done = run_cli("plot", result, *args, cwd=tmp_path)
     assert done.returncode == 2 and done.stderr.count("\n") == 1, done.stderr
     assert sorted(p.name for p in tmp_path.iterdir()) == before
     assert (tmp_path / "notes.png").read_text() == "not a figure"
@@ -169,7 +166,7 @@ load = { distribution = "uniform", low = "10 N", high = "3 kN" }""")
 
 
 @pytest.fixture(scope="module")
-def shapes(tmp_path_factory):
+def shapes(tmp_path_factory, run_cli):
     """Real results of the shapes a quick look must handle: a single point (netCDF and zarr),
     a sampled result, one axis (zarr)."""
     folder = tmp_path_factory.mktemp("shapes")
@@ -179,8 +176,8 @@ def shapes(tmp_path_factory):
                                ("sampled", SAMPLED, ".nc"), ("axis_zarr", ONE_AXIS, ".zarr")):
         (folder / f"{name}.toml").write_text(text)
         paths[name] = folder / f"{name}{suffix}"
-        done = cli("run", folder / f"{name}.toml", "-o", paths[name], "--workers", "0",
-                   "--quiet")
+        done = run_cli("run", folder / f"{name}.toml", "-o", paths[name], "--workers", "0",
+                       "--quiet", cwd=folder)
         assert done.returncode == 0, done.stderr
     return paths
 
@@ -208,13 +205,13 @@ def test_every_panel_shows_data_or_says_it_has_none(results):
 
 
 @pytest.mark.parametrize("result", ["single", "single_zarr"])
-def test_a_single_point_of_one_value_is_one_line_exit_2(shapes, tmp_path, result):
+def test_a_single_point_of_one_value_is_one_line_exit_2(shapes, tmp_path, result, run_cli):
     before = sorted(p.name for p in shapes[result].parent.iterdir())
-    done = cli("plot", shapes[result], "max_pressure")
+    done = run_cli("plot", shapes[result], "max_pressure", cwd=tmp_path)
     assert done.returncode == 2 and done.stderr.count("\n") == 1, done.stderr
     assert "a single point (the sweep has no axes): max_pressure is one value" in done.stderr
     assert "MPa" in done.stderr and "Traceback" not in done.stderr
-    default = cli("plot", shapes[result])  # the first output: one value too
+    default = run_cli("plot", shapes[result], cwd=tmp_path)  # the first output: one value too
     assert default.returncode == 2 and default.stderr.count("\n") == 1, default.stderr
     assert sorted(p.name for p in shapes[result].parent.iterdir()) == before
 
@@ -238,7 +235,7 @@ def test_a_single_point_draws_an_output_along_its_own_entries(results):
         plot(data, "radial_stiffness", x="roller")
 
 
-def test_an_output_without_any_value_is_one_line_naming_the_statuses(results, tmp_path):
+def test_an_output_without_any_value_is_one_line_naming_the_statuses(results, tmp_path, run_cli):
     data = open_result(results["hertz"])
     data["semi_major"][:] = np.nan
     data["status"][:] = [1, 1, 2]  # not converged, not converged, infeasible
@@ -246,7 +243,7 @@ def test_an_output_without_any_value_is_one_line_naming_the_statuses(results, tm
                                         r"converged, 1 infeasible\): nothing to draw"):
         plot(data, "semi_major")
     data.to_netcdf(tmp_path / "failed.nc")
-    done = cli("plot", tmp_path / "failed.nc", "semi_major")
+    done = run_cli("plot", tmp_path / "failed.nc", "semi_major", cwd=tmp_path)
     assert done.returncode == 2 and done.stderr.count("\n") == 1, done.stderr
     assert not (tmp_path / "failed.png").exists()
 
@@ -254,11 +251,11 @@ def test_an_output_without_any_value_is_one_line_naming_the_statuses(results, tm
 @pytest.mark.parametrize("name, kind", [("status", "the status of each point"),
                                         ("load", "a sweep axis"),
                                         ("curvature_1x", "an input the sweep holds fixed")])
-def test_a_variable_that_is_not_an_output_is_named_for_what_it_is(results, name, kind):
+def test_a_variable_that_is_not_an_output_is_named_for_what_it_is(results, name, kind, run_cli):
     with pytest.raises(SpecError, match=f"'{name}' is {kind}.*not an output \\(outputs: "
                                         "semi_major, "):
         plot(results["hertz"], name)
-    done = cli("plot", results["hertz"], name)
+    done = run_cli("plot", results["hertz"], name, cwd=results["hertz"].parent)
     assert done.returncode == 2 and done.stderr.count("\n") == 1 and kind in done.stderr
 
 
@@ -287,14 +284,14 @@ def test_an_axis_of_one_value_is_named_and_a_lone_point_labelled(results):
     assert sorted(t.get_text() for t in axis.texts) == sorted(f"{v:.4g}" for v in values)
 
 
-def test_a_zipped_axis_is_shown_by_the_values_of_its_inputs(tmp_path):
+def test_a_zipped_axis_is_shown_by_the_values_of_its_inputs(tmp_path, run_cli):
     (tmp_path / "zip.toml").write_text(ONE_AXIS.replace('curvature_2y = "0 1/mm"\n', "") + """
 [axes.case]
 curvature_2y = ["0 1/mm", "0.01 1/mm"]
 poisson_ratio = [0.3, 0.29]
 """)
-    done = cli("run", tmp_path / "zip.toml", "-o", tmp_path / "zip.nc", "--workers", "0",
-               "--quiet")
+    done = run_cli("run", tmp_path / "zip.toml", "-o", tmp_path / "zip.nc", "--workers", "0",
+                   "--quiet", cwd=tmp_path)
     assert done.returncode == 0, done.stderr
     [legend] = plot(tmp_path / "zip.nc").legends
     assert [t.get_text() for t in legend.get_texts()] == [
@@ -304,14 +301,25 @@ poisson_ratio = [0.3, 0.29]
     np.testing.assert_allclose(drawn_lines(axis)[0].get_xdata(), [0.3, 0.29])
 
 
-def test_a_zarr_store_plots_as_a_file_does(shapes, tmp_path):
-    done = cli("plot", shapes["axis_zarr"], "-o", tmp_path / "z.png")
+def in_label_unit(variable: xr.DataArray, axis) -> np.ndarray:
+    """``variable``'s values in the unit a figure axis' label ends with (``[kN]``), converted
+    by UDUNITS."""
+    unit = axis.get_label_text().rsplit("[", 1)[1].rstrip("]")
+    return cf_units.Unit(variable.attrs["units"]).convert(variable.values, cf_units.Unit(unit))
+
+
+def test_a_zarr_store_plots_as_a_file_does(shapes, tmp_path, run_cli):
+    done = run_cli("plot", shapes["axis_zarr"], "-o", tmp_path / "z.png", cwd=tmp_path)
     assert done.returncode == 0, done.stderr
     assert (tmp_path / "z.png").read_bytes().startswith(b"\x89PNG")
     [axis] = plot(shapes["axis_zarr"]).axes
     # the model's first output, though a zarr store lists its variables by name
-    assert axis.get_ylabel().startswith(open_result(shapes["axis_zarr"])
-                                        .semi_major.attrs["long_name"])
+    with xr.open_zarr(shapes["axis_zarr"]) as stored:  # read apart from the quick look
+        assert axis.get_ylabel().startswith(stored.semi_major.attrs["long_name"])
+        [line] = drawn_lines(axis)  # the values stored, in the units the labels say
+        np.testing.assert_allclose(line.get_xdata(), in_label_unit(stored["load"], axis.xaxis))
+        np.testing.assert_allclose(line.get_ydata(),
+                                   in_label_unit(stored.semi_major, axis.yaxis))
 
 
 # -- the user's matplotlib, warnings and logging are theirs -----------------------------------
@@ -369,7 +377,7 @@ def _engine_modules() -> list[str]:
 #: import adds filters for scipy's own warnings (SpecialFunctionWarning), as for any user.
 IMPORTS = (["import bearing_sweep"] + [f"import {name}" for name in _engine_modules()]
            + ["import bearing_sweep; bearing_sweep.plot", "import bearing_sweep; bearing_sweep.run"])
-STUDIES = Path(__file__).resolve().parents[1] / "studies"
+STUDIES = Path(__file__).resolve().parents[2] / "studies"
 
 
 def changes(statement: str, cwd, libraries: str = "") -> dict:
@@ -443,7 +451,7 @@ def test_entries_in_units_of_their_own_are_labelled_with_each_entry_unit(results
 
 
 @pytest.mark.parametrize("suffix", [".png", ".pdf", ".svg"])
-def test_a_figure_another_program_wrote_is_never_replaced(results, tmp_path, suffix):
+def test_a_figure_another_program_wrote_is_never_replaced(results, tmp_path, suffix, run_cli):
     from matplotlib.figure import Figure
 
     result = tmp_path / "r.nc"
@@ -453,13 +461,13 @@ def test_a_figure_another_program_wrote_is_never_replaced(results, tmp_path, suf
     figure.subplots().plot([1, 2, 3])
     figure.savefig(theirs)  # a figure of that format, by matplotlib as a user draws one
     before = theirs.read_bytes()
-    done = cli("plot", result, "-o", theirs)
+    done = run_cli("plot", result, "-o", theirs, cwd=tmp_path)
     assert done.returncode == 2 and "not a " + suffix[1:].upper() + " figure written by " \
         "bearing-sweep" in done.stderr, done.stderr
     assert theirs.read_bytes() == before
     ours = tmp_path / f"ours{suffix}"
     for _ in range(2):  # our own is replaced
-        assert cli("plot", result, "-o", ours).returncode == 0
+        assert run_cli("plot", result, "-o", ours, cwd=tmp_path).returncode == 0
     assert b"bearing-sweep" in ours.read_bytes()
 
 

@@ -8,8 +8,6 @@ import errno
 import os
 import re
 import stat
-import subprocess
-import sys
 import textwrap
 
 import netCDF4
@@ -18,60 +16,27 @@ import pytest
 import bearing_sweep
 from bearing_sweep import cli, stores
 from bearing_sweep.stores import paths
-from test_cli import DEFINITION  # a four-point sweep
 
 
-def tree(folder):
-    """Every path under ``folder`` with its kind and size: what a refusal must leave as it was."""
-    return {str(p.relative_to(folder)): (stat.S_IFMT(p.lstat().st_mode), p.lstat().st_size)
-            for p in folder.rglob("*")}
-
-
-@pytest.fixture
-def no_computing(monkeypatch):
-    """A refusal must come before the lock, the parts and the model."""
-
-    def computed(*args, **kwargs):
-        raise AssertionError("computing started before the output was checked")
-
-    monkeypatch.setattr("bearing_sweep.stores.base.OutputLock", computed)
-    monkeypatch.setattr("bearing_sweep.evaluate.evaluate_chunk", computed)
-
-
-def refused(tmp_path, capsys, output, definition=None):
-    definition = definition or tmp_path / "def.toml"
-    if not definition.exists():
-        definition.write_text(DEFINITION)
-    before = tree(tmp_path)
-    code = cli.main(["run", str(definition), "-o", str(output), "--workers", "0", "--quiet"])
-    err = capsys.readouterr().err
-    assert code == 2, err
-    assert err.startswith("error: ") and len(err.strip().splitlines()) == 1, err
-    assert tree(tmp_path) == before  # nothing written, nothing replaced
-    return err
-
-
-def test_the_definition_itself_is_refused(tmp_path, capsys, no_computing):
+def test_the_definition_itself_is_refused(tmp_path, no_computing, four_points, refused):
     definition = tmp_path / "def.toml"
-    definition.write_text(DEFINITION)
-    err = refused(tmp_path, capsys, definition, definition)
+    definition.write_text(four_points)
+    err = refused(definition, definition)
     assert "is the sweep definition itself" in err
-    assert definition.read_text() == DEFINITION
+    assert definition.read_text() == four_points
 
 
-def test_a_folder_is_refused_before_computing(tmp_path, capsys, no_computing):
+def test_a_folder_is_refused_before_computing(tmp_path, no_computing, refused):
     (tmp_path / "results").mkdir()
-    assert "is a folder" in refused(tmp_path, capsys, tmp_path / "results")
+    assert "is a folder" in refused(tmp_path / "results")
 
 
-def test_a_named_pipe_is_refused_without_being_opened(tmp_path):
+def test_a_named_pipe_is_refused_without_being_opened(tmp_path, four_points, run_cli):
     # A stand-in for a device such as /dev/null: not a regular file. Opening a pipe for reading
     # would block, so a run that opened it would reach the timeout here.
-    (tmp_path / "def.toml").write_text(DEFINITION)
+    (tmp_path / "def.toml").write_text(four_points)
     os.mkfifo(tmp_path / "pipe")
-    done = subprocess.run([sys.executable, "-m", "bearing_sweep", "run", "def.toml", "-o", "pipe",
-                           "--workers", "0"], cwd=tmp_path, capture_output=True, text=True,
-                          timeout=120)
+    done = run_cli("run", "def.toml", "-o", "pipe", "--workers", "0", cwd=tmp_path, timeout=120)
     assert done.returncode == 2, done.stderr
     assert done.stderr.strip() == ("error: pipe: exists and is a named pipe, not an earlier "
                                    "result; refusing to replace it (choose another output)")
@@ -79,36 +44,36 @@ def test_a_named_pipe_is_refused_without_being_opened(tmp_path):
     assert sorted(p.name for p in tmp_path.iterdir()) == ["def.toml", "pipe"]
 
 
-def test_a_symbolic_link_is_refused_and_its_target_kept(tmp_path, capsys, no_computing):
+def test_a_symbolic_link_is_refused_and_its_target_kept(tmp_path, no_computing, refused):
     target = tmp_path / "target.nc"
     target.write_bytes(b"someone else's data")
     (tmp_path / "link.nc").symlink_to(target)
-    assert "is a symbolic link" in refused(tmp_path, capsys, tmp_path / "link.nc")
+    assert "is a symbolic link" in refused(tmp_path / "link.nc")
     assert target.read_bytes() == b"someone else's data"
 
 
-def test_another_programs_file_is_refused(tmp_path, capsys, no_computing):
+def test_another_programs_file_is_refused(tmp_path, no_computing, refused):
     (tmp_path / "notes.nc").write_text("not a netCDF file")
-    assert "not a netCDF file" in refused(tmp_path, capsys, tmp_path / "notes.nc")
+    assert "not a netCDF file" in refused(tmp_path / "notes.nc")
     with netCDF4.Dataset(tmp_path / "theirs.nc", "w") as theirs:
         theirs.source = "another model 2.0"
-    assert "do not name bearing-sweep" in refused(tmp_path, capsys, tmp_path / "theirs.nc")
+    assert "do not name bearing-sweep" in refused(tmp_path / "theirs.nc")
     (tmp_path / "empty.nc").touch()
-    refused(tmp_path, capsys, tmp_path / "empty.nc")
+    refused(tmp_path / "empty.nc")
 
 
-def test_a_file_as_the_outputs_folder_is_refused(tmp_path, capsys, no_computing):
+def test_a_file_as_the_outputs_folder_is_refused(tmp_path, no_computing, refused):
     (tmp_path / "plain").write_text("a file")
-    err = refused(tmp_path, capsys, tmp_path / "plain" / "deeper" / "out.nc")
+    err = refused(tmp_path / "plain" / "deeper" / "out.nc")
     assert "its folder cannot be created" in err and "is not a folder" in err
 
 
-def test_an_earlier_result_is_replaced(tmp_path, capsys):
-    (tmp_path / "def.toml").write_text(DEFINITION)
+def test_an_earlier_result_is_replaced(tmp_path, capsys, four_points):
+    (tmp_path / "def.toml").write_text(four_points)
     output = tmp_path / "out.nc"
     arguments = ["run", str(tmp_path / "def.toml"), "-o", str(output), "--workers", "0"]
     assert cli.main(arguments) == 0
-    (tmp_path / "def.toml").write_text(DEFINITION.replace('"4 kN"', '"5 kN"'))
+    (tmp_path / "def.toml").write_text(four_points.replace('"4 kN"', '"5 kN"'))
     assert cli.main(arguments) == 0, capsys.readouterr().err
     assert stores.open_result(output).radial_load.values.tolist() == [2000, 5000]
 
@@ -132,10 +97,10 @@ def test_dev_null_is_refused_by_looking_only(monkeypatch):
         (before.st_ino, before.st_mode, before.st_rdev)
 
 
-def test_study_refuses_a_result_path_that_is_not_a_result(tmp_path):
+def test_study_refuses_a_result_path_that_is_not_a_result(tmp_path, four_points, run_cli):
     study = tmp_path / "studies" / "tiny"
     study.mkdir(parents=True)
-    (study / "loads.toml").write_text(DEFINITION)
+    (study / "loads.toml").write_text(four_points)
     (study / "figures.py").write_text(textwrap.dedent("""
         FIGURES = {}
         def draw(results, figures):
@@ -143,9 +108,7 @@ def test_study_refuses_a_result_path_that_is_not_a_result(tmp_path):
         """))
     (tmp_path / "results" / "tiny").mkdir(parents=True)
     (tmp_path / "results" / "tiny" / "loads.nc").write_text("my own notes")
-    done = subprocess.run([sys.executable, "-m", "bearing_sweep", "study", "tiny", "--studies",
-                           "studies"], cwd=tmp_path, capture_output=True, text=True,
-                          timeout=120)
+    done = run_cli("study", "tiny", "--studies", "studies", cwd=tmp_path, timeout=120)
     assert done.returncode == 2 and len(done.stderr.strip().splitlines()) == 1, done.stderr
     assert "results/tiny/loads.nc: exists and is not a netCDF file" in done.stderr
     assert (tmp_path / "results" / "tiny" / "loads.nc").read_text() == "my own notes"
@@ -165,15 +128,16 @@ ODD_NAMES = {".zarr": "is only a suffix; name the store, as result.zarr",
 
 
 @pytest.mark.parametrize("name", ODD_NAMES)
-def test_an_odd_output_name_is_refused(tmp_path, capsys, no_computing, name):
-    err = refused(tmp_path, capsys, f"{tmp_path}/{name}")
+def test_an_odd_output_name_is_refused(tmp_path, no_computing, name, four_points, refused):
+    err = refused(f"{tmp_path}/{name}")
     assert f"{tmp_path}/{name}: {ODD_NAMES[name]}" in err
     with pytest.raises(paths.UnsafeOutput, match=re.escape(ODD_NAMES[name])):
-        bearing_sweep.run(DEFINITION, output=f"{tmp_path}/{name}", workers=0, progress=False)
+        bearing_sweep.run(four_points, output=f"{tmp_path}/{name}", workers=0, progress=False)
 
 
-def test_a_store_is_named_by_its_suffix_in_any_case_with_or_without_a_slash(tmp_path, capsys):
-    (tmp_path / "def.toml").write_text(DEFINITION)
+def test_a_store_is_named_by_its_suffix_in_any_case_with_or_without_a_slash(tmp_path, capsys,
+                                                                            four_points):
+    (tmp_path / "def.toml").write_text(four_points)
     for name in ("upper.ZARR", "slashed.zarr/"):
         assert cli.main(["run", str(tmp_path / "def.toml"), "-o", f"{tmp_path}/{name}",
                          "--workers", "0", "--quiet"]) == 0
@@ -183,11 +147,11 @@ def test_a_store_is_named_by_its_suffix_in_any_case_with_or_without_a_slash(tmp_
         assert stores.open_result(tmp_path / name).status.shape == (2, 2)
 
 
-def test_a_file_where_a_store_goes_is_refused(tmp_path, capsys, no_computing):
+def test_a_file_where_a_store_goes_is_refused(tmp_path, no_computing, refused):
     # our own netCDF file under a store's name: a store is a folder, never written over a file
     with netCDF4.Dataset(tmp_path / "ours.zarr", "w") as ours:
         ours.source = "bearing-sweep 0.1.0"
-    err = refused(tmp_path, capsys, tmp_path / "ours.zarr")
+    err = refused(tmp_path / "ours.zarr")
     assert "ours.zarr: exists and is a file; a .zarr output is a zarr store, a folder" in err
 
 
@@ -199,7 +163,8 @@ LOCK_FAILURES = {"a filesystem that takes no files, as /proc": (errno.ENOENT, 2)
 
 
 @pytest.mark.parametrize("case", LOCK_FAILURES)
-def test_a_lock_file_that_cannot_be_made_says_so(tmp_path, capsys, monkeypatch, case):
+def test_a_lock_file_that_cannot_be_made_says_so(tmp_path, capsys, monkeypatch, case, four_points,
+                                                 tree):
     # Before, every one of them said that another run was writing the output.
     code, status = LOCK_FAILURES[case]
     opened = os.open
@@ -209,7 +174,7 @@ def test_a_lock_file_that_cannot_be_made_says_so(tmp_path, capsys, monkeypatch, 
             raise OSError(code, os.strerror(code), os.fspath(path))
         return opened(path, flags, *args, **kwargs)
 
-    (tmp_path / "def.toml").write_text(DEFINITION)
+    (tmp_path / "def.toml").write_text(four_points)
     before = tree(tmp_path)
     monkeypatch.setattr(os, "open", refused_there)
     assert cli.main(["run", str(tmp_path / "def.toml"), "-o", str(tmp_path / "out.nc"),
@@ -221,16 +186,16 @@ def test_a_lock_file_that_cannot_be_made_says_so(tmp_path, capsys, monkeypatch, 
     assert tree(tmp_path) == before
 
 
-def test_a_folder_where_the_lock_goes_says_so(tmp_path, capsys):
+def test_a_folder_where_the_lock_goes_says_so(tmp_path, refused):
     (tmp_path / ".out.nc.lock").mkdir()
-    err = refused(tmp_path, capsys, tmp_path / "out.nc")
+    err = refused(tmp_path / "out.nc")
     assert f"its lock file .out.nc.lock cannot be made in {tmp_path} (Is a directory)" in err
 
 
 @pytest.mark.skipif(not os.path.isdir("/proc/self"), reason="no /proc")
-def test_an_output_in_proc_is_refused_for_what_it_is(tmp_path, capsys):
+def test_an_output_in_proc_is_refused_for_what_it_is(tmp_path, capsys, four_points):
     # The reproduction: nothing can be made in /proc (the attempt makes nothing).
-    (tmp_path / "def.toml").write_text(DEFINITION)
+    (tmp_path / "def.toml").write_text(four_points)
     assert cli.main(["run", str(tmp_path / "def.toml"), "-o", "/proc/x.nc", "--workers", "0",
                      "--quiet"]) == 2
     assert capsys.readouterr().err == (
@@ -259,9 +224,10 @@ INSIDE = {"a netCDF file in a store": ("s.zarr", "s.zarr/y.nc"),
 
 
 @pytest.mark.parametrize("case", INSIDE)
-def test_an_output_inside_a_store_or_a_parts_folder_is_refused(tmp_path, capsys, case):
+def test_an_output_inside_a_store_or_a_parts_folder_is_refused(tmp_path, capsys, case, four_points,
+                                                               refused):
     made, output = INSIDE[case]
-    (tmp_path / "def.toml").write_text(DEFINITION)
+    (tmp_path / "def.toml").write_text(four_points)
     if made == "s.zarr":
         assert cli.main(["run", str(tmp_path / "def.toml"), "-o", str(tmp_path / made),
                          "--workers", "0", "--quiet"]) == 0
@@ -269,15 +235,15 @@ def test_an_output_inside_a_store_or_a_parts_folder_is_refused(tmp_path, capsys,
     elif made:
         (tmp_path / made).mkdir()
     capsys.readouterr()
-    err = refused(tmp_path, capsys, tmp_path / output)
+    err = refused(tmp_path / output)
     assert "is inside" in err and "choose a path outside it" in err
     inside = "a .zarr folder is a zarr store" if ".zarr/" in output.lower() or "link" in case \
         else "the folder where a run keeps the finished chunks of"
     assert inside in err
 
 
-def test_an_analysis_or_a_figure_inside_a_store_is_refused(tmp_path, capsys):
-    (tmp_path / "def.toml").write_text(DEFINITION)
+def test_an_analysis_or_a_figure_inside_a_store_is_refused(tmp_path, capsys, four_points, tree):
+    (tmp_path / "def.toml").write_text(four_points)
     assert cli.main(["run", str(tmp_path / "def.toml"), "-o", str(tmp_path / "s.zarr"),
                      "--workers", "0", "--quiet"]) == 0
     capsys.readouterr()
