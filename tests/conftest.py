@@ -2,6 +2,7 @@
 line run in a new process, toy models, the checks of a refusal and of CF labels, the figures
 a test saved. Test modules import no other test module (pytest imports each by its path)."""
 import math
+import signal
 import stat
 import subprocess
 import sys
@@ -15,6 +16,16 @@ MM = 1e-3
 #: Bearing D of paper 000 (Table 4) in SI, for model-level tests.
 BEARING_D = dict(roller_count=14, pitch_diameter=65 * MM, roller_diameter=10 * MM,
                  effective_length=9.6 * MM)
+
+
+@pytest.fixture(scope="session", autouse=True)
+def ctrl_c_as_a_terminal_sends_it():
+    """Ctrl-C raises KeyboardInterrupt in the tests and in the processes they start, as for a
+    user at a terminal, also where the suite itself was started in the background: a shell
+    starts a background command with SIGINT ignored, which Python and every child keep."""
+    if signal.getsignal(signal.SIGINT) is signal.SIG_IGN:
+        signal.signal(signal.SIGINT, signal.default_int_handler)  # children: the default
+    yield
 
 
 @pytest.fixture(scope="session")
