@@ -21,9 +21,11 @@ $(STAMP): pyproject.toml
 	touch $(STAMP)
 
 # `make test`: every test but the slow ones (clusters, interrupted and parallel runs, each
-# study at its full resolution), which `make test-slow` runs; CI runs both.
+# study at its full resolution), in two processes (tests/conftest.py says how they share
+# them); `make test-slow` runs the slow ones one at a time, as they start clusters of their
+# own. CI runs both.
 test: $(STAMP)
-	$(PYTHON) -m pytest -q -m "not slow"
+	$(PYTHON) -m pytest -q -m "not slow" -n 2 --dist loadgroup
 
 test-slow: $(STAMP)
 	$(PYTHON) -m pytest -q -m slow

@@ -1,5 +1,5 @@
 """What several test modules share, as fixtures: bearing D, sweep definitions, the command
-line run in a new process, toy models, the checks of a refusal and of CF labels, the figures
+line, toy models, the checks of a refusal and of CF labels, the figures
 a test saved. Test modules import no other test module (pytest imports each by its path)."""
 import math
 import signal
@@ -26,6 +26,21 @@ def ctrl_c_as_a_terminal_sends_it():
     if signal.getsignal(signal.SIGINT) is signal.SIG_IGN:
         signal.signal(signal.SIGINT, signal.default_int_handler)  # children: the default
     yield
+
+
+@pytest.hookimpl(tryfirst=True)  # before pytest-xdist reads the groups
+def pytest_collection_modifyitems(items):
+    """``make test`` shares the tests between two processes (pytest-xdist, ``--dist
+    loadgroup``): each module's tests in one of them, so that a module's fixtures run once,
+    but each study's apart, the studies being the longest runs."""
+    for item in items:
+        group = item.nodeid.split("::")[0]
+        params = getattr(item, "callspec", None)
+        if "run_study" in item.fixturenames:
+            group += "::" + params.params["name"]
+        elif "short_3d_results" in item.fixturenames:
+            group += "::cage_dynamics_3d"
+        item.add_marker(pytest.mark.xdist_group(group))
 
 
 @pytest.fixture(scope="session")
@@ -102,18 +117,70 @@ def four_points() -> str:
     return FOUR_POINTS
 
 
-def _run_cli(*arguments, cwd, timeout=300, **settings) -> subprocess.CompletedProcess:
+def _run_command(*arguments, cwd, timeout=300, **settings) -> subprocess.CompletedProcess:
     """``bearing-sweep *arguments`` in a new process started in ``cwd``, as a user runs it;
     the finished process with its output as text."""
     return subprocess.run([sys.executable, "-m", "bearing_sweep", *map(str, arguments)], cwd=cwd,
                           capture_output=True, text=True, timeout=timeout, **settings)
 
 
+def _starts_processes(arguments) -> bool:
+    """Whether the command may start a cluster, whose workers' logs and processes are the
+    operating system's to see."""
+    words = list(map(str, arguments))
+    if "--scheduler" in words:
+        return True
+    if words[0] not in ("run", "study"):
+        return False
+    return "--workers" not in words or words[words.index("--workers") + 1] != "0"
+
+
+def _run_cli(*arguments, cwd, timeout=300, **settings) -> subprocess.CompletedProcess:
+    """``bearing-sweep *arguments`` run from ``cwd``, its exit code and output as a finished
+    process's: in this process (the program's ``main``: what it prints, the warnings it
+    shows and its exit code, argparse's included), or in a new one where ``settings`` set
+    up that process or the command may start a cluster."""
+    if settings or _starts_processes(arguments):
+        return _run_command(*arguments, cwd=cwd, timeout=timeout, **settings)
+    import contextlib
+    import io
+    import os
+    import warnings
+
+    from bearing_sweep import cli
+
+    out, err, before = io.StringIO(), io.StringIO(), os.getcwd()
+    os.chdir(cwd)
+    try:
+        with contextlib.redirect_stdout(out), contextlib.redirect_stderr(err), \
+                warnings.catch_warnings(record=True) as shown:
+            warnings.simplefilter("default")  # as a new process shows them
+            try:
+                code = cli.main(list(map(str, arguments)))
+            except SystemExit as stop:  # argparse's refusals and --help
+                code = stop.code if isinstance(stop.code, int) else int(stop.code is not None)
+        for warning in shown:
+            err.write(warnings.formatwarning(warning.message, warning.category,
+                                             warning.filename, warning.lineno))
+    finally:
+        os.chdir(before)
+    return subprocess.CompletedProcess(["bearing-sweep", *map(str, arguments)], code,
+                                       out.getvalue(), err.getvalue())
+
+
 @pytest.fixture(scope="session")
 def run_cli():
     """``run_cli(*arguments, cwd=folder, timeout=300, env=..., ...)``: ``bearing-sweep
-    *arguments`` in a new process in ``folder`` (a test's own), its ``CompletedProcess``."""
+    *arguments`` run in ``folder`` (a test's own), a ``CompletedProcess`` (:func:`_run_cli`:
+    in this process unless it needs one of its own)."""
     return _run_cli
+
+
+@pytest.fixture(scope="session")
+def run_command():
+    """``run_command(*arguments, cwd=folder, timeout=300, ...)``: ``bearing-sweep *arguments``
+    in a new process in ``folder``, as a user's shell starts it, its ``CompletedProcess``."""
+    return _run_command
 
 
 def _assert_cf_labelled(data):

@@ -1,4 +1,5 @@
 """The papers' studies regenerate every figure and stated number from their netCDF files."""
+import contextlib
 import re
 import shutil
 from pathlib import Path
@@ -49,8 +50,8 @@ def _store_in_other_units(source: Path, target: Path) -> int:
 REDUCED = {
     "ball_stiffness/unstated_inputs.toml": [("n = 512", "n = 64")],
     "radial_stiffness/unstated_inputs.toml": [("n = 512", "n = 64")],
-    # radial loads 50 to 1000 N every 10 N: the claims read 200 to 1000 N every 50 N
-    "cage_slip/fig17_load_speed.toml": [('step = "5 N"', 'step = "10 N"')],
+    # radial loads 50 to 1000 N every 25 N: the claims read 200 to 1000 N every 50 N
+    "cage_slip/fig17_load_speed.toml": [('step = "5 N"', 'step = "25 N"')],
     "cage_slip/fig17_transient.toml": [('duration = "0.03 s"', 'duration = "0.006 s"')],
     "cage_slip/fig18_20_eccentricity.toml": [('duration = "0.06 s"', 'duration = "0.012 s"')],
     # runout: a quarter of the rotation steps (of a revolution, in which the rollers' orders
@@ -59,7 +60,7 @@ REDUCED = {
     "runout/fig08_amplitude.toml": [("steps_per_revolution = 1800",
                                      "steps_per_revolution = 450")],
     "runout/fig09_10_order.toml": [("steps_per_revolution = 3600",
-                                    "steps_per_revolution = 900")],
+                                    "steps_per_revolution = 450")],
     "runout/fig11_table4.toml": [("steps_per_revolution = 3600", "steps_per_revolution = 900")],
     "runout/fig12_roller_count.toml": [("steps_per_revolution = 1800",
                                         "steps_per_revolution = 450")],
@@ -99,23 +100,50 @@ def _study_copy(name: str, folder: Path, resolution: str) -> None:
 
 
 @pytest.fixture(scope="module")
-def run_study(tmp_path_factory, run_cli):
+def study_figures():
+    """The figures each study run of :func:`run_study` drew, by (study, results folder), as
+    :func:`drawn` gives them."""
+    return {}
+
+
+@pytest.fixture(scope="module")
+def run_study(tmp_path_factory, run_cli, study_figures):
     """``run_study(name, resolution="reduced")``: the folder holding ``studies/`` (the
     study's copy), ``results/`` and ``figures/`` of the study run once for all the tests of
-    this module (whole studies are the suite's longest runs)."""
+    this module (whole studies are the suite's longest runs); the figures it drew are kept in
+    ``study_figures``."""
     runs = {}
 
     def run(name: str, resolution: str = "reduced") -> Path:
         if (name, resolution) not in runs:
             folder = tmp_path_factory.mktemp(f"{name}-{resolution}")
             _study_copy(name, folder, resolution)
-            done = run_cli("study", name, "--workers", "0", *_folders(folder),
-                           timeout=1200, cwd=folder)
+            with kept_figures() as figures:
+                done = run_cli("study", name, "--workers", "0", *_folders(folder),
+                               timeout=1200, cwd=folder)
             assert done.returncode == 0, done.stderr
+            study_figures[name, folder / "results" / name] = figures
             runs[name, resolution] = folder
         return runs[name, resolution]
 
     return run
+
+
+@contextlib.contextmanager
+def kept_figures():
+    """``{file: Figure}`` of each figure saved (``plotting.save``) by the study scripts loaded
+    within, laid out as it was saved."""
+    import bearing_sweep.plotting as plotting
+
+    original, figures = plotting.save, {}
+
+    def keep(figure, folder, file, tight=True):
+        original(figure, folder, file, tight)
+        figures[file] = figure
+
+    with pytest.MonkeyPatch.context() as patch:
+        patch.setattr(plotting, "save", keep)  # the scripts import it when loaded
+        yield figures
 
 
 def _folders(folder: Path) -> list[str]:
@@ -346,29 +374,20 @@ def test_agreement_reads_each_comparison_and_counts_samples_one_by_one():
 # -- every figure reads at a glance -----------------------------------------------------------
 
 @pytest.fixture(scope="module")
-def drawn(tmp_path_factory):
+def drawn(tmp_path_factory, study_figures):
     """``drawn(name, results)``: each figure of the study ``name`` drawn from ``results``, as
     ``{file: Figure}``, laid out as it was saved; drawn once for all the tests of this module
-    (they only read the figures)."""
-    import bearing_sweep.plotting as plotting
-
-    original, made = plotting.save, {}
+    (they only read the figures), by the study's run where :func:`run_study` ran it."""
 
     def draw(name: str, results: Path) -> dict:
-        if (name, results) in made:
-            return made[name, results]
-        figures = {}
-
-        def keep(figure, folder, file, tight=True):
-            original(figure, folder, file, tight)
-            figures[file] = figure
-
-        with pytest.MonkeyPatch.context() as patch:
-            patch.setattr(plotting, "save", keep)  # the scripts import it when loaded
-            module = find_studies(STUDIES)[name].figures_module()
-            module.draw(results, tmp_path_factory.mktemp(f"{name}-figures"))
+        if (name, results) not in study_figures:
+            with kept_figures() as figures:
+                module = find_studies(STUDIES)[name].figures_module()
+                module.draw(results, tmp_path_factory.mktemp(f"{name}-figures"))
+            study_figures[name, results] = figures
+        figures = study_figures[name, results]
+        module = find_studies(STUDIES)[name].figures_module()
         assert sorted(figures) == sorted(module.FIGURES)  # each one saved through save
-        made[name, results] = figures
         return figures
 
     return draw

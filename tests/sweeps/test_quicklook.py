@@ -346,20 +346,25 @@ def state():
             "logging.disable": logging.root.manager.disable}
 
 
-exec(sys.argv[2] if len(sys.argv) > 2 else "")  # what the libraries do on their own
-before, before_loggers = state(), loggers()
-exec(sys.argv[1])
-after, after_loggers = state(), loggers()
-changed = {key: (before[key], after[key]) for key in before if before[key] != after[key]}
-# A library may add its own logger with a NullHandler (pint does); nothing else.
-quiet = (logging.NOTSET, [], True, False)
-changed["loggers"] = {
-    name: (before_loggers.get(name), value) for name, value in after_loggers.items()
-    if value != before_loggers.get(name, value)
-    or (name not in before_loggers and (value[0], [h for h in value[1] if h != "NullHandler"],
-                                        *value[2:]) != quiet)}
-changed["pyplot used"] = "matplotlib.pyplot" in sys.modules
-print(json.dumps(changed))
+def changed_by(statement):
+    before, before_loggers = state(), loggers()
+    exec(statement)
+    after, after_loggers = state(), loggers()
+    changed = {key: (before[key], after[key]) for key in before if before[key] != after[key]}
+    # A library may add its own logger with a NullHandler (pint does); nothing else.
+    quiet = (logging.NOTSET, [], True, False)
+    changed["loggers"] = {
+        name: (before_loggers.get(name), value) for name, value in after_loggers.items()
+        if value != before_loggers.get(name, value)
+        or (name not in before_loggers and (value[0], [h for h in value[1] if h != "NullHandler"],
+                                            *value[2:]) != quiet)}
+    changed["pyplot used"] = "matplotlib.pyplot" in sys.modules
+    return changed
+
+
+exec(sys.argv[2])  # what the libraries do on their own
+# Each statement against the state the one before it left.
+print(json.dumps({statement: changed_by(statement) for statement in json.loads(sys.argv[1])}))
 '''
 
 def _engine_modules() -> list[str]:
@@ -380,25 +385,38 @@ IMPORTS = (["import bearing_sweep"] + [f"import {name}" for name in _engine_modu
 STUDIES = Path(__file__).resolve().parents[2] / "studies"
 
 
-def changes(statement: str, cwd, libraries: str = "") -> dict:
-    """What ``statement`` changes, in a fresh process, after ``libraries`` ran."""
+def changes(statements: list[str], cwd, libraries: str = "") -> dict:
+    """What each of ``statements`` changes, in one fresh process, after ``libraries`` ran:
+    ``{statement: changes}``."""
     import json
 
-    done = subprocess.run([sys.executable, "-c", GLOBAL_STATE, statement, libraries],
-                          cwd=cwd, capture_output=True, text=True, timeout=300)
+    done = subprocess.run([sys.executable, "-c", GLOBAL_STATE, json.dumps(statements),
+                           libraries], cwd=cwd, capture_output=True, text=True, timeout=300)
     assert done.returncode == 0, done.stderr
     return json.loads(done.stdout.splitlines()[-1])
 
 
-@pytest.mark.parametrize("statement", IMPORTS + [
+#: Each import of the package, its modules and the studies' figure scripts.
+STATEMENTS = IMPORTS + [
     pytest.param(f"from bearing_sweep.study import find_studies; "
                  f"find_studies({str(STUDIES)!r})[{name!r}].figures_module()",
                  id=f"studies/{name}/figures.py")
-    for name in sorted(p.parent.name for p in STUDIES.glob("*/figures.py"))])
-def test_importing_changes_no_global_state(statement, tmp_path):
+    for name in sorted(p.parent.name for p in STUDIES.glob("*/figures.py"))]
+UNCHANGED = {"loggers": {}, "pyplot used": False}
+
+
+def test_importing_changes_no_global_state(tmp_path):
     """No import of the package, its modules or a study's figure script changes the user's
-    matplotlib backend or settings, warnings filters or logging (each in a fresh process)."""
-    assert changes(statement, tmp_path) == {"loggers": {}, "pyplot used": False}
+    matplotlib backend or settings, warnings filters or logging (one after another in a fresh
+    process; the slow tests import each in a process of its own)."""
+    statements = [getattr(s, "values", [s])[0] for s in STATEMENTS]
+    assert changes(statements, tmp_path) == {s: UNCHANGED for s in statements}
+
+
+@pytest.mark.slow
+@pytest.mark.parametrize("statement", STATEMENTS)
+def test_importing_alone_changes_no_global_state(statement, tmp_path):
+    assert changes([statement], tmp_path) == {statement: UNCHANGED}
 
 
 def test_plotting_changes_no_global_state_and_leaves_pyplot_alone(results, tmp_path):
@@ -409,7 +427,7 @@ def test_plotting_changes_no_global_state_and_leaves_pyplot_alone(results, tmp_p
     # second opening after the backends the first loaded), and the plot must add nothing.
     libraries = ("import pint, scipy.special, xarray\nfor _ in range(2):\n"
                  f"    xarray.open_dataset({result!r}).close()")
-    assert changes(statement, tmp_path, libraries) == {"loggers": {}, "pyplot used": False}
+    assert changes([statement], tmp_path, libraries) == {statement: UNCHANGED}
     assert (tmp_path / "f.png").read_bytes().startswith(b"\x89PNG")
 
 
@@ -450,7 +468,8 @@ def test_entries_in_units_of_their_own_are_labelled_with_each_entry_unit(results
         assert by_entry[title].endswith(f"[{units[entry]}]"), (title, by_entry[title])
 
 
-@pytest.mark.parametrize("suffix", [".png", ".pdf", ".svg"])
+@pytest.mark.parametrize("suffix", [".png", pytest.param(".pdf", marks=pytest.mark.slow),
+                                    pytest.param(".svg", marks=pytest.mark.slow)])
 def test_a_figure_another_program_wrote_is_never_replaced(results, tmp_path, suffix, run_cli):
     from matplotlib.figure import Figure
 

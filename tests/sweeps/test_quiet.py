@@ -24,9 +24,9 @@ radial_load = ["1 kN", "2 kN", "3 kN"]
 
 
 @pytest.mark.parametrize("workers", ["0", pytest.param("2", marks=pytest.mark.slow)])
-def test_a_model_overflowing_prints_nothing_but_the_summary(tmp_path, workers, run_cli):
+def test_a_model_overflowing_prints_nothing_but_the_summary(tmp_path, workers, run_command):
     (tmp_path / "d.toml").write_text(HUGE_SPEED)
-    done = run_cli("run", "d.toml", "-o", "d.nc", "--workers", workers, "--chunk-size", "1",
+    done = run_command("run", "d.toml", "-o", "d.nc", "--workers", workers, "--chunk-size", "1",
                    "--quiet", cwd=tmp_path, timeout=300)
     assert done.returncode == 0 and done.stderr == "", done.stderr
     # Points no bearing runs at: not converged, and flagged outside validity (speed factor).

@@ -47,6 +47,7 @@ def wait_for_chunks(parts, count, seconds=120):
         time.sleep(0.05)
 
 
+@pytest.mark.slow
 def test_a_killed_run_resumes_where_it_stopped(tmp_path, start_cli):
     (tmp_path / "slow.toml").write_text(SLOW)
     common = ["--workers", "0", "--chunk-size", "1000", "--quiet"]
@@ -68,6 +69,7 @@ def test_a_killed_run_resumes_where_it_stopped(tmp_path, start_cli):
     same_data(stores.open_result(tmp_path / "out.nc"), stores.open_result(tmp_path / "whole.nc"))
 
 
+@pytest.mark.slow
 @pytest.mark.parametrize("output", ["k.nc", "k.zarr"])
 def test_a_killed_run_leaves_nothing_that_the_next_run_does_not_clear(tmp_path, output, start_cli):
     (tmp_path / "slow.toml").write_text(SLOW)
@@ -181,7 +183,8 @@ FULL = {"netCDF, compressed": ("out.nc", [], 1_000_000),
         "zarr": ("out.zarr", ["--compression", "none"], 50_000)}
 
 
-@pytest.mark.parametrize("case", FULL)
+@pytest.mark.parametrize("case", [pytest.param(case, marks=[pytest.mark.slow] if i else [])
+                                  for i, case in enumerate(FULL)])
 def test_a_disk_full_while_writing_is_one_line_and_loses_nothing(tmp_path, case, run_cli):
     output, options, limit = FULL[case]
     (tmp_path / "d.toml").write_text(SLOW.replace("num = 200", "num = 100"))
@@ -247,6 +250,7 @@ def test_an_unwritable_folder_is_one_line(tmp_path, capsys):
     assert code == 2 and "permission denied" in capsys.readouterr().err
 
 
+@pytest.mark.slow
 def test_a_killed_worker_costs_only_a_retry(tmp_path):
     sweep = spec.parse(SLOW)
     reference = run_sweep(sweep, tmp_path / "reference.nc", Executor(workers=0),
@@ -599,6 +603,7 @@ def test_the_output_lock_is_never_held_twice(tmp_path):
     assert acquired[0] > 20 and refused[0] > 20  # it was contended, and served
 
 
+@pytest.mark.slow
 def test_two_runs_started_at_once_one_computes_the_other_is_refused(tmp_path, start_cli):
     (tmp_path / "slow.toml").write_text(SLOW)
     common = ["slow.toml", "-o", "out.nc", "--workers", "0", "--chunk-size", "1000", "--quiet"]
@@ -797,7 +802,7 @@ def test_an_analysis_store_left_half_written_is_removed_by_the_next_writer(tmp_p
         zarr_store.write_dataset(xr.Dataset({"x": ("t", [3.0])}), tmp_path / "r_analysis.zarr")
 
 
-@pytest.mark.parametrize("workers", ["0", "2"])
+@pytest.mark.parametrize("workers", ["0", pytest.param("2", marks=pytest.mark.slow)])
 def test_a_sigterm_stops_the_run_as_ctrl_c_does_and_it_resumes(tmp_path, workers, start_cli):
     # kill, or a batch system's time limit, sends SIGTERM to the program alone: it stops as
     # a Ctrl-C does, in one line, exit 143 (128 + 15), its workers stopped, the finished
