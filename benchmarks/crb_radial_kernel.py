@@ -70,7 +70,7 @@ CLEARANCES = 4  # clearances on the grid; the loads fill the model's block
 AGREEMENT = 1e-9
 PAIRS = 9
 #: Points of the end-to-end runs (as the issue measured them) and their pairs.
-END_TO_END_POINTS, END_TO_END_PAIRS = 20_000, 5
+END_TO_END_POINTS, END_TO_END_PAIRS = 20_000, 9
 # Bits of x^(-1/9) from those of x (the exponent field divided by -9; 3 % at worst), then
 # Newton: four steps for x^(-1/9) without division, one for x^(1/9) (within 1 ulp of pow).
 ROOT_MAGIC = 5118851384464337920

@@ -231,16 +231,22 @@ def conversion_scale(unit: pint.Unit, target: pint.Unit) -> float:
 
 def from_si(values, unit_text: str):
     """SI values expressed in ``unit_text`` (the customary unit of a model output)."""
-    unit, base = _unit_and_base(unit_text)
-    return UREG.Quantity(np.asarray(values, dtype=float), base).to(unit).magnitude
+    unit, base, factor = _from_base(unit_text)
+    values = np.asarray(values, dtype=float)
+    if factor is None:
+        return UREG.Quantity(values, base).to(unit).magnitude
+    return values * factor  # what pint multiplies by, without its cost for every chunk
 
 
 @lru_cache(maxsize=None)
-def _unit_and_base(unit_text: str):
-    """``unit_text`` parsed, and its SI base unit: parsing costs more than converting a
-    block of a few thousand values, and every block of a sweep converts the same units."""
+def _from_base(unit_text: str):
+    """``unit_text`` parsed, its SI base unit and the factor from that unit to it (None for
+    a shifted zero): parsing costs more than converting a block of a few thousand values,
+    and every block of a sweep converts the same units."""
     unit = parse_unit(unit_text)
-    return unit, UREG.get_base_units(unit)[1]
+    base = UREG.get_base_units(unit)[1]
+    factor = None if is_offset(unit) else UREG.Quantity(1.0, base).to(unit).magnitude
+    return unit, base, factor
 
 
 _FRACTIONAL_POWER = re.compile(r"\^\s*\(?\s*-?\d*\.\d|\^\s*\(\s*-?\d+\s*/")
