@@ -3,10 +3,11 @@ compressed or not (the ``[output]`` table of a definition, ``bearing-sweep run -
 --compression``), and the outputs a model declares integral as integers.
 
 The default, float64 with zlib at level 1 and no shuffle filter, came from
-``benchmarks/output_encoding.py`` (README, "Output files"): on a crb_radial result of 1e5 points
-it keeps every value bit for bit in 0.41 of the uncompressed size, for 1.2 to 2.3 times the
-uncompressed writing time (a tenth of the computing time). The per-roller arrays, most of the file, hold many zeros (unloaded
-rollers) that compress better without shuffle; higher levels save little for much more time.
+``benchmarks/output_encoding.py`` (its figures in ``benchmarks/RESULTS.md``): on a crb_radial
+result it keeps every value bit for bit in well under half the uncompressed size, for little
+more than the uncompressed writing time (level 1 is deflated by ISA-L: ``stores.hdf5_chunks``).
+The per-roller arrays, most of the file, hold many zeros (unloaded rollers) that compress
+better without shuffle; higher levels save little for much more time.
 """
 from __future__ import annotations
 
