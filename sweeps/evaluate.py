@@ -11,9 +11,7 @@ from .models.registry import MODEL_ERROR, known_status, values_kept
 from . import quiet, units
 from .grid import Grid
 from .interrupts import interruptions_raised
-from .labels import stored_unit
 from .stores import structure
-from .stores.blocks import chunk_tally
 
 
 #: Largest chunk, in estimated seconds of work on one core (a task costs a few milliseconds of
@@ -94,22 +92,23 @@ def evaluate_into(writer, expected: dict, grid: Grid, start: int, stop: int) -> 
     :class:`stores.zarr.StoreWriter`, or a :class:`stores.hdf5_chunks.ChunkEncoder`) in the
     process that computed them.
 
-    Returns ``{"tally": stores.blocks.chunk_tally, "versions": dict}`` and what the writer returns:
-    one value per cell of the outputs stored on fewer dimensions (``firsts``), for a netCDF
-    file the encoded HDF5 chunks (``chunks``); the values themselves never travel. Values
-    computed by other :func:`versions` than ``expected`` are neither written nor encoded
-    (the driver refuses the chunk).
+    Returns the :func:`versions` that computed them and what the writer returns: the chunk's
+    counts (``tally``, :func:`stores.blocks.chunk_tally`), one value per cell of the outputs
+    stored on fewer dimensions (``firsts``), for a netCDF file the encoded HDF5 chunks
+    (``chunks``); the values themselves never travel. Values computed by other
+    :func:`versions` than ``expected`` are neither written nor encoded (the driver refuses
+    the chunk).
     """
     result = evaluate_chunk(grid, start, stop)
-    written = writer.write(grid, start, stop, result) if result["versions"] == expected else {}
-    return {"tally": chunk_tally(grid.model, result), "versions": result["versions"],
-            **written}
+    if result["versions"] != expected:
+        return {"versions": result["versions"]}
+    return {"versions": result["versions"], **writer.write(grid, start, stop, result)}
 
 
 def _from_si(value: np.ndarray, spec) -> np.ndarray:
     """An output's SI values in its declared unit, or in each entry's own unit."""
     if not spec.entry_units:
-        return units.from_si(value, stored_unit(spec.unit))
+        return units.from_si(value, units.stored_unit(spec.unit))
     factors = np.vectorize(lambda unit: float(units.from_si(1.0, unit)))(
         np.array(spec.entry_units))
     return value * factors

@@ -247,7 +247,7 @@ def declared_values(sweep: Sweep, name: str, values: list[Value]) -> np.ndarray:
     first = values[0].shown
     if isinstance(first, str):
         return np.array([v.shown for v in values])
-    target = stored_unit(spec.unit)
+    target = units.stored_unit(spec.unit)
     quantity = spec.kind == "quantity"
     if all(np.ndim(value.shown) == 0 for value in values):  # an axis of single values
         stacked = np.array([value.shown for value in values], dtype=float)
@@ -279,15 +279,9 @@ def input_attrs(sweep: Sweep, name: str, written: str) -> dict:
         return described(spec.short, spec.meaning, None) | {
             "accepted_values": " ".join(spec.choices)}
     attrs = described(spec.short, spec.meaning, spec.unit)
-    if written and written not in ("1", stored_unit(spec.unit)):  # as written, if not stored so
+    if written and written not in ("1", units.stored_unit(spec.unit)):  # unless stored so
         attrs["written_units"] = written
     return attrs
-
-
-def stored_unit(unit: str) -> str:
-    """The unit values are stored in: the declared one, or SI where UDUNITS cannot express
-    the declared one (a fractional power: "N/mm^1.5" would read as 5000 N/m)."""
-    return unit if units.cf_units(unit or "1") is not None else units.si_text(unit)
 
 
 def described(label: str, meaning: str, unit: str | None) -> dict:

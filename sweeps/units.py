@@ -265,3 +265,9 @@ def si_text(text: str) -> str:
     """A unit with a fractional power written in metres ("N/mm^1.5" -> "N/m^1.5"): the unit
     of its values in SI."""
     return re.sub(r"\bmm\b", "m", text)
+
+
+def stored_unit(unit: str) -> str:
+    """The unit values are stored in: the declared one, or SI where UDUNITS cannot express
+    the declared one (a fractional power: "N/mm^1.5" would read as 5000 N/m)."""
+    return unit if cf_units(unit or "1") is not None else si_text(unit)

@@ -35,7 +35,7 @@ from isal import isal_zlib
 from ..dependence import reduced_outputs, split_reduced, stored_dims
 from ..grid import Grid, block_shape
 from ..interrupts import interruptions_raised
-from .blocks import STATUS_CODES, regions, stored_blocks
+from .blocks import STATUS_CODES, chunk_tally, regions, stored_blocks
 from .durable import closed_after, writing
 from .resume import Parts, counts_damage, load_counts, saved_counts, status_damage
 
@@ -148,18 +148,18 @@ class ChunkEncoder:
     def write(self, grid: Grid, start: int, stop: int, part: dict) -> dict:
         """Points ``start..stop-1`` (a computed ``part``, as ``evaluate.evaluate_chunk`` returns
         it) as the driver writes them: ``{"chunks": {name: (offset, bytes)}, "firsts":
-        {name: (points, values)}}``, one HDF5 chunk per variable at ``offset`` (its first
-        index on each dimension), and the :func:`dependence.first_held` values of the outputs
-        stored on fewer dimensions."""
+        {name: (points, values)}, "tally": dict}``, one HDF5 chunk per variable at ``offset``
+        (its first index on each dimension), the :func:`dependence.first_held` values of the
+        outputs stored on fewer dimensions, and the chunk's counts (:func:`.blocks.chunk_tally`)."""
         firsts, per_point = split_reduced(grid, start, stop, part)
-        chunks = {}
+        tally, chunks = chunk_tally(grid.model, part), {}
         for name, index, block in stored_blocks(grid, start, stop, per_point, part["status"]):
             layout = self.layouts[name]
             if name in chunks or any(s.start % c for s, c in zip(index, layout.chunk)):
                 raise ValueError(f"points {start}..{stop - 1} are not one block of the grid")
             offset = tuple(s.start for s in index) + (0,) * (len(layout.chunk) - len(index))
             chunks[name] = (offset, encoded(block, layout))
-        return {"chunks": chunks, "firsts": firsts}
+        return {"chunks": chunks, "firsts": firsts, "tally": tally}
 
 
 def reopened(open_file):

@@ -36,7 +36,7 @@ from ..dependence import reductions, split_reduced
 from ..grid import Grid, block_shape
 from ..spec import Sweep
 from .base import FileStore
-from .blocks import stored_blocks, stored_reduction, summed
+from .blocks import chunk_tally, stored_blocks, stored_reduction, summed
 from .durable import OutputLock, fsync_path, writing
 from .resume import Parts, counts_damage, load_counts, saved_counts
 from .structure import (coordinate_lists, global_attributes, provenance, stored_as,
@@ -79,14 +79,16 @@ class StoreWriter:
         it) and flush their zarr chunks to the disk, so that the chunk's mark never outlives
         its values in a power loss.
 
-        Returns ``{"firsts": {name: (points, values)}, "stored_bytes": int}``: for each
-        output stored on fewer dimensions (``dependence``), the chunk's
+        Returns ``{"firsts": {name: (points, values)}, "tally": dict, "stored_bytes":
+        int}``: for each output stored on fewer dimensions (``dependence``), the chunk's
         :func:`dependence.first_held` points and values, one per cell, for the driver to
-        write once every chunk has given its own; and the size of the zarr chunks written.
+        write once every chunk has given its own; the chunk's counts
+        (:func:`.blocks.chunk_tally`); and the size of the zarr chunks written.
         """
         import zarr
 
         firsts, per_point = split_reduced(grid, start, stop, part)
+        tally = chunk_tally(grid.model, part)
         with writing(self.output):
             group = zarr.open_group(self.path, mode="r+", zarr_format=ZARR_FORMAT,
                                     use_consolidated=True)
@@ -101,7 +103,7 @@ class StoreWriter:
         # A zarr chunk equal to the fill value everywhere has no file (zarr writes none).
         with writing(self.output):
             flush(written + sorted({path.parent for path in written}))
-        return {"firsts": firsts,
+        return {"firsts": firsts, "tally": tally,
                 "stored_bytes": sum(path.stat().st_size for path in written if path.exists())}
 
 
