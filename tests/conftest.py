@@ -2,16 +2,20 @@
 line, toy models, the checks of a refusal and of CF labels, the figures
 a test saved. Test modules import no other test module (pytest imports each by its path)."""
 import math
+import os
 import signal
 import stat
 import subprocess
 import sys
 import textwrap
+from pathlib import Path
 
 import numpy as np
 import pytest
 
 MM = 1e-3
+#: The tests' own definitions and files.
+DATA = Path(__file__).parent / "data"
 
 #: Bearing D of paper 000 (Table 4) in SI, for model-level tests.
 BEARING_D = dict(roller_count=14, pitch_diameter=65 * MM, roller_diameter=10 * MM,
@@ -25,6 +29,44 @@ def ctrl_c_as_a_terminal_sends_it():
     starts a background command with SIGINT ignored, which Python and every child keep."""
     if signal.getsignal(signal.SIGINT) is signal.SIG_IGN:
         signal.signal(signal.SIGINT, signal.default_int_handler)  # children: the default
+    yield
+
+
+#: The models whose kernels numba compiles at their first call, and the module of kernels
+#: that a small sweep runs interpreted unless it is loaded (``models.kernels``): the costliest
+#: to compile first.
+COMPILED = [("cage_dynamics_6dof", None), ("trb_load", "tapered_equilibrium"),
+            ("ball_5dof", "ball_equilibrium"), ("cage_slip", None), ("crb_radial", None),
+            ("cage_dynamics", None)]
+
+
+@pytest.fixture(scope="session", autouse=True)
+def kernels_compiled_once(tmp_path_factory):
+    """In a fresh checkout numba compiles a model's kernels at their first call and keeps them
+    beside the code; the two processes of ``make test`` would each compile those they start
+    on at once. Each takes the models in another order, under a lock per model in the run's
+    temporary root (which its processes share): the first to take one compiles its kernels,
+    the other then loads them."""
+    worker = os.environ.get("PYTEST_XDIST_WORKER")
+    if worker is None:  # one process: each compiled where it is first used
+        yield
+        return
+    import importlib
+
+    from filelock import FileLock
+
+    from bearing_sweep import spec
+    from bearing_sweep.compute import Executor, run_sweep
+
+    root = tmp_path_factory.getbasetemp().parent
+    order = COMPILED if worker == "gw0" else COMPILED[::-1]
+    with Executor(workers=0) as executor:
+        for model, kernels in order:
+            with FileLock(root / f"compiling-{model}.lock"):
+                if kernels:
+                    importlib.import_module(f"bearing_sweep.models.{kernels}")
+                run_sweep(spec.load(DATA / "every_model" / f"{model}.toml"), None, executor,
+                          progress=False)
     yield
 
 
