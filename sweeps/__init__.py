@@ -55,6 +55,9 @@ def program(argv=None) -> int:
 
 
 def __getattr__(name):
+    if name == "__version__":  # the installed distribution's, as every result records it
+        from .stores.structure import package_version
+        return package_version()
     if name in _LAZY:
         from importlib import import_module
         return getattr(import_module(f".{_LAZY[name]}", __name__), name)
@@ -65,4 +68,5 @@ def __dir__():
     return sorted(__all__)
 
 
-__all__ = ["run", "check", "analyze", "list_models", "describe", "plot", "SpecError"]
+__all__ = ["run", "check", "analyze", "list_models", "describe", "plot", "SpecError",
+           "__version__"]

@@ -11,6 +11,7 @@ from pathlib import Path
 
 from .models.catalogue import PRESETS
 from . import api, schema, spec
+from .stores import structure
 from .stores.durable import OutputLock, write_durably
 from .stores.paths import check_output, check_outside_results
 from .compute import WorkerMismatch
@@ -35,6 +36,8 @@ class _Parser(argparse.ArgumentParser):
 def _parser() -> argparse.ArgumentParser:
     parser = _Parser(
         prog="bearing-sweep", description="Parametric studies of rolling bearings.")
+    parser.add_argument("--version", action="version",
+                        version=f"%(prog)s {structure.package_version()}")
     commands = parser.add_subparsers(dest="command", required=True)
 
     def cluster_options(command):

@@ -47,6 +47,17 @@ def test_console_script_lists_and_describes_models(tmp_path, run_cli):
     assert "paper000-D (crb_radial): Paper 000, Table 4" in presets.stdout
 
 
+def test_the_version_is_the_installed_distribution_s(tmp_path, run_cli):
+    from importlib.metadata import version
+
+    import bearing_sweep
+
+    installed = version("bearing-sweep")
+    done = run_cli("--version", cwd=tmp_path)
+    assert done.returncode == 0 and done.stdout == f"bearing-sweep {installed}\n"
+    assert bearing_sweep.__version__ == installed
+
+
 def test_study_runs_what_is_stale_draws_and_reports(tmp_path, four_points, run_cli):
     study = tmp_path / "studies" / "tiny"
     study.mkdir(parents=True)
