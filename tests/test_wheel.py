@@ -1,6 +1,8 @@
 """The project as users install it: a wheel in a fresh environment outside the checkout runs a
-study in an empty folder, and installs nothing under a generic top-level name."""
+study in an empty folder, installs nothing under a generic top-level name, and says the version
+git gives it."""
 import os
+import re
 import shutil
 import subprocess
 import sys
@@ -24,9 +26,11 @@ def _run(command, **settings):
 def installed(tmp_path_factory):
     """A fresh environment with the project's wheel; its dependencies are this one's."""
     folder = tmp_path_factory.mktemp("wheel")
-    source = folder / "source"  # a copy: building writes build/ and egg-info beside the sources
-    tracked = _run(["git", "ls-files"], cwd=ROOT).stdout.split()
-    for name in tracked:
+    # A clone, which has the history the version is derived from, with the checkout's files
+    # as they are: building writes build/ and egg-info beside the sources.
+    source = folder / "source"
+    _run(["git", "clone", "--quiet", "--no-local", str(ROOT), str(source)])
+    for name in _run(["git", "ls-files"], cwd=ROOT).stdout.split():
         target = source / name
         target.parent.mkdir(parents=True, exist_ok=True)
         shutil.copy2(ROOT / name, target)
@@ -79,3 +83,18 @@ def test_an_installed_wheel_runs_a_study_in_an_empty_folder(installed, tmp_path)
     page = (work / "figures" / "tapered_rib" / "README.md").read_text()
     assert "The paper's numbers beside ours" in page and "agrees" in page
     assert (work / "results" / "tapered_rib").is_dir()
+
+
+@pytest.mark.slow
+def test_the_installed_version_is_derived_from_git(installed, tmp_path):
+    said = _run([str(installed / "bin" / "bearing-sweep"), "--version"], cwd=tmp_path,
+                env=_environment(tmp_path)).stdout.split()
+    assert said[0] == "bearing-sweep"
+    head = _run(["git", "rev-parse", "HEAD"], cwd=ROOT).stdout.strip()
+    tag = subprocess.run(["git", "describe", "--tags", "--exact-match"], cwd=ROOT,
+                         capture_output=True, text=True).stdout.strip()
+    if tag and "+" not in said[1]:  # a release: the tag's version
+        assert said[1] == tag.removeprefix("v")
+    else:  # a development release after the last tag, with its commit
+        assert re.fullmatch(r"\d+\.\d+(\.\d+)?\.dev\d+\+g[0-9a-f]+(\.d\d{8})?", said[1]), said
+        assert head.startswith(said[1].split("+g")[1].split(".")[0])
