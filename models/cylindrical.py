@@ -250,6 +250,7 @@ class _RollerSet:
 
         n, cos = LINE_CONTACT_EXPONENT, per_roller(self.cos[points, rollers])
         departures, stiffness = [], []
+        inner_rows = inner_sums = None  # the inner contact's, which the outer one reuses
         for contact, approach, curvature in (("inner", inner_approach, inner_curvature),
                                              ("outer", outer_approach, outer_curvature)):
             approach = np.ascontiguousarray(approach[points, rollers])
@@ -591,7 +592,7 @@ def crb_radial(radial_load, roller_count, pitch_diameter, roller_diameter, effec
 
 def _solve(rollers, load, perturbation):
     """Solve a flat batch of bearings; see :func:`crb_radial`."""
-    cos_azimuth, half_clearance, crown = rollers.cos, rollers.half_clearance, rollers.crown
+    cos_azimuth, half_clearance = rollers.cos, rollers.half_clearance
     constant, centrifugal = rollers.constant, rollers.centrifugal
     count, n = load.size, LINE_CONTACT_EXPONENT
     split = np.full(cos_azimuth.shape + (3,), np.nan)  # no roller solved yet

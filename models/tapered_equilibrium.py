@@ -17,8 +17,6 @@ for a process's first points, with the same numbers to the bit.
 """
 from __future__ import annotations
 
-import math
-
 import numpy as np
 
 from .kernels import compiler

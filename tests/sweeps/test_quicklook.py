@@ -491,10 +491,9 @@ def test_a_figure_another_program_wrote_is_never_replaced(results, tmp_path, suf
 
 
 @pytest.fixture(scope="module")
-def fractional(tmp_path_factory):
+def fractional():
     """crb_radial over its contact constant (N/mm^(10/9): a unit UDUNITS cannot write, stored
     in SI and named in the comment), and ball_5dof with one fixed (N/mm^1.5)."""
-    folder = tmp_path_factory.mktemp("fractional")
     import bearing_sweep
 
     over = bearing_sweep.run({"sweep": {"model": "crb_radial", "bearing": "paper000-D"},

@@ -704,7 +704,7 @@ def test_ctrl_c_once_the_result_is_in_place_says_it_is_complete(tmp_path, capsys
     out, err = capsys.readouterr()
     assert code == 0, err
     assert err == "interrupt ignored: the result was already complete\n"
-    assert f"9 points (9 converged)" in out
+    assert "9 points (9 converged)" in out
     assert stores.open_result(tmp_path / output).status.shape == (3, 3)
     assert sorted(p.name for p in tmp_path.iterdir()) == ["d.toml", output]
     assert signal.getsignal(signal.SIGINT) is signal.default_int_handler
