@@ -45,7 +45,11 @@ def program(argv=None) -> int:
     sys.unraisablehook = raise_again
     try:
         try:
-            from .cli import program as command
+            from .interrupts import interruptions_raised
+            # An interrupt that lands where Python wraps it in another error (a class's
+            # __set_name__, while a module loads) is raised as itself.
+            with interruptions_raised():
+                from .cli import program as command
         except KeyboardInterrupt:
             print("interrupted while starting: nothing was done", file=sys.stderr)
             return 130

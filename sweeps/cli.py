@@ -17,7 +17,7 @@ from .stores.paths import check_output, check_outside_results
 from .compute import WorkerMismatch
 from .executor import ClusterFailure, Executor
 from .dependence import InconsistentOutput
-from .interrupts import Terminated, terminated_as_interrupt
+from .interrupts import Terminated, interruption, terminated_as_interrupt
 from .definition.tables import suggestion
 from .spec import SpecError
 
@@ -296,12 +296,22 @@ def main(argv=None) -> int:
               file=sys.stderr)
         return 1
     except KeyboardInterrupt as error:
-        computing = args is not None and args.command in ("run", "study")
-        word = "terminated" if isinstance(error, Terminated) else "interrupted"
-        print(f"{word}: the finished chunks are kept; run the same command again to resume"
-              if computing else word, file=sys.stderr)
-        return 143 if isinstance(error, Terminated) else 130
+        return _interrupted(args, error)
+    except Exception as error:  # a Ctrl-C that Python or a library raised as another error
+        interrupt = interruption(error)
+        if not isinstance(interrupt, KeyboardInterrupt):
+            raise
+        return _interrupted(args, interrupt)
     return 0
+
+
+def _interrupted(args, error: BaseException) -> int:
+    """Say that the command was interrupted (or terminated), in one line; its exit status."""
+    computing = args is not None and args.command in ("run", "study")
+    word = "terminated" if isinstance(error, Terminated) else "interrupted"
+    print(f"{word}: the finished chunks are kept; run the same command again to resume"
+          if computing else word, file=sys.stderr)
+    return 143 if isinstance(error, Terminated) else 130
 
 
 def program(argv=None) -> int:

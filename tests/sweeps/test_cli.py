@@ -185,6 +185,25 @@ def test_a_mistaken_option_is_one_line_not_the_usage_block(options, tmp_path):
     assert list(tmp_path.iterdir()) == []
 
 
+def test_a_ctrl_c_raised_as_another_error_is_one_line(monkeypatch, capsys):
+    # Python raises an interrupt that lands in a class's __set_name__ (as a module loads) as
+    # a RuntimeError whose cause is the KeyboardInterrupt; numba's dispatcher, a SystemError.
+    from bearing_sweep import cli
+
+    def interrupted(name):
+        try:
+            raise KeyboardInterrupt
+        except KeyboardInterrupt as error:
+            raise RuntimeError("Error calling __set_name__") from error
+
+    monkeypatch.setattr(cli, "_describe", interrupted)
+    assert cli.main(["describe", "crb_radial"]) == 130
+    assert capsys.readouterr().err == "interrupted\n"
+    monkeypatch.setattr(cli, "_describe", lambda name: 1 / 0)  # any other error is a bug
+    with pytest.raises(ZeroDivisionError):
+        cli.main(["describe", "crb_radial"])
+
+
 @pytest.mark.slow
 def test_ctrl_c_while_the_program_starts_is_one_line(tmp_path):
     # From the moment Python runs the program's own code (the first few hundredths of a second
