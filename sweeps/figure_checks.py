@@ -43,7 +43,9 @@ def figure_problems(figure, names: bool = True) -> list[str]:
     """What a reader of ``figure`` (a :class:`matplotlib.figure.Figure`, laid out as it is
     saved) would stumble on, each in words; empty when nothing. ``names``: check texts for
     internal names too (a quick look shows the labels a user wrote, whatever they are)."""
-    FigureCanvasAgg(figure).draw()  # lays the texts out: their sizes and places
+    if not isinstance(figure.canvas, FigureCanvasAgg):  # one of plotting.subplots has one
+        FigureCanvasAgg(figure)
+    figure.draw_without_rendering()  # lays the texts out: their sizes and places
     problems = []
     for index, axis in enumerate(figure.axes):
         where = f"panel {index + 1} ({axis.get_title() or axis.get_ylabel() or 'untitled'})"

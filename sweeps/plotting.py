@@ -12,6 +12,7 @@ from pathlib import Path
 import numpy as np
 import xarray as xr
 from matplotlib.figure import Figure
+from matplotlib.backends.backend_agg import FigureCanvasAgg
 
 from . import units
 from .definition.tables import suggestion
@@ -91,11 +92,18 @@ def ring(axis, x, y, where, label=None):
                   mfc="none", mec="k", ms=6, mew=0.8, ls="none", label=label)
 
 
+#: Resolution of the saved figures [dots per inch].
+DPI = 110
+
+
 def subplots(nrows: int = 1, ncols: int = 1, *, figsize=None, **settings):
     """A new figure and its axes, as ``matplotlib.pyplot.subplots`` gives them (``settings``:
     ``sharex``, ``squeeze``, ``subplot_kw``, ``gridspec_kw``, ...), but outside pyplot: no
-    backend is chosen or changed, and the figure is freed with its last reference."""
-    figure = Figure(figsize=figsize)
+    backend is chosen or changed, and the figure is freed with its last reference. Its canvas
+    draws at the saved resolution, so laying it out, saving it and checking it
+    (``figure_checks``) measure each text once."""
+    figure = Figure(figsize=figsize, dpi=DPI)
+    FigureCanvasAgg(figure)
     return figure, figure.subplots(nrows, ncols, **settings)
 
 
@@ -113,7 +121,7 @@ def save(figure, figures: Path, name: str, tight: bool = True):
     axes, whose labels tight_layout does not see)."""
     if tight:
         figure.tight_layout()
-    figure.savefig(Path(figures) / name, dpi=110, metadata=metadata(Path(name).suffix or ".png"))
+    figure.savefig(Path(figures) / name, dpi=DPI, metadata=metadata(Path(name).suffix or ".png"))
 
 
 def at(data, method=None, **where):

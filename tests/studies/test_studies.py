@@ -130,15 +130,17 @@ def run_study(tmp_path_factory, run_cli, study_figures):
 
 
 @contextlib.contextmanager
-def kept_figures():
+def kept_figures(saved: bool = True):
     """``{file: Figure}`` of each figure saved (``plotting.save``) by the study scripts loaded
-    within, laid out as it was saved."""
+    within, laid out as it was saved; ``saved`` false: kept only, neither laid out nor written
+    (for a test that reads what is drawn, not the file)."""
     import bearing_sweep.plotting as plotting
 
     original, figures = plotting.save, {}
 
     def keep(figure, folder, file, tight=True):
-        original(figure, folder, file, tight)
+        if saved:
+            original(figure, folder, file, tight)
         figures[file] = figure
 
     with pytest.MonkeyPatch.context() as patch:
@@ -184,18 +186,58 @@ def test_a_study_regenerates_its_figures_and_report(name, resolution, run_study,
                                   "radial_stiffness", "life"])
 @pytest.mark.parametrize("resolution", RESOLUTIONS)
 def test_a_study_selects_by_quantity_not_by_stored_numbers(name, resolution, run_study,
-                                                           tmp_path):
+                                                           study_figures, tmp_path):
     """The same results with their inputs stored in other units give the same stated numbers
-    and still draw: the figure scripts select by quantities and convert what they show."""
+    and draw the same figures: the figure scripts select by quantities and convert what they
+    show."""
     study = find_studies(STUDIES)[name]
     stored = run_study(name, resolution) / "results" / name
     assert _store_in_other_units(stored, tmp_path / "other") > 0
     module = study.figures_module()
     ours, in_other_units = module.ours(stored), module.ours(tmp_path / "other")
     assert in_other_units == pytest.approx(ours, rel=1e-9, nan_ok=True)
-    (tmp_path / "redrawn").mkdir()
-    module.draw(tmp_path / "other", tmp_path / "redrawn")
-    assert sorted(p.name for p in (tmp_path / "redrawn").iterdir()) == sorted(module.FIGURES)
+    with kept_figures(saved=False) as redrawn:
+        study.figures_module().draw(tmp_path / "other", tmp_path)
+    assert sorted(redrawn) == sorted(module.FIGURES)
+    for file, figure in redrawn.items():  # the same quantities, in the units the axes state
+        drawn_first = _drawn_values(study_figures[name, stored][file])
+        drawn_again = _drawn_values(figure)
+        assert len(drawn_again) == len(drawn_first), file
+        for (again, units_again), (first, units_first) in zip(drawn_again, drawn_first):
+            for column, (unit, unit_first) in enumerate(zip(units_again, units_first)):
+                if unit != unit_first:  # UDUNITS' conversion, not the plotting code's
+                    again[:, column] = cf_units.Unit(unit).convert(again[:, column],
+                                                                   cf_units.Unit(unit_first))
+            np.testing.assert_allclose(again, first, rtol=1e-9, err_msg=file)
+
+
+_LABEL_UNIT = re.compile(r"\[([^\]]+)\]\s*$")
+
+
+def _drawn_values(figure) -> list[tuple[np.ndarray, tuple]]:
+    """What ``figure`` draws, panel by panel, each with the units its axes state (``None``
+    where a label states none), as (points, (x unit, y unit)): each line's points, each
+    bar's corner and size, each scatter's points."""
+    drawn = []
+    for axis in figure.axes:
+        stated = tuple(_stated_unit(axis, name) for name in "xy")
+        points = [line.get_xydata() for line in axis.get_lines()
+                  if line.get_transform() == axis.transData]  # not a line across the panel
+        points += [np.reshape(patch.get_bbox().bounds, (2, 2)) for patch in axis.patches
+                   if patch.get_data_transform() == axis.transData]
+        points += [collection.get_offsets() for collection in axis.collections]
+        drawn += [(np.array(p, dtype=float), stated) for p in points]
+    return drawn
+
+
+def _stated_unit(axis, name: str) -> str | None:
+    """The unit the label of ``axis``'s x or y axis (``name``) states, or that of an axis it
+    shares (a twin's), or None."""
+    shared = getattr(axis, f"get_shared_{name}_axes")().get_siblings(axis)
+    for label in [getattr(a, f"get_{name}label")() for a in [axis, *shared]]:
+        if found := _LABEL_UNIT.search(label):
+            return found[1]
+    return None
 
 
 @pytest.fixture(scope="module")
