@@ -1,6 +1,7 @@
 """A zarr run's store is the one xarray's ``to_zarr`` writes of the same result: the same
 metadata (every array's and the group's) and the same values, bit for bit."""
 import json
+import math
 from pathlib import Path
 
 import numpy as np
@@ -18,16 +19,19 @@ DEFINITIONS = Path(__file__).parents[1] / "data" / "every_model"
 MODELS = sorted(all_models())
 STRUCTURES = sorted((Path(__file__).parents[1] / "data" / "structure").glob("*.toml"))
 
-#: Points per chunk: several zarr chunks along the grid's axes.
-CHUNK = 3
+def points_per_chunk(grid) -> int:
+    """Several zarr chunks along the grid's axes, a partial one among them, and no more than
+    about 16 in all."""
+    return max(3, math.prod(grid.shape) // 16)
 
 
 def xarray_store(sweep, executor, path):
     """The sweep computed in memory and written by xarray, each output and the status in the
-    zarr chunks, type, fill value and codecs of the store of a run in chunks of ``CHUNK``."""
+    zarr chunks, type, fill value and codecs of the store of a run in chunks of
+    ``points_per_chunk``."""
     dataset = run_sweep(sweep, None, executor, progress=False).dataset
     grid = Grid.from_sweep(sweep)
-    sizes = dict(zip(grid.dims, block_shape(grid.shape, CHUNK)))
+    sizes = dict(zip(grid.dims, block_shape(grid.shape, points_per_chunk(grid))))
     for name in [o.name for o in grid.model.outputs] + ["status"]:
         variable = dataset[name]
         kept = {key: value for key, value in variable.encoding.items()
@@ -48,7 +52,8 @@ def stores(tmp_path_factory):
         for definition in [DEFINITIONS / f"{name}.toml" for name in MODELS] + STRUCTURES:
             sweep, name = spec.load(definition), definition.stem
             ours = folder / f"{name}.zarr"
-            run_sweep(sweep, ours, executor, chunk_size=CHUNK, progress=False)
+            run_sweep(sweep, ours, executor, chunk_size=points_per_chunk(Grid.from_sweep(sweep)),
+                      progress=False)
             made[name] = ours, xarray_store(sweep, executor, folder / f"{name}-xarray.zarr")
     return made
 
