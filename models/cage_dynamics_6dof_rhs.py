@@ -395,10 +395,20 @@ _ERROR = np.array([71 / 57600, 0.0, -71 / 16695, 71 / 1920, -17253 / 339200, 22 
 def _normalise(state, count):
     """Project the roller axes and the cage's quaternion back to unit length."""
     for j in range(count):
-        k = RING + ROLLER_SIZE * j + 6
-        state[k:k + 3] /= np.sqrt(np.sum(state[k:k + 3] ** 2))
-    c = RING + ROLLER_SIZE * count + 6
-    state[c:c + 4] /= np.sqrt(np.sum(state[c:c + 4] ** 2))
+        _unit(state, RING + ROLLER_SIZE * j + 6, 3)
+    _unit(state, RING + ROLLER_SIZE * count + 6, 4)
+
+
+@njit(cache=True)
+def _unit(state, start, size):
+    """Divide ``state[start:start + size]`` by its length, element by element (see
+    :func:`_observe`)."""
+    squares = 0.0
+    for i in range(start, start + size):
+        squares += state[i] * state[i]
+    length = np.sqrt(squares)
+    for i in range(start, start + size):
+        state[i] /= length
 
 
 @njit(cache=True)
@@ -412,16 +422,28 @@ def _observe(state, p, count, geometry, record, settled, arc_max, end_min, rib_m
     derivatives(state, p, count, slice_z, arc_theta, arc_z, face_r, face_phi, face_area,
                 arc_force, end_gap, rib_gap, dry, 1.0)
     if not settled:
-        last[:, :] = dry
+        _copy(dry, last)
         return
-    np.maximum(arc_max, arc_force, arc_max)
-    np.fmin(end_min, end_gap, end_min)
-    np.fmin(rib_min, rib_gap, rib_min)
+    # element by element: numba compiles a ufunc over arrays with a message for each
+    # mismatch of shapes, which costs more to compile than the loop
+    for index in np.ndindex(arc_max.shape):
+        arc_max[index] = np.maximum(arc_max[index], arc_force[index])
+    for index in np.ndindex(end_min.shape):
+        end_min[index] = np.fmin(end_min[index], end_gap[index])
+    for index in np.ndindex(rib_min.shape):
+        rib_min[index] = np.fmin(rib_min[index], rib_gap[index])
     for j in range(count):
         for kind in range(3):
             if dry[j, kind] > 0.0 and last[j, kind] == 0.0:
                 events[kind] += 1
-    last[:, :] = dry
+    _copy(dry, last)
+
+
+@njit(cache=True)
+def _copy(source, target):
+    """``target[...] = source``, element by element (see :func:`_observe`)."""
+    for index in np.ndindex(source.shape):
+        target[index] = source[index]
 
 
 @njit(cache=True)
@@ -449,10 +471,10 @@ def integrate(state, times, p, count, geometry, record, settled_from, rtol, atol
     samples, arc_max, end_min, rib_min, last, events = _accumulators(times, state, record)
     y = state.copy()
     stages = np.empty((7, y.size))
-    stages[0] = derivatives(y, p, count, slice_z, arc_theta, arc_z, face_r, face_phi,
-                            face_area, arc_force, end_gap, rib_gap, dry, 0.0)
+    _copy(derivatives(y, p, count, slice_z, arc_theta, arc_z, face_r, face_phi, face_area,
+                      arc_force, end_gap, rib_gap, dry, 0.0), stages[0])
     t, h, steps, last_norm = times[0], 1e-7, 0, 1e-4
-    samples[0] = y
+    _copy(y, samples[0])
     _observe(y, p, count, geometry, record, t >= settled_from, arc_max, end_min, rib_min,
              last, events)
     for index in range(1, times.size):
@@ -464,16 +486,20 @@ def integrate(state, times, p, count, geometry, record, settled_from, rtol, atol
                 trial = y.copy()
                 for r in range(s):
                     if _A[s, r] != 0.0:
-                        trial += step * _A[s, r] * stages[r]
-                stages[s] = derivatives(trial, p, count, slice_z, arc_theta, arc_z, face_r,
-                                        face_phi, face_area, arc_force, end_gap, rib_gap, dry,
-                                        0.0)
+                        weight = step * _A[s, r]
+                        for i in range(y.size):
+                            trial[i] += weight * stages[r, i]
+                _copy(derivatives(trial, p, count, slice_z, arc_theta, arc_z, face_r, face_phi,
+                                  face_area, arc_force, end_gap, rib_gap, dry, 0.0), stages[s])
             # the 6th stage's argument is the 5th-order solution (first same as last)
-            error = np.zeros_like(y)
-            for s in range(7):
-                error += step * _ERROR[s] * stages[s]
-            scale = atol + rtol * np.maximum(np.abs(y), np.abs(trial))
-            norm = np.sqrt(np.mean((error / scale) ** 2))
+            squares = 0.0
+            for i in range(y.size):
+                error = 0.0
+                for s in range(7):
+                    error += step * _ERROR[s] * stages[s, i]
+                scaled = error / (atol[i] + rtol * np.maximum(abs(y[i]), abs(trial[i])))
+                squares += scaled * scaled
+            norm = np.sqrt(squares / y.size)
             steps += 1
             if not np.isfinite(norm):
                 h = 0.1 * step
@@ -482,13 +508,13 @@ def integrate(state, times, p, count, geometry, record, settled_from, rtol, atol
                 t = t + step if step < times[index] - t else times[index]
                 y = trial
                 _normalise(y, count)
-                stages[0] = stages[6]
+                _copy(stages[6], stages[0])
                 norm = max(norm, 1e-4)
                 h = step * min(5.0, max(0.2, 0.9 * norm ** -0.17 * last_norm ** 0.04))
                 last_norm = norm
             else:
                 h = step * max(0.2, 0.9 * norm ** -0.17)
-        samples[index] = y
+        _copy(y, samples[index])
         _observe(y, p, count, geometry, record, t >= settled_from, arc_max, end_min,
                  rib_min, last, events)
     return samples, arc_max, end_min, rib_min, events, steps, True
@@ -500,7 +526,7 @@ def integrate_fixed(state, times, p, count, geometry, record, settled_from, step
     method, 1e-7 s); the same samples and extremes as :func:`integrate`."""
     samples, arc_max, end_min, rib_min, last, events = _accumulators(times, state, record)
     y = state.copy()
-    samples[0] = y
+    _copy(y, samples[0])
     _observe(y, p, count, geometry, record, times[0] >= settled_from, arc_max, end_min,
              rib_min, last, events)
     steps = 0
@@ -517,7 +543,7 @@ def integrate_fixed(state, times, p, count, geometry, record, settled_from, step
             steps += 1
         if not np.all(np.isfinite(y)):
             return samples, arc_max, end_min, rib_min, events, steps, False
-        samples[index] = y
+        _copy(y, samples[index])
         _observe(y, p, count, geometry, record, times[index] >= settled_from, arc_max,
                  end_min, rib_min, last, events)
     return samples, arc_max, end_min, rib_min, events, steps, True

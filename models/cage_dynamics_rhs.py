@@ -129,6 +129,8 @@ def jacobian(t, state, p, count, scale):
     for i in range(size):
         step = 1.5e-8 * max(abs(state[i]), scale[i])
         shifted[i] = state[i] + step
-        matrix[:, i] = (derivatives(t, shifted, p, count) - base) / step
+        column = derivatives(t, shifted, p, count)
+        for row in range(size):  # element by element: array arithmetic compiles slower
+            matrix[row, i] = (column[row] - base[row]) / step
         shifted[i] = state[i]
     return matrix

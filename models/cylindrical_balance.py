@@ -294,7 +294,9 @@ def ring_balances(load, lower, upper, preloaded, perturbation, cos, half_clearan
                 break
         displacement[p], converged[p], rollers_converged[p] = d, ok, rollers_ok
         if math.isfinite(perturbation[p]):
-            moved[:] = split[p]
+            for j in range(rollers):  # element by element: a copy of arrays compiles slower
+                for k in range(3):
+                    moved[j, k] = split[p, j, k]
             perturbed_load[p], perturbed_stiffness[p], _ = bearing_balance(
                 d + perturbation[p], *args, moved, spare_load, spare_deflection, work, roots,
                 state)
