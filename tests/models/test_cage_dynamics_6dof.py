@@ -3,8 +3,8 @@ perfect bearing, conservation of energy and momentum, the third law, mirror symm
 closed-form Winkler integral, the planar model, its integrator's tolerance and the engine's
 chunking (issue 13, section 3).
 
-Runs are short and share fixtures: the file's cost is the model's first compile (about 30 s
-in a fresh clone) and about 18 ms of bearing time (about 15 s once compiled).
+Runs are short and share fixtures: the file's cost is the model's first compile in a fresh
+clone and about 18 ms of bearing time.
 """
 import inspect
 

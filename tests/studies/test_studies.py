@@ -243,8 +243,7 @@ def _stated_unit(axis, name: str) -> str | None:
 @pytest.fixture(scope="module")
 def short_3d_results(tmp_path_factory):
     """The cage_dynamics_3d study's own sweeps cut to 2 ms with coarse elements: the model's
-    real output for its figure script, in seconds (its full sweeps take minutes; the model's
-    first compile in a fresh checkout about 30 s)."""
+    real output for its figure script, in seconds (its full sweeps take minutes)."""
     folder = tmp_path_factory.mktemp("cage_dynamics_3d")
     coarse = ('duration = "2 ms"\noutput_interval = "0.1 ms"\nslices = 4\narc_axial_points = 2\n'
               'arc_angle_points = 2\nface_rings = 2\nface_angles = 6')

@@ -88,10 +88,10 @@ def test_study_runs_what_is_stale_draws_and_reports(tmp_path, four_points, run_c
     assert first.returncode == 0, first.stderr
     assert (tmp_path / "results" / "tiny" / "loads.nc").exists()
     assert (tmp_path / "figures" / "tiny" / "stiffness.png").exists()
-    second = run_cli("study", "all", cwd=tmp_path)
+    second = run_cli("study", "all", "--workers", "0", cwd=tmp_path)
     assert "loads.toml: up to date" in second.stdout
     (study / "loads.toml").write_text(four_points.replace('"4 kN"', '"5 kN"'))
-    third = run_cli("study", "tiny", cwd=tmp_path)
+    third = run_cli("study", "tiny", "--workers", "0", cwd=tmp_path)
     assert "crb_radial: 4 points" in third.stdout  # a changed definition is stale
     report = run_cli("report", cwd=tmp_path)
     assert report.returncode == 0, report.stderr
