@@ -275,19 +275,19 @@ def results(tmp_path_factory):
 def test_an_analysis_of_every_design_reads_back_as_netcdf_and_zarr(results, tmp_path,
                                                                    assert_cf_labelled):
     formats = ((".nc", "netcdf4"), (".zarr", "zarr"), (".ZARR", "zarr"))
-    for index, (name, path) in enumerate(results.items()):  # each format in turn
-        for suffix, engine in [formats[index % len(formats)]]:
-            output = tmp_path / f"{name}_analysis{suffix}"
-            analyzed = bearing_sweep.analyze(path, output=output)
-            assert output.is_dir() == (engine == "zarr"), output
-            with xr.open_dataset(output, engine=engine) as written:
-                xr.testing.assert_identical(written.load(), analyzed)
-            assert_cf_labelled(analyzed)
-            for variable in {**analyzed.coords, **analyzed.data_vars}.values():
-                if "flag_values" in variable.attrs:  # CF 3.5: of the variable's type
-                    assert np.asarray(variable.attrs["flag_values"]).dtype == variable.dtype
-            assert set(analyzed.valid_samples.attrs) == {"long_name", "units", "comment"}
-            assert analyzed.roller_load.dims[-1] == "roller"
+    for index, (name, path) in enumerate(results.items()):
+        suffix, engine = formats[index % len(formats)]  # each format in turn
+        output = tmp_path / f"{name}_analysis{suffix}"
+        analyzed = bearing_sweep.analyze(path, output=output)
+        assert output.is_dir() == (engine == "zarr"), output
+        with xr.open_dataset(output, engine=engine) as written:
+            xr.testing.assert_identical(written.load(), analyzed)
+        assert_cf_labelled(analyzed)
+        for variable in {**analyzed.coords, **analyzed.data_vars}.values():
+            if "flag_values" in variable.attrs:  # CF 3.5: of the variable's type
+                assert np.asarray(variable.attrs["flag_values"]).dtype == variable.dtype
+        assert set(analyzed.valid_samples.attrs) == {"long_name", "units", "comment"}
+        assert analyzed.roller_load.dims[-1] == "roller"
         assert ("first_order" in analyzed) == name.startswith("saltelli")
         assert list(tmp_path.glob(".*")) == []  # nothing left beside the outputs
 

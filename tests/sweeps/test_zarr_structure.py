@@ -19,10 +19,11 @@ DEFINITIONS = Path(__file__).parents[1] / "data" / "every_model"
 MODELS = sorted(all_models())
 STRUCTURES = sorted((Path(__file__).parents[1] / "data" / "structure").glob("*.toml"))
 
+
 def points_per_chunk(grid) -> int:
-    """Several zarr chunks along the grid's axes, a partial one among them, and no more than
-    about 16 in all."""
-    return max(3, math.prod(grid.shape) // 16)
+    """Several zarr chunks along the grid's axes: three points each, or on a long sample
+    axis 16 chunks, the last one partial."""
+    return max(3, math.prod(grid.shape) // 16 + 1)
 
 
 def xarray_store(sweep, executor, path):
