@@ -11,7 +11,7 @@ ifneq ($(FILES),$(shell cat $(VENV)/.files 2>/dev/null))
 .PHONY: $(STAMP)
 endif
 
-.PHONY: test test-slow reproduce bench clean
+.PHONY: test test-slow reproduce docs bench clean
 
 $(STAMP): pyproject.toml
 	python3 -m venv $(VENV)
@@ -30,6 +30,19 @@ test: $(STAMP)
 test-slow: $(STAMP)
 	$(PYTHON) -m pytest -q -m slow
 
+# The documentation's tools, beside the test extras (made again when pyproject.toml changes).
+$(VENV)/.docs-installed: pyproject.toml | $(STAMP)
+	$(PYTHON) -m pip install --quiet --disable-pip-version-check \
+		--config-settings editable_mode=strict -e '.[test,docs]'
+	touch $@
+
+# `make docs`: the studies' figures and report (what is missing or stale), the pages written
+# from the code, every example run, then the site in docs/_build/html; a warning is an error.
+docs: $(VENV)/.docs-installed
+	$(VENV)/bin/bearing-sweep study all
+	$(VENV)/bin/bearing-sweep report
+	$(PYTHON) -m sphinx -W --keep-going -q -b html docs docs/_build/html
+
 reproduce: $(STAMP)
 	$(VENV)/bin/bearing-sweep study all
 	$(VENV)/bin/bearing-sweep report
@@ -38,4 +51,4 @@ bench: $(STAMP)
 	$(PYTHON) benchmarks/run_all.py
 
 clean:
-	rm -rf results figures .pytest_cache
+	rm -rf results figures .pytest_cache docs/_build docs/generated

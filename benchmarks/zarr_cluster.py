@@ -1,7 +1,7 @@
 """Cluster scale: a crb_radial sweep written to a zarr store on an external ``dask scheduler``.
 
 A ``dask scheduler`` and two ``dask worker`` processes (with their nannies, as on a real
-cluster) run on 127.0.0.1 from a temporary folder, with the workers' environment the README
+cluster) run on 127.0.0.1 from a temporary folder, with the workers' environment the user guide
 recommends (``DASK_CONFIG``: no malloc trim threshold). Two measurements:
 
 1. Time per point: the same sweep to a zarr store on the external cluster, and to a netCDF file
@@ -56,7 +56,7 @@ TIMED, SMALL, LARGE = 400, 100, 400
 #: default chunking makes them in a large sweep (``evaluate.CHUNK_SECONDS``: 20000 points).
 CHUNK = 10000
 PAIRS = 3
-#: What the README asks of a cluster's workers: dask's nanny would otherwise set
+#: What the user guide asks of a cluster's workers: dask's nanny would otherwise set
 #: MALLOC_TRIM_THRESHOLD_=65536, which doubles the model's time (see executor.Executor.connect).
 WORKER_CONFIG = """
 distributed:

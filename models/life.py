@@ -1,5 +1,6 @@
-"""Rating life of rolling bearings: ISO 281 from an equivalent load, ISO/TS 16281 from the
-rolling-element loads a model computes, and the life modification factor a_ISO.
+"""Rating life of rolling bearings: ISO 281 [ISO281]_ from an equivalent load, ISO/TS 16281
+[TS16281]_ from the rolling-element loads a model computes, and the life modification factor
+a_ISO.
 
 Shared by every model that loads rolling elements. Element loads are arrays whose last axis
 runs over the rolling elements (balls), or whose last two axes run over the rolling elements

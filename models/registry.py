@@ -41,7 +41,7 @@ STATUS_MEANINGS = ("converged", "not_converged", "infeasible", "model_error",
 STATUS_VALUES = (CONVERGED, NOT_CONVERGED, INFEASIBLE, MODEL_ERROR, OUT_OF_VALIDITY,
                  NO_ROOT_IN_RANGE)
 STATUS_MASKS = (OUTCOME_MASK,) * 4 + (VALIDITY_MASK, OUTCOME_MASK)
-#: What each status says of a point, for ``describe``, the README and the netCDF ``comment``.
+#: What each status says of a point, for ``describe``, the documentation and the netCDF ``comment``.
 STATUS_DESCRIPTIONS = {
     "converged": "solved; the values hold",
     "not_converged": "the solver stopped without meeting its tolerance; outputs are NaN",

@@ -21,6 +21,7 @@ from .stores.paths import ZARR_SUFFIX, argument_text, check_output, is_zarr, pat
 from .stores.zarr import write_dataset as write_zarr
 from .definition.output import storage_options
 from .spec import SpecError, Sweep
+from .tables import ModelDescription, ModelList
 
 if TYPE_CHECKING:  # xarray only once a dataset is made or read: `bearing-sweep run` needs none
     import xarray as xr
@@ -241,20 +242,22 @@ def _check_analysis_output(output):
                         + (f"not {suffix}" if suffix else "this name has none"))
 
 
-def list_models() -> list[dict]:
+def list_models() -> ModelList:
     """The registered models, one dict each: ``name``, ``summary``, ``reference``,
-    ``version`` (a table's rows: ``pandas.DataFrame(list_models())``, for one)."""
-    return [{"name": m.name, "summary": m.summary, "reference": m.reference,
-             "version": m.version} for m in all_models().values()]
+    ``version``; a list that shows as a table in a notebook (``.to_dataframe()``: a
+    pandas DataFrame)."""
+    return ModelList({"name": m.name, "summary": m.summary, "reference": m.reference,
+                      "version": m.version} for m in all_models().values())
 
 
-def describe(name: str) -> dict:
+def describe(name: str) -> ModelDescription:
     """One model's declaration as data, what ``bearing-sweep describe`` prints.
 
     Returns
     -------
-    dict
-        ``name``, ``version``, ``summary``, ``reference``, ``function`` (the import path of
+    ModelDescription
+        A dict that shows as tables in a notebook (``.to_dataframe("inputs")``, or
+        ``"outputs"``: a pandas DataFrame): ``name``, ``version``, ``summary``, ``reference``, ``function`` (the import path of
         the model's function, for direct use on arrays in SI units), ``inputs`` and
         ``outputs`` (lists of dicts: ``name``, ``unit``, ``meaning``, ``dims``; an output also
         ``dtype``, ``"int"`` for one stored as integers; an input also
@@ -273,7 +276,7 @@ def describe(name: str) -> dict:
                         "gives them)")
     model = spec.find_model(name)
     function = model.function
-    return {
+    return ModelDescription({
         "name": model.name, "version": model.version, "summary": model.summary,
         "reference": model.reference, "function": f"{function.__module__}.{function.__qualname__}",
         "inputs": [{"name": i.name, "unit": i.unit, "meaning": i.meaning, "dims": i.dims,
@@ -287,7 +290,7 @@ def describe(name: str) -> dict:
         "validity": model.validity,
         "conditions": [c.message for c in model.constraints],
         "statuses": dict(STATUS_DESCRIPTIONS),
-    }
+    })
 
 
 def _sweep(definition) -> Sweep:

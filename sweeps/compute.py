@@ -59,24 +59,29 @@ class Progress:
         self.done = 0
         self.shown = False
         self.tty = hasattr(self.stream, "isatty") and self.stream.isatty()
+        # A Jupyter kernel's stream is no terminal, but its output area redraws a line on
+        # a carriage return, as a terminal does.
+        self.notebook = type(self.stream).__module__.split(".")[0] == "ipykernel"
+        self.in_place = self.tty or self.notebook
 
     def advance(self, count: int):
         self.done += count
         now = time.monotonic()
         if not self.enabled or now - self.start < 0.5:
             return
-        if self.shown and now - self.last < (0.1 if self.tty else 10.0) and self.done < self.total:
+        interval = 0.1 if self.tty else 0.5 if self.notebook else 10.0
+        if self.shown and now - self.last < interval and self.done < self.total:
             return
         self.last, self.shown = now, True
         fraction = self.done / max(self.total, 1)
         bar = "#" * int(30 * fraction)
         line = (f"{self.label} [{bar:<30}] {self.done}/{self.total} points "
                 f"{now - self.start:.0f} s")
-        self.stream.write(("\r" + line) if self.tty else line + "\n")
+        self.stream.write(("\r" + line) if self.in_place else line + "\n")
         self.stream.flush()
 
     def close(self):
-        if self.shown and self.tty:
+        if self.shown and self.in_place:
             self.stream.write("\n")
             self.stream.flush()
 
@@ -149,6 +154,8 @@ def run_sweep(sweep: Sweep, output=None, executor: Executor | None = None,
             footprint = store.footprint(sum(stop - start for start, stop in todo), workers)
             if parallel:  # the cluster started, its workers of this version
                 _check_workers(executor, model, expected, store.parts)
+                if progress and executor.dashboard():
+                    log(f"dask dashboard: {executor.dashboard()}")
             store.begin(log)
             if footprint is not None and progress and footprint.announced():
                 log(footprint.text(model.name, f"{workers} worker{'s' * (workers != 1)}"

@@ -10,6 +10,7 @@ import os
 import signal
 import socket
 import threading
+import uuid
 from concurrent.futures import ThreadPoolExecutor
 
 from . import evaluate
@@ -255,6 +256,15 @@ class Executor:
                     f"start ({reason}); --workers 0 (workers=0 in Python) computes in this "
                     "process") from None
 
+    def dashboard(self) -> str | None:
+        """The address of the dashboard of the local cluster this executor started, where
+        one is served (dask serves it when bokeh is installed)."""
+        import importlib.util
+
+        if self.cluster is None or importlib.util.find_spec("bokeh") is None:
+            return None
+        return self.cluster.dashboard_link
+
     def describe(self, parallel: bool) -> str:
         if not parallel:
             return "in-process"
@@ -285,11 +295,13 @@ class Executor:
         def submit(start: int, stop: int):
             # The grid travels with every task: scattered data would be lost with a worker
             # that dies, and with it every chunk still to compute.
-            future = client.submit(task, grid, start, stop, pure=False)
+            future = client.submit(task, grid, start, stop, pure=False,
+                                   key=f"{grid.model.name}-points-{start}-{stop}-{run}")
             futures[future] = (start, stop)
             return future
 
         futures = {}
+        run = uuid.uuid4().hex  # a run's own keys: the same chunk of another run is another task
         first = [submit(*chunk) for chunk in itertools.islice(waiting, in_flight)]
         try:
             with client.as_current():  # as_completed looks for the current client

@@ -1,6 +1,6 @@
 """Checks for a model author's own tests, like ``xarray.testing``.
 
-A package that adds models (README "Add your own model") can call these from its tests::
+A package that adds models (docs/user-guide/adding-a-model.md) can call these from its tests::
 
     from bearing_sweep.testing import assert_chunking_invariant, assert_valid_declaration
     from my_bearings.models import MODELS

@@ -1,6 +1,7 @@
 """What several test modules share, as fixtures: bearing D, sweep definitions, the command
 line, toy models, the checks of a refusal and of CF labels, the figures
 a test saved. Test modules import no other test module (pytest imports each by its path)."""
+import importlib.util
 import math
 import os
 import signal
@@ -216,6 +217,22 @@ def run_cli():
     *arguments`` run in ``folder`` (a test's own), a ``CompletedProcess`` (:func:`_run_cli`:
     in this process unless it needs one of its own)."""
     return _run_cli
+
+
+@pytest.fixture(scope="session")
+def docs_module():
+    """``docs_module(name)``: a module of the documentation's build (``docs/_ext/name.py``),
+    loaded from its file: the build is no package."""
+    def load(name):
+        if f"docs_{name}" not in sys.modules:
+            spec = importlib.util.spec_from_file_location(
+                f"docs_{name}", Path(__file__).resolve().parents[1] / "docs" / "_ext"
+                / f"{name}.py")
+            module = importlib.util.module_from_spec(spec)
+            sys.modules[spec.name] = module  # a dataclass looks its module up there
+            spec.loader.exec_module(module)
+        return sys.modules[f"docs_{name}"]
+    return load
 
 
 @pytest.fixture(scope="session")

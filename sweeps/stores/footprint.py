@@ -4,7 +4,7 @@ time, and a result the disk cannot hold refused (:class:`InsufficientSpace`).
 The size is exact before compression: every variable of the result in the type it is stored
 in (``[output]`` encoding, integral outputs as 32-bit integers, ``status`` one byte), on the
 dimensions it is stored on. How much zlib or zstd save depends on the values (0.41 on the
-crb_radial benchmark of README "Output files", nearly nothing on smooth scalars), so before
+crb_radial benchmark of docs/user-guide/output-size.md, nearly nothing on smooth scalars), so before
 computing that size is an upper bound; once chunks are stored, the bytes they took per point
 give an estimate of the rest (:meth:`Footprint.check`). A netCDF result needs its size twice
 until it is complete: the finished chunks are kept as parts beside the file being written (so

@@ -192,6 +192,25 @@ def test_models_and_describe_are_the_registrys_declarations_as_data(capsys):
     assert getattr(importlib.import_module(module), name) is crb_radial  # usable on arrays
 
 
+def test_models_and_a_description_show_as_tables_in_a_notebook():
+    table = bearing_sweep.list_models()
+    html = table._repr_html_()
+    assert html.count("<tr>") == len(table) + 1  # a header and a row per model
+    assert "<td style='text-align:left'>crb_radial</td>" in html
+    frame = table.to_dataframe()
+    assert list(frame.index) == [row["name"] for row in table]
+    assert frame.loc["crb_radial", "version"] == all_models()["crb_radial"].version
+    described = bearing_sweep.describe("crb_radial")
+    html = described._repr_html_()
+    for entry in described["inputs"] + described["outputs"]:
+        assert f"<td style='text-align:left'>{entry['name']}</td>" in html
+    assert "N/mm" in html and "required" in html
+    inputs = described.to_dataframe("inputs")
+    assert inputs.loc["radial_load", "unit"] == "N" and inputs.loc["radial_load", "required"]
+    assert list(described.to_dataframe("outputs").index) == [
+        o["name"] for o in described["outputs"]]
+
+
 def test_an_unknown_model_is_the_clis_line(capsys):
     assert cli.main(["describe", "crb_radail"]) == 2
     line = capsys.readouterr().err.strip()
@@ -209,6 +228,11 @@ def test_chunks_run_on_a_given_client_which_stays_open(tmp_path):
                       dashboard_address=":0") as cluster, Client(cluster) as client:
         data = bearing_sweep.run(TEXT, client=client, progress=False)
         assert client.status == "running"  # the caller's client is left open
+        # The tasks are named by model and points, as the dashboard shows them.
+        keys = [event["key"] for event in client.get_task_stream() if "key" in event] or [
+            key for key in client.run_on_scheduler(
+                lambda dask_scheduler: list(dask_scheduler.task_prefixes))]
+        assert any(str(key).startswith("crb_radial-points") for key in keys), keys
         assert data.attrs["scheduler"] == f"dask client of {cluster.scheduler_address} " \
                                           "(1 workers)"
         numbers = set(expected.attrs) - CIRCUMSTANCES - {

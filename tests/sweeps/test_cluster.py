@@ -331,3 +331,25 @@ def test_a_ctrl_c_that_reaches_a_worker_alone_changes_nothing(tmp_path):
     for name in reference.dataset.data_vars:
         np.testing.assert_array_equal(summary.dataset[name].values,
                                       reference.dataset[name].values, err_msg=name)
+
+
+@pytest.mark.slow
+def test_a_run_that_starts_a_local_cluster_says_where_its_dashboard_is(tmp_path, monkeypatch):
+    import importlib.util
+
+    from bearing_sweep import api, spec
+
+    # dask serves the dashboard where bokeh is installed; it is an optional extra here.
+    real = importlib.util.find_spec
+    monkeypatch.setattr(importlib.util, "find_spec",
+                        lambda name, *args: object() if name == "bokeh" else real(name, *args))
+    (tmp_path / "def.toml").write_text(DEFINITION)
+    said = []
+    api.run(spec.load(tmp_path / "def.toml").text, workers=1, chunk_size=25, log=said.append,
+            summary=said.append)
+    assert any(re.fullmatch(r"dask dashboard: http://127\.0\.0\.1:\d+/status", str(line))
+               for line in said), said
+    said.clear()
+    api.run(spec.load(tmp_path / "def.toml").text, workers=0, log=said.append,
+            summary=said.append)  # in this process: no cluster, no dashboard
+    assert not any("dashboard" in str(line) for line in said), said

@@ -284,13 +284,15 @@ def test_a_zarr_store_converted_by_xarray_passes_the_cf_checker(cf_checker, name
     store_path = tmp_path / f"{name}.zarr"
     with Executor(workers=0) as executor:
         run_sweep(spec.load(definition), store_path, executor, progress=False)
-    # As README's "Files and the tools that read them" says to convert a store.
+    # As the user guide's "Outputs" page says to convert a store.
     data = xr.open_zarr(store_path)
     for variable in data.variables.values():  # zarr keeps attributes as JSON: flags to type
         variable.attrs.update({key: np.asarray(value, variable.dtype)
                                for key, value in variable.attrs.items()
                                if key in ("flag_values", "flag_masks")})
         variable.encoding.pop("compressors", None)  # zarr's codecs are not netCDF's
+        if "dtype" in variable.encoding:  # zarr states little-endian, netCDF4 wants native
+            variable.encoding["dtype"] = variable.encoding["dtype"].newbyteorder("=")
     data.to_netcdf(tmp_path / f"{name}.nc",
                    encoding={name: {"_FillValue": None} for name in data.coords})
     data.close()

@@ -1,7 +1,7 @@
 """Models from other packages: found through the entry-point group ``bearing_sweep.models``,
 swept through the CLI and the engine; a broken plug-in is one line and hides no other model.
 
-The third-party package is the README's "Add your own model" example, laid out as an installed
+The third-party package is the user guide's "Add your own model" example, laid out as an installed
 distribution (its module and a ``*.dist-info`` with the entry points of its pyproject) in a
 folder put on the path: importlib.metadata finds distributions on ``sys.path``.
 """
@@ -24,17 +24,18 @@ from bearing_sweep.models.registry import Input, Model, Output
 from bearing_sweep.testing import assert_chunking_invariant, assert_valid_declaration
 
 ROOT = Path(__file__).resolve().parents[2]
-README = (ROOT / "README.md").read_text()
+GUIDE_PAGE = (ROOT / "docs" / "user-guide" / "adding-a-model.md").read_text()
 
-#: What the README example's springs.toml gives: deflection [mm] by load (1, 2 kN) and
+
+#: What the guide's example's springs.toml gives: deflection [mm] by load (1, 2 kN) and
 #: springs (1, 3) at 50 N/mm per spring (1000 N / 50 N/mm = 20 mm per spring).
 DEFLECTION_MM = [[20.0, 60.0], [40.0, 120.0]]
 
 
 def readme_example() -> dict[str, str]:
-    """The files of the README's "Add your own model" example, by the path on their first
+    """The files of the guide's "Add your own model" example, by the path on their first
     line."""
-    section = README.split("\n## Add your own model\n", 1)[1].split("\n## ", 1)[0]
+    section = GUIDE_PAGE
     files = {}
     for block in re.findall(r"```\w+\n(.*?)```", section, flags=re.S):
         first_line = block.split("\n", 1)[0]
@@ -42,20 +43,14 @@ def readme_example() -> dict[str, str]:
     return files
 
 
-def lay_out_distribution(folder: Path, pyproject: str, files: dict[str, str]) -> Path:
+def lay_out_distribution(folder: Path, pyproject: str, files: dict[str, str],
+                         doc_examples) -> Path:
     """``files`` (path -> text) in ``folder``, and the dist-info an install of ``pyproject``
-    would write there: its name, version and entry points."""
-    project = tomllib.loads(pyproject)["project"]
+    would write there, as the documentation's build (``doc_examples``) lays out its example."""
     for relative, text in files.items():
         (folder / relative).parent.mkdir(parents=True, exist_ok=True)
         (folder / relative).write_text(textwrap.dedent(text))
-    info = folder / f"{project['name'].replace('-', '_')}-{project['version']}.dist-info"
-    info.mkdir(parents=True)
-    (info / "METADATA").write_text(f"Metadata-Version: 2.1\nName: {project['name']}\n"
-                                   f"Version: {project['version']}\n")
-    (info / "entry_points.txt").write_text("".join(
-        f"[{group}]\n" + "".join(f"{name} = {value}\n" for name, value in entries.items())
-        for group, entries in project.get("entry-points", {}).items()))
+    doc_examples.write_distribution_info(folder, pyproject)
     return folder
 
 
@@ -68,16 +63,16 @@ def plugin_pyproject(name: str, entry_point: str) -> str:
 
 
 def example_package() -> dict[str, str]:
-    """The README example's package: its module, and the empty ``__init__.py`` it names."""
+    """The guide's example's package: its module, and the empty ``__init__.py`` it names."""
     return {"my_bearings/__init__.py": "",
             "my_bearings/springs.py": readme_example()["my_bearings/springs.py"]}
 
 
 @pytest.fixture
-def site(tmp_path):
-    """A folder holding the README example installed, as ``sys.path`` would see it."""
+def site(tmp_path, docs_module):
+    """A folder holding the guide's example installed, as ``sys.path`` would see it."""
     return lay_out_distribution(tmp_path / "site", readme_example()["pyproject.toml"],
-                                example_package())
+                                example_package(), docs_module("doc_examples"))
 
 
 @pytest.fixture
@@ -193,7 +188,7 @@ def test_the_testing_helpers_pass_the_readme_example(site, discover, tmp_path):
     assert_chunking_invariant(readme_example()["springs.toml"], tmp_path)
 
 
-# A broken plug-in beside the README's: (module text, entry point, words of its line).
+# A broken plug-in beside the guide's: (module text, entry point, words of its line).
 CLASHING = """
     from bearing_sweep.models.registry import Input, Model, Output
     from my_bearings.springs import spring_stack
@@ -229,10 +224,10 @@ BROKEN = {
 
 
 @pytest.fixture(params=sorted(BROKEN))
-def broken_site(request, tmp_path):
+def broken_site(request, tmp_path, docs_module):
     text, entry_point, words = BROKEN[request.param]
     folder = lay_out_distribution(tmp_path / "site_broken", plugin_pyproject(
-        "broken-plugin", entry_point), {"broken_module.py": text})
+        "broken-plugin", entry_point), {"broken_module.py": text}, docs_module("doc_examples"))
     return folder, words
 
 
@@ -259,7 +254,7 @@ def test_the_cli_shows_a_broken_plugin_as_one_line(site, broken_site, tmp_path, 
     assert "spring_stack:" in listed.stdout and "crb_radial:" in listed.stdout
 
 
-def test_an_entry_point_may_name_one_model(site, discover, tmp_path):
+def test_an_entry_point_may_name_one_model(site, discover, tmp_path, docs_module):
     folder = lay_out_distribution(tmp_path / "site_single", plugin_pyproject(
         "single-model", "single = single_module:DOUBLED"), {"single_module.py": """
             from bearing_sweep.models.registry import Input, Model, Output
@@ -269,7 +264,7 @@ def test_an_entry_point_may_name_one_model(site, discover, tmp_path):
 
             DOUBLED = Model("doubled", doubled, "twice x", "none", "1",
                             (Input("x", "1", "x", kind="number"),), (Output("y", "1", "y"),))
-        """})
+        """}, docs_module("doc_examples"))
     assert discover(site, folder)["doubled"].function.__module__ == "single_module"
 
 

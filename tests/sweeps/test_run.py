@@ -152,6 +152,39 @@ def test_progress_appears_only_after_a_moment(monkeypatch):
     assert lines[-1].startswith("crb_radial [##############################] 100/100 points 30 s")
 
 
+def test_in_a_notebook_the_bar_is_redrawn_in_place(monkeypatch):
+    import io
+
+    import bearing_sweep.compute as compute
+
+    class KernelStream(io.StringIO):  # what ipykernel gives a notebook as sys.stderr
+        __module__ = "ipykernel.iostream"
+
+        def isatty(self):
+            return False
+
+    clock = Clock()
+    monkeypatch.setattr(compute.time, "monotonic", clock)
+    stream = KernelStream()
+    bar = compute.Progress(100, "crb_radial", stream=stream)
+    for now in (1.0, 1.2, 1.8, 2.5):  # every half second at most, not every 10 s
+        clock.now = now
+        bar.advance(10)
+    bar.close()
+    assert stream.getvalue() == (  # 1.2 s is too soon after 1.0 s
+        "\rcrb_radial [###                           ] 10/100 points 1 s"
+        "\rcrb_radial [#########                     ] 30/100 points 2 s"
+        "\rcrb_radial [############                  ] 40/100 points 2 s\n")
+    plain = io.StringIO()  # a file or a pipe: a line every 10 s, as before
+    clock.now = 0.0
+    bar = compute.Progress(100, "crb_radial", stream=plain)
+    for now in (1.0, 1.2, 1.8, 2.5):
+        clock.now = now
+        bar.advance(10)
+    bar.close()
+    assert plain.getvalue() == "crb_radial [###                           ] 10/100 points 1 s\n"
+
+
 def test_points_out_of_validity_keep_their_values_and_failures_are_nan(tmp_path, monkeypatch):
     model = registry.get_model("crb_radial")
     original = model.function
