@@ -16,7 +16,7 @@ endif
 $(STAMP): pyproject.toml
 	python3 -m venv $(VENV)
 	$(PYTHON) -m pip install --quiet --disable-pip-version-check \
-		--config-settings editable_mode=strict -e '.[test]'
+		--config-settings editable_mode=strict -e '.[test,explore]'
 	echo '$(FILES)' > $(VENV)/.files
 	touch $(STAMP)
 
@@ -33,7 +33,7 @@ test-slow: $(STAMP)
 # The documentation's tools, beside the test extras (made again when pyproject.toml changes).
 $(VENV)/.docs-installed: pyproject.toml | $(STAMP)
 	$(PYTHON) -m pip install --quiet --disable-pip-version-check \
-		--config-settings editable_mode=strict -e '.[test,docs]'
+		--config-settings editable_mode=strict -e '.[test,explore,docs]'
 	touch $@
 
 # `make docs`: the studies' figures and report (what is missing or stale), the pages written

@@ -11,7 +11,7 @@ import sys
 #: and matplotlib (plot's) cost more to import than a small sweep takes to run, and pint
 #: (the definitions') a good part of what the program takes to start.
 _LAZY = {"run": "api", "check": "api", "analyze": "api", "list_models": "api",
-         "describe": "api", "plot": "quicklook", "SpecError": "spec"}
+         "describe": "api", "plot": "quicklook", "explore": "explorer", "SpecError": "spec"}
 
 
 def program(argv=None) -> int:
@@ -72,5 +72,5 @@ def __dir__():
     return sorted(__all__)
 
 
-__all__ = ["run", "check", "analyze", "list_models", "describe", "plot", "SpecError",
+__all__ = ["run", "check", "analyze", "list_models", "describe", "plot", "explore", "SpecError",
            "__version__"]

@@ -18,7 +18,7 @@ from .compute import WorkerMismatch
 from .executor import ClusterFailure, Executor
 from .dependence import InconsistentOutput
 from .interrupts import Terminated, interruption, terminated_as_interrupt
-from .definition.tables import suggestion
+from .definition.tables import MissingExtra, suggestion
 from .spec import SpecError
 
 #: Exit status for a mistake in the user's input (a definition, a name, an option).
@@ -101,6 +101,17 @@ def _parser() -> argparse.ArgumentParser:
     plot.add_argument("-o", "--output", type=Path, metavar="FIGURE",
                       help="the figure to write, .png, .pdf or .svg (default: RESULT.png "
                            "beside the result)")
+    explore_command = commands.add_parser(
+        "explore", help="write an interactive page of a result: a slider per axis, the chosen "
+        "output against the chosen axis (needs the extra bearing-sweep[explore])")
+    explore_command.add_argument("result", type=Path, help="a netCDF file (or zarr store) "
+                                 "written by bearing-sweep run")
+    explore_command.add_argument("variables", nargs="*", metavar="OUTPUT",
+                                 help="the outputs the page offers (default: every output "
+                                      "with one value per point)")
+    explore_command.add_argument("-o", "--output", type=Path, metavar="PAGE",
+                                 help="the page to write, .html (default: RESULT.html beside "
+                                      "the result)")
     for command in commands.choices.values():
         if command.prog.split()[-1] in ("study", "report"):
             command.add_argument("--studies", type=Path, default=None,
@@ -245,6 +256,11 @@ def main(argv=None) -> int:
 
             quicklook.plot(args.result, args.variable, x=args.x, output=output)
             print(f"wrote {output}")
+        elif args.command == "explore":
+            from . import explorer  # bokeh only for who explores
+
+            page = explorer.explore(args.result, args.variables or None, output=args.output)
+            print(f"wrote {page}")
         elif args.command == "run":
             output = args.output or Path("results") / f"{args.definition.stem}.nc"
             api.run(args.definition, output=output, scheduler=args.scheduler or None,
@@ -281,7 +297,8 @@ def main(argv=None) -> int:
     except SpecError as error:
         print(f"error: {error}", file=sys.stderr)
         return USAGE_ERROR
-    except (WorkerMismatch, ClusterFailure) as error:  # the cluster, not the input, is at fault
+    # The cluster or the installation, not the input, is at fault.
+    except (WorkerMismatch, ClusterFailure, MissingExtra) as error:
         print(f"error: {error}", file=sys.stderr)
         return 1
     except InconsistentOutput as error:  # the model's declaration, not the input, is at fault

@@ -405,41 +405,44 @@ def _choose(name: str, options: list, what: str) -> str:
     return name
 
 
-def check_figure_path(output, result=None) -> Path:
+def check_figure_path(output, result=None, formats=FORMATS, what="a figure",
+                      mark=MAKER) -> Path:
     """Refuse a figure path that must not be written: the result itself, a folder or any
-    other kind of file than a regular one, a suffix other than ``FORMATS``', an existing file
-    that is not a figure of that format, a folder that does not exist, a path inside a zarr
-    store or a parts folder (:func:`stores.paths.check_outside_results`)."""
+    other kind of file than a regular one, a suffix other than ``formats``', an existing file
+    that is not ``what`` of that format carrying ``mark`` (:func:`ours`), a folder that does
+    not exist, a path inside a zarr store or a parts folder
+    (:func:`stores.paths.check_outside_results`)."""
     check_outside_results(output)
     output = Path(output)
     if result is not None and output.exists() and output.resolve() == Path(result).resolve():
-        raise SpecError(f"{output}: is the result itself; choose another figure path")
+        raise SpecError(f"{output}: is the result itself; choose another path for {what}")
     suffix = output.suffix.lower()
-    if suffix not in FORMATS:
-        raise SpecError(f"{output}: a figure is written as {', '.join(FORMATS)} (by its "
+    if suffix not in formats:
+        raise SpecError(f"{output}: {what} is written as {', '.join(formats)} (by its "
                         "suffix)")
     if output.is_symlink() or (output.exists() and not output.is_file()):
         raise SpecError(f"{output}: exists and is not a regular file; refusing to replace it")
-    if output.exists() and not ours(output):
-        raise SpecError(f"{output}: exists and is not a {suffix[1:].upper()} figure written by "
-                        "bearing-sweep; refusing to replace it (remove it or choose another "
-                        "path)")
+    if output.exists() and not ours(output, formats, mark):
+        kind = what.split(" ", 1)[1]
+        raise SpecError(f"{output}: exists and is not {'an' if suffix[1] in 'aehs' else 'a'} "
+                        f"{suffix[1:].upper()} {kind} written by bearing-sweep; refusing to "
+                        "replace it (remove it or choose another path)")
     if not output.parent.is_dir():
         raise SpecError(f"{output}: its folder {output.parent} does not exist")
     return output
 
 
-def ours(path: Path) -> bool:
-    """Whether the figure file at ``path`` was written by this program: of its format by its
-    first bytes, and carrying :data:`plotting.MAKER` among its metadata (PNG's Software, PDF's
-    and SVG's Creator), which no other program writes."""
+def ours(path: Path, formats=FORMATS, mark=MAKER) -> bool:
+    """Whether the file at ``path`` was written by this program: of its format by its first
+    bytes (``formats``), and carrying ``mark`` (a figure: :data:`plotting.MAKER` among its
+    metadata, PNG's Software, PDF's and SVG's Creator, which no other program writes)."""
     suffix = path.suffix.lower()
     try:
         with open(path, "rb") as handle:
             content = handle.read(MOST_FIGURE_BYTES)
     except OSError:
         return False
-    return content.startswith(FORMATS.get(suffix, (b"\0",))) and MAKER.encode() in content
+    return content.startswith(formats.get(suffix, (b"\0",))) and mark.encode() in content
 
 
 def _write(figure, output: Path):

@@ -163,3 +163,29 @@ def test_the_examples_runner_fails_on_an_example_that_does_not_run_as_shown(
     else:
         with pytest.raises(examples.ExampleFailed, match=re.escape(problem)):
             examples.run_page("page.md", page, tmp_path)
+
+
+def test_the_notebook_runs_headless_and_shows_tables_and_a_figure(tmp_path):
+    import nbformat
+    from nbclient import NotebookClient
+
+    notebook = nbformat.read(DOCS / "notebooks" / "first_sweep.ipynb", as_version=4)
+    NotebookClient(notebook, timeout=300, kernel_name="python3",
+                   resources={"metadata": {"path": str(tmp_path)}}).execute()
+    code = [cell for cell in notebook.cells if cell.cell_type == "code"]
+
+    def shown(cell, kind):
+        return "".join(output.get("data", {}).get(kind, "") for output in cell.outputs)
+
+    models, described, outputs = (shown(code[i], "text/html") for i in range(3))
+    assert models.count("<tr>") == 10 and ">crb_radial<" in models  # a header, nine models
+    assert ">radial_stiffness<" in described and ">N/mm<" in described
+    assert "radial_stiffness" in outputs and "max_contact_pressure" in outputs
+    printed = "".join(output.get("text", "") for output in code[4].outputs)
+    assert printed.strip().endswith("N/mm")
+    values = [float(v) for v in printed.split("[", 1)[1].split("]", 1)[0].split()]
+    # Paper 000's conclusion: the radial stiffness falls as the clearance grows.
+    assert len(values) == 3 and values[0] > values[1] > values[2] > 0
+    assert shown(code[5], "image/png")  # the quick look's figure
+    assert shown(code[6], "text/plain") == "True"
+    assert (tmp_path / "example.html").is_file()

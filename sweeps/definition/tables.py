@@ -14,6 +14,11 @@ class SpecError(Exception):
     """A mistake in a sweep definition; ``str(error)`` is the line shown to the user."""
 
 
+class MissingExtra(RuntimeError):
+    """What was asked needs an optional extra that is not installed; ``str(error)`` says
+    which, and how to install it."""
+
+
 def suggestion(name: str, options) -> str:
     """'; did you mean ...?' for the option closest to ``name``, or nothing."""
     close = difflib.get_close_matches(name, list(options), n=1, cutoff=0.6)
