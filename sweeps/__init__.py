@@ -6,6 +6,7 @@ result; every mistake in what is asked is a :class:`SpecError`. The model functi
 :mod:`bearing_sweep.models`.
 """
 import sys
+from typing import TYPE_CHECKING
 
 #: Where each name of the API lives: imported when first asked for, since xarray (the API's)
 #: and matplotlib (plot's) cost more to import than a small sweep takes to run, and pint
@@ -74,3 +75,11 @@ def __dir__():
 
 __all__ = ["run", "check", "analyze", "list_models", "describe", "plot", "explore", "SpecError",
            "__version__"]
+
+if TYPE_CHECKING:  # what type checkers and editors see of the names imported when asked for
+    from .api import analyze, check, describe, list_models, run
+    from .explorer import explore
+    from .quicklook import plot
+    from .spec import SpecError
+
+    __version__: str

@@ -24,7 +24,16 @@ from .spec import SpecError, Sweep
 from .tables import ModelDescription, ModelList
 
 if TYPE_CHECKING:  # xarray only once a dataset is made or read: `bearing-sweep run` needs none
+    from collections.abc import Callable
+
+    from typing import TypeAlias
+
     import xarray as xr
+    from distributed import Client
+
+    #: What a definition may be given as: TOML text (with a line break), a path, or a dict
+    #: of the TOML's structure.
+    Definition: TypeAlias = str | os.PathLike | dict
 
 
 def argument_named(key: str, *value) -> str:
@@ -37,9 +46,13 @@ def _stderr(message: str):
     print(message, file=sys.stderr)
 
 
-def run(definition, *, output=None, client=None, scheduler=None, workers=None, chunk_size=None,
-        fresh=False, progress=True, log=None, summary=None, encoding=None, compression=None,
-        open_output=True, named=argument_named) -> xr.Dataset | None:
+def run(definition: Definition, *, output: str | os.PathLike | None = None,
+        client: Client | None = None, scheduler: str | None = None, workers: int | None = None,
+        chunk_size: int | None = None, fresh: bool = False, progress: bool = True,
+        log: Callable[[str], object] | None = None,
+        summary: Callable[[str], object] | None = None, encoding: str | None = None,
+        compression: str | None = None, open_output: bool = True,
+        named: Callable[..., str] = argument_named) -> xr.Dataset | None:
     """Compute a sweep and return its labelled dataset.
 
     Parameters
@@ -165,7 +178,7 @@ def check_cluster_arguments(workers=None, scheduler=None, client=None, named=arg
     _client_argument(client)
 
 
-def check(definition) -> None:
+def check(definition: Definition) -> None:
     """Validate a definition (as :func:`run` takes it) without computing anything.
 
     Raises :class:`SpecError` with the one line ``bearing-sweep run`` would print.
@@ -173,7 +186,8 @@ def check(definition) -> None:
     _sweep(definition)
 
 
-def analyze(result, *, output=None) -> xr.Dataset:
+def analyze(result: str | os.PathLike | xr.Dataset, *,
+            output: str | os.PathLike | None = None) -> xr.Dataset:
     """Summary statistics of a sampled result and, for a Saltelli design, its Sobol' indices.
 
     Parameters

@@ -12,6 +12,7 @@ bokeh is an optional extra (``pip install 'bearing-sweep[explore]'``).
 """
 from __future__ import annotations
 
+import os
 from pathlib import Path
 
 import numpy as np
@@ -67,7 +68,8 @@ status.text = `${x.length} points drawn: ${holds} converged within validity, ` +
 """
 
 
-def explore(result, variables=None, *, output=None) -> Path:
+def explore(result: str | os.PathLike, variables: list[str] | None = None, *,
+            output: str | os.PathLike | None = None) -> Path:
     """Write an interactive page of a result, to open in a browser.
 
     Parameters

@@ -12,11 +12,13 @@ single value, an output without any value) is a :class:`SpecError` saying why.
 """
 from __future__ import annotations
 
+import os
 import textwrap
 from pathlib import Path
 
 import numpy as np
 import xarray as xr
+from matplotlib.figure import Figure
 from matplotlib.lines import Line2D
 
 from .dependence import flag_holds, held_points, on_grid
@@ -44,7 +46,8 @@ _MARKS = {"out of validity": {"marker": "o", "ms": 9, "mfc": "none"},
 _SAMPLE = "sample"
 
 
-def plot(result, variable: str | None = None, *, x: str | None = None, output=None):
+def plot(result: str | os.PathLike | xr.Dataset, variable: str | None = None, *,
+         x: str | None = None, output: str | os.PathLike | None = None) -> Figure:
     """Draw one output of a sweep's result against one of its axes.
 
     Parameters

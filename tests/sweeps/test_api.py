@@ -1,5 +1,6 @@
 """The Python API: the CLI's results and error lines, from text, a path or a dict."""
 import importlib
+import inspect
 
 import numpy as np
 import pytest
@@ -275,3 +276,15 @@ def test_plot_refuses_an_argument_of_the_wrong_type_in_one_line(arguments, words
         bearing_sweep.plot(**arguments)
     assert words in str(caught.value) and "\n" not in str(caught.value)
     assert list(tmp_path.iterdir()) == []
+
+
+def test_every_function_of_the_api_is_annotated():
+    for name in bearing_sweep.__all__:
+        function = getattr(bearing_sweep, name)
+        if name in ("SpecError", "__version__"):
+            continue
+        signature = inspect.signature(function)
+        unannotated = [p for p, parameter in signature.parameters.items()
+                       if parameter.annotation is inspect.Parameter.empty]
+        assert unannotated == [], (name, unannotated)
+        assert signature.return_annotation is not inspect.Signature.empty, name
