@@ -61,14 +61,39 @@ def kernels_compiled_once(tmp_path_factory):
 
     root = tmp_path_factory.getbasetemp().parent
     order = COMPILED if worker == "gw0" else COMPILED[::-1]
+    folder = _every_model_folder(tmp_path_factory)
     with Executor(workers=0) as executor:
         for model, kernels in order:
             with FileLock(root / f"compiling-{model}.lock"):
                 if kernels:
                     importlib.import_module(f"bearing_sweep.models.{kernels}")
-                run_sweep(spec.load(DATA / "every_model" / f"{model}.toml"), None, executor,
-                          progress=False)
+                run_sweep(spec.load(DATA / "every_model" / f"{model}.toml"),
+                          folder / f"{model}.nc", executor, progress=False)
     yield
+
+
+def _every_model_folder(tmp_path_factory) -> Path:
+    """This process' folder of each model's result of ``tests/data/every_model``."""
+    folder = tmp_path_factory.getbasetemp() / "every_model_files"
+    folder.mkdir(exist_ok=True)
+    return folder
+
+
+@pytest.fixture(scope="session")
+def every_model_files(tmp_path_factory, kernels_compiled_once) -> dict:
+    """Each model's definition in ``tests/data/every_model`` computed once in this process,
+    whole, into netCDF: its path by model (the compiled models' were written as their
+    kernels compiled). For reading only."""
+    from bearing_sweep import spec
+    from bearing_sweep.compute import Executor, run_sweep
+
+    folder = _every_model_folder(tmp_path_factory)
+    with Executor(workers=0) as executor:
+        for definition in sorted((DATA / "every_model").glob("*.toml")):
+            if not (folder / f"{definition.stem}.nc").exists():
+                run_sweep(spec.load(definition), folder / f"{definition.stem}.nc", executor,
+                          progress=False)
+    return {path.stem: path for path in sorted(folder.glob("*.nc"))}
 
 
 @pytest.hookimpl(tryfirst=True)  # before pytest-xdist reads the groups

@@ -35,14 +35,13 @@ speed = ["0 rpm", "6000 rpm"]
 
 
 @pytest.fixture(scope="module")
-def results(tmp_path_factory):
+def results(tmp_path_factory, every_model_files):
     """Each model's file, the sampled and zipped ones, and the three-axis grid."""
     folder = tmp_path_factory.mktemp("explore")
     (folder / "grid.toml").write_text(GRID)
-    made = {}
+    made = dict(every_model_files)
     with Executor(workers=0) as executor:
-        for path in ([DATA / "every_model" / f"{m}.toml" for m in MODELS]
-                     + [DATA / "structure" / f"{s}.toml" for s in STRUCTURES]
+        for path in ([DATA / "structure" / f"{s}.toml" for s in STRUCTURES]
                      + [folder / "grid.toml"]):
             made[path.stem] = folder / f"{path.stem}.nc"
             run_sweep(spec.load(path), made[path.stem], executor, progress=False)
