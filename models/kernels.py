@@ -53,10 +53,17 @@ class Kernels:
     def for_points(self, points):
         """The module for a call of ``points`` points: interpreted while numba has not loaded
         it and fewer than ``interpreted_points`` points have been computed so."""
+        return self.compiled_for(points) or self.interpreted()
+
+    def compiled_for(self, points):
+        """The compiled module for a call of ``points`` points, or None while numba has not
+        loaded it and fewer than ``interpreted_points`` points have been computed without it
+        (counted here): for a model whose points are then computed another way, vectorised,
+        with the same numbers."""
         if self.name in sys.modules or self.computed + points > self.interpreted_points:
             return importlib.import_module(self.name)
         self.computed += points
-        return self.interpreted()
+        return None
 
     def interpreted(self):
         """The module's source run by the interpreter, numba not imported."""

@@ -22,6 +22,7 @@ from __future__ import annotations
 import numpy as np
 
 from .geometry import clearance_below_roller, elements_fit
+from .kernels import Kernels
 from .limits import CLEARANCE_VALIDITY, clearance_beyond_bearings
 from .registry import (CONVERGED, NOT_CONVERGED, OUT_OF_VALIDITY, Constraint, DimCoordinate,
                        Input, Model, Output, combine_status)
@@ -29,6 +30,10 @@ from .registry import (CONVERGED, NOT_CONVERGED, OUT_OF_VALIDITY, Constraint, Di
 SPINS = ("absolute", "paper")
 ARRANGEMENTS = ("as_given", "alternating")
 _TIE = 1e-13  # [m]: lines this close count as meeting
+#: Rows (points times rotation steps) a process computes with the vectorised envelope before
+#: it loads the compiled one: about as long as numba takes to import and load it.
+VECTORISED_ROWS = 20_000
+_ENVELOPE = Kernels(f"{__package__}.runout_envelope", VECTORISED_ROWS)
 _ROUNDING = 1e-12  # [-]: a clearance this far below zero, relative to d_e, is zero
 #: Largest error of the linear contact conditions, as a share of the runout, or below
 #: LINEARISATION_FLOOR (a tenth of the 0.1 um to which paper 004 states runouts): where the
@@ -87,6 +92,28 @@ def harmonics(angle, order, amplitude, phase):
 
 def lowest_centre(slope, intercept, active):
     """Minimum of the upper envelope ``F(x) = max_j (s_j x + b_j)`` over the active lines.
+
+    Computed by :func:`lowest_centre_vectorised`, or, once a process has computed
+    ``VECTORISED_ROWS`` rows so, by the compiled :mod:`models.runout_envelope` (the same
+    numbers, to the bit); parameters and returns as there.
+    """
+    slope, intercept, active = np.broadcast_arrays(slope, intercept, active)
+    compiled = _ENVELOPE.compiled_for(slope.size // max(slope.shape[-1], 1))
+    if compiled is None:
+        return lowest_centre_vectorised(slope, intercept, active)
+    shape, count = slope.shape[:-1], slope.shape[-1]
+    best_x = np.full(int(np.prod(shape)), np.nan)
+    best_y = np.full(best_x.size, np.inf)
+    compiled.lowest_vertices(*(np.ascontiguousarray(a.reshape(-1, count), dtype=kind)
+                               for a, kind in ((slope, float), (intercept, float),
+                                               (active, bool))), _TIE, best_x, best_y)
+    best_x, best_y = best_x.reshape(shape), best_y.reshape(shape)
+    return best_x, np.where(np.isfinite(best_y), best_y, np.nan)
+
+
+def lowest_centre_vectorised(slope, intercept, active):
+    """Minimum of the upper envelope ``F(x) = max_j (s_j x + b_j)`` over the active lines,
+    vectorised over the leading axes.
 
     Parameters
     ----------
@@ -501,7 +528,7 @@ MODELS = [Model(
                    _raceways_have_radius, "a raceway's radius would be negative: the sum of "
                    "its roundness amplitudes must stay below half its diameter"),
     ),
-    seconds_per_point=9e-3,  # measured by benchmarks/declared_costs.py
+    seconds_per_point=2.7e-3,  # measured by benchmarks/declared_costs.py
     points_per_call=8,
     validity="with the centre found, a roller without room between the rings (a preload: "
              "the model is unloaded); resting rollers' gaps that vary from step to step by "

@@ -38,7 +38,7 @@ def ctrl_c_as_a_terminal_sends_it():
 #: to compile first.
 COMPILED = [("cage_dynamics_6dof", None), ("trb_load", "tapered_equilibrium"),
             ("ball_5dof", "ball_equilibrium"), ("cage_slip", None), ("crb_radial", None),
-            ("cage_dynamics", None)]
+            ("cage_dynamics", None), ("crb_runout", "runout_envelope")]
 
 
 @pytest.fixture(scope="session", autouse=True)

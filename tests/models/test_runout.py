@@ -307,3 +307,41 @@ def test_too_few_rotation_steps_are_out_of_validity(errors):
     low = crb_runout(**NU208, **errors, steps_per_revolution=8)["runout"][0]
     if "roller_diameter_error" not in errors:
         assert abs(low - fine) > 0.05 * fine
+
+
+@pytest.mark.parametrize("seed", range(4))
+def test_the_compiled_envelope_gives_the_vectorised_numbers_to_the_bit(seed):
+    from bearing_sweep.models import runout, runout_envelope
+
+    rng = np.random.default_rng(seed)
+    rows, count = 400, 3 + 5 * seed
+    slope, intercept = rng.normal(size=(rows, count)), rng.normal(size=(rows, count)) * 1e-6
+    active = rng.random((rows, count)) < 0.7
+    slope[::3, 0] = 0.0  # a roller right at the bottom: a flat piece of the envelope
+    intercept[::4, 1] = intercept[::4, 2]  # lines that meet where a third does
+    slope[::5, 1] = slope[::5, 2]  # parallel lines
+    intercept[7, 0] = np.nan  # a failed point's lines
+    slope = np.where(active, slope, 0.0)
+    with np.errstate(invalid="ignore"):
+        expected = runout.lowest_centre_vectorised(slope, intercept, active)
+    best_x, best_y = np.full(rows, np.nan), np.full(rows, np.inf)
+    runout_envelope.lowest_vertices(slope, intercept, active, runout._TIE, best_x, best_y)
+    assert np.isfinite(best_y).sum() > rows // 2  # most rows have a lowest vertex
+    assert best_x.tobytes() == expected[0].tobytes()
+    assert np.where(np.isfinite(best_y), best_y, np.nan).tobytes() == expected[1].tobytes()
+
+
+def test_a_sweep_gives_the_same_runout_vectorised_and_compiled(monkeypatch):
+    from bearing_sweep.models import runout, runout_envelope
+
+    inputs = dict(inner_raceway_diameter=50e-3, outer_raceway_diameter=70e-3,
+                  roller_diameter=10e-3, roller_count=14,
+                  roller_diameter_error=np.linspace(-1e-6, 1e-6, 14),
+                  roller_roundness_order=np.arange(2.0, 6.0)[:, None],
+                  roller_roundness_amplitude=0.5e-6, steps_per_revolution=360)
+    results = []
+    for compiled in (None, runout_envelope):
+        monkeypatch.setattr(runout._ENVELOPE, "compiled_for", lambda rows: compiled)
+        results.append(crb_runout(**inputs))
+    for name in results[0]:
+        assert np.asarray(results[0][name]).tobytes() == np.asarray(results[1][name]).tobytes()
