@@ -85,26 +85,42 @@ class StoreWriter:
         write once every chunk has given its own; the chunk's counts
         (:func:`.blocks.chunk_tally`); and the size of the zarr chunks written.
         """
-        import zarr
+        from zarr.core.sync import sync
 
         firsts, per_point = split_reduced(grid, start, stop, part)
         tally = chunk_tally(grid.model, part)
-        with writing(self.output):
-            group = zarr.open_group(self.path, mode="r+", zarr_format=ZARR_FORMAT,
-                                    use_consolidated=True)
+        blocks = list(stored_blocks(grid, start, stop, per_point, part["status"]))
+        with writing(self.output):  # every array's block at once, in zarr's own event loop
+            chunks = sync(_write_blocks(self.path, blocks))
         written = []
-        for name, index, block in stored_blocks(grid, start, stop, per_point, part["status"]):
-            array = group[name]
-            with writing(self.output):
-                array[index or ...] = block.astype(array.dtype, copy=False)
-            position = [s.start // c for s, c in zip(index, array.chunks)]
-            position += [0] * (array.ndim - len(position))
+        for (name, index, _), sizes in zip(blocks, chunks):
+            position = [s.start // c for s, c in zip(index, sizes)]
+            position += [0] * (len(sizes) - len(position))
             written.append(Path(self.path, name, ".".join(map(str, position)) or "0"))
         # A zarr chunk equal to the fill value everywhere has no file (zarr writes none).
         with writing(self.output):
             flush(written + sorted({path.parent for path in written}))
         return {"firsts": firsts, "tally": tally,
                 "stored_bytes": sum(path.stat().st_size for path in written if path.exists())}
+
+
+async def _write_blocks(path, blocks) -> list:
+    """Write each ``(name, index, block)`` into its array of the zarr group at ``path``,
+    concurrently: one at a time, each write waited on zarr's event loop in turn. Returns each
+    array's chunk shape."""
+    import asyncio
+
+    from zarr.api.asynchronous import open_group
+
+    group = await open_group(store=path, mode="r+", zarr_format=ZARR_FORMAT,
+                             use_consolidated=True)
+
+    async def write(name, index, block):
+        array = await group.getitem(name)
+        await array.setitem(index or ..., block.astype(array.dtype, copy=False))
+        return array.chunks
+
+    return await asyncio.gather(*(write(*block) for block in blocks))
 
 
 class StoreParts(Parts):
