@@ -242,10 +242,10 @@ def _stated_unit(axis, name: str) -> str | None:
 
 @pytest.fixture(scope="module")
 def short_3d_results(tmp_path_factory):
-    """The cage_dynamics_3d study's own sweeps cut to 2 ms with coarse elements: the model's
+    """The cage_dynamics_3d study's own sweeps cut to 1 ms with coarse elements: the model's
     real output for its figure script, in seconds (its full sweeps take minutes)."""
     folder = tmp_path_factory.mktemp("cage_dynamics_3d")
-    coarse = ('duration = "2 ms"\noutput_interval = "0.1 ms"\nslices = 4\narc_axial_points = 2\n'
+    coarse = ('duration = "1 ms"\noutput_interval = "0.05 ms"\nslices = 4\narc_axial_points = 2\n'
               'arc_angle_points = 2\nface_rings = 2\nface_angles = 6')
     for definition in find_studies(STUDIES)["cage_dynamics_3d"].definitions:
         text = re.sub(r"^output_interval = .*\n", "", definition.read_text(), flags=re.M)
@@ -266,7 +266,7 @@ def test_the_3d_study_draws_every_figure_and_computes_every_claim(short_3d_resul
     assert sorted(p.name for p in tmp_path.iterdir()) == sorted(module.FIGURES)
     ours = module.ours(short_3d_results)
     # Only a claim that says when it is "not computed" may be missing (a share of dry
-    # elements where none is dry, as in 2 ms).
+    # elements where none is dry, as in 1 ms).
     undefined = {claim["id"] for claim in study.claims()
                  if "not computed when" in claim["assumptions"]}
     assert 0 < len(undefined) < len(study.claims())
