@@ -154,8 +154,9 @@ def run_sweep(sweep: Sweep, output=None, executor: Executor | None = None,
             footprint = store.footprint(sum(stop - start for start, stop in todo), workers)
             if parallel:  # the cluster started, its workers of this version
                 _check_workers(executor, model, expected, store.parts)
-                if progress and executor.dashboard():
-                    log(f"dask dashboard: {executor.dashboard()}")
+                dashboard = executor.dashboard()
+                if progress and dashboard:
+                    log(f"dask dashboard: {dashboard}")
             store.begin(log)
             if footprint is not None and progress and footprint.announced():
                 log(footprint.text(model.name, f"{workers} worker{'s' * (workers != 1)}"

@@ -4,9 +4,9 @@
 without a network) beside the result: a choice of output and of the axis along x, a slider per
 other sweep axis, the chosen output drawn against the chosen axis in the units the definition
 was written in, points outside the model's validity ringed and the statuses of the points drawn
-counted under the figure (a point without a value leaves a gap). A sampled result is drawn a point per sample against a drawn input.
-The values drawn are the file's: the page holds each point's value of the outputs it offers and
-slices them in the browser.
+counted under the figure (a point without a value leaves a gap). A sampled result is drawn a
+point per sample against a drawn input. The values drawn are the file's: the page holds each
+point's value of the outputs it offers and slices them in the browser.
 
 bokeh is an optional extra (``pip install 'bearing-sweep[explore]'``).
 """
@@ -20,19 +20,19 @@ import xarray as xr
 
 from .dependence import on_grid
 from .plotting import MAKER, label
-from .quicklook import (_HOLDS, _NO_VALUE, _OUTSIDE, _SAMPLE, _choose, _marks, _open, _outputs,
+from .quicklook import (_NO_VALUE, _OUTSIDE, _SAMPLE, _choose, _marks, _open, _outputs,
                         _shown, _value_text, check_figure_path)
 from .definition.tables import MissingExtra
 from .spec import SpecError
 from .stores import is_result
 from .stores.durable import OutputLock, write_durably
-from .stores.paths import argument_text, path_argument
+from .stores.paths import argument_text, is_zarr, path_argument
 
 #: The most values (points times outputs) a page holds: some 8 bytes each in the page, which
 #: a browser holds in memory as well.
 MOST_VALUES = 5_000_000
 #: What a page of this program begins with and carries, so that only such a page is replaced.
-PAGE_FORMAT = {".html": (b"<!DOCTYPE html>", b"\n<!DOCTYPE html>")}
+PAGE_FORMAT = {".html": (b"<!DOCTYPE html>",)}
 
 #: What marks a page as this program's: no other page names it its generator.
 GENERATOR = f'<meta name="generator" content="{MAKER} explore">'
@@ -114,7 +114,8 @@ def explore(result: str | os.PathLike, variables: list[str] | None = None, *,
     output = check_figure_path(output, result, PAGE_FORMAT, "an interactive page", GENERATOR)
     data = _open(result)
     try:
-        page = _page(_document(on_grid(data), variables, str(result)))
+        page = _page(_document(on_grid(data), variables, str(result),
+                               declared=is_zarr(result)))
     finally:
         data.close()
     with OutputLock(output):
@@ -132,8 +133,9 @@ def _page(document) -> str:
     return page.replace("<head>", f"<head>\n    {GENERATOR}", 1)
 
 
-def _document(data: xr.Dataset, variables, source: str):
-    """The page's bokeh document: its widgets, figure, data and script."""
+def _document(data: xr.Dataset, variables, source: str, declared: bool = False):
+    """The page's bokeh document: its widgets, figure, data and script; ``declared``: the
+    outputs in the model's order rather than the file's (a zarr store's is by name)."""
     from bokeh.document import Document
     from bokeh.layouts import column, row
     from bokeh.models import ColumnDataSource, CustomJS, Div, Select, Slider
@@ -146,7 +148,7 @@ def _document(data: xr.Dataset, variables, source: str):
     if not dims:
         raise SpecError(f"{source}: a single point (the sweep has no axes): nothing to move "
                         "through; `bearing-sweep plot` draws its outputs' entries")
-    offered = _offered(data, variables, dims, source)
+    offered = _offered(data, variables, dims, source, declared)
     sizes = {d: data.sizes[d] for d in dims}
     along = _along(data, dims)
     if not along:
@@ -160,18 +162,19 @@ def _document(data: xr.Dataset, variables, source: str):
         "labels": {**{name: label(shown[name]) for name in along},
                    **{name: label(data[name], long=True) for name in offered}},
         "texts": {d: [_value_text(data, d, i) for i in range(sizes[d])] for d in dims},
-        "outside": _OUTSIDE, "no_value": _NO_VALUE, "sample": _SAMPLE, "holds": _HOLDS,
+        "outside": _OUTSIDE, "no_value": _NO_VALUE, "sample": _SAMPLE,
     }
-    marks = _marks(data["status"]).transpose(*dims).values.astype(np.int8).ravel()
+    marks = _marks(data["status"]).transpose(*dims)
     every = ColumnDataSource({name: data[name].transpose(*dims).values.astype(float).ravel()
-                              for name in offered} | {"__mark": marks}, name="every")
+                              for name in offered}
+                             | {"__mark": marks.values.astype(np.int8).ravel()}, name="every")
     drawn_inputs = [n for n in data.attrs.get("sample_inputs", "").split() if n in along]
     x_name = drawn_inputs[0] if _SAMPLE in dims and drawn_inputs else next(iter(along))
     # The first drawing, as the page's script draws it: the first output along x, every
     # other axis at its first value (the figure's ranges are set from it).
     at = {d: 0 for d in dims if d != along[x_name]}
     first_x = np.asarray(meta["coords"][x_name])
-    first_marks = _marks(data["status"]).isel(at).values
+    first_marks = marks.isel(at).values
     first_y = data[offered[0]].isel(at).values.astype(float)
     outside = first_marks == _OUTSIDE
     drawn = ColumnDataSource({"x": first_x, "y": np.where(first_marks == _NO_VALUE, np.nan,
@@ -229,10 +232,11 @@ def _along(data: xr.Dataset, dims: list) -> dict:
     return found
 
 
-def _offered(data: xr.Dataset, variables, dims: list, source: str) -> list[str]:
+def _offered(data: xr.Dataset, variables, dims: list, source: str,
+             declared: bool = False) -> list[str]:
     """The outputs the page offers: ``variables`` or every output with one value per point,
-    within :data:`MOST_VALUES`."""
-    outputs = _outputs(data, declared=False)
+    within :data:`MOST_VALUES`, in the file's order (``declared``: the model's)."""
+    outputs = _outputs(data, declared=declared)
     points = int(np.prod([data.sizes[d] for d in dims], dtype=np.int64))
     per_point = [n for n in outputs if set(data[n].dims) <= set(dims)]
     if variables is None:
@@ -240,7 +244,7 @@ def _offered(data: xr.Dataset, variables, dims: list, source: str) -> list[str]:
     else:
         offered = []
         for name in variables:
-            name = _choose(name, outputs, "output")
+            name = _choose(name, outputs, "output", source)
             if name not in per_point:
                 raise SpecError(f"{source}: {name} has entries of its own "
                                 f"({', '.join(d for d in data[name].dims if d not in dims)}): "

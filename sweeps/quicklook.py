@@ -108,7 +108,7 @@ def plot(result: str | os.PathLike | xr.Dataset, variable: str | None = None, *,
     # told apart like axes; numbered ones (roller 1..Z, an angle) form a distribution.
     categorical = [d for d in own if data[d].dtype.kind in "OUS"]
     distributed = [d for d in own if d not in categorical]
-    x = _choose_x(data, x, axes, own, variable)
+    x = _choose_x(data, x, axes, own, variable, source)
     along = data[x].dims[0]  # the dimension x lies along: a zipped or sampled input's axis
     if along in distributed:
         distributed.remove(along)
@@ -320,7 +320,7 @@ def _output(data, variable, outputs: list, axes: list, source: str) -> str:
     if variable not in outputs and variable in data.variables:
         raise SpecError(f"{source}: {variable!r} is {_kind(data, variable, axes)}, not an "
                         f"output (outputs: {', '.join(outputs)})")
-    variable = _choose(variable, outputs, "output")
+    variable = _choose(variable, outputs, "output", source)
     if not data[variable].dims:
         value = data[variable]
         unit = value.attrs.get("units", "1")
@@ -343,7 +343,7 @@ def _kind(data, name: str, axes: list) -> str:
     return "not an output of the model"
 
 
-def _choose_x(data, x, axes: list, own: list, variable: str) -> str:
+def _choose_x(data, x, axes: list, own: list, variable: str, source: str) -> str:
     """The name along the figure's x axis: ``x``, or the default (see :func:`plot`)."""
     along_axes = [n for n, c in data.coords.items() if n not in data.dims and c.ndim == 1
                   and c.dims[0] in axes and c.dtype.kind in "fiu"]  # zipped, drawn inputs
@@ -353,9 +353,9 @@ def _choose_x(data, x, axes: list, own: list, variable: str) -> str:
         x = (drawn[0] if _SAMPLE in axes and drawn else
              longer[0] if longer else axes[0] if axes else own[0])
     if x in data.dims and x not in axes + own:
-        raise SpecError(f"{variable} has no dimension {x!r} (its dimensions: "
+        raise SpecError(f"{source}: {variable} has no dimension {x!r} (its dimensions: "
                         f"{', '.join(data[variable].dims)})")
-    return _choose(x, axes + own + along_axes, "axis")
+    return _choose(x, axes + own + along_axes, "axis", source)
 
 
 def _positions(coordinate: xr.DataArray):
@@ -401,9 +401,11 @@ def _open(path) -> xr.Dataset:
                         ) from None
 
 
-def _choose(name: str, options: list, what: str) -> str:
+def _choose(name: str, options: list, what: str, source: str) -> str:
+    """``name`` if it is one of ``options``; else a :class:`SpecError` naming ``source``, the
+    closest option and all of them."""
     if name not in options:
-        raise SpecError(f"unknown {what} {name!r}" + suggestion(name, options)
+        raise SpecError(f"{source}: unknown {what} {name!r}" + suggestion(name, options)
                         + f" ({what} names: {', '.join(options)})")
     return name
 

@@ -94,7 +94,7 @@ def test_every_models_file_has_its_page_with_the_files_values(results, name, tmp
      "roller_load has entries of its own (roller): `bearing-sweep plot` draws"),
     (lambda r, t: bearing_sweep.explore(r["crb_radial"], ["radial_stifness"],
                                         output=t / "a.html"),
-     "unknown output 'radial_stifness'; did you mean 'radial_stiffness'?"),
+     "crb_radial.nc: unknown output 'radial_stifness'; did you mean 'radial_stiffness'?"),
     (lambda r, t: bearing_sweep.explore(r["crb_radial"], output=t / "a.png"),
      "an interactive page is written as .html"),
     (lambda r, t: bearing_sweep.explore(t / "none.nc"), "none.nc: no such result file"),

@@ -112,10 +112,15 @@ def test_out_of_validity_ringed_and_not_converged_crossed(results):
     assert cross.get_xdata() == pytest.approx([data.radial_load.values[2] / 1000])
 
 
-def test_unknown_names_have_a_close_match(results):
-    with pytest.raises(SpecError, match="did you mean 'radial_stiffness'"):
+def test_unknown_names_have_a_close_match_and_name_the_file(results):
+    import re
+
+    file = re.escape(str(results["crb_radial"]))
+    with pytest.raises(SpecError, match=f"^{file}: unknown output 'radial_stifness'; did you "
+                                        "mean 'radial_stiffness'"):
         plot(results["crb_radial"], "radial_stifness")
-    with pytest.raises(SpecError, match="did you mean 'clearance'"):
+    with pytest.raises(SpecError, match=f"^{file}: unknown axis 'clerance'; did you mean "
+                                        "'clearance'"):
         plot(results["crb_radial"], x="clerance")
 
 
