@@ -16,7 +16,8 @@ SCRIPTS = ("crb_radial_throughput.py", "ball_5dof_throughput.py", "ball_5dof_ker
            "trb_load_kernel.py", "crb_runout_throughput.py", "crb_runout_kernel.py",
            "cage_slip_cost.py", "cage_dynamics_6dof_cost.py", "worker_scaling.py",
            "output_encoding.py", "declared_costs.py", "cluster_break_even.py",
-           "crb_radial_kernel.py", "zarr_cluster.py", "zarr_structure.py", "startup.py")
+           "crb_radial_kernel.py", "zarr_cluster.py", "zarr_structure.py", "startup.py",
+           "operating_outputs.py")
 RATIO = re.compile(r"^\s+(?:ratio|speed-up):\D*?([\d.]+)x(.*)$")
 GOAL = re.compile(r"goal:?\s*([^)]*)")
 

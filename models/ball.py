@@ -16,15 +16,18 @@ import functools
 
 import numpy as np
 
+from .bearing_film import (FILM_INPUTS, MINERAL_OIL_DENSITY, bearing_film, film_outputs,
+                           oil_viscosity)
 from .bearing_life import (DEFAULT_CONTAMINATION_FACTOR, LIFE_CONSTRAINTS, LIFE_INPUTS,
                            SPEED_INPUT, life_outputs, rating_lives)
-from .contact import POINT_CONTACT_EXPONENT, STIFFEST_SOLID, hertz_point
+from .contact import POINT_CONTACT_EXPONENT, STIFFEST_SOLID, effective_modulus, hertz_point
 from .geometry import elements_fit
 from .kernels import Kernels
 from .life import ball_bearing_reference_life, radial_ball_equivalent_load
 from .limits import (OIL_VALIDITY, SOFTEST_BEARING_SOLID, SPEED_VALIDITY, not_steel,
                      outside_operation)
-from .lubrication import CELSIUS
+from .lubrication import (CELSIUS, MINERAL_OIL_PRESSURE_VISCOSITY, entrainment_speed,
+                          point_contact_film)
 from .registry import (CONVERGED, INFEASIBLE, NOT_CONVERGED, OUT_OF_VALIDITY, Constraint,
                              Input, Model, Output, combine_status)
 
@@ -152,9 +155,11 @@ def ball_5dof(ball_count, ball_diameter, pitch_diameter, contact_angle,
               geometry="jones", fixed_dofs="", pressure_limit=MAX_CONTACT_PRESSURE,
               speed=0.0, dynamic_load_rating=None, fatigue_load_limit=None,
               contamination_factor=DEFAULT_CONTAMINATION_FACTOR,
-              oil_temperature=70.0 + CELSIUS, viscosity_40=None, viscosity_100=None):
-    """Equilibrium, 5 x 5 stiffness matrix, contact pressures and rating life of a ball
-    bearing's inner ring.
+              oil_temperature=70.0 + CELSIUS, viscosity_40=None, viscosity_100=None,
+              oil_density=MINERAL_OIL_DENSITY, pressure_viscosity=MINERAL_OIL_PRESSURE_VISCOSITY,
+              composite_roughness=None):
+    """Equilibrium, 5 x 5 stiffness matrix, contact pressures, lubricant film and rating life
+    of a ball bearing's inner ring.
 
     Parameters
     ----------
@@ -189,8 +194,8 @@ def ball_5dof(ball_count, ball_diameter, pitch_diameter, contact_angle,
         Contact pressure above which a point is ``out_of_validity`` [Pa] (default 4200 MPa,
         ISO 76's reference stress for ball bearings of through-hardened steel).
     speed : array_like
-        Speed of the inner ring [rad/s], for the lives in hours and the viscosity ratio only
-        (the load distribution is static).
+        Speed of the inner ring [rad/s], for the lives in hours, the viscosity ratio and the
+        film only (the load distribution is static).
     dynamic_load_rating, fatigue_load_limit : array_like or None
         The bearing's basic dynamic load rating ``C_r`` and fatigue load limit ``C_u`` [N];
         None: no life (no modified life) (NaN).
@@ -198,7 +203,11 @@ def ball_5dof(ball_count, ball_diameter, pitch_diameter, contact_angle,
         ``e_C`` [-] (ISO 281 Table 13).
     oil_temperature, viscosity_40, viscosity_100 : array_like or None
         Oil temperature [K] and kinematic viscosities at 40 and 100 deg C [m^2/s]; None: no
-        modified life.
+        modified life and no film.
+    oil_density, pressure_viscosity : array_like
+        Of the oil at its temperature [kg/m^3], [1/Pa], for the film.
+    composite_roughness : array_like or None
+        ``sigma`` of balls and raceways [m], for the film parameter; None: NaN.
 
     Returns
     -------
@@ -211,7 +220,8 @@ def ball_5dof(ball_count, ball_diameter, pitch_diameter, contact_angle,
         ``ball_contact_angle`` ``(N, Z)`` [rad]; ``loaded_balls``; ``max_contact_pressure``
         ``(N, Z)`` [Pa], the larger Hertz ``p0 = 3Q/(2 pi a b)`` of each ball's two contacts
         (exact ellipse, raceway curvatures at ``alpha_0`` as for the Hertz constant [3]),
-        ``largest_contact_pressure`` over the balls [Pa]; the lives of
+        ``largest_contact_pressure`` over the balls [Pa]; the films of
+        :func:`models.bearing_film.bearing_film` [m, -]; the lives of
         :func:`models.bearing_life.rating_lives` (Notes) [rad: 10^6 revolutions of 2 pi; s],
         ``equivalent_dynamic_load`` [N], ``viscosity_ratio``, ``life_modification_factor``
         [-]; ``hertz_contact_constant`` [N/m^1.5] (whether or not ``contact_constant``
@@ -227,6 +237,13 @@ def ball_5dof(ball_count, ball_diameter, pitch_diameter, contact_angle,
 
     Notes
     -----
+    Film: each loaded ball's inner and outer contact by Hamrock and Dowson's isothermal
+    formulas (:func:`models.lubrication.point_contact_film`) with the ellipticity of the
+    exact Hertz ellipse and ``R_x = D (1 -+ gamma) / 2`` at ``alpha_0`` (the curvatures the
+    Hertz constant takes), the entrainment speed of pure rolling with the inner ring turning
+    (:func:`models.lubrication.entrainment_speed`), the oil's dynamic viscosity at its
+    temperature and ``E' = 2 E*``.
+
     Life: the inner ring rotates, the outer ring and the load stand still. ISO/TS 16281's
     reference life ``L10r`` is formed from every ball's load (one load for both contacts:
     no centrifugal force), with the inner ring's exponent 3 and the outer ring's 10/3 over
@@ -276,10 +293,10 @@ def ball_5dof(ball_count, ball_diameter, pitch_diameter, contact_angle,
         ball_diameter, pitch_diameter, contact_angle, inner_curvature_ratio,
         outer_curvature_ratio, clearance, youngs_modulus, poisson_ratio, axial_load,
         radial_load, radial_load_z, moment_y, moment_z, contact_constant, pressure_limit,
-        speed) + life))
+        speed) + life + (oil_density, pressure_viscosity, composite_roughness)))
     (diameter, pitch, angle, inner_ratio, outer_ratio, clearance, modulus, poisson,
      *loads, given, pressure_limit, speed) = arrays[:16]
-    life = arrays[16:]
+    life, oil = arrays[16:22], arrays[22:]
     inner, outer = _per_distinct_row(raceway_contacts, diameter, pitch, angle, inner_ratio,
                                      outer_ratio, modulus, poisson)
     hertz_ok = (inner["status"] == CONVERGED) & (outer["status"] == CONVERGED)
@@ -344,6 +361,8 @@ def ball_5dof(ball_count, ball_diameter, pitch_diameter, contact_angle,
     outputs.update(rating_lives(
         _reference_life(ball_load, life[0], diameter, pitch, angle, inner_ratio, outer_ratio),
         equivalent_load, "ball", speed, pitch, *life))
+    outputs.update(_film(ball_load, inner, outer, diameter, pitch, angle, modulus, poisson,
+                         speed, life, *oil))
     outputs["status"] = status.astype(np.int8)
     return outputs
 
@@ -369,6 +388,21 @@ def _reference_life(ball_load, rating, diameter, pitch, angle, inner_ratio, oute
     with np.errstate(divide="ignore", invalid="ignore"):
         return ball_bearing_reference_life(ball_load, rating, diameter, pitch, angle,
                                            inner_ratio, outer_ratio)
+
+
+def _film(ball_load, inner, outer, diameter, pitch, angle, modulus, poisson, speed, life,
+          oil_density, pressure_viscosity, roughness):
+    """The film outputs of every ball's two contacts (see :func:`ball_5dof`'s Notes)."""
+    gamma = diameter * np.cos(angle) / pitch
+    films = [point_contact_film(
+        ball_load, (0.5 * diameter * (1.0 + sign * gamma))[:, None],
+        contact["ellipticity"][:, None],
+        entrainment_speed(speed, pitch, diameter, angle)[:, None],
+        oil_viscosity(life[3], life[4], life[5], oil_density)[:, None],
+        pressure_viscosity[:, None], 2.0 * effective_modulus(modulus, poisson)[:, None])
+        for sign, contact in ((-1.0, inner), (1.0, outer))]
+    return bearing_film(np.concatenate([films[0][0], films[1][0]], axis=-1),
+                        np.concatenate([films[0][1], films[1][1]], axis=-1), roughness)
 
 
 def _equilibrium(rings: _Rings, load, free, ball_count):
@@ -449,10 +483,10 @@ MODELS = [Model(
     function=ball_5dof,
     summary="Ball bearing under axial, radial and moment loads: 5-DOF equilibrium of the inner "
             "ring, ball loads and contact angles, the full 5 x 5 stiffness matrix, contact "
-            "pressures and rating lives (ISO/TS 16281, ISO 281).",
+            "pressures, lubricant film and rating lives (ISO/TS 16281, ISO 281).",
     reference="Paper 001, eq. 1-10; Jones (1960); Harris & Kotzalas, Rolling Bearing Analysis; "
               "ISO/TS 16281:2008; ISO 281:2007",
-    version="9",
+    version="10",
     inputs=(
         Input("ball_count", "1", "number of balls Z", kind="count", minimum=3, maximum=1000),
         Input("ball_diameter", "mm", "ball diameter D", minimum=0.0, exclusive_minimum=True),
@@ -488,7 +522,7 @@ MODELS = [Model(
               default=4200.0, minimum=0.0, exclusive_minimum=True,
               label="contact pressure limit"),
         SPEED_INPUT,
-    ) + LIFE_INPUTS,
+    ) + LIFE_INPUTS + FILM_INPUTS,
     outputs=(
         Output("displacement", "m, rad", "displacement of the inner ring", dims=("dof",),
                entry_units=_DOF_UNITS,
@@ -516,8 +550,9 @@ MODELS = [Model(
                "theory gives for the curvature ratios (eq. 4-5, series law corrected); "
                "Q = K delta^1.5, K in N/m^1.5",
                label="Hertz load-deflection constant K"),
-    ) + life_outputs("ball loads, inner ring rotating", "X Fr + Y Fa (ISO 281 5.2, Table 3; "
-                     "NaN under a moment, or with an axial load below 20 deg)"),
+    ) + film_outputs("every loaded ball's inner and outer contact (Hamrock and Dowson)")
+    + life_outputs("ball loads, inner ring rotating", "X Fr + Y Fa (ISO 281 5.2, Table 3; "
+                   "NaN under a moment, or with an axial load below 20 deg)"),
     dim_sizes={"ball": "ball_count", "dof": DOFS, "load_dof": DOFS},
     constraints=(
         Constraint(("ball_count", "pitch_diameter", "ball_diameter"), _fits,

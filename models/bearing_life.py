@@ -21,8 +21,9 @@ from .registry import Constraint, Input, Output
 #: d_m < 100 mm (filtered oil, sealed and greased for life); the lower end is the default.
 DEFAULT_CONTAMINATION_FACTOR = 0.5
 
-SPEED_INPUT = Input("speed", "rpm", "speed of the inner ring, for the lives in hours and the "
-                    "viscosity ratio only (the load distribution is static)", default=0.0,
+SPEED_INPUT = Input("speed", "rpm", "speed of the inner ring, for the lives in hours, the "
+                    "viscosity ratio and the film only (the load distribution is static)",
+                    default=0.0,
                     minimum=0.0, label="inner-ring speed")
 
 #: Largest equivalent load, as a fraction of Cr, at which ISO 281:2007 vouches for its life

@@ -25,7 +25,7 @@ import numpy as np
 from .cylindrical import CLEARANCE_BELOW_ROLLER, crb_radial
 from .bearing_life import VISCOSITY_ORDER
 from .lubrication import (OIL_DENSITIES, VISCOSITY_GRADES, WALTHER_FLOOR, TractionCurve,
-                          central_film_thickness, walther_viscosity)
+                          line_contact_film, walther_viscosity)
 from .contact import STIFFEST_SOLID
 from .limits import (CLEARANCE_VALIDITY, OIL_VALIDITY, ROLLING_ELEMENT_DENSITIES,
                      SOFTEST_BEARING_SOLID, SPEED_VALIDITY, STEEL_VALIDITY,
@@ -195,7 +195,7 @@ def cage_slip(radial_load, speed, roller_count, inner_raceway_diameter, roller_d
     heaviest = np.argmax(balance.inner_load, axis=1)
     entraining = 0.5 * ((terms["omega_i"] - omega_c) * r_i + spin[everything, heaviest] * radius)
     reduced = terms["modulus"] / (1.0 - terms["poisson"]**2)
-    film_thickness = central_film_thickness(
+    film_thickness, _ = line_contact_film(
         balance.inner_load[everything, heaviest], terms["contact_length"],
         radius * r_i / (radius + r_i), entraining, terms["viscosity"], terms["alpha"], reduced)
     missing = np.where(has_root, 1.0, np.nan)  # NaN where the outputs need the missing root

@@ -3,6 +3,7 @@ from __future__ import annotations
 
 import numpy as np
 
+from .lubrication import MINERAL_OIL_PRESSURE_VISCOSITY, point_contact_film
 from .registry import (CONVERGED, INFEASIBLE, NOT_CONVERGED, OUT_OF_VALIDITY, Constraint,
                              Input, Model, Output)
 from .solvers import solve_increasing
@@ -356,8 +357,9 @@ def _unit_approach(kappa, second, first, curvature_sum, modulus):
 
 def hertz_point(load, curvature_1x, curvature_1y, curvature_2x=0.0, curvature_2y=0.0,
                 youngs_modulus=207e9, poisson_ratio=0.3, youngs_modulus_2=None,
-                poisson_ratio_2=None, formula="exact"):
-    """Hertz contact of two bodies touching at a point.
+                poisson_ratio_2=None, formula="exact", entrainment_speed=0.0, viscosity=None,
+                pressure_viscosity=MINERAL_OIL_PRESSURE_VISCOSITY):
+    """Hertz contact of two bodies touching at a point, and its lubricant film.
 
     Parameters
     ----------
@@ -373,13 +375,24 @@ def hertz_point(load, curvature_1x, curvature_1y, curvature_2x=0.0, curvature_2y
         ``E_2`` [Pa] and ``nu_2`` [-] of body 2 (None: the same material as body 1).
     formula : {'exact', 'hamrock_brewe'}
         Ellipticity and elliptic integrals exact or by Hamrock and Brewe's closed forms.
+    entrainment_speed : array_like
+        Mean speed ``u`` of the two surfaces along x, the rolling direction [m/s].
+    viscosity : array_like or None
+        Dynamic viscosity ``eta_0`` of the oil at the contact's inlet, at ambient pressure
+        [Pa s]; None: no film (NaN).
+    pressure_viscosity : array_like
+        Pressure-viscosity coefficient ``alpha`` of the oil [1/Pa] (default:
+        :data:`models.lubrication.MINERAL_OIL_PRESSURE_VISCOSITY`).
 
     Returns
     -------
     dict of numpy.ndarray
         ``semi_major`` ``a`` and ``semi_minor`` ``b`` [m], ``approach`` ``delta`` [m],
         ``max_pressure`` ``p0 = 3Q/(2 pi a b)`` [Pa], ``ellipticity`` ``k = a/b`` [-],
-        ``contact_constant`` ``K = Q/delta^1.5`` [N/m^1.5], ``status``.
+        ``contact_constant`` ``K = Q/delta^1.5`` [N/m^1.5], ``central_film_thickness``
+        ``h_c`` and ``minimum_film_thickness`` ``h_min`` [m] (Hamrock and Dowson,
+        :func:`models.lubrication.point_contact_film`, with this ellipse's ``k``, ``R_x`` the
+        relative radius in plane x and ``E' = 2 E*``), ``status``.
 
     Notes
     -----
@@ -389,13 +402,20 @@ def hertz_point(load, curvature_1x, curvature_1y, curvature_2x=0.0, curvature_2y
     ``BALL_PRESSURE_LIMIT`` (4200 MPa, ISO 76's reference stress of a ball bearing's point
     contacts, for hardened bearing steel: beyond it the contact deforms plastically), or,
     with ``formula='hamrock_brewe'``, where the radius ratio ``R_y/R_x`` exceeds
-    ``HAMROCK_BREWE_RATIO_LIMIT`` (70: beyond it the closed forms err by more than 3 %).
+    ``HAMROCK_BREWE_RATIO_LIMIT`` (70: beyond it the closed forms err by more than 3 %), or,
+    with a viscosity, where the oil is entrained along the ellipse's major axis (``R_x >
+    R_y``): Hamrock and Dowson fitted their formulas to contacts entrained along the minor
+    axis, ``k`` from 1 to 8; the film there is that of ``k = b/a < 1``, which they do not
+    vouch for.
 
     References
     ----------
     .. [1] T. A. Harris, M. N. Kotzalas, Rolling Bearing Analysis, 5th ed., ch. 6: a, b, delta
        and the maximum pressure from a*, b*, delta* (eq. 6.36-6.44).
     .. [2] B. J. Hamrock, D. E. Brewe, J. Lubrication Technology 105 (1983) 171-177.
+    .. [3] B. J. Hamrock, D. Dowson, Isothermal elastohydrodynamic lubrication of point
+       contacts, Part III - Fully flooded results, J. Lubrication Technology 99 (1977)
+       264-276.
     """
     arrays = np.broadcast_arrays(*(np.asarray(a, dtype=float) for a in (
         load, curvature_1x, curvature_1y, curvature_2x, curvature_2y)))
@@ -411,11 +431,20 @@ def hertz_point(load, curvature_1x, curvature_1y, curvature_2x=0.0, curvature_2y
     constant = unit ** (-POINT_CONTACT_EXPONENT)
     with np.errstate(invalid="ignore", divide="ignore"):
         pressure = np.where(load > 0, 1.5 * load / (np.pi * semi_major * semi_minor), 0.0)
+    # Rolling along x: the ellipse's minor axis lies along x where the bodies curve more in x.
+    relative_x = np.asarray(arrays[1]) + arrays[3]
+    along_minor = relative_x >= total / 2.0
+    central, minimum = point_contact_film(
+        load, 1.0 / relative_x, np.where(along_minor, kappa, 1.0 / kappa), entrainment_speed,
+        np.nan if viscosity is None else viscosity, pressure_viscosity, 2.0 * modulus)
     outputs = {"semi_major": semi_major, "semi_minor": semi_minor, "approach": approach,
-               "max_pressure": pressure, "ellipticity": kappa, "contact_constant": constant}
+               "max_pressure": pressure, "ellipticity": kappa, "contact_constant": constant,
+               "central_film_thickness": central, "minimum_film_thickness": minimum}
+    film_names = ("central_film_thickness", "minimum_film_thickness")
     ok = converged & touching
-    for value in outputs.values():  # a NaN input fails the point
-        ok &= np.isfinite(value)
+    for name, value in outputs.items():  # a NaN input fails the point; no film is no failure
+        if name not in film_names:
+            ok &= np.isfinite(value)
     outputs = {name: np.where(ok, value, np.nan) for name, value in outputs.items()}
     with np.errstate(divide="ignore"):  # four flat surfaces are no point contact anyway
         smallest_radius = 1.0 / np.max(np.abs(arrays[1:]), axis=0)
@@ -423,7 +452,8 @@ def hertz_point(load, curvature_1x, curvature_1y, curvature_2x=0.0, curvature_2y
     beyond = ((outputs["semi_major"] > SEMI_AXIS_LIMIT * smallest_radius)
               | (outputs["max_pressure"] > BALL_PRESSURE_LIMIT)
               | (approximate & ((1.0 + difference) > HAMROCK_BREWE_RATIO_LIMIT
-                                * (1.0 - difference))))
+                                * (1.0 - difference)))
+              | (~along_minor & np.isfinite(outputs["minimum_film_thickness"])))
     outputs["status"] = np.select([ok & beyond, ok, ~touching],
                                   [OUT_OF_VALIDITY, CONVERGED, INFEASIBLE],
                                   NOT_CONVERGED).astype(np.int8)
@@ -438,9 +468,11 @@ MODELS = [Model(
     name="hertz_point",
     function=hertz_point,
     summary="Hertz point contact of two elastic bodies: contact ellipse, approach, maximum "
-            "pressure and load-deflection constant, exact or by Hamrock and Brewe.",
-    reference="Harris & Kotzalas, Rolling Bearing Analysis, ch. 6; Hamrock & Brewe (1983)",
-    version="4",
+            "pressure and load-deflection constant, exact or by Hamrock and Brewe; the "
+            "lubricant film by Hamrock and Dowson.",
+    reference="Harris & Kotzalas, Rolling Bearing Analysis, ch. 6; Hamrock & Brewe (1983); "
+              "Hamrock & Dowson (1977)",
+    version="5",
     inputs=(
         Input("load", "N", "normal load Q", minimum=0.0),
         Input("curvature_1x", "1/mm", "principal curvature of body 1 in plane x (negative: "
@@ -461,6 +493,15 @@ MODELS = [Model(
               default=None, minimum=0.0, maximum=0.5),
         Input("formula", "", "exact: elliptic integrals; hamrock_brewe: closed-form "
               "approximation", default="exact", kind="choice", choices=POINT_FORMULAS),
+        Input("entrainment_speed", "m/s", "mean speed u of the two surfaces along x, the "
+              "rolling direction (film only)", default=0.0, minimum=0.0,
+              label="entrainment speed"),
+        Input("viscosity", "mPa*s", "dynamic viscosity eta0 of the oil at the inlet, at "
+              "ambient pressure (film only); default: no film (NaN)", default=None,
+              minimum=0.0, exclusive_minimum=True, label="oil viscosity"),
+        Input("pressure_viscosity", "1/GPa", "pressure-viscosity coefficient alpha of the oil "
+              "(film only; mineral oils about 15-35)", default=20.0, minimum=0.0,
+              exclusive_minimum=True, maximum=100.0, label="pressure-viscosity coefficient"),
     ),
     outputs=(
         Output("semi_major", "mm", "semi-major axis a of the contact ellipse"),
@@ -469,6 +510,12 @@ MODELS = [Model(
         Output("max_pressure", "MPa", "maximum contact pressure p0"),
         Output("ellipticity", "1", "ellipticity k = a/b"),
         Output("contact_constant", "N/mm^1.5", "load-deflection constant K, Q = K delta^1.5"),
+        Output("central_film_thickness", "um", "central EHL film thickness hc (Hamrock and "
+               "Dowson, 1977; rolling along x); NaN without viscosity",
+               label="central film thickness"),
+        Output("minimum_film_thickness", "um", "minimum EHL film thickness hmin (Hamrock and "
+               "Dowson, 1977; rolling along x); NaN without viscosity",
+               label="minimum film thickness"),
     ),
     constraints=(
         Constraint(("curvature_1x", "curvature_1y", "curvature_2x", "curvature_2y"),
@@ -481,5 +528,7 @@ MODELS = [Model(
              "(Hertz: a small contact on half-spaces) or a maximum pressure above 4200 MPa "
              "(ISO 76's reference stress for the point contacts of ball bearings; bearing "
              "steel); with formula hamrock_brewe, a radius ratio Ry/Rx above 70 (beyond it "
-             "the closed forms err by more than 3 % against the exact ellipse)",
+             "the closed forms err by more than 3 % against the exact ellipse); with a "
+             "viscosity, oil entrained along the ellipse's major axis (Rx > Ry: Hamrock and "
+             "Dowson fitted contacts entrained along the minor axis, k = 1 to 8)",
 )]

@@ -7,6 +7,8 @@ from __future__ import annotations
 
 import numpy as np
 
+from .bearing_film import (FILM_INPUTS, MINERAL_OIL_DENSITY, bearing_film, film_outputs,
+                           oil_viscosity)
 from .bearing_life import (DEFAULT_CONTAMINATION_FACTOR, LIFE_CONSTRAINTS, LIFE_INPUTS,
                            life_outputs,
                            rating_lives)
@@ -19,7 +21,8 @@ from .life import roller_bearing_reference_life
 from .limits import (CLEARANCE_VALIDITY, OIL_VALIDITY, ROLLING_ELEMENT_DENSITIES,
                      SOFTEST_BEARING_SOLID, SPEED_VALIDITY, STEEL_VALIDITY,
                      clearance_beyond_bearings, not_steel, outside_operation)
-from .lubrication import CELSIUS
+from .lubrication import (CELSIUS, MINERAL_OIL_PRESSURE_VISCOSITY, entrainment_speed,
+                          line_contact_film)
 from .profiles import PROFILES, crown_shape, distinct_slices, slice_centres
 from .registry import (CONVERGED, NOT_CONVERGED, OUT_OF_VALIDITY, Constraint, Input,
                              Model, Output)
@@ -371,9 +374,11 @@ def crb_radial(radial_load, roller_count, pitch_diameter, roller_diameter, effec
                youngs_modulus=207e9, poisson_ratio=0.3, pressure_limit=ROLLER_PRESSURE_LIMIT,
                dynamic_load_rating=None, fatigue_load_limit=None,
                contamination_factor=DEFAULT_CONTAMINATION_FACTOR,
-               oil_temperature=70.0 + CELSIUS, viscosity_40=None, viscosity_100=None):
-    """Load distribution, radial stiffness, contact pressure and rating life of a
-    cylindrical roller bearing.
+               oil_temperature=70.0 + CELSIUS, viscosity_40=None, viscosity_100=None,
+               oil_density=MINERAL_OIL_DENSITY,
+               pressure_viscosity=MINERAL_OIL_PRESSURE_VISCOSITY, composite_roughness=None):
+    """Load distribution, radial stiffness, contact pressure, lubricant film and rating life
+    of a cylindrical roller bearing.
 
     Solves the inner ring's radial displacement under a radial load, with crowned rollers
     cut into slices, centrifugal force and clearance, and the radial stiffness by implicit
@@ -437,7 +442,11 @@ def crb_radial(radial_load, roller_count, pitch_diameter, roller_diameter, effec
         ``e_C`` [-] (ISO 281 Table 13).
     oil_temperature, viscosity_40, viscosity_100 : array_like or None
         Oil temperature [K] and kinematic viscosities at 40 and 100 deg C [m^2/s]; None: no
-        modified life.
+        modified life and no film.
+    oil_density, pressure_viscosity : array_like
+        Of the oil at its temperature [kg/m^3], [1/Pa], for the film.
+    composite_roughness : array_like or None
+        ``sigma`` of rollers and raceways [m], for the film parameter; None: NaN.
 
     Returns
     -------
@@ -447,7 +456,8 @@ def crb_radial(radial_load, roller_count, pitch_diameter, roller_diameter, effec
         ``centrifugal_force`` [N], ``roller_load`` (inner contact, ``(..., Z)``) [N],
         ``inner_contact_deflection`` (``(..., Z)``, negative: gap) [m],
         ``max_contact_pressure`` (``(..., Z)``) [Pa], ``largest_contact_pressure`` [Pa], the
-        lives of :func:`models.bearing_life.rating_lives` [rad, s], ``status``.
+        films of :func:`models.bearing_film.bearing_film` [m, -], the lives of
+        :func:`models.bearing_life.rating_lives` [rad, s], ``status``.
         Points that did not converge (a NaN anywhere included) are NaN with ``status`` = 1;
         points outside the validity below keep their values with ``status`` =
         ``OUT_OF_VALIDITY``.
@@ -463,6 +473,14 @@ def crb_radial(radial_load, roller_count, pitch_diameter, roller_diameter, effec
     slices of a straight roller carry equal loads, so the model shows no edge stress (the
     real one has pressure peaks at its ends, which would need the roller's tilt and a
     half-space solution of the slices' interaction).
+
+    Film: the oil film of each loaded contact by Pan and Hamrock's isothermal line-contact
+    formulas (:func:`models.lubrication.line_contact_film`), the roller's load spread evenly
+    over its effective length (the film varies as ``w^-0.128``: a crowned roller's shorter
+    loaded length at light load changes it by a few per cent), ``R_x`` the relative radius
+    of roller and raceway, the entrainment speed of pure rolling with the inner ring turning
+    (:func:`models.lubrication.entrainment_speed`), the oil's dynamic viscosity at its
+    temperature and ``E' = 2 E*``; the outer contacts carry the centrifugal force as well.
 
     Life: the inner ring rotates under a stationary radial load. ISO/TS 16281's reference
     life is formed from the laminae, the model's slices (5.3): every slice's inner and outer
@@ -525,12 +543,14 @@ def crb_radial(radial_load, roller_count, pitch_diameter, roller_diameter, effec
     arrays = np.broadcast_arrays(*(np.asarray(np.nan if a is None else a, dtype=float) for a in (
         radial_load, pitch_diameter, roller_diameter, effective_length, clearance, crown,
         speed, roller_density, contact_constant, cage_position, misalignment, perturbation,
-        effective_modulus(youngs_modulus, poisson_ratio), pressure_limit) + life))
+        effective_modulus(youngs_modulus, poisson_ratio), pressure_limit) + life
+        + (oil_density, pressure_viscosity, composite_roughness)))
     shape = arrays[0].shape
     (load, pitch, diameter, length, clearance, crown, speed, density, constant, cage_position,
      misalignment, perturbation, modulus, pressure_limit) = (
         np.array(a.ravel()) for a in arrays[:14])  # owned: numba warns of broadcast views
-    life = [a.ravel() for a in arrays[14:]]
+    life = [a.ravel() for a in arrays[14:20]]
+    oil_density, pressure_viscosity, roughness = (a.ravel() for a in arrays[20:])
     azimuth = cage_position[:, None] + 2.0 * np.pi * np.arange(roller_count) / roller_count
     if outer_contact not in OUTER_CONTACTS:
         raise ValueError(f"unknown outer_contact {outer_contact!r}; expected {OUTER_CONTACTS}")
@@ -557,6 +577,18 @@ def crb_radial(radial_load, roller_count, pitch_diameter, roller_diameter, effec
         line_contact_pressure(outer_load, outer_curvature[:, None], modulus[:, None]))
     outputs["max_contact_pressure"] = pressure  # NaN where the point failed
     outputs["largest_contact_pressure"] = pressure.max(axis=-1)
+    # Each roller's load spread over its effective length, on both raceways.
+    films = [line_contact_film(
+        contact_load, length[:, None], 1.0 / curvature[:, None],
+        entrainment_speed(speed, pitch, diameter)[:, None],
+        oil_viscosity(life[3], *life[4:], oil_density)[:, None], pressure_viscosity[:, None],
+        2.0 * modulus[:, None])
+        for contact_load, curvature in (
+            (outputs["roller_load"], inner_curvature),
+            (outputs["roller_load"] + outputs["centrifugal_force"][:, None], outer_curvature))]
+    outputs.update(bearing_film(np.concatenate([films[0][0], films[1][0]], axis=-1),
+                                np.concatenate([films[0][1], films[1][1]], axis=-1),
+                                roughness))
     reference_life = np.full(load.size, np.nan)
     rated = np.flatnonzero(np.isfinite(life[0]))  # the laminae cost as much as the solution
     if rated.size:
@@ -667,9 +699,9 @@ MODELS = [Model(
     name="crb_radial",
     function=crb_radial,
     summary="Cylindrical roller bearing under radial load: load distribution and radial stiffness "
-            "with crowned rollers (slices), centrifugal force and clearance.",
+            "with crowned rollers (slices), centrifugal force and clearance; lubricant film.",
     reference="Paper 000, Radial stiffness analysis of cylindrical roller bearing, eq. 1-16",
-    version="9",
+    version="10",
     inputs=(
         Input("radial_load", "N", "radial load Fr on the inner ring", minimum=0.0),
         Input("roller_count", "1", "number of rollers Z", kind="count", minimum=3, maximum=1000),
@@ -715,7 +747,7 @@ MODELS = [Model(
               "validity (ISO 76: 4000 for roller bearings of through-hardened steel)",
               default=4000.0, minimum=0.0, exclusive_minimum=True,
               label="contact pressure limit"),
-    ) + LIFE_INPUTS,
+    ) + LIFE_INPUTS + FILM_INPUTS,
     outputs=(
         Output("radial_displacement", "mm", "radial displacement of the inner ring"),
         Output("radial_stiffness", "N/mm", "radial stiffness dFr/d(delta_r), implicit "
@@ -738,8 +770,10 @@ MODELS = [Model(
                label="maximum contact pressure"),
         Output("largest_contact_pressure", "MPa", "largest maximum contact pressure of all "
                "rollers", label="largest contact pressure"),
-    ) + life_outputs("slice loads of both raceways (laminae), inner ring rotating",
-                     "P = Fr (ISO 281 7.2, no axial load)"),
+    ) + film_outputs("every loaded roller's inner and outer contact (Pan and Hamrock's "
+                     "line contact)") + life_outputs(
+        "slice loads of both raceways (laminae), inner ring rotating",
+        "P = Fr (ISO 281 7.2, no axial load)"),
     dim_sizes={"roller": "roller_count"},
     constraints=(
         Constraint(("crown", "roller_diameter"), lambda crown, roller_diameter:

@@ -17,6 +17,8 @@ from __future__ import annotations
 
 import numpy as np
 
+from .bearing_film import (FILM_INPUTS, MINERAL_OIL_DENSITY, bearing_film, film_outputs,
+                           oil_viscosity)
 from .bearing_life import (DEFAULT_CONTAMINATION_FACTOR, LIFE_CONSTRAINTS, LIFE_INPUTS,
                            SPEED_INPUT, life_outputs, rating_lives)
 from .contact import (APPROACH_LIMIT, ROLLER_PRESSURE_LIMIT, STIFFEST_SOLID, effective_modulus,
@@ -26,7 +28,8 @@ from .kernels import Kernels
 from .life import roller_bearing_reference_life, tapered_equivalent_load
 from .limits import (OIL_VALIDITY, SOFTEST_BEARING_SOLID, SPEED_VALIDITY, STEEL_VALIDITY,
                      not_steel, outside_operation)
-from .lubrication import CELSIUS
+from .lubrication import (CELSIUS, MINERAL_OIL_PRESSURE_VISCOSITY, entrainment_speed,
+                          line_contact_film)
 from .registry import (CONVERGED, INFEASIBLE, NO_ROOT_IN_RANGE, NOT_CONVERGED,
                        OUT_OF_VALIDITY, Constraint, Input, Model, Output, below,
                        combine_status)
@@ -100,9 +103,10 @@ def trb_load(radial_load, axial_load, roller_count, effective_length, roller_mea
              youngs_modulus=206e9, poisson_ratio=0.3, pressure_limit=ROLLER_PRESSURE_LIMIT,
              speed=0.0, dynamic_load_rating=None, fatigue_load_limit=None,
              contamination_factor=DEFAULT_CONTAMINATION_FACTOR, oil_temperature=70.0 + CELSIUS,
-             viscosity_40=None, viscosity_100=None):
-    """Displacements, roller loads, contact pressure and rating life of a tapered roller
-    bearing under combined load.
+             viscosity_40=None, viscosity_100=None, oil_density=MINERAL_OIL_DENSITY,
+             pressure_viscosity=MINERAL_OIL_PRESSURE_VISCOSITY, composite_roughness=None):
+    """Displacements, roller loads, contact pressure, lubricant film and rating life of a
+    tapered roller bearing under combined load.
 
     Parameters
     ----------
@@ -128,14 +132,20 @@ def trb_load(radial_load, axial_load, roller_count, effective_length, roller_mea
     dynamic_load_rating, fatigue_load_limit, contamination_factor, oil_temperature,
     viscosity_40, viscosity_100 : array_like or None
         ``C_r``, ``C_u`` [N], ``e_C`` [-], oil temperature [K], kinematic viscosities at 40
-        and 100 deg C [m^2/s]; None: no life (no modified life), NaN.
+        and 100 deg C [m^2/s]; None: no life (no modified life, no film), NaN.
+    oil_density, pressure_viscosity : array_like
+        Of the oil at its temperature [kg/m^3], [1/Pa], for the film.
+    composite_roughness : array_like or None
+        ``sigma`` of rollers and raceways [m], for the film parameter; None: NaN.
 
     Returns
     -------
     dict of numpy.ndarray
         ``radial_displacement`` ``delta_r``, ``axial_displacement`` ``delta_a`` [m],
         ``roller_load`` ``(N, Z)`` [N] (eq. 18 with its exponent 1.11), ``loaded_rollers``,
-        ``max_contact_pressure`` ``(N, Z)`` [Pa], the lives of
+        ``max_contact_pressure`` ``(N, Z)`` [Pa], the films of
+        :func:`models.bearing_film.bearing_film` [m, -] (NaN without ``pitch_diameter``),
+        the lives of
         :func:`models.bearing_life.rating_lives` [rad, s], ``status``: infeasible where
         ``F_r tan(alpha) > F_a`` (the rollers cannot carry the radial load without pulling)
         or ``F_a = 0``; not converged where the equilibrium was not found (or an input is
@@ -154,6 +164,15 @@ def trb_load(radial_load, axial_load, roller_count, effective_length, roller_mea
     with ``w = Q / l`` (Hertz line contact, :func:`models.contact.line_contact_pressure`).
     The real cone carries ``Q (cos 2 phi + sin 2 phi cot Psi)`` (``trb_rib``'s
     ``inner_load``), 0.7 % less with paper 003's roller (``phi`` = 4 deg, ``Psi`` = 89 deg).
+
+    Film (needs ``pitch_diameter``): each loaded roller's cone and cup contact by Pan and
+    Hamrock's isothermal line-contact formulas (:func:`models.lubrication.line_contact_film`),
+    the roller as a cylinder of its mean diameter carrying ``Q`` evenly over ``l`` at the
+    cup's contact angle on both raceways, as the pressure takes it; ``R_x`` from
+    :func:`cone_curvature_sum` (cone) and ``1 / (2/D_w - 2 cos(a) / (d_m + D_w cos a))``
+    (cup), the entrainment speed of pure rolling with the inner ring turning
+    (:func:`models.lubrication.entrainment_speed`), the oil's dynamic viscosity at its
+    temperature and ``E' = 2 E*``.
 
     Life (inner ring rotating, loads stationary; needs ``pitch_diameter``): ISO/TS 16281's
     reference life of line contacts with each roller one lamina carrying ``Q`` on both
@@ -185,9 +204,10 @@ def trb_load(radial_load, axial_load, roller_count, effective_length, roller_mea
             radial_load, axial_load, effective_length, roller_mean_diameter, outer_contact_angle,
             contact_constant, pitch_diameter, effective_modulus(youngs_modulus, poisson_ratio),
             pressure_limit, speed, dynamic_load_rating, fatigue_load_limit,
-            contamination_factor, oil_temperature, viscosity_40, viscosity_100)))
+            contamination_factor, oil_temperature, viscosity_40, viscosity_100, oil_density,
+            pressure_viscosity, composite_roughness)))
     radial, axial, length, diameter, angle, given, pitch, modulus, pressure_limit = arrays[:9]
-    speed, life = arrays[9], arrays[10:]
+    speed, life, oil = arrays[9], arrays[10:16], arrays[16:]
     constant = np.where(np.isnan(given), paper_contact_constant(length, diameter), given)
     # Inputs that describe no bearing, whatever the outcome: eq. 14's steel constant with
     # other elastic constants, a speed or an oil no bearing runs with.
@@ -223,6 +243,7 @@ def trb_load(radial_load, axial_load, roller_count, effective_length, roller_mea
                "loaded_rollers": np.count_nonzero(compression > 0, axis=-1).astype(float),
                "max_contact_pressure": pressure,
                "largest_contact_pressure": pressure.max(axis=-1),
+               **_film(roller_load, length, diameter, pitch, angle, modulus, speed, life, *oil),
                **rating_lives(reference_life, tapered_equivalent_load(radial, axial, angle),
                               "roller", speed, pitch, *life)}
     # A point without a solution has no values: NaN, not the iteration's last guess.
@@ -281,6 +302,22 @@ class RollerEnd:
         radius = 0.5 * self.rib_diameter[index] + self.rib_distance(rib_angle, index) * np.sin(
             tilt)
         return radius / np.cos(tilt)
+
+
+def _film(roller_load, length, diameter, pitch, angle, modulus, speed, life, oil_density,
+          pressure_viscosity, roughness):
+    """The film outputs of every roller's cone and cup contact (see :func:`trb_load`'s
+    Notes)."""
+    cos_angle = np.cos(angle)
+    cup = 2.0 / diameter - 2.0 * cos_angle / (pitch + diameter * cos_angle)
+    films = [line_contact_film(
+        roller_load, length[:, None], 1.0 / curvature[:, None],
+        entrainment_speed(speed, pitch, diameter, angle)[:, None],
+        oil_viscosity(life[3], life[4], life[5], oil_density)[:, None],
+        pressure_viscosity[:, None], 2.0 * modulus[:, None])
+        for curvature in (cone_curvature_sum(diameter, pitch, angle), cup)]
+    return bearing_film(np.concatenate([films[0][0], films[1][0]], axis=-1),
+                        np.concatenate([films[0][1], films[1][1]], axis=-1), roughness)
 
 
 def rib_contact_force(roller_load, rib_angle, roller_half_angle, inner_contact_angle,
@@ -564,9 +601,10 @@ MODELS = [
         name="trb_load",
         function=trb_load,
         summary="Tapered roller bearing under radial and axial load: radial and axial "
-                "displacement and the load of every roller.",
+                "displacement, the load of every roller, contact pressure, lubricant film and "
+                "rating lives.",
         reference=_REFERENCE + ", eq. 13-18",
-        version="8",
+        version="9",
         inputs=_LOAD_INPUTS + (
             _CONSTANT,
             Input("pitch_diameter", "mm", "pitch diameter dm at the middle of the rollers, for "
@@ -577,7 +615,7 @@ MODELS = [
                   "validity (ISO 76: 4000 for roller bearings of through-hardened steel)",
                   default=4000.0, minimum=0.0, exclusive_minimum=True,
                   label="contact pressure limit"),
-            SPEED_INPUT) + LIFE_INPUTS,
+            SPEED_INPUT) + LIFE_INPUTS + FILM_INPUTS,
         outputs=(
             Output("radial_displacement", "mm", "radial displacement delta_r of the inner ring",
                    label="radial displacement"),
@@ -593,7 +631,9 @@ MODELS = [
             Output("largest_contact_pressure", "MPa", "largest maximum contact pressure of "
                    "all rollers (NaN without pitch_diameter)",
                    label="largest contact pressure"),
-        ) + life_outputs("roller loads (one lamina each), inner ring rotating; NaN without "
+        ) + film_outputs("every loaded roller's cone and cup contact (Pan and Hamrock's line "
+                         "contact); NaN without pitch_diameter")
+        + life_outputs("roller loads (one lamina each), inner ring rotating; NaN without "
                          "pitch_diameter", "ISO 281 Table 8, P = Fr for Fa/Fr <= 1.5 tan(alpha), "
                          "else 0.4 Fr + 0.4 cot(alpha) Fa"),
         dim_sizes={"roller": "roller_count"},
