@@ -30,6 +30,7 @@ from .lubrication import (CELSIUS, MINERAL_OIL_PRESSURE_VISCOSITY, entrainment_s
                           point_contact_film)
 from .registry import (CONVERGED, INFEASIBLE, NOT_CONVERGED, OUT_OF_VALIDITY, Constraint,
                              Input, Model, Output, combine_status)
+from .static_safety import STATIC_INPUTS, static_outputs, static_safety
 
 DOFS = ("axial", "radial_y", "radial_z", "tilt_y", "tilt_z")
 GEOMETRIES = ("jones", "fixed_angle")
@@ -157,7 +158,7 @@ def ball_5dof(ball_count, ball_diameter, pitch_diameter, contact_angle,
               contamination_factor=DEFAULT_CONTAMINATION_FACTOR,
               oil_temperature=70.0 + CELSIUS, viscosity_40=None, viscosity_100=None,
               oil_density=MINERAL_OIL_DENSITY, pressure_viscosity=MINERAL_OIL_PRESSURE_VISCOSITY,
-              composite_roughness=None):
+              composite_roughness=None, minimum_static_safety=None):
     """Equilibrium, 5 x 5 stiffness matrix, contact pressures, lubricant film and rating life
     of a ball bearing's inner ring.
 
@@ -208,6 +209,8 @@ def ball_5dof(ball_count, ball_diameter, pitch_diameter, contact_angle,
         Of the oil at its temperature [kg/m^3], [1/Pa], for the film.
     composite_roughness : array_like or None
         ``sigma`` of balls and raceways [m], for the film parameter; None: NaN.
+    minimum_static_safety : array_like or None
+        The smallest ``pressure_safety_factor`` the application needs [-]; None: no check.
 
     Returns
     -------
@@ -221,7 +224,8 @@ def ball_5dof(ball_count, ball_diameter, pitch_diameter, contact_angle,
         ``(N, Z)`` [Pa], the larger Hertz ``p0 = 3Q/(2 pi a b)`` of each ball's two contacts
         (exact ellipse, raceway curvatures at ``alpha_0`` as for the Hertz constant [3]),
         ``largest_contact_pressure`` over the balls [Pa]; the films of
-        :func:`models.bearing_film.bearing_film` [m, -]; the lives of
+        :func:`models.bearing_film.bearing_film` [m, -]; the static safety of
+        :func:`models.static_safety.static_safety` [-]; the lives of
         :func:`models.bearing_life.rating_lives` (Notes) [rad: 10^6 revolutions of 2 pi; s],
         ``equivalent_dynamic_load`` [N], ``viscosity_ratio``, ``life_modification_factor``
         [-]; ``hertz_contact_constant`` [N/m^1.5] (whether or not ``contact_constant``
@@ -229,7 +233,8 @@ def ball_5dof(ball_count, ball_diameter, pitch_diameter, contact_angle,
         stiffness is singular under load (the load cannot be carried, or not by a unique
         displacement) or where the iteration ran the ring out of the bearing (farther than
         ``A``) without an equilibrium; out of validity (4, values kept) beyond the limits of
-        ``MODELS[0].validity``: ``p0`` above ``pressure_limit`` [4], an approach above
+        ``MODELS[0].validity``: ``p0`` above ``pressure_limit`` [4], a static safety below
+        ``minimum_static_safety``, an approach above
         ``MAX_APPROACH_PER_DIAMETER`` ``D`` [5], a displacement beyond ``A``, or a loaded
         ball's contact angle of the opposite sign to ``alpha_0 > 0``; and, whatever the
         outcome, a speed factor ``n d_m`` above 4e6 mm r/min or an oil whose viscosity index
@@ -293,10 +298,11 @@ def ball_5dof(ball_count, ball_diameter, pitch_diameter, contact_angle,
         ball_diameter, pitch_diameter, contact_angle, inner_curvature_ratio,
         outer_curvature_ratio, clearance, youngs_modulus, poisson_ratio, axial_load,
         radial_load, radial_load_z, moment_y, moment_z, contact_constant, pressure_limit,
-        speed) + life + (oil_density, pressure_viscosity, composite_roughness)))
+        speed) + life + (oil_density, pressure_viscosity, composite_roughness,
+                         minimum_static_safety)))
     (diameter, pitch, angle, inner_ratio, outer_ratio, clearance, modulus, poisson,
      *loads, given, pressure_limit, speed) = arrays[:16]
-    life, oil = arrays[16:22], arrays[22:]
+    life, oil, minimum_safety = arrays[16:22], arrays[22:25], arrays[25]
     inner, outer = _per_distinct_row(raceway_contacts, diameter, pitch, angle, inner_ratio,
                                      outer_ratio, modulus, poisson)
     hertz_ok = (inner["status"] == CONVERGED) & (outer["status"] == CONVERGED)
@@ -327,7 +333,8 @@ def ball_5dof(ball_count, ball_diameter, pitch_diameter, contact_angle,
     unit_pressure = np.maximum(inner["max_pressure"], outer["max_pressure"])
     pressure = unit_pressure[:, None] * np.cbrt(ball_load)
     crossed = (angle[:, None] > 0) & (ball_load > 0) & (contact_angle < 0)
-    outside = ((pressure.max(axis=-1) > pressure_limit)
+    static, unsafe = static_safety(pressure.max(axis=-1), "ball", minimum_safety)
+    outside = (unsafe | (pressure.max(axis=-1) > pressure_limit)
                | (approach.max(axis=-1) > MAX_APPROACH_PER_DIAMETER * diameter)
                | left_bearing | crossed.any(axis=-1))
     # Judged on a solution only: a failed point's last iterate says nothing of the bearing;
@@ -354,6 +361,7 @@ def ball_5dof(ball_count, ball_diameter, pitch_diameter, contact_angle,
         "max_contact_pressure": pressure,
         "largest_contact_pressure": pressure.max(axis=-1),
         "hertz_contact_constant": hertz_constant,
+        **static,
     }
     axial, radial, radial_z, moment_y, moment_z = loads
     equivalent_load = radial_ball_equivalent_load(np.hypot(radial, radial_z), axial, angle,
@@ -522,7 +530,7 @@ MODELS = [Model(
               default=4200.0, minimum=0.0, exclusive_minimum=True,
               label="contact pressure limit"),
         SPEED_INPUT,
-    ) + LIFE_INPUTS + FILM_INPUTS,
+    ) + LIFE_INPUTS + FILM_INPUTS + STATIC_INPUTS,
     outputs=(
         Output("displacement", "m, rad", "displacement of the inner ring", dims=("dof",),
                entry_units=_DOF_UNITS,
@@ -551,6 +559,7 @@ MODELS = [Model(
                "Q = K delta^1.5, K in N/m^1.5",
                label="Hertz load-deflection constant K"),
     ) + film_outputs("every loaded ball's inner and outer contact (Hamrock and Dowson)")
+    + static_outputs("ball")
     + life_outputs("ball loads, inner ring rotating", "X Fr + Y Fa (ISO 281 5.2, Table 3; "
                    "NaN under a moment, or with an axial load below 20 deg)"),
     dim_sizes={"ball": "ball_count", "dof": DOFS, "load_dof": DOFS},
@@ -587,7 +596,8 @@ MODELS = [Model(
              "ball); a ring displacement (translation, or tilt times R) beyond the groove-centre "
              "distance A = (fi + fo - 1) D, where the balls leave their grooves; a loaded ball "
              "whose contact angle has the opposite sign to a non-zero alpha0 (it runs on the "
-             "side of the groove an angular-contact ring's low shoulder cuts away). Not "
+             "side of the groove an angular-contact ring's low shoulder cuts away); a "
+             "pressure_safety_factor below minimum_static_safety, where given. Not "
              "checked: the contact ellipse running over a groove shoulder (shoulder heights "
              "are not inputs); centrifugal and gyroscopic ball loads (a static model). "
              f"Whatever the outcome, inputs that describe no bearing: {SPEED_VALIDITY}; "

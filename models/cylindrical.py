@@ -26,6 +26,7 @@ from .lubrication import (CELSIUS, MINERAL_OIL_PRESSURE_VISCOSITY, entrainment_s
 from .profiles import PROFILES, crown_shape, distinct_slices, slice_centres
 from .registry import (CONVERGED, NOT_CONVERGED, OUT_OF_VALIDITY, Constraint, Input,
                              Model, Output)
+from .static_safety import STATIC_INPUTS, static_outputs, static_safety
 
 OUTER_CONTACTS = ("crowned", "paper")
 
@@ -376,7 +377,8 @@ def crb_radial(radial_load, roller_count, pitch_diameter, roller_diameter, effec
                contamination_factor=DEFAULT_CONTAMINATION_FACTOR,
                oil_temperature=70.0 + CELSIUS, viscosity_40=None, viscosity_100=None,
                oil_density=MINERAL_OIL_DENSITY,
-               pressure_viscosity=MINERAL_OIL_PRESSURE_VISCOSITY, composite_roughness=None):
+               pressure_viscosity=MINERAL_OIL_PRESSURE_VISCOSITY, composite_roughness=None,
+               minimum_static_safety=None):
     """Load distribution, radial stiffness, contact pressure, lubricant film and rating life
     of a cylindrical roller bearing.
 
@@ -447,6 +449,8 @@ def crb_radial(radial_load, roller_count, pitch_diameter, roller_diameter, effec
         Of the oil at its temperature [kg/m^3], [1/Pa], for the film.
     composite_roughness : array_like or None
         ``sigma`` of rollers and raceways [m], for the film parameter; None: NaN.
+    minimum_static_safety : array_like or None
+        The smallest ``pressure_safety_factor`` the application needs [-]; None: no check.
 
     Returns
     -------
@@ -456,7 +460,8 @@ def crb_radial(radial_load, roller_count, pitch_diameter, roller_diameter, effec
         ``centrifugal_force`` [N], ``roller_load`` (inner contact, ``(..., Z)``) [N],
         ``inner_contact_deflection`` (``(..., Z)``, negative: gap) [m],
         ``max_contact_pressure`` (``(..., Z)``) [Pa], ``largest_contact_pressure`` [Pa], the
-        films of :func:`models.bearing_film.bearing_film` [m, -], the lives of
+        films of :func:`models.bearing_film.bearing_film` [m, -], the static safety of
+        :func:`models.static_safety.static_safety` [-], the lives of
         :func:`models.bearing_life.rating_lives` [rad, s], ``status``.
         Points that did not converge (a NaN anywhere included) are NaN with ``status`` = 1;
         points outside the validity below keep their values with ``status`` =
@@ -507,7 +512,9 @@ def crb_radial(radial_load, roller_count, pitch_diameter, roller_diameter, effec
     stiffness, the largest pressure or the laminae's life sum, estimated against a slicing
     four times finer (at least 240 slices, :meth:`_RollerSet.slicing_error`), exceeds
     ``SLICING_ERROR_LIMIT`` (2 %); one slice sees neither (5 mrad on bearing D at 4 kN: L10r
-    80 times the converged). Straight, aligned rollers are exact at any ``slices``.
+    80 times the converged). Straight, aligned rollers are exact at any ``slices``. A point
+    whose ``pressure_safety_factor`` lies below ``minimum_static_safety`` is out of validity
+    too.
 
     Whatever the outcome, a point is also out of validity where its inputs describe no
     bearing: the default (Palmgren's, steel) contact constant with ``youngs_modulus`` and
@@ -544,13 +551,14 @@ def crb_radial(radial_load, roller_count, pitch_diameter, roller_diameter, effec
         radial_load, pitch_diameter, roller_diameter, effective_length, clearance, crown,
         speed, roller_density, contact_constant, cage_position, misalignment, perturbation,
         effective_modulus(youngs_modulus, poisson_ratio), pressure_limit) + life
-        + (oil_density, pressure_viscosity, composite_roughness)))
+        + (oil_density, pressure_viscosity, composite_roughness, minimum_static_safety)))
     shape = arrays[0].shape
     (load, pitch, diameter, length, clearance, crown, speed, density, constant, cage_position,
      misalignment, perturbation, modulus, pressure_limit) = (
         np.array(a.ravel()) for a in arrays[:14])  # owned: numba warns of broadcast views
     life = [a.ravel() for a in arrays[14:20]]
-    oil_density, pressure_viscosity, roughness = (a.ravel() for a in arrays[20:])
+    oil_density, pressure_viscosity, roughness, minimum_safety = (
+        a.ravel() for a in arrays[20:])
     azimuth = cage_position[:, None] + 2.0 * np.pi * np.arange(roller_count) / roller_count
     if outer_contact not in OUTER_CONTACTS:
         raise ValueError(f"unknown outer_contact {outer_contact!r}; expected {OUTER_CONTACTS}")
@@ -577,6 +585,9 @@ def crb_radial(radial_load, roller_count, pitch_diameter, roller_diameter, effec
         line_contact_pressure(outer_load, outer_curvature[:, None], modulus[:, None]))
     outputs["max_contact_pressure"] = pressure  # NaN where the point failed
     outputs["largest_contact_pressure"] = pressure.max(axis=-1)
+    static, unsafe = static_safety(outputs["largest_contact_pressure"], "roller",
+                                   minimum_safety)
+    outputs.update(static)
     # Each roller's load spread over its effective length, on both raceways.
     films = [line_contact_film(
         contact_load, length[:, None], 1.0 / curvature[:, None],
@@ -607,6 +618,7 @@ def crb_radial(radial_load, roller_count, pitch_diameter, roller_diameter, effec
               | (inner + outer + perturbation[:, None] > approach_limit)).any(axis=-1)
     with np.errstate(invalid="ignore"):
         beyond |= perturbation_error > PERTURBATION_ERROR_LIMIT
+    beyond |= unsafe  # a static safety below the application's
     # Slices too few to resolve the crown or the tilt (an estimate as costly as a third of
     # the solution: made only where it can still change the status).
     beyond |= rollers.slicing_error(inner, outer, inner_curvature, outer_curvature,
@@ -747,7 +759,7 @@ MODELS = [Model(
               "validity (ISO 76: 4000 for roller bearings of through-hardened steel)",
               default=4000.0, minimum=0.0, exclusive_minimum=True,
               label="contact pressure limit"),
-    ) + LIFE_INPUTS + FILM_INPUTS,
+    ) + LIFE_INPUTS + FILM_INPUTS + STATIC_INPUTS,
     outputs=(
         Output("radial_displacement", "mm", "radial displacement of the inner ring"),
         Output("radial_stiffness", "N/mm", "radial stiffness dFr/d(delta_r), implicit "
@@ -771,7 +783,7 @@ MODELS = [Model(
         Output("largest_contact_pressure", "MPa", "largest maximum contact pressure of all "
                "rollers", label="largest contact pressure"),
     ) + film_outputs("every loaded roller's inner and outer contact (Pan and Hamrock's "
-                     "line contact)") + life_outputs(
+                     "line contact)") + static_outputs("roller") + life_outputs(
         "slice loads of both raceways (laminae), inner ring rotating",
         "P = Fr (ISO 281 7.2, no axial load)"),
     dim_sizes={"roller": "roller_count"},
@@ -809,7 +821,8 @@ MODELS = [Model(
              "tilt: an error above 2 % in the rollers' radial load or stiffness, the largest "
              "pressure or the laminae's life sum, against four times as many slices (at least "
              "240; paper 000's 60 resolve its crowns, loads and 5 mrad; straight, aligned "
-             "rollers are exact at any count); whatever the outcome, inputs that "
+             "rollers are exact at any count); a pressure_safety_factor below "
+             "minimum_static_safety, where given; whatever the outcome, inputs that "
              f"describe no bearing: {STEEL_VALIDITY}; {CLEARANCE_VALIDITY}; {SPEED_VALIDITY}; "
              f"{OIL_VALIDITY}",
 )]

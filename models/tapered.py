@@ -34,6 +34,7 @@ from .registry import (CONVERGED, INFEASIBLE, NO_ROOT_IN_RANGE, NOT_CONVERGED,
                        OUT_OF_VALIDITY, Constraint, Input, Model, Output, below,
                        combine_status)
 from .solvers import solve_increasing
+from .static_safety import STATIC_INPUTS, static_outputs, static_safety
 
 #: Load-deflection exponent of a roller between its raceways, Q = K delta^1.11 (eq. 13-18).
 LOAD_EXPONENT = 1.11
@@ -104,7 +105,8 @@ def trb_load(radial_load, axial_load, roller_count, effective_length, roller_mea
              speed=0.0, dynamic_load_rating=None, fatigue_load_limit=None,
              contamination_factor=DEFAULT_CONTAMINATION_FACTOR, oil_temperature=70.0 + CELSIUS,
              viscosity_40=None, viscosity_100=None, oil_density=MINERAL_OIL_DENSITY,
-             pressure_viscosity=MINERAL_OIL_PRESSURE_VISCOSITY, composite_roughness=None):
+             pressure_viscosity=MINERAL_OIL_PRESSURE_VISCOSITY, composite_roughness=None,
+             minimum_static_safety=None):
     """Displacements, roller loads, contact pressure, lubricant film and rating life of a
     tapered roller bearing under combined load.
 
@@ -137,6 +139,8 @@ def trb_load(radial_load, axial_load, roller_count, effective_length, roller_mea
         Of the oil at its temperature [kg/m^3], [1/Pa], for the film.
     composite_roughness : array_like or None
         ``sigma`` of rollers and raceways [m], for the film parameter; None: NaN.
+    minimum_static_safety : array_like or None
+        The smallest ``pressure_safety_factor`` the application needs [-]; None: no check.
 
     Returns
     -------
@@ -144,8 +148,9 @@ def trb_load(radial_load, axial_load, roller_count, effective_length, roller_mea
         ``radial_displacement`` ``delta_r``, ``axial_displacement`` ``delta_a`` [m],
         ``roller_load`` ``(N, Z)`` [N] (eq. 18 with its exponent 1.11), ``loaded_rollers``,
         ``max_contact_pressure`` ``(N, Z)`` [Pa], the films of
-        :func:`models.bearing_film.bearing_film` [m, -] (NaN without ``pitch_diameter``),
-        the lives of
+        :func:`models.bearing_film.bearing_film` [m, -] and the static safety of
+        :func:`models.static_safety.static_safety` [-] (both NaN without
+        ``pitch_diameter``), the lives of
         :func:`models.bearing_life.rating_lives` [rad, s], ``status``: infeasible where
         ``F_r tan(alpha) > F_a`` (the rollers cannot carry the radial load without pulling)
         or ``F_a = 0``; not converged where the equilibrium was not found (or an input is
@@ -186,7 +191,7 @@ def trb_load(radial_load, axial_load, roller_count, effective_length, roller_mea
     bearings, beyond which the permanent deformation exceeds 1e-4 of the roller diameter and
     the contact is no longer elastic; checked only with ``pitch_diameter``), or its compression
     exceeds 2 % of ``D_w``, where the fixed contact angle and azimuths of the model no longer
-    hold; and, whatever the outcome, where the inputs describe no bearing: eq. 14's constant
+    hold, or the static safety lies below ``minimum_static_safety``; and, whatever the outcome, where the inputs describe no bearing: eq. 14's constant
     (fitted to steel) with ``youngs_modulus`` and ``poisson_ratio`` whose ``E*`` lies more
     than 10 % from steel's (:func:`models.limits.not_steel`), a speed factor ``n d_m`` above
     4e6 mm r/min or an oil whose viscosity index no lubricant has
@@ -205,9 +210,9 @@ def trb_load(radial_load, axial_load, roller_count, effective_length, roller_mea
             contact_constant, pitch_diameter, effective_modulus(youngs_modulus, poisson_ratio),
             pressure_limit, speed, dynamic_load_rating, fatigue_load_limit,
             contamination_factor, oil_temperature, viscosity_40, viscosity_100, oil_density,
-            pressure_viscosity, composite_roughness)))
+            pressure_viscosity, composite_roughness, minimum_static_safety)))
     radial, axial, length, diameter, angle, given, pitch, modulus, pressure_limit = arrays[:9]
-    speed, life, oil = arrays[9], arrays[10:16], arrays[16:]
+    speed, life, oil, minimum_safety = arrays[9], arrays[10:16], arrays[16:19], arrays[19]
     constant = np.where(np.isnan(given), paper_contact_constant(length, diameter), given)
     # Inputs that describe no bearing, whatever the outcome: eq. 14's steel constant with
     # other elastic constants, a speed or an oil no bearing runs with.
@@ -230,7 +235,8 @@ def trb_load(radial_load, axial_load, roller_count, effective_length, roller_mea
         roller_load / length[:, None],
         cone_curvature_sum(diameter, pitch, angle)[:, None], modulus[:, None])
     converged &= np.isfinite(displacement).all(axis=-1) & np.isfinite(roller_load).all(axis=-1)
-    beyond = ((pressure > pressure_limit[:, None])
+    static, unsafe = static_safety(pressure.max(axis=-1), "roller", minimum_safety)
+    beyond = unsafe | ((pressure > pressure_limit[:, None])
               | (compression > APPROACH_LIMIT * diameter[:, None])).any(axis=-1)
     status = combine_status(
         np.select([~carried, ~converged], [INFEASIBLE, NOT_CONVERGED], CONVERGED),
@@ -242,7 +248,7 @@ def trb_load(radial_load, axial_load, roller_count, effective_length, roller_mea
                "axial_displacement": displacement[:, 1], "roller_load": roller_load,
                "loaded_rollers": np.count_nonzero(compression > 0, axis=-1).astype(float),
                "max_contact_pressure": pressure,
-               "largest_contact_pressure": pressure.max(axis=-1),
+               "largest_contact_pressure": pressure.max(axis=-1), **static,
                **_film(roller_load, length, diameter, pitch, angle, modulus, speed, life, *oil),
                **rating_lives(reference_life, tapered_equivalent_load(radial, axial, angle),
                               "roller", speed, pitch, *life)}
@@ -615,7 +621,7 @@ MODELS = [
                   "validity (ISO 76: 4000 for roller bearings of through-hardened steel)",
                   default=4000.0, minimum=0.0, exclusive_minimum=True,
                   label="contact pressure limit"),
-            SPEED_INPUT) + LIFE_INPUTS + FILM_INPUTS,
+            SPEED_INPUT) + LIFE_INPUTS + FILM_INPUTS + STATIC_INPUTS,
         outputs=(
             Output("radial_displacement", "mm", "radial displacement delta_r of the inner ring",
                    label="radial displacement"),
@@ -632,7 +638,7 @@ MODELS = [
                    "all rollers (NaN without pitch_diameter)",
                    label="largest contact pressure"),
         ) + film_outputs("every loaded roller's cone and cup contact (Pan and Hamrock's line "
-                         "contact); NaN without pitch_diameter")
+                         "contact); NaN without pitch_diameter") + static_outputs("roller")
         + life_outputs("roller loads (one lamina each), inner ring rotating; NaN without "
                          "pitch_diameter", "ISO 281 Table 8, P = Fr for Fa/Fr <= 1.5 tan(alpha), "
                          "else 0.4 Fr + 0.4 cot(alpha) Fa"),
@@ -650,7 +656,8 @@ MODELS = [
         points_per_call=4096,
         validity="a roller's cone contact pressure above pressure_limit (default 4000 MPa, "
                  "ISO 76's reference stress for roller bearings; checked when pitch_diameter "
-                 "is given) or its compression above 2 % of the mean roller diameter; "
+                 "is given) or its compression above 2 % of the mean roller diameter; a "
+                 "pressure_safety_factor below minimum_static_safety, where given; "
                  "whatever the outcome, inputs that describe no bearing: "
                  f"{STEEL_VALIDITY} (eq. 14's constant); {SPEED_VALIDITY} (with "
                  f"pitch_diameter); {OIL_VALIDITY}",

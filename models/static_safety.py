@@ -1,0 +1,78 @@
+"""Static safety as a bearing model reports it: the input and output every model that loads
+rolling elements declares alike, and the one function that forms them from its largest
+contact pressure.
+
+ISO 76 sets a bearing's basic static load rating C0 at the load that raises the contact
+pressure of its most loaded rolling element to a reference stress: 4200 MPa for ball bearings
+(other than self-aligning ones), 4000 MPa for roller bearings, where the permanent deformation
+of rolling element and raceway together reaches about 1e-4 of the rolling element's
+diameter. A model that knows its load distribution knows that pressure itself: the factor by
+which its most loaded contact's load may grow before it reaches the reference stress is
+``(p_ref / p_max)^3`` for a point contact (``p_0`` grows as ``Q^(1/3)``) and ``(p_ref /
+p_max)^2`` for a line contact (as ``w^(1/2)``).
+"""
+from __future__ import annotations
+
+import numpy as np
+
+from .contact import BALL_PRESSURE_LIMIT, ROLLER_PRESSURE_LIMIT
+from .registry import Input, Output
+
+#: ISO 76's reference stress and how a contact's load grows with its pressure, by contact.
+_REFERENCES = {"ball": (BALL_PRESSURE_LIMIT, 3.0), "roller": (ROLLER_PRESSURE_LIMIT, 2.0)}
+
+#: Declared after the film inputs (the function's last parameter).
+STATIC_INPUTS = (
+    Input("minimum_static_safety", "1", "smallest static safety the application needs: a "
+          "point whose pressure_safety_factor is below it is out of validity, values kept "
+          "(catalogues ask about 1 for quiet running, 2 or more for shock loads and "
+          "demands on running accuracy; up to 20); default: no check", default=None,
+          minimum=0.0, exclusive_minimum=True, maximum=20.0, label="minimum static safety"),
+)
+
+STATIC_OUTPUT_NAMES = ("pressure_safety_factor",)
+
+
+def static_outputs(kind):
+    """Output declarations of :func:`static_safety`'s results for ``kind`` ('ball' or
+    'roller') bearings."""
+    reference, exponent = _REFERENCES[kind]
+    return (
+        Output("pressure_safety_factor", "1", "static safety from the load distribution: "
+               f"(p_ref / p_max)^{exponent:g}, the factor by which the most loaded contact's "
+               f"load may grow before its pressure reaches ISO 76's reference stress p_ref = "
+               f"{reference / 1e6:g} MPa (that of the static load rating C0)",
+               label="static safety from contact pressure"),
+    )
+
+
+def static_safety(largest_pressure, kind, minimum_static_safety):
+    """The static safety outputs, and where they fall below the required minimum.
+
+    Parameters
+    ----------
+    largest_pressure : array_like
+        The model's largest contact pressure ``p_max`` [Pa].
+    kind : {'ball', 'roller'}
+    minimum_static_safety : array_like or None
+        The smallest factor the application needs [-]; None: no check.
+
+    Returns
+    -------
+    outputs : dict of numpy.ndarray
+        ``pressure_safety_factor`` ``(p_ref / p_max)^n`` [-] (infinite without load).
+    below : numpy.ndarray of bool
+        Where the factor lies below ``minimum_static_safety`` (False without one).
+
+    References
+    ----------
+    .. [1] ISO 76:2006, Rolling bearings - Static load ratings, 3.1 (the reference
+       stresses).
+    """
+    reference, exponent = _REFERENCES[kind]
+    with np.errstate(divide="ignore"):
+        factor = (reference / np.asarray(largest_pressure, dtype=float)) ** exponent
+    required = np.nan if minimum_static_safety is None else minimum_static_safety
+    with np.errstate(invalid="ignore"):
+        below = factor < np.asarray(required, dtype=float)
+    return {"pressure_safety_factor": factor}, below

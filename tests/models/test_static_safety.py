@@ -1,0 +1,68 @@
+"""Static safety from the load distribution's largest contact pressure (ISO 76's reference
+stresses), and the application's minimum."""
+import math
+
+import numpy as np
+import pytest
+
+from bearing_sweep.models.ball import ball_5dof
+from bearing_sweep.models.contact import hertz_point
+from bearing_sweep.models.cylindrical import crb_radial
+from bearing_sweep.models.registry import OUT_OF_VALIDITY, out_of_validity
+from bearing_sweep.models.tapered import trb_load
+
+#: A cylindrical roller bearing of straight rollers, in mm (crb_radial_throughput's).
+Z, D, DM, L = 14, 10.0, 65.0, 9.6
+
+
+def test_a_roller_bearing_at_its_iso_76_rating_has_the_safety_of_its_load_share():
+    """ISO 76:2006: C0r = 44 (1 - D/dm) Z l D is the radial load that gives 4000 MPa at the
+    most loaded roller if it carried Q_max = 5 Fr / Z (ISO/TR 10657); without clearance
+    rollers share the load better, Q_max = 4.08 Fr / Z (Palmgren; Harris and Kotzalas,
+    Rolling Bearing Analysis, ch. 7), so the safety at Fr = C0r is 5 / 4.08 (the pressure
+    grows as the load's square root). Tolerance 1 %: 44 is rounded (44.2 for steel) and 4.08
+    holds for many rollers (14 here)."""
+    rating = 44 * (1 - D / DM) * Z * L * D  # [N], lengths in mm
+    result = crb_radial(rating, Z, DM * 1e-3, D * 1e-3, L * 1e-3)
+    assert result["pressure_safety_factor"] == pytest.approx(5 / 4.08, rel=1e-2)
+
+
+def test_the_safety_is_the_load_factor_that_takes_the_pressure_to_the_reference():
+    """The most loaded ball's load times the safety gives ISO 76's 4200 MPa at its more
+    curved contact, as hertz_point finds it from the curvatures."""
+    diameter, pitch = 12.7e-3, 65e-3
+    result = ball_5dof(9, diameter, pitch, 0.0, 0.52, 0.53, radial_load=6000.0,
+                       fixed_dofs="axial tilt_y tilt_z")
+    ball = 2 / diameter
+    load = result["ball_load"].max() * result["pressure_safety_factor"][0]
+    contact = hertz_point(load, ball, ball, ball * diameter / (pitch - diameter),
+                          -1 / (0.52 * diameter))
+    assert contact["max_pressure"] == pytest.approx(4200e6, rel=1e-9)
+
+
+@pytest.mark.parametrize("model", ["crb_radial", "ball_5dof", "trb_load"])
+def test_without_clearance_the_safety_falls_as_one_over_the_load(model):
+    """Without clearance, and with contact angles that do not follow the load, the load
+    distribution keeps its shape as the load grows, so the most loaded element's load, and
+    with it 1 / s0, grows in proportion."""
+    loads = np.array([1000.0, 2000.0, 5000.0])
+    result = {
+        "crb_radial": lambda: crb_radial(loads, Z, DM * 1e-3, D * 1e-3, L * 1e-3),
+        "ball_5dof": lambda: ball_5dof(9, 12.7e-3, 65e-3, math.radians(25), axial_load=loads,
+                                       radial_load=loads / 2, geometry="fixed_angle",
+                                       fixed_dofs="tilt_y tilt_z"),
+        "trb_load": lambda: trb_load(loads / 2, loads, 17, 15e-3, 8e-3, math.radians(15),
+                                     pitch_diameter=60e-3),
+    }[model]()
+    safety = result["pressure_safety_factor"]
+    np.testing.assert_allclose(safety * loads, safety[0] * loads[0], rtol=1e-8)
+
+
+def test_a_point_below_the_minimum_static_safety_is_out_of_validity_with_its_values():
+    loads = np.array([2000.0, 60_000.0])
+    free = crb_radial(loads, Z, DM * 1e-3, D * 1e-3, L * 1e-3)
+    checked = crb_radial(loads, Z, DM * 1e-3, D * 1e-3, L * 1e-3, minimum_static_safety=2.0)
+    assert free["pressure_safety_factor"][0] > 2.0 > free["pressure_safety_factor"][1] > 1.0
+    assert not out_of_validity(free["status"]).any()
+    assert checked["status"][1] == OUT_OF_VALIDITY and not out_of_validity(checked["status"][0])
+    np.testing.assert_array_equal(checked["radial_stiffness"], free["radial_stiffness"])
