@@ -28,6 +28,8 @@ from .limits import (OIL_VALIDITY, SOFTEST_BEARING_SOLID, SPEED_VALIDITY, not_st
                      outside_operation)
 from .lubrication import (CELSIUS, MINERAL_OIL_PRESSURE_VISCOSITY, entrainment_speed,
                           point_contact_film)
+from .operating_clearance import (BEARING_STEEL_EXPANSION, OPERATING_INPUTS,
+                                  REFERENCE_TEMPERATURE, mounted_clearance, operating_outputs)
 from .registry import (CONVERGED, INFEASIBLE, NOT_CONVERGED, OUT_OF_VALIDITY, Constraint,
                              Input, Model, Output, combine_status)
 from .static_safety import STATIC_INPUTS, static_outputs, static_safety
@@ -158,7 +160,13 @@ def ball_5dof(ball_count, ball_diameter, pitch_diameter, contact_angle,
               contamination_factor=DEFAULT_CONTAMINATION_FACTOR,
               oil_temperature=70.0 + CELSIUS, viscosity_40=None, viscosity_100=None,
               oil_density=MINERAL_OIL_DENSITY, pressure_viscosity=MINERAL_OIL_PRESSURE_VISCOSITY,
-              composite_roughness=None, minimum_static_safety=None):
+              composite_roughness=None, minimum_static_safety=None, shaft_fit=0.0,
+              housing_fit=0.0, bore=None, outside_diameter=None, shaft_bore=0.0,
+              housing_outside_diameter=None, inner_ring_temperature=REFERENCE_TEMPERATURE,
+              outer_ring_temperature=REFERENCE_TEMPERATURE, shaft_temperature=None,
+              housing_temperature=None, shaft_youngs_modulus=207e9, shaft_poisson_ratio=0.3,
+              shaft_expansion=BEARING_STEEL_EXPANSION, housing_youngs_modulus=207e9,
+              housing_poisson_ratio=0.3, housing_expansion=BEARING_STEEL_EXPANSION):
     """Equilibrium, 5 x 5 stiffness matrix, contact pressures, lubricant film and rating life
     of a ball bearing's inner ring.
 
@@ -211,6 +219,14 @@ def ball_5dof(ball_count, ball_diameter, pitch_diameter, contact_angle,
         ``sigma`` of balls and raceways [m], for the film parameter; None: NaN.
     minimum_static_safety : array_like or None
         The smallest ``pressure_safety_factor`` the application needs [-]; None: no check.
+    shaft_fit, housing_fit, bore, outside_diameter, shaft_bore, housing_outside_diameter,
+    inner_ring_temperature, outer_ring_temperature, shaft_temperature, housing_temperature,
+    shaft_youngs_modulus, shaft_poisson_ratio, shaft_expansion, housing_youngs_modulus,
+    housing_poisson_ratio, housing_expansion : array_like or None
+        The bearing as mounted, for its operating clearance
+        (:func:`models.operating_clearance.operating_clearance`; lengths [m], temperatures
+        [K], moduli [Pa], expansion coefficients [1/K]): the equilibrium takes the operating
+        clearance in place of ``clearance``, the raceways at the groove bottoms ``d_m -+ D``.
 
     Returns
     -------
@@ -224,7 +240,8 @@ def ball_5dof(ball_count, ball_diameter, pitch_diameter, contact_angle,
         ``(N, Z)`` [Pa], the larger Hertz ``p0 = 3Q/(2 pi a b)`` of each ball's two contacts
         (exact ellipse, raceway curvatures at ``alpha_0`` as for the Hertz constant [3]),
         ``largest_contact_pressure`` over the balls [Pa]; the films of
-        :func:`models.bearing_film.bearing_film` [m, -]; the static safety of
+        :func:`models.bearing_film.bearing_film` [m, -]; the operating clearance and its parts
+        of :func:`models.operating_clearance.operating_clearance` [m]; the static safety of
         :func:`models.static_safety.static_safety` [-]; the lives of
         :func:`models.bearing_life.rating_lives` (Notes) [rad: 10^6 revolutions of 2 pi; s],
         ``equivalent_dynamic_load`` [N], ``viscosity_ratio``, ``life_modification_factor``
@@ -299,10 +316,17 @@ def ball_5dof(ball_count, ball_diameter, pitch_diameter, contact_angle,
         outer_curvature_ratio, clearance, youngs_modulus, poisson_ratio, axial_load,
         radial_load, radial_load_z, moment_y, moment_z, contact_constant, pressure_limit,
         speed) + life + (oil_density, pressure_viscosity, composite_roughness,
-                         minimum_static_safety)))
+                         minimum_static_safety, shaft_fit, housing_fit, bore, outside_diameter,
+                         shaft_bore, housing_outside_diameter, inner_ring_temperature,
+                         outer_ring_temperature, shaft_temperature, housing_temperature,
+                         shaft_youngs_modulus, shaft_poisson_ratio, shaft_expansion,
+                         housing_youngs_modulus, housing_poisson_ratio, housing_expansion)))
     (diameter, pitch, angle, inner_ratio, outer_ratio, clearance, modulus, poisson,
      *loads, given, pressure_limit, speed) = arrays[:16]
     life, oil, minimum_safety = arrays[16:22], arrays[22:25], arrays[25]
+    mounted = mounted_clearance(clearance, pitch - diameter, pitch + diameter, diameter, speed,
+                                modulus, poisson, *arrays[26:])
+    fit_lost = mounted.pop("fit_lost")
     inner, outer = _per_distinct_row(raceway_contacts, diameter, pitch, angle, inner_ratio,
                                      outer_ratio, modulus, poisson)
     hertz_ok = (inner["status"] == CONVERGED) & (outer["status"] == CONVERGED)
@@ -314,7 +338,8 @@ def ball_5dof(ball_count, ball_diameter, pitch_diameter, contact_angle,
     scale = np.stack([np.ones_like(radius)] * 3 + [radius] * 2, -1)  # length per unit dof
     load = np.stack(loads, -1) / scale
     load[:, ~free] = 0.0
-    rings = _Rings(ball_count, distance, angle, 0.5 * clearance, constant, geometry)
+    rings = _Rings(ball_count, distance, angle, 0.5 * mounted["operating_clearance"], constant,
+                   geometry)
     scaled, converged, stiffness, condition, contacts = _equilibrium(rings, load, free,
                                                                      ball_count)
     approach, ball_load, _, normal_axial, normal_radial, _ = contacts
@@ -344,7 +369,8 @@ def ball_5dof(ball_count, ball_diameter, pitch_diameter, contact_angle,
     no_bearing = (outside_operation(speed, pitch, life[4], life[5])
                   | (np.isfinite(given) & not_steel(modulus, poisson)))
     status = combine_status(status, np.where(
-        (outside & (status == CONVERGED)) | no_bearing, OUT_OF_VALIDITY, CONVERGED))
+        (outside & (status == CONVERGED)) | no_bearing | fit_lost, OUT_OF_VALIDITY,
+        CONVERGED))
     displacement = scaled / scale
     matrix = stiffness * scale[:, :, None] * scale[:, None, :]
     outputs = {
@@ -362,6 +388,7 @@ def ball_5dof(ball_count, ball_diameter, pitch_diameter, contact_angle,
         "largest_contact_pressure": pressure.max(axis=-1),
         "hertz_contact_constant": hertz_constant,
         **static,
+        **mounted,
     }
     axial, radial, radial_z, moment_y, moment_z = loads
     equivalent_load = radial_ball_equivalent_load(np.hypot(radial, radial_z), axial, angle,
@@ -530,7 +557,7 @@ MODELS = [Model(
               default=4200.0, minimum=0.0, exclusive_minimum=True,
               label="contact pressure limit"),
         SPEED_INPUT,
-    ) + LIFE_INPUTS + FILM_INPUTS + STATIC_INPUTS,
+    ) + LIFE_INPUTS + FILM_INPUTS + STATIC_INPUTS + OPERATING_INPUTS,
     outputs=(
         Output("displacement", "m, rad", "displacement of the inner ring", dims=("dof",),
                entry_units=_DOF_UNITS,
@@ -559,7 +586,7 @@ MODELS = [Model(
                "Q = K delta^1.5, K in N/m^1.5",
                label="Hertz load-deflection constant K"),
     ) + film_outputs("every loaded ball's inner and outer contact (Hamrock and Dowson)")
-    + static_outputs("ball")
+    + static_outputs("ball") + operating_outputs()
     + life_outputs("ball loads, inner ring rotating", "X Fr + Y Fa (ISO 281 5.2, Table 3; "
                    "NaN under a moment, or with an axial load below 20 deg)"),
     dim_sizes={"ball": "ball_count", "dof": DOFS, "load_dof": DOFS},
@@ -597,7 +624,8 @@ MODELS = [Model(
              "distance A = (fi + fo - 1) D, where the balls leave their grooves; a loaded ball "
              "whose contact angle has the opposite sign to a non-zero alpha0 (it runs on the "
              "side of the groove an angular-contact ring's low shoulder cuts away); a "
-             "pressure_safety_factor below minimum_static_safety, where given. Not "
+             "pressure_safety_factor below minimum_static_safety, where given; a tight fit "
+             "lost at temperature and speed (the ring may creep). Not "
              "checked: the contact ellipse running over a groove shoulder (shoulder heights "
              "are not inputs); centrifugal and gyroscopic ball loads (a static model). "
              f"Whatever the outcome, inputs that describe no bearing: {SPEED_VALIDITY}; "

@@ -23,6 +23,8 @@ from .limits import (CLEARANCE_VALIDITY, OIL_VALIDITY, ROLLING_ELEMENT_DENSITIES
                      clearance_beyond_bearings, not_steel, outside_operation)
 from .lubrication import (CELSIUS, MINERAL_OIL_PRESSURE_VISCOSITY, entrainment_speed,
                           line_contact_film)
+from .operating_clearance import (BEARING_STEEL_EXPANSION, OPERATING_INPUTS,
+                                  REFERENCE_TEMPERATURE, mounted_clearance, operating_outputs)
 from .profiles import PROFILES, crown_shape, distinct_slices, slice_centres
 from .registry import (CONVERGED, NOT_CONVERGED, OUT_OF_VALIDITY, Constraint, Input,
                              Model, Output)
@@ -378,7 +380,13 @@ def crb_radial(radial_load, roller_count, pitch_diameter, roller_diameter, effec
                oil_temperature=70.0 + CELSIUS, viscosity_40=None, viscosity_100=None,
                oil_density=MINERAL_OIL_DENSITY,
                pressure_viscosity=MINERAL_OIL_PRESSURE_VISCOSITY, composite_roughness=None,
-               minimum_static_safety=None):
+               minimum_static_safety=None, shaft_fit=0.0, housing_fit=0.0, bore=None,
+               outside_diameter=None, shaft_bore=0.0, housing_outside_diameter=None,
+               inner_ring_temperature=REFERENCE_TEMPERATURE,
+               outer_ring_temperature=REFERENCE_TEMPERATURE, shaft_temperature=None,
+               housing_temperature=None, shaft_youngs_modulus=207e9, shaft_poisson_ratio=0.3,
+               shaft_expansion=BEARING_STEEL_EXPANSION, housing_youngs_modulus=207e9,
+               housing_poisson_ratio=0.3, housing_expansion=BEARING_STEEL_EXPANSION):
     """Load distribution, radial stiffness, contact pressure, lubricant film and rating life
     of a cylindrical roller bearing.
 
@@ -451,6 +459,14 @@ def crb_radial(radial_load, roller_count, pitch_diameter, roller_diameter, effec
         ``sigma`` of rollers and raceways [m], for the film parameter; None: NaN.
     minimum_static_safety : array_like or None
         The smallest ``pressure_safety_factor`` the application needs [-]; None: no check.
+    shaft_fit, housing_fit, bore, outside_diameter, shaft_bore, housing_outside_diameter,
+    inner_ring_temperature, outer_ring_temperature, shaft_temperature, housing_temperature,
+    shaft_youngs_modulus, shaft_poisson_ratio, shaft_expansion, housing_youngs_modulus,
+    housing_poisson_ratio, housing_expansion : array_like or None
+        The bearing as mounted, for its operating clearance
+        (:func:`models.operating_clearance.operating_clearance`; lengths [m], temperatures
+        [K], moduli [Pa], expansion coefficients [1/K]): the load distribution takes the
+        operating clearance in place of ``clearance``, the raceways ``d_m -+ D``.
 
     Returns
     -------
@@ -460,7 +476,9 @@ def crb_radial(radial_load, roller_count, pitch_diameter, roller_diameter, effec
         ``centrifugal_force`` [N], ``roller_load`` (inner contact, ``(..., Z)``) [N],
         ``inner_contact_deflection`` (``(..., Z)``, negative: gap) [m],
         ``max_contact_pressure`` (``(..., Z)``) [Pa], ``largest_contact_pressure`` [Pa], the
-        films of :func:`models.bearing_film.bearing_film` [m, -], the static safety of
+        films of :func:`models.bearing_film.bearing_film` [m, -], the operating clearance and
+        its parts of :func:`models.operating_clearance.operating_clearance` [m], the static
+        safety of
         :func:`models.static_safety.static_safety` [-], the lives of
         :func:`models.bearing_life.rating_lives` [rad, s], ``status``.
         Points that did not converge (a NaN anywhere included) are NaN with ``status`` = 1;
@@ -551,14 +569,21 @@ def crb_radial(radial_load, roller_count, pitch_diameter, roller_diameter, effec
         radial_load, pitch_diameter, roller_diameter, effective_length, clearance, crown,
         speed, roller_density, contact_constant, cage_position, misalignment, perturbation,
         effective_modulus(youngs_modulus, poisson_ratio), pressure_limit) + life
-        + (oil_density, pressure_viscosity, composite_roughness, minimum_static_safety)))
+        + (oil_density, pressure_viscosity, composite_roughness, minimum_static_safety,
+           youngs_modulus, poisson_ratio, shaft_fit, housing_fit, bore, outside_diameter,
+           shaft_bore, housing_outside_diameter, inner_ring_temperature,
+           outer_ring_temperature, shaft_temperature, housing_temperature,
+           shaft_youngs_modulus, shaft_poisson_ratio, shaft_expansion, housing_youngs_modulus,
+           housing_poisson_ratio, housing_expansion)))
     shape = arrays[0].shape
     (load, pitch, diameter, length, clearance, crown, speed, density, constant, cage_position,
      misalignment, perturbation, modulus, pressure_limit) = (
         np.array(a.ravel()) for a in arrays[:14])  # owned: numba warns of broadcast views
     life = [a.ravel() for a in arrays[14:20]]
-    oil_density, pressure_viscosity, roughness, minimum_safety = (
-        a.ravel() for a in arrays[20:])
+    oil_density, pressure_viscosity, roughness, minimum_safety, ring_modulus, ring_poisson = (
+        a.ravel() for a in arrays[20:26])
+    mounted = mounted_clearance(clearance, pitch - diameter, pitch + diameter, diameter, speed,
+                                ring_modulus, ring_poisson, *(a.ravel() for a in arrays[26:]))
     azimuth = cage_position[:, None] + 2.0 * np.pi * np.arange(roller_count) / roller_count
     if outer_contact not in OUTER_CONTACTS:
         raise ValueError(f"unknown outer_contact {outer_contact!r}; expected {OUTER_CONTACTS}")
@@ -569,10 +594,12 @@ def crb_radial(radial_load, roller_count, pitch_diameter, roller_diameter, effec
                          "outer contact has no tilt)")
     tilt = np.where((misalignment == 0.0)[:, None], 0.0,
                     0.25 * (misalignment * length)[:, None] * np.cos(azimuth))
-    rollers = _RollerSet(np.cos(azimuth), 0.5 * clearance, crown, constant,
+    rollers = _RollerSet(np.cos(azimuth), 0.5 * mounted["operating_clearance"], crown, constant,
                          centrifugal_force(diameter, length, pitch, speed, density), slices,
                          crown_profile, slice_law, outer_contact, tilt)
     outputs = _solve(rollers, load, perturbation)
+    fit_lost = mounted.pop("fit_lost")
+    outputs.update(mounted)
     # The stiffness the forward difference averages changes across its step: by how much.
     perturbation_error = outputs.pop("stiffness_change") / 2.0
     inner, outer = rollers.approaches(outputs["radial_displacement"],
@@ -628,7 +655,7 @@ def crb_radial(radial_load, roller_count, pitch_diameter, roller_diameter, effec
                   | outside_operation(speed, pitch, *life[4:])
                   | (default_constant & np.broadcast_to(
                       not_steel(youngs_modulus, poisson_ratio), shape).ravel()))
-    outside = ((outputs["status"] == CONVERGED) & beyond) | no_bearing
+    outside = ((outputs["status"] == CONVERGED) & beyond) | no_bearing | fit_lost
     outputs["status"] = np.where(outside, outputs["status"] | OUT_OF_VALIDITY,
                                  outputs["status"]).astype(np.int8)
     return {name: value.reshape(shape + value.shape[1:]) for name, value in outputs.items()}
@@ -759,7 +786,7 @@ MODELS = [Model(
               "validity (ISO 76: 4000 for roller bearings of through-hardened steel)",
               default=4000.0, minimum=0.0, exclusive_minimum=True,
               label="contact pressure limit"),
-    ) + LIFE_INPUTS + FILM_INPUTS + STATIC_INPUTS,
+    ) + LIFE_INPUTS + FILM_INPUTS + STATIC_INPUTS + OPERATING_INPUTS,
     outputs=(
         Output("radial_displacement", "mm", "radial displacement of the inner ring"),
         Output("radial_stiffness", "N/mm", "radial stiffness dFr/d(delta_r), implicit "
@@ -783,7 +810,8 @@ MODELS = [Model(
         Output("largest_contact_pressure", "MPa", "largest maximum contact pressure of all "
                "rollers", label="largest contact pressure"),
     ) + film_outputs("every loaded roller's inner and outer contact (Pan and Hamrock's "
-                     "line contact)") + static_outputs("roller") + life_outputs(
+                     "line contact)") + static_outputs("roller") + operating_outputs()
+    + life_outputs(
         "slice loads of both raceways (laminae), inner ring rotating",
         "P = Fr (ISO 281 7.2, no axial load)"),
     dim_sizes={"roller": "roller_count"},
@@ -822,7 +850,8 @@ MODELS = [Model(
              "pressure or the laminae's life sum, against four times as many slices (at least "
              "240; paper 000's 60 resolve its crowns, loads and 5 mrad; straight, aligned "
              "rollers are exact at any count); a pressure_safety_factor below "
-             "minimum_static_safety, where given; whatever the outcome, inputs that "
+             "minimum_static_safety, where given; a tight fit lost at temperature and speed "
+             "(the ring may creep); whatever the outcome, inputs that "
              f"describe no bearing: {STEEL_VALIDITY}; {CLEARANCE_VALIDITY}; {SPEED_VALIDITY}; "
              f"{OIL_VALIDITY}",
 )]

@@ -90,7 +90,7 @@ def test_an_uncompressed_result_larger_than_the_disk_is_refused_before_computing
     err = capsys.readouterr().err
     assert code == 1 and err.count("\n") == 1 and err.startswith(f"error: {tmp_path / output}"
                                                                   ": needs "), err
-    assert stated(r"needs ([\d.]+) (GB) of disk", err) == pytest.approx(
+    assert stated(r"needs ([\d.]+) (GB|TB) of disk", err) == pytest.approx(
         copies * 1e9 * per_point, rel=5e-3)
     assert f"and {tmp_path} has 71 GB free: free some space" in err
     declared = registry.get_model("crb_radial").seconds_per_point * 1e9
@@ -116,7 +116,7 @@ def test_a_compressed_result_is_refused_once_its_first_chunk_shows_it_cannot_fit
                               "command again" in err
     per_point = float(re.search(r"at the ([\d.]+) bytes a point", err)[1])
     assert 0 < per_point < bytes_a_point(tmp_path)  # compressed
-    assert stated(r"needs about ([\d.]+) (GB) more", err) == pytest.approx(
+    assert stated(r"needs about ([\d.]+) (GB|TB) more", err) == pytest.approx(
         2 * per_point * 1e9, rel=5e-3)  # twice: the file, and its parts until it is complete
     assert sorted(p.name for p in tmp_path.iterdir()) == ["huge.nc.parts", "huge.toml"]
 

@@ -25,7 +25,7 @@ TURN = 2 * math.pi  # rad
 SI_PER_DECLARED = {
     "rpm": TURN / 60, "N": 1.0, "mm": 1e-3, "um": 1e-6, "deg": math.pi / 180, "mrad": 1e-3,
     "rad": 1.0, "mm^2/s": 1e-6, "GPa": 1e9, "MPa": 1e6, "1/GPa": 1e-9, "kg/m^3": 1.0,
-    "N*m": 1.0, "mPa*s": 1e-3, "kg": 1.0, "m/s": 1.0, "s": 1.0, "1": 1.0, "1/mm": 1e3, "N/m": 1.0,
+    "N*m": 1.0, "mPa*s": 1e-3, "1/K": 1.0, "kg": 1.0, "m/s": 1.0, "s": 1.0, "1": 1.0, "1/mm": 1e3, "N/m": 1.0,
 }
 
 #: Spellings of each declared unit: (unit as written, its magnitude for a declared value v).
@@ -58,6 +58,7 @@ SPELLINGS = {
                ("lb/in^3", lambda v: v * INCH**3 / POUND)],
     "N*m": [("N*m", lambda v: v), ("N*mm", lambda v: v * 1e3),
             ("lbf*in", lambda v: v / (POUND_FORCE * INCH))],
+    "1/K": [("1/K", lambda v: v), ("1/MK", lambda v: v * 1e6), ("K^-1", lambda v: v)],
     "mPa*s": [("mPa*s", lambda v: v), ("cP", lambda v: v), ("Pa*s", lambda v: v / 1e3)],
     "kg": [("kg", lambda v: v), ("g", lambda v: v * 1e3), ("lb", lambda v: v / POUND)],
     "m/s": [("m/s", lambda v: v), ("mm/s", lambda v: v * 1e3), ("km/h", lambda v: v * 3.6)],
