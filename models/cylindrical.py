@@ -28,7 +28,7 @@ from .operating_clearance import (BEARING_STEEL_EXPANSION, OPERATING_INPUTS,
 from .profiles import PROFILES, crown_shape, distinct_slices, slice_centres
 from .registry import (CONVERGED, NOT_CONVERGED, OUT_OF_VALIDITY, Constraint, Input,
                              Model, Output)
-from .static_safety import STATIC_INPUTS, static_outputs, static_safety
+from .static_safety import STATIC_INPUTS, roller_rating, static_outputs, static_safety
 
 OUTER_CONTACTS = ("crowned", "paper")
 
@@ -477,8 +477,8 @@ def crb_radial(radial_load, roller_count, pitch_diameter, roller_diameter, effec
         ``inner_contact_deflection`` (``(..., Z)``, negative: gap) [m],
         ``max_contact_pressure`` (``(..., Z)``) [Pa], ``largest_contact_pressure`` [Pa], the
         films of :func:`models.bearing_film.bearing_film` [m, -], the operating clearance and
-        its parts of :func:`models.operating_clearance.operating_clearance` [m], the static
-        safety of
+        its parts of :func:`models.operating_clearance.operating_clearance` [m], ISO 76's
+        rating of :func:`models.static_safety.roller_rating` [N, -], the static safety of
         :func:`models.static_safety.static_safety` [-], the lives of
         :func:`models.bearing_life.rating_lives` [rad, s], ``status``.
         Points that did not converge (a NaN anywhere included) are NaN with ``status`` = 1;
@@ -615,6 +615,7 @@ def crb_radial(radial_load, roller_count, pitch_diameter, roller_diameter, effec
     static, unsafe = static_safety(outputs["largest_contact_pressure"], "roller",
                                    minimum_safety)
     outputs.update(static)
+    outputs.update(roller_rating(roller_count, length, diameter, pitch, 0.0, load, 0.0))
     # Each roller's load spread over its effective length, on both raceways.
     films = [line_contact_film(
         contact_load, length[:, None], 1.0 / curvature[:, None],

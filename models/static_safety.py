@@ -31,19 +31,75 @@ STATIC_INPUTS = (
 )
 
 STATIC_OUTPUT_NAMES = ("pressure_safety_factor",)
+#: The outputs of ISO 76's static load rating, for roller bearings.
+RATING_OUTPUT_NAMES = ("static_load_rating", "static_equivalent_load", "static_safety_factor")
+#: ISO 76:2006, 5.1: the factor of a radial roller bearing's rating [N/mm^2].
+_ROLLER_RATING_FACTOR = 44e6  # [Pa]
 
 
 def static_outputs(kind):
     """Output declarations of :func:`static_safety`'s results for ``kind`` ('ball' or
-    'roller') bearings."""
+    'roller') bearings; roller bearings' include ISO 76's rating (:func:`roller_rating`)."""
     reference, exponent = _REFERENCES[kind]
-    return (
+    pressure = (
         Output("pressure_safety_factor", "1", "static safety from the load distribution: "
                f"(p_ref / p_max)^{exponent:g}, the factor by which the most loaded contact's "
                f"load may grow before its pressure reaches ISO 76's reference stress p_ref = "
                f"{reference / 1e6:g} MPa (that of the static load rating C0)",
                label="static safety from contact pressure"),
     )
+    if kind != "roller":
+        return pressure
+    return pressure + (
+        Output("static_load_rating", "kN", "basic static radial load rating C0r = 44 (1 - D "
+               "cos a / dm) Z l D cos a (ISO 76:2006, 5.1; N, mm)",
+               label="static load rating C0r"),
+        Output("static_equivalent_load", "N", "static equivalent radial load P0r (ISO 76:2006, "
+               "5.2: Fr at a = 0; else the larger of Fr and 0.5 Fr + 0.22 cot(a) Fa)",
+               label="static equivalent load P0r"),
+        Output("static_safety_factor", "1", "static safety factor s0 = C0r / P0r, as "
+               "catalogues form it (infinite without load)", label="static safety s0"),
+    )
+
+
+def roller_rating(roller_count, effective_length, roller_diameter, pitch_diameter,
+                  contact_angle, radial_load, axial_load):
+    """ISO 76's static load rating, equivalent load and safety of a single-row radial roller
+    bearing.
+
+    Parameters
+    ----------
+    roller_count : int
+        ``Z``.
+    effective_length, roller_diameter, pitch_diameter : array_like
+        ``L_we``, ``D_we`` (a tapered roller's mean diameter), ``D_pw`` [m].
+    contact_angle : array_like
+        Nominal contact angle ``a`` [rad] (0: a cylindrical roller bearing).
+    radial_load, axial_load : array_like
+        ``F_r``, ``F_a`` [N].
+
+    Returns
+    -------
+    dict of numpy.ndarray
+        :data:`RATING_OUTPUT_NAMES`: ``C0r = 44 (1 - D_we cos a / D_pw) Z L_we D_we cos a``
+        [N] (the constant in N/mm^2), ``P0r`` [N] and ``s0 = C0r / P0r`` [-].
+
+    References
+    ----------
+    .. [1] ISO 76:2006, Rolling bearings - Static load ratings, 5.1 (C0r of radial roller
+       bearings) and 5.2 (P0r: X0 = 0.5, Y0 = 0.22 cot a for single-row bearings with
+       a != 0, and P0r = Fr where that is larger).
+    """
+    cos_angle = np.cos(contact_angle)
+    rating = (_ROLLER_RATING_FACTOR * (1.0 - roller_diameter * cos_angle / pitch_diameter)
+              * roller_count * effective_length * roller_diameter * cos_angle)
+    radial, axial = np.asarray(radial_load, dtype=float), np.abs(axial_load)
+    with np.errstate(divide="ignore", invalid="ignore"):
+        combined = 0.5 * radial + 0.22 * axial / np.tan(contact_angle)
+        load = np.where(np.asarray(contact_angle) == 0, radial, np.maximum(radial, combined))
+        safety = rating / load
+    return {"static_load_rating": rating, "static_equivalent_load": load,
+            "static_safety_factor": safety}
 
 
 def static_safety(largest_pressure, kind, minimum_static_safety):

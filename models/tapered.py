@@ -34,7 +34,7 @@ from .registry import (CONVERGED, INFEASIBLE, NO_ROOT_IN_RANGE, NOT_CONVERGED,
                        OUT_OF_VALIDITY, Constraint, Input, Model, Output, below,
                        combine_status)
 from .solvers import solve_increasing
-from .static_safety import STATIC_INPUTS, static_outputs, static_safety
+from .static_safety import STATIC_INPUTS, roller_rating, static_outputs, static_safety
 
 #: Load-deflection exponent of a roller between its raceways, Q = K delta^1.11 (eq. 13-18).
 LOAD_EXPONENT = 1.11
@@ -148,8 +148,9 @@ def trb_load(radial_load, axial_load, roller_count, effective_length, roller_mea
         ``radial_displacement`` ``delta_r``, ``axial_displacement`` ``delta_a`` [m],
         ``roller_load`` ``(N, Z)`` [N] (eq. 18 with its exponent 1.11), ``loaded_rollers``,
         ``max_contact_pressure`` ``(N, Z)`` [Pa], the films of
-        :func:`models.bearing_film.bearing_film` [m, -] and the static safety of
-        :func:`models.static_safety.static_safety` [-] (both NaN without
+        :func:`models.bearing_film.bearing_film` [m, -], the static safety of
+        :func:`models.static_safety.static_safety` [-] and ISO 76's rating of
+        :func:`models.static_safety.roller_rating` [N, -] (all NaN without
         ``pitch_diameter``), the lives of
         :func:`models.bearing_life.rating_lives` [rad, s], ``status``: infeasible where
         ``F_r tan(alpha) > F_a`` (the rollers cannot carry the radial load without pulling)
@@ -249,6 +250,7 @@ def trb_load(radial_load, axial_load, roller_count, effective_length, roller_mea
                "loaded_rollers": np.count_nonzero(compression > 0, axis=-1).astype(float),
                "max_contact_pressure": pressure,
                "largest_contact_pressure": pressure.max(axis=-1), **static,
+               **roller_rating(roller_count, length, diameter, pitch, angle, radial, axial),
                **_film(roller_load, length, diameter, pitch, angle, modulus, speed, life, *oil),
                **rating_lives(reference_life, tapered_equivalent_load(radial, axial, angle),
                               "roller", speed, pitch, *life)}

@@ -19,8 +19,9 @@ FIGURES = {
                 "smallest minimum film of its ball contacts (Hamrock and Dowson) and the "
                 "film parameter against speed at three oil temperatures.",
     "static_safety.png": "NU 208: static safety from the largest contact pressure against "
-                         "radial load, without clearance and with 40 um; the dashed line is "
-                         "ISO 76's basic static load rating C0r.",
+                         "radial load, without clearance and with 40 um, beside the "
+                         "catalogue's s0 = C0r / P0r (dotted); the dashed line is ISO 76's "
+                         "basic static load rating C0r.",
 }
 
 #: ISO 76:2006's basic static load rating of the NU 208 of the study [N]:
@@ -129,10 +130,12 @@ def _static(results, figures):
     for index, clearance in enumerate(in_unit(data.clearance, "um").values):
         axis.loglog(load, data.pressure_safety_factor.isel(clearance=index),
                     color=f"C{index}", label=f"clearance {clearance:g} µm")
+    axis.loglog(load, data.static_safety_factor.isel(clearance=0), color="0.3", linestyle=":",
+                label="C0r / P0r (ISO 76)")
     axis.axvline(STATIC_RATING / 1e3, color="0.4", linestyle="--", label="C0r (ISO 76)")
     axis.axhline(1.0, color="0.6", linewidth=0.8)
-    axis.set(xlabel="radial load [kN]", ylabel="static safety from contact pressure [-]",
-             title="NU 208: (4000 MPa / p_max)^2")
+    axis.set(xlabel="radial load [kN]", ylabel="static safety s0 [-]",
+             title="NU 208: (4000 MPa / p_max)^2 and C0r / P0r")
     _plain_log(axis.xaxis, axis.yaxis)
     axis.legend()
     save(figure, figures, "static_safety.png")
@@ -170,4 +173,5 @@ def ours(results: Path) -> dict:
     safety = static.pressure_safety_factor.values
     values["static_at_rating"] = float(np.median(safety * load) / STATIC_RATING)
     values["static_load_exponent"] = float(np.polyfit(np.log(load), np.log(safety), 1)[0])
+    values["static_rating"] = float(in_unit(static.static_load_rating, "kN").max())
     return values

@@ -66,3 +66,31 @@ def test_a_point_below_the_minimum_static_safety_is_out_of_validity_with_its_val
     assert not out_of_validity(free["status"]).any()
     assert checked["status"][1] == OUT_OF_VALIDITY and not out_of_validity(checked["status"][0])
     np.testing.assert_array_equal(checked["radial_stiffness"], free["radial_stiffness"])
+
+
+def test_the_roller_bearings_static_rating_is_iso_76s_and_gives_4000_mpa_at_its_share():
+    """ISO 76:2006, 5.1: C0r = 44 (1 - D cos a / dm) Z l D cos a (N, mm), the radial load at
+    which the most loaded roller, carrying 5 Fr / (Z cos a) (ISO/TR 10657), reaches 4000 MPa.
+    Tolerance 0.5 %: 44 is rounded (44.2 for steel, E = 207 GPa, nu = 0.3)."""
+    from bearing_sweep.models.contact import line_contact_pressure
+    result = crb_radial(5000.0, Z, DM * 1e-3, D * 1e-3, L * 1e-3)
+    rating = 44 * (1 - D / DM) * Z * L * D
+    assert result["static_load_rating"] == pytest.approx(rating, rel=1e-12)
+    share = 5 * rating / Z / (L * 1e-3)
+    pressure = line_contact_pressure(share, 2 / (D * 1e-3) + 2 / ((DM - D) * 1e-3),
+                                     207e9 / (2 * (1 - 0.3**2)))
+    assert pressure == pytest.approx(4000e6, rel=5e-3)
+    assert result["static_safety_factor"] == pytest.approx(rating / 5000.0, rel=1e-12)
+
+
+def test_a_tapered_bearings_static_equivalent_load_is_iso_76s():
+    """ISO 76:2006, 5.2, single row, a != 0: P0r = 0.5 Fr + 0.22 cot(a) Fa, but not below
+    Fr; C0r with the contact angle's cosine."""
+    angle = math.radians(15)
+    radial, axial = np.array([10e3, 10e3]), np.array([4e3, 40e3])
+    result = trb_load(radial, axial, 17, 15e-3, 8e-3, angle, pitch_diameter=60e-3)
+    expected = np.maximum(radial, 0.5 * radial + 0.22 / math.tan(angle) * axial)
+    assert expected[0] == radial[0] and expected[1] > radial[1]  # both branches
+    np.testing.assert_allclose(result["static_equivalent_load"], expected, rtol=1e-12)
+    rating = 44 * (1 - 8 * math.cos(angle) / 60) * 17 * 15 * 8 * math.cos(angle)
+    np.testing.assert_allclose(result["static_load_rating"], rating, rtol=1e-12)
