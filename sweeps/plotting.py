@@ -13,6 +13,7 @@ import numpy as np
 import xarray as xr
 from matplotlib.backends.backend_agg import FigureCanvasAgg
 from matplotlib.figure import Figure
+from matplotlib.ticker import LogLocator, NullFormatter, StrMethodFormatter
 
 from . import units
 from .definition.tables import suggestion
@@ -109,6 +110,15 @@ def subplots(nrows: int = 1, ncols: int = 1, *, figsize=None, **settings):
 
 #: Who wrote a figure, in its metadata: a figure is replaced only by one of ours.
 MAKER = "bearing-sweep"
+
+
+def plain_log_ticks(*scales):
+    """Ticks at 1, 2, 5, 10, ... on the logarithmic axes ``scales`` (``axis.xaxis``, ...),
+    written as plain numbers rather than powers of ten."""
+    for scale in scales:
+        scale.set_major_locator(LogLocator(subs=(1, 2, 5)))
+        scale.set_major_formatter(StrMethodFormatter("{x:g}"))
+        scale.set_minor_formatter(NullFormatter())
 
 
 def metadata(suffix: str) -> dict:

@@ -4,11 +4,10 @@ results only."""
 from pathlib import Path
 
 import numpy as np
-from matplotlib.ticker import LogLocator, NullFormatter, StrMethodFormatter
 
 from bearing_sweep.models.bearing_life import beyond_life_equation
-from bearing_sweep.plotting import (at, conditions, family, in_unit, label, result,
-                                    ring, save, subplots)
+from bearing_sweep.plotting import (at, conditions, family, in_unit, label,
+                                    plain_log_ticks, result, ring, save, subplots)
 
 FIGURES = {
     "clearance.png": "Bearing D (paper 000): ISO/TS 16281 reference life L10r (solid) and "
@@ -198,10 +197,7 @@ def _modified(results, figures):
     family(right, data.radial_load, data.life_modification_factor, "oil_temperature",
            "oil at {:g} degC", plot="semilogy", xlabel=label(data.radial_load),
            ylabel="life modification factor aISO of L10rm", title="aISO (capped at 50)")
-    for scale in (left.xaxis, right.yaxis):  # 1, 2, 5, 10 on a log scale: not 10^0, 10^1
-        scale.set_major_locator(LogLocator(subs=(1, 2, 5)))
-        scale.set_major_formatter(StrMethodFormatter("{x:g}"))
-        scale.set_minor_formatter(NullFormatter())
+    plain_log_ticks(left.xaxis, right.yaxis)
     figure.suptitle(conditions(data, "speed", "clearance", "crown", "contamination_factor",
                                "fatigue_load_limit", "viscosity_40", "viscosity_100",
                                width=110, fatigue_load_limit="kN", crown="um"), fontsize=9)

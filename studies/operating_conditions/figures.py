@@ -3,9 +3,9 @@ the oil film and the static safety, from the netCDF results only."""
 from pathlib import Path
 
 import numpy as np
-from matplotlib.ticker import LogLocator, NullFormatter, StrMethodFormatter
 
-from bearing_sweep.plotting import at, conditions, in_unit, label, result, save, subplots
+from bearing_sweep.plotting import (at, conditions, in_unit, label, plain_log_ticks, result,
+                                    save, subplots)
 
 FIGURES = {
     "fits.png": "NU 208 on a solid steel shaft: operating clearance, radial stiffness and "
@@ -27,14 +27,6 @@ FIGURES = {
 #: ISO 76:2006's basic static load rating of the NU 208 of the study [N]:
 #: C0r = 44 (1 - D/dm) Z l D with D = 11 mm, dm = 60.5 mm, Z = 14, l = 10 mm.
 STATIC_RATING = 44 * (1 - 11 / 60.5) * 14 * 10 * 11
-
-
-def _plain_log(*scales):
-    """Ticks 1, 2, 5, 10, ... on logarithmic ``scales``, written as plain numbers."""
-    for scale in scales:
-        scale.set_major_locator(LogLocator(subs=(1, 2, 5)))
-        scale.set_major_formatter(StrMethodFormatter("{x:g}"))
-        scale.set_minor_formatter(NullFormatter())
 
 
 def draw(results: Path, figures: Path):
@@ -115,7 +107,7 @@ def _film(results, figures):
              title="Smallest minimum film")
     right.set(xlabel="inner ring speed [r/min]", ylabel="film parameter λ [-]",
               title="Film parameter h_min / σ")
-    _plain_log(left.xaxis, left.yaxis, right.xaxis)
+    plain_log_ticks(left.xaxis, left.yaxis, right.xaxis)
     left.legend()
     figure.suptitle(conditions(data, "axial_load", "radial_load", "viscosity_40",
                                "viscosity_100", "composite_roughness", width=110,
@@ -136,7 +128,7 @@ def _static(results, figures):
     axis.axhline(1.0, color="0.6", linewidth=0.8)
     axis.set(xlabel="radial load [kN]", ylabel="static safety s0 [-]",
              title="NU 208: (4000 MPa / p_max)^2 and C0r / P0r")
-    _plain_log(axis.xaxis, axis.yaxis)
+    plain_log_ticks(axis.xaxis, axis.yaxis)
     axis.legend()
     save(figure, figures, "static_safety.png")
 
