@@ -32,7 +32,7 @@ from .operating_clearance import (BEARING_STEEL_EXPANSION, OPERATING_INPUTS,
                                   REFERENCE_TEMPERATURE, mounted_clearance, operating_outputs)
 from .registry import (CONVERGED, INFEASIBLE, NOT_CONVERGED, OUT_OF_VALIDITY, Constraint,
                              Input, Model, Output, combine_status)
-from .static_safety import STATIC_INPUTS, static_outputs, static_safety
+from .static_safety import STATIC_INPUTS, ball_rating, static_outputs, static_safety
 
 DOFS = ("axial", "radial_y", "radial_z", "tilt_y", "tilt_z")
 GEOMETRIES = ("jones", "fixed_angle")
@@ -241,7 +241,8 @@ def ball_5dof(ball_count, ball_diameter, pitch_diameter, contact_angle,
         (exact ellipse, raceway curvatures at ``alpha_0`` as for the Hertz constant [3]),
         ``largest_contact_pressure`` over the balls [Pa]; the films of
         :func:`models.bearing_film.bearing_film` [m, -]; the operating clearance and its parts
-        of :func:`models.operating_clearance.operating_clearance` [m]; the static safety of
+        of :func:`models.operating_clearance.operating_clearance` [m]; ISO 76's rating of
+        :func:`models.static_safety.ball_rating` [N, -]; the static safety of
         :func:`models.static_safety.static_safety` [-]; the lives of
         :func:`models.bearing_life.rating_lives` (Notes) [rad: 10^6 revolutions of 2 pi; s],
         ``equivalent_dynamic_load`` [N], ``viscosity_ratio``, ``life_modification_factor``
@@ -393,6 +394,8 @@ def ball_5dof(ball_count, ball_diameter, pitch_diameter, contact_angle,
     axial, radial, radial_z, moment_y, moment_z = loads
     equivalent_load = radial_ball_equivalent_load(np.hypot(radial, radial_z), axial, angle,
                                                   np.hypot(moment_y, moment_z))
+    outputs.update(ball_rating(ball_count, diameter, pitch, angle, np.hypot(radial, radial_z),
+                               axial, np.hypot(moment_y, moment_z)))
     outputs.update(rating_lives(
         _reference_life(ball_load, life[0], diameter, pitch, angle, inner_ratio, outer_ratio),
         equivalent_load, "ball", speed, pitch, *life))

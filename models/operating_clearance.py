@@ -7,8 +7,7 @@ elements are bearing steel; shaft and housing of any elastic material. All parts
 cylinders in plane stress (Lame), which the rings' shoulders and the housing's shape make
 stiffer in reality: the raceway diameters stand for the rings' outer (inner ring) and inner
 (outer ring) surfaces, so the share of an interference that reaches the raceway is an upper
-bound (catalogues take 70-90 % for usual rings; here a thin ring on a solid shaft passes
-nearly all of it).
+bound (on a solid shaft of the ring's material, d / d_i of it).
 """
 from __future__ import annotations
 
