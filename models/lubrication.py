@@ -1,5 +1,6 @@
 """Oil and traction: viscosity against temperature and pressure, EHL film thickness of line
-and elliptical contacts, and the traction curve of a lubricated rolling contact against sliding speed."""
+and elliptical contacts, and the traction curve of a lubricated rolling contact against
+sliding speed."""
 from __future__ import annotations
 
 import numpy as np

@@ -192,8 +192,8 @@ def trb_load(radial_load, axial_load, roller_count, effective_length, roller_mea
     bearings, beyond which the permanent deformation exceeds 1e-4 of the roller diameter and
     the contact is no longer elastic; checked only with ``pitch_diameter``), or its compression
     exceeds 2 % of ``D_w``, where the fixed contact angle and azimuths of the model no longer
-    hold, or the static safety lies below ``minimum_static_safety``; and, whatever the outcome, where the inputs describe no bearing: eq. 14's constant
-    (fitted to steel) with ``youngs_modulus`` and ``poisson_ratio`` whose ``E*`` lies more
+    hold, or the static safety lies below ``minimum_static_safety``; and, whatever the
+    outcome, where the inputs describe no bearing: eq. 14's constant (fitted to steel) with ``youngs_modulus`` and ``poisson_ratio`` whose ``E*`` lies more
     than 10 % from steel's (:func:`models.limits.not_steel`), a speed factor ``n d_m`` above
     4e6 mm r/min or an oil whose viscosity index no lubricant has
     (:func:`models.limits.outside_operation`).
