@@ -21,13 +21,14 @@ from .bearing_film import (FILM_INPUTS, MINERAL_OIL_DENSITY, bearing_film, film_
 from .bearing_life import (DEFAULT_CONTAMINATION_FACTOR, LIFE_CONSTRAINTS, LIFE_INPUTS,
                            SPEED_INPUT, life_outputs, rating_lives)
 from .contact import POINT_CONTACT_EXPONENT, STIFFEST_SOLID, effective_modulus, hertz_point
+from .friction import bearing_friction, friction_inputs, friction_outputs
 from .geometry import elements_fit
 from .kernels import Kernels
 from .life import ball_bearing_reference_life, radial_ball_equivalent_load
 from .limits import (OIL_VALIDITY, SOFTEST_BEARING_SOLID, SPEED_VALIDITY, not_steel,
                      outside_operation)
 from .lubrication import (CELSIUS, MINERAL_OIL_PRESSURE_VISCOSITY, entrainment_speed,
-                          point_contact_film)
+                          point_contact_film, walther_viscosity)
 from .operating_clearance import (BEARING_STEEL_EXPANSION, OPERATING_INPUTS,
                                   REFERENCE_TEMPERATURE, mounted_clearance, operating_outputs)
 from .registry import (CONVERGED, INFEASIBLE, NOT_CONVERGED, OUT_OF_VALIDITY, Constraint,
@@ -166,7 +167,13 @@ def ball_5dof(ball_count, ball_diameter, pitch_diameter, contact_angle,
               outer_ring_temperature=REFERENCE_TEMPERATURE, shaft_temperature=None,
               housing_temperature=None, shaft_youngs_modulus=207e9, shaft_poisson_ratio=0.3,
               shaft_expansion=BEARING_STEEL_EXPANSION, housing_youngs_modulus=207e9,
-              housing_poisson_ratio=0.3, housing_expansion=BEARING_STEEL_EXPANSION):
+              housing_poisson_ratio=0.3, housing_expansion=BEARING_STEEL_EXPANSION,
+              friction_method="skf", lubrication_method="oil_bath",
+              skf_rolling_constant_1=None, skf_rolling_constant_2=None,
+              skf_rolling_constant_3=None, skf_sliding_constant_1=None,
+              skf_sliding_constant_2=None, skf_sliding_constant_3=None,
+              boundary_friction_coefficient=0.15, full_film_friction_coefficient=0.05,
+              palmgren_speed_factor=None, palmgren_load_factor=None):
     """Equilibrium, 5 x 5 stiffness matrix, contact pressures, lubricant film and rating life
     of a ball bearing's inner ring.
 
@@ -227,6 +234,13 @@ def ball_5dof(ball_count, ball_diameter, pitch_diameter, contact_angle,
         (:func:`models.operating_clearance.operating_clearance`; lengths [m], temperatures
         [K], moduli [Pa], expansion coefficients [1/K]): the equilibrium takes the operating
         clearance in place of ``clearance``, the raceways at the groove bottoms ``d_m -+ D``.
+    friction_method, lubrication_method, skf_rolling_constant_1, skf_rolling_constant_2,
+    skf_rolling_constant_3, skf_sliding_constant_1, skf_sliding_constant_2,
+    skf_sliding_constant_3, boundary_friction_coefficient, full_film_friction_coefficient,
+    palmgren_speed_factor, palmgren_load_factor : str or array_like or None
+        The friction torque's method and constants (:func:`models.friction.bearing_friction`,
+        SKF's in its units; coefficients and factors [-]), from the radial and axial loads
+        (SKF's model takes no moment).
 
     Returns
     -------
@@ -321,12 +335,17 @@ def ball_5dof(ball_count, ball_diameter, pitch_diameter, contact_angle,
                          shaft_bore, housing_outside_diameter, inner_ring_temperature,
                          outer_ring_temperature, shaft_temperature, housing_temperature,
                          shaft_youngs_modulus, shaft_poisson_ratio, shaft_expansion,
-                         housing_youngs_modulus, housing_poisson_ratio, housing_expansion)))
+                         housing_youngs_modulus, housing_poisson_ratio, housing_expansion,
+                         skf_rolling_constant_1, skf_rolling_constant_2,
+                         skf_rolling_constant_3, skf_sliding_constant_1,
+                         skf_sliding_constant_2, skf_sliding_constant_3,
+                         boundary_friction_coefficient, full_film_friction_coefficient,
+                         palmgren_speed_factor, palmgren_load_factor)))
     (diameter, pitch, angle, inner_ratio, outer_ratio, clearance, modulus, poisson,
      *loads, given, pressure_limit, speed) = arrays[:16]
     life, oil, minimum_safety = arrays[16:22], arrays[22:25], arrays[25]
     mounted = mounted_clearance(clearance, pitch - diameter, pitch + diameter, diameter, speed,
-                                modulus, poisson, *arrays[26:])
+                                modulus, poisson, *arrays[26:42])
     fit_lost = mounted.pop("fit_lost")
     inner, outer = _per_distinct_row(raceway_contacts, diameter, pitch, angle, inner_ratio,
                                      outer_ratio, modulus, poisson)
@@ -401,6 +420,12 @@ def ball_5dof(ball_count, ball_diameter, pitch_diameter, contact_angle,
         equivalent_load, "ball", speed, pitch, *life))
     outputs.update(_film(ball_load, inner, outer, diameter, pitch, angle, modulus, poisson,
                          speed, life, *oil))
+    friction = arrays[42:]
+    outputs.update(bearing_friction(
+        "angular_contact_ball", friction_method, lubrication_method, speed, pitch,
+        np.hypot(radial, radial_z), axial, walther_viscosity(*life[3:]),
+        dict(zip(("r1", "r2", "r3", "s1", "s2", "s3"), friction[:6])), *friction[6:],
+        outputs["static_equivalent_load"], *arrays[28:30]))
     outputs["status"] = status.astype(np.int8)
     return outputs
 
@@ -524,7 +549,7 @@ MODELS = [Model(
             "pressures, lubricant film and rating lives (ISO/TS 16281, ISO 281).",
     reference="Paper 001, eq. 1-10; Jones (1960); Harris & Kotzalas, Rolling Bearing Analysis; "
               "ISO/TS 16281:2008; ISO 281:2007",
-    version="10",
+    version="11",
     inputs=(
         Input("ball_count", "1", "number of balls Z", kind="count", minimum=3, maximum=1000),
         Input("ball_diameter", "mm", "ball diameter D", minimum=0.0, exclusive_minimum=True),
@@ -560,7 +585,8 @@ MODELS = [Model(
               default=4200.0, minimum=0.0, exclusive_minimum=True,
               label="contact pressure limit"),
         SPEED_INPUT,
-    ) + LIFE_INPUTS + FILM_INPUTS + STATIC_INPUTS + OPERATING_INPUTS,
+    ) + LIFE_INPUTS + FILM_INPUTS + STATIC_INPUTS + OPERATING_INPUTS
+    + friction_inputs("angular_contact_ball"),
     outputs=(
         Output("displacement", "m, rad", "displacement of the inner ring", dims=("dof",),
                entry_units=_DOF_UNITS,
@@ -589,7 +615,7 @@ MODELS = [Model(
                "Q = K delta^1.5, K in N/m^1.5",
                label="Hertz load-deflection constant K"),
     ) + film_outputs("every loaded ball's inner and outer contact (Hamrock and Dowson)")
-    + static_outputs("ball") + operating_outputs()
+    + static_outputs("ball") + operating_outputs() + friction_outputs()
     + life_outputs("ball loads, inner ring rotating", "X Fr + Y Fa (ISO 281 5.2, Table 3; "
                    "NaN under a moment, or with an axial load below 20 deg)"),
     dim_sizes={"ball": "ball_count", "dof": DOFS, "load_dof": DOFS},

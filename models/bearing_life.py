@@ -22,9 +22,8 @@ from .registry import Constraint, Input, Output
 DEFAULT_CONTAMINATION_FACTOR = 0.5
 
 SPEED_INPUT = Input("speed", "rpm", "speed of the inner ring, for the lives in hours, the "
-                    "viscosity ratio and the film only (the load distribution is static)",
-                    default=0.0,
-                    minimum=0.0, label="inner-ring speed")
+                    "viscosity ratio, the film and the friction only (the load distribution is "
+                    "static)", default=0.0, minimum=0.0, label="inner-ring speed")
 
 #: Largest equivalent load, as a fraction of Cr, at which ISO 281:2007 vouches for its life
 #: equation (5.3.1 and 7.3.1: beyond P = 0.5 Cr, or C0r where that is smaller, heavy loads

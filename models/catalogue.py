@@ -79,7 +79,10 @@ _PRESETS = (
                 "contact_angle": "25 deg", "inner_curvature_ratio": 0.52,
                 "outer_curvature_ratio": 0.53, "clearance": "0 mm", "youngs_modulus": "207 GPa",
                 "poisson_ratio": 0.3, "contact_constant": "1.0649e10 N/m^1.5",
-                "dynamic_load_rating": "4.15 kN"},
+                "dynamic_load_rating": "4.15 kN", "skf_rolling_constant_1": 5.03e-7,
+                "skf_rolling_constant_2": 1.97, "skf_rolling_constant_3": 1.90e-12,
+                "skf_sliding_constant_1": 1.30e-2, "skf_sliding_constant_2": 0.68,
+                "skf_sliding_constant_3": 1.91e-12},
         source="Paper 001, Table 1 (71807AC angular contact ball bearing)",
         notes="Pitch diameter = (35 + 47) / 2 from the table's inner and outer ring diameters. "
               "The groove curvature ratios are not stated: 0.52 (inner) and 0.53 (outer) are "
@@ -92,7 +95,9 @@ _PRESETS = (
               "Cr = bm fc (i cos a)^0.7 Z^(2/3) Dw^1.8 = 1.3 x 51.0 x cos(25 deg)^0.7 x "
               "25^(2/3) x 3.14^1.8 (N, mm), with bm = 1.3 (Table 1, angular contact groove "
               "ball bearings) and fc = 51.0 interpolated in Table 2 at Dw cos a / Dpw = "
-              "0.0694.",
+              "0.0694. SKF's friction constants R1-R3, S1-S3 are those its table of "
+              "geometric constants gives single-row angular contact ball bearings as a type "
+              "(it has no row for the thin-section series 718).",
     ),
     Preset(
         name="paper003-table1",

@@ -16,13 +16,14 @@ from .contact import (APPROACH_LIMIT, LINE_CONTACT_EXPONENT,
                       ROLLER_PRESSURE_LIMIT, SLICE_LAWS, STIFFEST_SOLID, effective_modulus,
                       largest_slice_line_load, line_contact_pressure, palmgren_constant,
                       slice_loads)
+from .friction import bearing_friction, friction_inputs, friction_outputs
 from .geometry import clearance_below_roller, elements_fit
 from .life import roller_bearing_reference_life
 from .limits import (CLEARANCE_VALIDITY, OIL_VALIDITY, ROLLING_ELEMENT_DENSITIES,
                      SOFTEST_BEARING_SOLID, SPEED_VALIDITY, STEEL_VALIDITY,
                      clearance_beyond_bearings, not_steel, outside_operation)
 from .lubrication import (CELSIUS, MINERAL_OIL_PRESSURE_VISCOSITY, entrainment_speed,
-                          line_contact_film)
+                          line_contact_film, walther_viscosity)
 from .operating_clearance import (BEARING_STEEL_EXPANSION, OPERATING_INPUTS,
                                   REFERENCE_TEMPERATURE, mounted_clearance, operating_outputs)
 from .profiles import PROFILES, crown_shape, distinct_slices, slice_centres
@@ -386,9 +387,14 @@ def crb_radial(radial_load, roller_count, pitch_diameter, roller_diameter, effec
                outer_ring_temperature=REFERENCE_TEMPERATURE, shaft_temperature=None,
                housing_temperature=None, shaft_youngs_modulus=207e9, shaft_poisson_ratio=0.3,
                shaft_expansion=BEARING_STEEL_EXPANSION, housing_youngs_modulus=207e9,
-               housing_poisson_ratio=0.3, housing_expansion=BEARING_STEEL_EXPANSION):
-    """Load distribution, radial stiffness, contact pressure, lubricant film and rating life
-    of a cylindrical roller bearing.
+               housing_poisson_ratio=0.3, housing_expansion=BEARING_STEEL_EXPANSION,
+               friction_method="skf", lubrication_method="oil_bath",
+               skf_rolling_constant_1=None, skf_sliding_constant_1=None,
+               skf_sliding_constant_2=None, boundary_friction_coefficient=0.15,
+               full_film_friction_coefficient=0.02, palmgren_speed_factor=None,
+               palmgren_load_factor=None):
+    """Load distribution, radial stiffness, contact pressure, lubricant film, friction and
+    rating life of a cylindrical roller bearing.
 
     Solves the inner ring's radial displacement under a radial load, with crowned rollers
     cut into slices, centrifugal force and clearance, and the radial stiffness by implicit
@@ -467,6 +473,12 @@ def crb_radial(radial_load, roller_count, pitch_diameter, roller_diameter, effec
         (:func:`models.operating_clearance.operating_clearance`; lengths [m], temperatures
         [K], moduli [Pa], expansion coefficients [1/K]): the load distribution takes the
         operating clearance in place of ``clearance``, the raceways ``d_m -+ D``.
+    friction_method, lubrication_method, skf_rolling_constant_1, skf_sliding_constant_1,
+    skf_sliding_constant_2, boundary_friction_coefficient, full_film_friction_coefficient,
+    palmgren_speed_factor, palmgren_load_factor : str or array_like or None
+        The friction torque's method and constants (:func:`models.friction.bearing_friction`,
+        SKF's in its units; coefficients and factors [-]); the bearing carries no axial
+        load.
 
     Returns
     -------
@@ -574,7 +586,9 @@ def crb_radial(radial_load, roller_count, pitch_diameter, roller_diameter, effec
            shaft_bore, housing_outside_diameter, inner_ring_temperature,
            outer_ring_temperature, shaft_temperature, housing_temperature,
            shaft_youngs_modulus, shaft_poisson_ratio, shaft_expansion, housing_youngs_modulus,
-           housing_poisson_ratio, housing_expansion)))
+           housing_poisson_ratio, housing_expansion, skf_rolling_constant_1,
+           skf_sliding_constant_1, skf_sliding_constant_2, boundary_friction_coefficient,
+           full_film_friction_coefficient, palmgren_speed_factor, palmgren_load_factor)))
     shape = arrays[0].shape
     (load, pitch, diameter, length, clearance, crown, speed, density, constant, cage_position,
      misalignment, perturbation, modulus, pressure_limit) = (
@@ -583,7 +597,8 @@ def crb_radial(radial_load, roller_count, pitch_diameter, roller_diameter, effec
     oil_density, pressure_viscosity, roughness, minimum_safety, ring_modulus, ring_poisson = (
         a.ravel() for a in arrays[20:26])
     mounted = mounted_clearance(clearance, pitch - diameter, pitch + diameter, diameter, speed,
-                                ring_modulus, ring_poisson, *(a.ravel() for a in arrays[26:]))
+                                ring_modulus, ring_poisson, *(a.ravel() for a in arrays[26:42]))
+    friction = [a.ravel() for a in arrays[42:]]
     azimuth = cage_position[:, None] + 2.0 * np.pi * np.arange(roller_count) / roller_count
     if outer_contact not in OUTER_CONTACTS:
         raise ValueError(f"unknown outer_contact {outer_contact!r}; expected {OUTER_CONTACTS}")
@@ -628,6 +643,11 @@ def crb_radial(radial_load, roller_count, pitch_diameter, roller_diameter, effec
     outputs.update(bearing_film(np.concatenate([films[0][0], films[1][0]], axis=-1),
                                 np.concatenate([films[0][1], films[1][1]], axis=-1),
                                 roughness))
+    outputs.update(bearing_friction(
+        "cylindrical_roller", friction_method, lubrication_method, speed, pitch, load, 0.0,
+        walther_viscosity(*life[3:]), dict(zip(("r1", "s1", "s2"), friction[:3])),
+        *friction[3:5], *friction[5:], outputs["static_equivalent_load"],
+        *(a.ravel() for a in arrays[28:30])))
     reference_life = np.full(load.size, np.nan)
     rated = np.flatnonzero(np.isfinite(life[0]))  # the laminae cost as much as the solution
     if rated.size:
@@ -741,7 +761,7 @@ MODELS = [Model(
     summary="Cylindrical roller bearing under radial load: load distribution and radial stiffness "
             "with crowned rollers (slices), centrifugal force and clearance; lubricant film.",
     reference="Paper 000, Radial stiffness analysis of cylindrical roller bearing, eq. 1-16",
-    version="10",
+    version="11",
     inputs=(
         Input("radial_load", "N", "radial load Fr on the inner ring", minimum=0.0),
         Input("roller_count", "1", "number of rollers Z", kind="count", minimum=3, maximum=1000),
@@ -787,7 +807,8 @@ MODELS = [Model(
               "validity (ISO 76: 4000 for roller bearings of through-hardened steel)",
               default=4000.0, minimum=0.0, exclusive_minimum=True,
               label="contact pressure limit"),
-    ) + LIFE_INPUTS + FILM_INPUTS + STATIC_INPUTS + OPERATING_INPUTS,
+    ) + LIFE_INPUTS + FILM_INPUTS + STATIC_INPUTS + OPERATING_INPUTS
+    + friction_inputs("cylindrical_roller"),
     outputs=(
         Output("radial_displacement", "mm", "radial displacement of the inner ring"),
         Output("radial_stiffness", "N/mm", "radial stiffness dFr/d(delta_r), implicit "
@@ -812,7 +833,7 @@ MODELS = [Model(
                "rollers", label="largest contact pressure"),
     ) + film_outputs("every loaded roller's inner and outer contact (Pan and Hamrock's "
                      "line contact)") + static_outputs("roller") + operating_outputs()
-    + life_outputs(
+    + friction_outputs() + life_outputs(
         "slice loads of both raceways (laminae), inner ring rotating",
         "P = Fr (ISO 281 7.2, no axial load)"),
     dim_sizes={"roller": "roller_count"},

@@ -23,13 +23,14 @@ from .bearing_life import (DEFAULT_CONTAMINATION_FACTOR, LIFE_CONSTRAINTS, LIFE_
                            SPEED_INPUT, life_outputs, rating_lives)
 from .contact import (APPROACH_LIMIT, ROLLER_PRESSURE_LIMIT, STIFFEST_SOLID, effective_modulus,
                       hertz_point, line_contact_pressure)
+from .friction import bearing_friction, friction_inputs, friction_outputs
 from .geometry import elements_fit
 from .kernels import Kernels
 from .life import roller_bearing_reference_life, tapered_equivalent_load
 from .limits import (OIL_VALIDITY, SOFTEST_BEARING_SOLID, SPEED_VALIDITY, STEEL_VALIDITY,
                      not_steel, outside_operation)
 from .lubrication import (CELSIUS, MINERAL_OIL_PRESSURE_VISCOSITY, entrainment_speed,
-                          line_contact_film)
+                          line_contact_film, walther_viscosity)
 from .registry import (CONVERGED, INFEASIBLE, NO_ROOT_IN_RANGE, NOT_CONVERGED,
                        OUT_OF_VALIDITY, Constraint, Input, Model, Output, below,
                        combine_status)
@@ -106,9 +107,13 @@ def trb_load(radial_load, axial_load, roller_count, effective_length, roller_mea
              contamination_factor=DEFAULT_CONTAMINATION_FACTOR, oil_temperature=70.0 + CELSIUS,
              viscosity_40=None, viscosity_100=None, oil_density=MINERAL_OIL_DENSITY,
              pressure_viscosity=MINERAL_OIL_PRESSURE_VISCOSITY, composite_roughness=None,
-             minimum_static_safety=None):
-    """Displacements, roller loads, contact pressure, lubricant film and rating life of a
-    tapered roller bearing under combined load.
+             minimum_static_safety=None, friction_method="skf", lubrication_method="oil_bath",
+             skf_rolling_constant_1=None, skf_rolling_constant_2=None,
+             skf_sliding_constant_1=None, skf_sliding_constant_2=None,
+             boundary_friction_coefficient=0.15, full_film_friction_coefficient=0.002,
+             palmgren_speed_factor=None, palmgren_load_factor=None):
+    """Displacements, roller loads, contact pressure, lubricant film, friction and rating
+    life of a tapered roller bearing under combined load.
 
     Parameters
     ----------
@@ -141,6 +146,13 @@ def trb_load(radial_load, axial_load, roller_count, effective_length, roller_mea
         ``sigma`` of rollers and raceways [m], for the film parameter; None: NaN.
     minimum_static_safety : array_like or None
         The smallest ``pressure_safety_factor`` the application needs [-]; None: no check.
+    friction_method, lubrication_method, skf_rolling_constant_1, skf_rolling_constant_2,
+    skf_sliding_constant_1, skf_sliding_constant_2, boundary_friction_coefficient,
+    full_film_friction_coefficient, palmgren_speed_factor,
+    palmgren_load_factor : str or array_like or None
+        The friction torque's method and constants (:func:`models.friction.bearing_friction`,
+        SKF's in its units; coefficients and factors [-]), with SKF's mean diameter the pitch
+        diameter, ``phi_rs = 1`` and ``Y = 0.4 cot(alpha)`` (ISO 281, Table 8).
 
     Returns
     -------
@@ -211,9 +223,13 @@ def trb_load(radial_load, axial_load, roller_count, effective_length, roller_mea
             contact_constant, pitch_diameter, effective_modulus(youngs_modulus, poisson_ratio),
             pressure_limit, speed, dynamic_load_rating, fatigue_load_limit,
             contamination_factor, oil_temperature, viscosity_40, viscosity_100, oil_density,
-            pressure_viscosity, composite_roughness, minimum_static_safety)))
+            pressure_viscosity, composite_roughness, minimum_static_safety,
+            skf_rolling_constant_1, skf_rolling_constant_2, skf_sliding_constant_1,
+            skf_sliding_constant_2, boundary_friction_coefficient,
+            full_film_friction_coefficient, palmgren_speed_factor, palmgren_load_factor)))
     radial, axial, length, diameter, angle, given, pitch, modulus, pressure_limit = arrays[:9]
     speed, life, oil, minimum_safety = arrays[9], arrays[10:16], arrays[16:19], arrays[19]
+    friction = arrays[20:]
     constant = np.where(np.isnan(given), paper_contact_constant(length, diameter), given)
     # Inputs that describe no bearing, whatever the outcome: eq. 14's steel constant with
     # other elastic constants, a speed or an oil no bearing runs with.
@@ -254,6 +270,11 @@ def trb_load(radial_load, axial_load, roller_count, effective_length, roller_mea
                **_film(roller_load, length, diameter, pitch, angle, modulus, speed, life, *oil),
                **rating_lives(reference_life, tapered_equivalent_load(radial, axial, angle),
                               "roller", speed, pitch, *life)}
+    outputs.update(bearing_friction(
+        "tapered_roller", friction_method, lubrication_method, speed, pitch, radial, axial,
+        walther_viscosity(*life[3:]), dict(zip(("r1", "r2", "s1", "s2"), friction[:4])),
+        *friction[4:], outputs["static_equivalent_load"],
+        axial_load_factor=0.4 / np.tan(angle)))
     # A point without a solution has no values: NaN, not the iteration's last guess.
     solved = carried & converged
     outputs = {name: np.where(solved.reshape((-1,) + (1,) * (value.ndim - 1)), value, np.nan)
@@ -612,7 +633,7 @@ MODELS = [
                 "displacement, the load of every roller, contact pressure, lubricant film and "
                 "rating lives.",
         reference=_REFERENCE + ", eq. 13-18",
-        version="9",
+        version="10",
         inputs=_LOAD_INPUTS + (
             _CONSTANT,
             Input("pitch_diameter", "mm", "pitch diameter dm at the middle of the rollers, for "
@@ -623,7 +644,8 @@ MODELS = [
                   "validity (ISO 76: 4000 for roller bearings of through-hardened steel)",
                   default=4000.0, minimum=0.0, exclusive_minimum=True,
                   label="contact pressure limit"),
-            SPEED_INPUT) + LIFE_INPUTS + FILM_INPUTS + STATIC_INPUTS,
+            SPEED_INPUT) + LIFE_INPUTS + FILM_INPUTS + STATIC_INPUTS
+        + friction_inputs("tapered_roller"),
         outputs=(
             Output("radial_displacement", "mm", "radial displacement delta_r of the inner ring",
                    label="radial displacement"),
@@ -641,6 +663,7 @@ MODELS = [
                    label="largest contact pressure"),
         ) + film_outputs("every loaded roller's cone and cup contact (Pan and Hamrock's line "
                          "contact); NaN without pitch_diameter") + static_outputs("roller")
+        + friction_outputs()
         + life_outputs("roller loads (one lamina each), inner ring rotating; NaN without "
                          "pitch_diameter", "ISO 281 Table 8, P = Fr for Fa/Fr <= 1.5 tan(alpha), "
                          "else 0.4 Fr + 0.4 cot(alpha) Fa"),

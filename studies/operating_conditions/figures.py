@@ -22,11 +22,19 @@ FIGURES = {
                          "radial load, without clearance and with 40 um, beside the "
                          "catalogue's s0 = C0r / P0r (dotted); the dashed line is ISO 76's "
                          "basic static load rating C0r.",
+    "friction.png": "NU 208 under 6.2 kN in an ISO VG 68 oil bath: SKF's frictional moment "
+                    "against speed at three oil temperatures beside SKF's constant-coefficient "
+                    "estimate (dashed), its rolling and sliding parts at 70 degC, and the "
+                    "power loss.",
 }
 
 #: ISO 76:2006's basic static load rating of the NU 208 of the study [N]:
 #: C0r = 44 (1 - D/dm) Z l D with D = 11 mm, dm = 60.5 mm, Z = 14, l = 10 mm.
 STATIC_RATING = 44 * (1 - 11 / 60.5) * 14 * 10 * 11
+#: SKF's estimate of the NU 208's frictional moment under 6.2 kN, M = 0.5 mu P d with its
+#: constant coefficient mu = 0.0011 for cylindrical roller bearings with a cage (Rolling
+#: bearings, 2013, "Friction", Table 1) [N m].
+CONSTANT_COEFFICIENT_TORQUE = 0.5 * 0.0011 * 6200 * 40e-3
 
 
 def draw(results: Path, figures: Path):
@@ -35,6 +43,7 @@ def draw(results: Path, figures: Path):
     _speed(results, figures)
     _film(results, figures)
     _static(results, figures)
+    _friction(results, figures)
 
 
 def _fits(results, figures):
@@ -133,6 +142,37 @@ def _static(results, figures):
     save(figure, figures, "static_safety.png")
 
 
+def _friction(results, figures):
+    data = result(results, "friction")
+    speed = in_unit(data.speed, "rpm")
+    figure, (total, parts, power) = subplots(1, 3, figsize=(14, 4))
+    for index, temperature in enumerate(in_unit(data.oil_temperature, "degC").values):
+        point = data.isel(oil_temperature=index)
+        total.plot(speed, point.friction_torque, color=f"C{index}",
+                   label=f"oil at {temperature:g} degC")
+        power.plot(speed, point.power_loss, color=f"C{index}",
+                   label=f"oil at {temperature:g} degC")
+    total.axhline(CONSTANT_COEFFICIENT_TORQUE, color="0.4", linestyle="--",
+                  label="0.5 µ P d, µ = 0.0011 (SKF)")
+    warm = at(data, oil_temperature="70 degC")
+    for name, style, text in (("friction_torque", "-", "total"),
+                              ("rolling_friction_torque", "--", "rolling"),
+                              ("sliding_friction_torque", ":", "sliding")):
+        parts.plot(speed, warm[name], color="C1", linestyle=style, label=text)
+    total.set(xlabel="inner ring speed [r/min]", ylabel="friction torque [N·m]",
+              title="Frictional moment (SKF)", ylim=(0.0, None))
+    parts.set(xlabel="inner ring speed [r/min]", ylabel="friction torque [N·m]",
+              title="Its parts, oil at 70 degC", ylim=(0.0, None))
+    power.set(xlabel="inner ring speed [r/min]", ylabel="power loss [W]",
+              title="Power loss")
+    for axis in (total, parts, power):
+        axis.legend()
+    figure.suptitle("NU 208: " + conditions(data, "radial_load", "viscosity_40",
+                                            "viscosity_100", width=110, radial_load="kN"),
+                    fontsize=9)
+    save(figure, figures, "friction.png")
+
+
 # -- the expected values, measured -------------------------------------------------------------
 
 def ours(results: Path) -> dict:
@@ -166,4 +206,14 @@ def ours(results: Path) -> dict:
     values["static_at_rating"] = float(np.median(safety * load) / STATIC_RATING)
     values["static_load_exponent"] = float(np.polyfit(np.log(load), np.log(safety), 1)[0])
     values["static_rating"] = float(in_unit(static.static_load_rating, "kN").max())
+    friction = result(results, "friction")
+    values["friction_over_constant_coefficient"] = float(
+        at(friction, oil_temperature="70 degC", speed="1000 rpm").friction_torque
+        / CONSTANT_COEFFICIENT_TORQUE)
+    values["friction_cold_over_hot"] = float(
+        at(friction, oil_temperature="40 degC", speed="10000 rpm").friction_torque
+        / at(friction, oil_temperature="100 degC", speed="10000 rpm").friction_torque)
+    hot = at(friction, oil_temperature="100 degC").rolling_friction_torque
+    values["rolling_speed_exponent"] = float(np.log(at(hot, speed="1000 rpm")
+                                                    / at(hot, speed="250 rpm")) / np.log(4.0))
     return values
