@@ -21,7 +21,8 @@ from .bearing_film import (FILM_INPUTS, MINERAL_OIL_DENSITY, bearing_film, film_
 from .bearing_life import (DEFAULT_CONTAMINATION_FACTOR, LIFE_CONSTRAINTS, LIFE_INPUTS,
                            SPEED_INPUT, life_outputs, rating_lives)
 from .contact import POINT_CONTACT_EXPONENT, STIFFEST_SOLID, effective_modulus, hertz_point
-from .friction import bearing_friction, friction_inputs, friction_outputs
+from .friction import (bearing_friction, friction_constraints, friction_inputs,
+                       friction_outputs)
 from .geometry import elements_fit
 from .kernels import Kernels
 from .life import ball_bearing_reference_life, radial_ball_equivalent_load
@@ -30,7 +31,8 @@ from .limits import (OIL_VALIDITY, SOFTEST_BEARING_SOLID, SPEED_VALIDITY, not_st
 from .lubrication import (CELSIUS, MINERAL_OIL_PRESSURE_VISCOSITY, entrainment_speed,
                           point_contact_film, walther_viscosity)
 from .operating_clearance import (BEARING_STEEL_EXPANSION, OPERATING_INPUTS,
-                                  REFERENCE_TEMPERATURE, mounted_clearance, operating_outputs)
+                                  REFERENCE_TEMPERATURE, mounted_clearance,
+                                  operating_constraints, operating_outputs)
 from .registry import (CONVERGED, INFEASIBLE, NOT_CONVERGED, OUT_OF_VALIDITY, Constraint,
                              Input, Model, Output, combine_status)
 from .static_safety import STATIC_INPUTS, ball_rating, static_outputs, static_safety
@@ -173,7 +175,8 @@ def ball_5dof(ball_count, ball_diameter, pitch_diameter, contact_angle,
               skf_rolling_constant_3=None, skf_sliding_constant_1=None,
               skf_sliding_constant_2=None, skf_sliding_constant_3=None,
               boundary_friction_coefficient=0.15, full_film_friction_coefficient=0.05,
-              palmgren_speed_factor=None, palmgren_load_factor=None):
+              palmgren_speed_factor=None, palmgren_load_factor=None, oil_level=None,
+              drag_loss_factor=None):
     """Equilibrium, 5 x 5 stiffness matrix, contact pressures, lubricant film and rating life
     of a ball bearing's inner ring.
 
@@ -237,10 +240,11 @@ def ball_5dof(ball_count, ball_diameter, pitch_diameter, contact_angle,
     friction_method, lubrication_method, skf_rolling_constant_1, skf_rolling_constant_2,
     skf_rolling_constant_3, skf_sliding_constant_1, skf_sliding_constant_2,
     skf_sliding_constant_3, boundary_friction_coefficient, full_film_friction_coefficient,
-    palmgren_speed_factor, palmgren_load_factor : str or array_like or None
+    palmgren_speed_factor, palmgren_load_factor, oil_level,
+    drag_loss_factor : str or array_like or None
         The friction torque's method and constants (:func:`models.friction.bearing_friction`,
-        SKF's in its units; coefficients and factors [-]), from the radial and axial loads
-        (SKF's model takes no moment).
+        SKF's in its units; coefficients and factors [-]; level [m]), from the radial and
+        axial loads (SKF's model takes no moment).
 
     Returns
     -------
@@ -340,7 +344,8 @@ def ball_5dof(ball_count, ball_diameter, pitch_diameter, contact_angle,
                          skf_rolling_constant_3, skf_sliding_constant_1,
                          skf_sliding_constant_2, skf_sliding_constant_3,
                          boundary_friction_coefficient, full_film_friction_coefficient,
-                         palmgren_speed_factor, palmgren_load_factor)))
+                         palmgren_speed_factor, palmgren_load_factor, oil_level,
+                         drag_loss_factor)))
     (diameter, pitch, angle, inner_ratio, outer_ratio, clearance, modulus, poisson,
      *loads, given, pressure_limit, speed) = arrays[:16]
     life, oil, minimum_safety = arrays[16:22], arrays[22:25], arrays[25]
@@ -424,8 +429,9 @@ def ball_5dof(ball_count, ball_diameter, pitch_diameter, contact_angle,
     outputs.update(bearing_friction(
         "angular_contact_ball", friction_method, lubrication_method, speed, pitch,
         np.hypot(radial, radial_z), axial, walther_viscosity(*life[3:]),
-        dict(zip(("r1", "r2", "r3", "s1", "s2", "s3"), friction[:6])), *friction[6:],
-        outputs["static_equivalent_load"], *arrays[28:30]))
+        dict(zip(("r1", "r2", "r3", "s1", "s2", "s3"), friction[:6])), *friction[6:10],
+        outputs["static_equivalent_load"], *arrays[28:30], oil_level=friction[10],
+        drag_loss_factor=friction[11]))
     outputs["status"] = status.astype(np.int8)
     return outputs
 
@@ -639,7 +645,8 @@ MODELS = [Model(
                    "radial_y) is singular at every load: a tilt about the contact-cone apex "
                    "with a radial shift changes no ball's approach; hold the tilts (fixed_dofs "
                    "= [\"tilt_y\", \"tilt_z\"]) or use geometry 'jones'"),
-    ) + LIFE_CONSTRAINTS,
+    ) + LIFE_CONSTRAINTS + operating_constraints("ball_diameter")
+    + friction_constraints("angular_contact_ball"),
     # Measured by benchmarks/declared_costs.py. Compiled point by point, the model keeps few
     # temporaries: large blocks pay its per-call overhead seldom.
     seconds_per_point=8e-6,

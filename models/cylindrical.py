@@ -16,7 +16,8 @@ from .contact import (APPROACH_LIMIT, LINE_CONTACT_EXPONENT,
                       ROLLER_PRESSURE_LIMIT, SLICE_LAWS, STIFFEST_SOLID, effective_modulus,
                       largest_slice_line_load, line_contact_pressure, palmgren_constant,
                       slice_loads)
-from .friction import bearing_friction, friction_inputs, friction_outputs
+from .friction import (bearing_friction, friction_constraints, friction_inputs,
+                       friction_outputs)
 from .geometry import clearance_below_roller, elements_fit
 from .life import roller_bearing_reference_life
 from .limits import (CLEARANCE_VALIDITY, OIL_VALIDITY, ROLLING_ELEMENT_DENSITIES,
@@ -25,7 +26,8 @@ from .limits import (CLEARANCE_VALIDITY, OIL_VALIDITY, ROLLING_ELEMENT_DENSITIES
 from .lubrication import (CELSIUS, MINERAL_OIL_PRESSURE_VISCOSITY, entrainment_speed,
                           line_contact_film, walther_viscosity)
 from .operating_clearance import (BEARING_STEEL_EXPANSION, OPERATING_INPUTS,
-                                  REFERENCE_TEMPERATURE, mounted_clearance, operating_outputs)
+                                  REFERENCE_TEMPERATURE, mounted_clearance,
+                                  operating_constraints, operating_outputs)
 from .profiles import PROFILES, crown_shape, distinct_slices, slice_centres
 from .registry import (CONVERGED, NOT_CONVERGED, OUT_OF_VALIDITY, Constraint, Input,
                              Model, Output)
@@ -392,7 +394,8 @@ def crb_radial(radial_load, roller_count, pitch_diameter, roller_diameter, effec
                skf_rolling_constant_1=None, skf_sliding_constant_1=None,
                skf_sliding_constant_2=None, boundary_friction_coefficient=0.15,
                full_film_friction_coefficient=0.02, palmgren_speed_factor=None,
-               palmgren_load_factor=None):
+               palmgren_load_factor=None, oil_level=None, drag_loss_factor=None,
+               bearing_width=None):
     """Load distribution, radial stiffness, contact pressure, lubricant film, friction and
     rating life of a cylindrical roller bearing.
 
@@ -475,10 +478,11 @@ def crb_radial(radial_load, roller_count, pitch_diameter, roller_diameter, effec
         operating clearance in place of ``clearance``, the raceways ``d_m -+ D``.
     friction_method, lubrication_method, skf_rolling_constant_1, skf_sliding_constant_1,
     skf_sliding_constant_2, boundary_friction_coefficient, full_film_friction_coefficient,
-    palmgren_speed_factor, palmgren_load_factor : str or array_like or None
+    palmgren_speed_factor, palmgren_load_factor, oil_level, drag_loss_factor,
+    bearing_width : str or array_like or None
         The friction torque's method and constants (:func:`models.friction.bearing_friction`,
-        SKF's in its units; coefficients and factors [-]); the bearing carries no axial
-        load.
+        SKF's in its units; coefficients and factors [-]; level and width [m]); the bearing
+        carries no axial load.
 
     Returns
     -------
@@ -588,7 +592,8 @@ def crb_radial(radial_load, roller_count, pitch_diameter, roller_diameter, effec
            shaft_youngs_modulus, shaft_poisson_ratio, shaft_expansion, housing_youngs_modulus,
            housing_poisson_ratio, housing_expansion, skf_rolling_constant_1,
            skf_sliding_constant_1, skf_sliding_constant_2, boundary_friction_coefficient,
-           full_film_friction_coefficient, palmgren_speed_factor, palmgren_load_factor)))
+           full_film_friction_coefficient, palmgren_speed_factor, palmgren_load_factor,
+           oil_level, drag_loss_factor, bearing_width)))
     shape = arrays[0].shape
     (load, pitch, diameter, length, clearance, crown, speed, density, constant, cage_position,
      misalignment, perturbation, modulus, pressure_limit) = (
@@ -646,8 +651,9 @@ def crb_radial(radial_load, roller_count, pitch_diameter, roller_diameter, effec
     outputs.update(bearing_friction(
         "cylindrical_roller", friction_method, lubrication_method, speed, pitch, load, 0.0,
         walther_viscosity(*life[3:]), dict(zip(("r1", "s1", "s2"), friction[:3])),
-        *friction[3:5], *friction[5:], outputs["static_equivalent_load"],
-        *(a.ravel() for a in arrays[28:30])))
+        *friction[3:7], outputs["static_equivalent_load"],
+        *(a.ravel() for a in arrays[28:30]), oil_level=friction[7],
+        drag_loss_factor=friction[8], bearing_width=friction[9]))
     reference_life = np.full(load.size, np.nan)
     rated = np.flatnonzero(np.isfinite(life[0]))  # the laminae cost as much as the solution
     if rated.size:
@@ -853,7 +859,8 @@ MODELS = [Model(
                    elements_fit(roller_count, pitch_diameter, roller_diameter),
                    "the rollers do not fit on the pitch circle: pitch_diameter * sin(180 deg / "
                    "roller_count) must exceed roller_diameter"),
-    ) + LIFE_CONSTRAINTS,
+    ) + LIFE_CONSTRAINTS + operating_constraints("roller_diameter")
+    + friction_constraints("cylindrical_roller"),
     # Measured by benchmarks/declared_costs.py on the studies' sweeps, misaligned and
     # many-sliced rollers and rating lives included (an aligned unrated point costs less).
     seconds_per_point=6e-5,

@@ -10,8 +10,9 @@ Two methods, chosen by the input ``friction_method``:
   passes from the boundary value ``mu_bl`` at rest and at thin films to the full-film value
   ``mu_EHL`` as ``nu n`` grows. ``G_rr`` and ``G_sl`` are the bearing type's functions of the
   mean diameter and the loads; their constants ``R1 ...`` and ``S1 ...`` belong to the
-  bearing's series and are SKF's (its table of geometric constants). Seals and the drag of an
-  oil bath are not included.
+  bearing's series and are SKF's (its table of geometric constants). The drag of an oil
+  bath is added where its level is given, with SKF's drag loss factor ``V_M`` read off its
+  diagram. Seals are not included.
 * ``'palmgren'``: Palmgren's load-independent ``M0 = 1e-7 f0 (nu n)^(2/3) dm^3`` (``160e-7
   f0 dm^3`` where ``nu n < 2000``) and load-dependent ``M1 = f1 P1 dm`` [2]_, with the
   factors ``f0`` and ``f1`` the user takes from the catalogue of the bearing's maker, and
@@ -34,7 +35,7 @@ from __future__ import annotations
 
 import numpy as np
 
-from .registry import Input, Output, below
+from .registry import Constraint, Input, Output, below
 
 FRICTION_METHODS = ("skf", "palmgren")
 LUBRICATION_METHODS = ("oil_bath", "oil_jet", "oil_air", "grease")
@@ -42,13 +43,13 @@ LUBRICATION_METHODS = ("oil_bath", "oil_jet", "oil_air", "grease")
 #: oil-air and grease) [SKF's units].
 _REPLENISHMENT = {"oil_bath": 3e-8, "oil_jet": 3e-8, "oil_air": 6e-8, "grease": 6e-8}
 
-#: Per bearing type: SKF's geometric constant K_Z of phi_rs, the full-film sliding coefficient
-#: mu_EHL (for ball bearings, that of a mineral oil), and SKF's constants the type's G_rr and
-#: G_sl take (Table 2a).
+#: Per bearing type: SKF's geometric constant K_Z of phi_rs and the drag, the full-film
+#: sliding coefficient mu_EHL (for ball bearings, that of a mineral oil), SKF's constants the
+#: type's G_rr and G_sl take (Table 2a), and its roller-type constant K_L of the drag.
 _TYPES = {
-    "angular_contact_ball": (4.4, 0.05, ("r1", "r2", "r3", "s1", "s2", "s3")),
-    "cylindrical_roller": (5.1, 0.02, ("r1", "s1", "s2")),
-    "tapered_roller": (6.0, 0.002, ("r1", "r2", "s1", "s2")),
+    "angular_contact_ball": (4.4, 0.05, ("r1", "r2", "r3", "s1", "s2", "s3"), None),
+    "cylindrical_roller": (5.1, 0.02, ("r1", "s1", "s2"), 0.65),
+    "tapered_roller": (6.0, 0.002, ("r1", "r2", "s1", "s2"), 0.7),
 }
 #: Bounds above SKF's constants of every series of its table (spherical roller bearings'
 #: S2 reach some 9500), by symbol.
@@ -62,14 +63,14 @@ _CONSTANT_MEANINGS = {
 _PALMGREN_BRANCH = 2000.0
 
 FRICTION_OUTPUT_NAMES = ("friction_torque", "rolling_friction_torque",
-                         "sliding_friction_torque", "viscous_friction_torque",
-                         "load_friction_torque", "power_loss")
+                         "sliding_friction_torque", "drag_friction_torque",
+                         "viscous_friction_torque", "load_friction_torque", "power_loss")
 
 
 def friction_inputs(kind):
     """Input declarations of the friction of a ``kind`` bearing ('angular_contact_ball',
     'cylindrical_roller' or 'tapered_roller'), declared after the static safety's."""
-    _, full_film, constants = _TYPES[kind]
+    _, full_film, constants, roller_type = _TYPES[kind]
     series = tuple(
         Input(_constant_name(name), "1",
               f"SKF's {_CONSTANT_MEANINGS[name]} of the bearing's series, in SKF's units (N, "
@@ -104,7 +105,33 @@ def friction_inputs(kind):
               "M1 = f1 P1 dm (P1 = the static equivalent load P0r), from the bearing maker's "
               "catalogue (about 1e-4 to 2e-3), for friction_method 'palmgren'; default: none "
               "(NaN)", default=None, minimum=0.0, maximum=0.1, label="Palmgren factor f1"),
-    )
+        Input("oil_level", "mm", "level H of an oil bath above the lowest point of the outer "
+              "ring's raceway (SKF's H; from 1.2 dm the bearing is submerged), for SKF's drag "
+              "loss, with drag_loss_factor, bore and outside_diameter; default: no drag",
+              default=None, minimum=0.0, label="oil level"),
+        Input("drag_loss_factor", "1", "SKF's drag loss factor V_M, read off its diagram for "
+              f"{'roller' if roller_type else 'ball'} bearings at H / dm (at most about "
+              f"{1.5e-3 if roller_type else 1.25e-3:g}, submerged), for the drag loss; default: "
+              "none", default=None, minimum=0.0, maximum=0.01, label="drag loss factor V_M"),
+    ) + ((Input("bearing_width", "mm", "width B of the bearing, for SKF's drag loss of a "
+                "roller bearing; default: none", default=None, minimum=0.0,
+                exclusive_minimum=True, label="bearing width"),) if roller_type else ())
+
+
+def friction_constraints(kind):
+    """The condition between the friction inputs, checked on a definition before any
+    computing (:func:`bearing_friction`'s ``ValueError`` says the same of a direct call): an
+    oil level needs what SKF's drag loss takes."""
+    needed = ("drag_loss_factor", "bore", "outside_diameter") + (
+        ("bearing_width",) if _TYPES[kind][3] else ())
+
+    def given(oil_level, **others):
+        return np.isnan(oil_level) | np.all([np.isfinite(others[name]) for name in needed],
+                                            axis=0)
+
+    return (Constraint(("oil_level",) + needed, given, "oil_level needs "
+                       + ", ".join(needed[:-1]) + " and " + needed[-1] + " (SKF's drag loss)",
+                       unset=True),)
 
 
 def _constant_name(symbol):
@@ -118,8 +145,9 @@ def friction_outputs():
     return (
         Output("friction_torque", "N*m", "friction torque of the bearing turning at the "
                "inner ring's speed: SKF's rolling + sliding moment or Palmgren's M0 + M1, by "
-               f"friction_method (seals and an oil bath's drag not included); {missing} or "
-               "the method's constants", label="friction torque"),
+               f"friction_method (with SKF's, an oil bath's drag where oil_level is given; "
+               f"seals not included); {missing} or the method's constants",
+               label="friction torque"),
         Output("rolling_friction_torque", "N*m", "SKF's rolling frictional moment "
                "phi_ish phi_rs G_rr (nu n)^0.6, the EHL contacts' viscous rolling resistance "
                "(phi_rs = 1 without bore and outside diameter); NaN for Palmgren's",
@@ -127,6 +155,10 @@ def friction_outputs():
         Output("sliding_friction_torque", "N*m", "SKF's sliding frictional moment G_sl "
                "mu_sl, mu_sl passing from mu_bl at rest to mu_EHL as nu n grows; NaN for "
                "Palmgren's", label="sliding friction torque"),
+        Output("drag_friction_torque", "N*m", "SKF's drag loss of an oil bath at oil_level, "
+               "0.4 V_M K_ball dm^5 n^2 (ball bearings) or 4 V_M K_roll C_w B dm^4 n^2 (roller "
+               "bearings) and the bath's viscous part; 0 without oil_level, NaN for "
+               "Palmgren's", label="drag friction torque"),
         Output("viscous_friction_torque", "N*m", "Palmgren's load-independent torque M0 = "
                "1e-7 f0 (nu n)^(2/3) dm^3 (160e-7 f0 dm^3 below nu n = 2000; N mm, mm^2/s, "
                "r/min, mm); NaN for SKF's", label="load-independent friction torque M0"),
@@ -141,7 +173,8 @@ def friction_outputs():
 def bearing_friction(kind, method, lubrication, speed, pitch_diameter, radial_load, axial_load,
                      kinematic_viscosity, constants, boundary_coefficient,
                      full_film_coefficient, speed_factor, load_factor, equivalent_load,
-                     bore=np.nan, outside_diameter=np.nan, axial_load_factor=np.nan):
+                     bore=np.nan, outside_diameter=np.nan, axial_load_factor=np.nan,
+                     oil_level=np.nan, drag_loss_factor=np.nan, bearing_width=np.nan):
     """The friction outputs of a bearing.
 
     Parameters
@@ -172,11 +205,20 @@ def bearing_friction(kind, method, lubrication, speed, pitch_diameter, radial_lo
         pitch diameter and ``phi_rs = 1``.
     axial_load_factor : array_like
         ``Y`` of a tapered roller bearing [-].
+    oil_level, drag_loss_factor, bearing_width : array_like
+        SKF's ``H`` [m], ``V_M`` [-] and a roller bearing's ``B`` [m] for the drag of an oil
+        bath (:func:`skf_drag_moment`); NaN level: no drag.
 
     Returns
     -------
     dict of numpy.ndarray
         :data:`FRICTION_OUTPUT_NAMES`, torques [N m] and the power loss [W].
+
+    Raises
+    ------
+    ValueError
+        An unknown method, or an oil level without the drag loss factor, the rings (and a
+        roller bearing's width).
     """
     if method not in FRICTION_METHODS or lubrication not in LUBRICATION_METHODS:
         raise ValueError(f"friction_method must be one of {FRICTION_METHODS}, "
@@ -186,7 +228,12 @@ def bearing_friction(kind, method, lubrication, speed, pitch_diameter, radial_lo
     revolutions = np.asarray(speed) * 30.0 / np.pi  # [r/min]
     viscosity = 1e6 * np.asarray(kinematic_viscosity)  # [mm^2/s]
     none = np.full(np.broadcast(mean, viscosity, radial_load).shape, np.nan)
-    parts = dict.fromkeys(FRICTION_OUTPUT_NAMES[1:5], none)
+    parts = dict.fromkeys(FRICTION_OUTPUT_NAMES[1:6], none)
+    bath = np.isfinite(oil_level)
+    roller = _TYPES[kind][3] is not None
+    if np.any(bath & ~(rings & np.isfinite(drag_loss_factor)
+                       & (np.isfinite(bearing_width) | (not roller)))):
+        raise ValueError(friction_constraints(kind)[0].message)
     if method == "skf":
         with np.errstate(over="ignore", invalid="ignore"):  # IEEE results beyond any bearing
             rolling, sliding = skf_frictional_moments(
@@ -194,9 +241,13 @@ def bearing_friction(kind, method, lubrication, speed, pitch_diameter, radial_lo
                 constants, boundary_coefficient, full_film_coefficient,
                 _REPLENISHMENT[lubrication], 1e3 * np.where(rings, bore, np.nan),
                 1e3 * np.where(rings, outside_diameter, np.nan), axial_load_factor)
+            drag = np.where(bath, skf_drag_moment(
+                kind, revolutions, mean, viscosity, 1e3 * oil_level, drag_loss_factor,
+                1e3 * bore, 1e3 * outside_diameter, 1e3 * bearing_width), 0.0)
         parts.update(rolling_friction_torque=1e-3 * rolling,
-                     sliding_friction_torque=1e-3 * sliding)
-        total = parts["rolling_friction_torque"] + parts["sliding_friction_torque"]
+                     sliding_friction_torque=1e-3 * sliding, drag_friction_torque=1e-3 * drag)
+        total = (parts["rolling_friction_torque"] + parts["sliding_friction_torque"]
+                 + parts["drag_friction_torque"])
     else:
         viscous, loaded = palmgren_moments(revolutions, mean, viscosity, speed_factor,
                                            load_factor, equivalent_load)
@@ -241,7 +292,7 @@ def skf_frictional_moments(kind, speed, mean_diameter, radial_load, axial_load, 
         [N mm].
     """
     n, dm, fr, fa, nu, c = speed, mean_diameter, radial_load, axial_load, viscosity, constants
-    key_constant, _, _ = _TYPES[kind]
+    key_constant = _TYPES[kind][0]
     if kind == "angular_contact_ball":
         centrifugal = dm ** 4 * n ** 2
         rolling = c["r1"] * dm ** 1.97 * (fr + c["r3"] * centrifugal + c["r2"] * fa) ** 0.54
@@ -262,6 +313,56 @@ def skf_frictional_moments(kind, speed, mean_diameter, radial_load, axial_load, 
     coefficient = (boundary_share * boundary_coefficient
                    + (1.0 - boundary_share) * full_film_coefficient)
     return inlet_shear * starvation * rolling * (nu * n) ** 0.6, sliding * coefficient
+
+
+def skf_drag_moment(kind, speed, mean_diameter, viscosity, oil_level, drag_loss_factor, bore,
+                    outside_diameter, bearing_width=np.nan):
+    """SKF's drag loss of a bearing in an oil bath [N mm]: the rolling elements' drag
+    ``0.4 V_M K_ball d_m^5 n^2`` (ball bearings) or ``4 V_M K_roll C_w B d_m^4 n^2`` (roller
+    bearings) and the bath's viscous loss ``1.093e-7 n^2 d_m^3 (n d_m^2 f_t / nu)^-1.379 R_s``.
+
+    Parameters
+    ----------
+    kind : str
+        Bearing type, as :func:`bearing_friction`'s.
+    speed : array_like
+        ``n`` [r/min].
+    mean_diameter : array_like
+        ``d_m`` [mm].
+    viscosity : array_like
+        ``nu`` [mm^2/s].
+    oil_level : array_like
+        ``H`` [mm] above the lowest point of the outer ring's raceway; from ``1.2 d_m`` on,
+        the bearing is submerged.
+    drag_loss_factor : array_like
+        ``V_M`` [-], from SKF's diagram at ``H / d_m``.
+    bore, outside_diameter : array_like
+        ``d``, ``D`` [mm].
+    bearing_width : array_like
+        ``B`` [mm] of a roller bearing.
+
+    Returns
+    -------
+    numpy.ndarray
+        [N mm].
+    """
+    key_constant, _, _, roller_type = _TYPES[kind]
+    n, dm, nu = speed, mean_diameter, viscosity
+    level = np.minimum(oil_level, 1.2 * dm)
+    immersion = 2.0 * np.arccos((0.6 * dm - level) / (0.6 * dm))  # t [rad]
+    sector = np.where(immersion <= np.pi, np.sin(0.5 * immersion), 1.0)  # f_t
+    shape = (outside_diameter + bore) / (outside_diameter - bore)
+    wetted = 0.36 * dm ** 2 * (immersion - np.sin(immersion)) * 0.05 * key_constant * shape
+    with np.errstate(divide="ignore", invalid="ignore"):
+        bath = np.where(wetted * n > 0.0, 1.093e-7 * n ** 2 * dm ** 3 * wetted
+                        * (n * dm ** 2 * sector / nu) ** -1.379, 0.0)
+    if roller_type is None:
+        return 0.4 * drag_loss_factor * key_constant * shape * 1e-12 * dm ** 5 * n ** 2 + bath
+    length = 5.0 * roller_type * bearing_width / dm  # l_D
+    width_factor = (2.789e-10 * length ** 3 - 2.786e-4 * length ** 2 + 0.0195 * length
+                    + 0.6439)  # C_w
+    return (4.0 * drag_loss_factor * roller_type * key_constant * shape * 1e-12 * width_factor
+            * bearing_width * dm ** 4 * n ** 2 + bath)
 
 
 def palmgren_moments(speed, mean_diameter, viscosity, speed_factor, load_factor, load):

@@ -16,7 +16,7 @@ import numpy as np
 from .contact import STIFFEST_SOLID
 from .limits import SOFTEST_BEARING_SOLID
 from .lubrication import CELSIUS
-from .registry import Input, Output
+from .registry import Constraint, Input, Output
 
 #: Temperature at which fits and clearances are stated, ISO 1 [K].
 REFERENCE_TEMPERATURE = 20.0 + CELSIUS
@@ -100,6 +100,38 @@ def operating_outputs():
                "NaN without bore", label="shaft fit remaining"),
         Output("housing_fit_remaining", "um", "interference of outer ring and housing at "
                "temperature; NaN without outside_diameter", label="housing fit remaining"),
+    )
+
+
+def operating_constraints(element):
+    """The conditions between the operating inputs, checked on a definition before any
+    computing (the model's ``ValueError`` says the same of a direct call): a fit needs its
+    ring's dimension, and shaft, rings and housing nest around the raceways ``d_m -+`` the
+    rolling element's diameter, the input named ``element``."""
+    def nested_inside(bore, shaft_bore, pitch_diameter, **element_diameter):
+        return ~((bore >= pitch_diameter - element_diameter[element]) | (shaft_bore >= bore))
+
+    def nested_outside(outside_diameter, housing_outside_diameter, pitch_diameter,
+                       **element_diameter):
+        return ~((outside_diameter <= pitch_diameter + element_diameter[element])
+                 | (housing_outside_diameter <= outside_diameter))
+
+    return (
+        Constraint(("shaft_fit", "bore"), lambda shaft_fit, bore: (shaft_fit == 0)
+                   | np.isfinite(bore), "shaft_fit needs bore: the fit's effect on the "
+                   "clearance depends on the ring's wall", unset=True),
+        Constraint(("housing_fit", "outside_diameter"), lambda housing_fit, outside_diameter:
+                   (housing_fit == 0) | np.isfinite(outside_diameter), "housing_fit needs "
+                   "outside_diameter: the fit's effect on the clearance depends on the ring's "
+                   "wall", unset=True),
+        Constraint(("bore", "shaft_bore", "pitch_diameter", element), nested_inside,
+                   f"bore must lie between shaft_bore and the inner raceway's diameter "
+                   f"(pitch_diameter - {element})",
+                   unset=True),
+        Constraint(("outside_diameter", "housing_outside_diameter", "pitch_diameter", element),
+                   nested_outside, f"outside_diameter must lie between the outer raceway's "
+                   f"diameter (pitch_diameter + {element}) and housing_outside_diameter",
+                   unset=True),
     )
 
 

@@ -248,11 +248,15 @@ class Constraint:
     """A condition between inputs, checked on every combination before any computing.
 
     ``check`` takes the named inputs as SI arrays and returns True where they are valid.
+    An input not given whose default is None (the model derives it or goes without) skips
+    the check, unless ``unset``: then it comes as NaN, for a condition on which inputs go
+    together ("a fit needs the ring's bore").
     """
 
     inputs: tuple[str, ...]
     check: Callable[..., object]
     message: str
+    unset: bool = False
 
 
 @dataclass(frozen=True)

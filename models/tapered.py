@@ -23,7 +23,8 @@ from .bearing_life import (DEFAULT_CONTAMINATION_FACTOR, LIFE_CONSTRAINTS, LIFE_
                            SPEED_INPUT, life_outputs, rating_lives)
 from .contact import (APPROACH_LIMIT, ROLLER_PRESSURE_LIMIT, STIFFEST_SOLID, effective_modulus,
                       hertz_point, line_contact_pressure)
-from .friction import bearing_friction, friction_inputs, friction_outputs
+from .friction import (bearing_friction, friction_constraints, friction_inputs,
+                       friction_outputs)
 from .geometry import elements_fit
 from .kernels import Kernels
 from .life import roller_bearing_reference_life, tapered_equivalent_load
@@ -100,6 +101,18 @@ def cone_curvature_sum(roller_mean_diameter, pitch_diameter, contact_angle):
         np.asarray(pitch_diameter) - roller_mean_diameter * cos_angle)
 
 
+#: The rings' boundary dimensions, for the friction only (SKF's mean diameter, its
+#: replenishment factor and the drag of an oil bath).
+_RINGS = (
+    Input("bore", "mm", "bore d of the cone, for SKF's friction (its mean diameter (d + D) / 2, "
+          "replenishment and drag); default: none (the pitch diameter)", default=None,
+          minimum=0.0, exclusive_minimum=True, label="bore"),
+    Input("outside_diameter", "mm", "outside diameter D of the cup, for SKF's friction; "
+          "default: none", default=None, minimum=0.0, exclusive_minimum=True,
+          label="outside diameter"),
+)
+
+
 def trb_load(radial_load, axial_load, roller_count, effective_length, roller_mean_diameter,
              outer_contact_angle, contact_constant=None, pitch_diameter=None,
              youngs_modulus=206e9, poisson_ratio=0.3, pressure_limit=ROLLER_PRESSURE_LIMIT,
@@ -111,7 +124,8 @@ def trb_load(radial_load, axial_load, roller_count, effective_length, roller_mea
              skf_rolling_constant_1=None, skf_rolling_constant_2=None,
              skf_sliding_constant_1=None, skf_sliding_constant_2=None,
              boundary_friction_coefficient=0.15, full_film_friction_coefficient=0.002,
-             palmgren_speed_factor=None, palmgren_load_factor=None):
+             palmgren_speed_factor=None, palmgren_load_factor=None, oil_level=None,
+             drag_loss_factor=None, bearing_width=None, bore=None, outside_diameter=None):
     """Displacements, roller loads, contact pressure, lubricant film, friction and rating
     life of a tapered roller bearing under combined load.
 
@@ -148,11 +162,12 @@ def trb_load(radial_load, axial_load, roller_count, effective_length, roller_mea
         The smallest ``pressure_safety_factor`` the application needs [-]; None: no check.
     friction_method, lubrication_method, skf_rolling_constant_1, skf_rolling_constant_2,
     skf_sliding_constant_1, skf_sliding_constant_2, boundary_friction_coefficient,
-    full_film_friction_coefficient, palmgren_speed_factor,
-    palmgren_load_factor : str or array_like or None
+    full_film_friction_coefficient, palmgren_speed_factor, palmgren_load_factor, oil_level,
+    drag_loss_factor, bearing_width, bore, outside_diameter : str or array_like or None
         The friction torque's method and constants (:func:`models.friction.bearing_friction`,
-        SKF's in its units; coefficients and factors [-]), with SKF's mean diameter the pitch
-        diameter, ``phi_rs = 1`` and ``Y = 0.4 cot(alpha)`` (ISO 281, Table 8).
+        SKF's in its units; coefficients and factors [-]; lengths [m]), with
+        ``Y = 0.4 cot(alpha)`` (ISO 281, Table 8); without bore and outside diameter, SKF's
+        mean diameter is the pitch diameter and ``phi_rs = 1``.
 
     Returns
     -------
@@ -226,7 +241,8 @@ def trb_load(radial_load, axial_load, roller_count, effective_length, roller_mea
             pressure_viscosity, composite_roughness, minimum_static_safety,
             skf_rolling_constant_1, skf_rolling_constant_2, skf_sliding_constant_1,
             skf_sliding_constant_2, boundary_friction_coefficient,
-            full_film_friction_coefficient, palmgren_speed_factor, palmgren_load_factor)))
+            full_film_friction_coefficient, palmgren_speed_factor, palmgren_load_factor,
+            oil_level, drag_loss_factor, bearing_width, bore, outside_diameter)))
     radial, axial, length, diameter, angle, given, pitch, modulus, pressure_limit = arrays[:9]
     speed, life, oil, minimum_safety = arrays[9], arrays[10:16], arrays[16:19], arrays[19]
     friction = arrays[20:]
@@ -273,8 +289,9 @@ def trb_load(radial_load, axial_load, roller_count, effective_length, roller_mea
     outputs.update(bearing_friction(
         "tapered_roller", friction_method, lubrication_method, speed, pitch, radial, axial,
         walther_viscosity(*life[3:]), dict(zip(("r1", "r2", "s1", "s2"), friction[:4])),
-        *friction[4:], outputs["static_equivalent_load"],
-        axial_load_factor=0.4 / np.tan(angle)))
+        *friction[4:8], outputs["static_equivalent_load"], *friction[11:13],
+        axial_load_factor=0.4 / np.tan(angle), oil_level=friction[8],
+        drag_loss_factor=friction[9], bearing_width=friction[10]))
     # A point without a solution has no values: NaN, not the iteration's last guess.
     solved = carried & converged
     outputs = {name: np.where(solved.reshape((-1,) + (1,) * (value.ndim - 1)), value, np.nan)
@@ -645,7 +662,7 @@ MODELS = [
                   default=4000.0, minimum=0.0, exclusive_minimum=True,
                   label="contact pressure limit"),
             SPEED_INPUT) + LIFE_INPUTS + FILM_INPUTS + STATIC_INPUTS
-        + friction_inputs("tapered_roller"),
+        + friction_inputs("tapered_roller") + _RINGS,
         outputs=(
             Output("radial_displacement", "mm", "radial displacement delta_r of the inner ring",
                    label="radial displacement"),
@@ -673,7 +690,10 @@ MODELS = [
             "pitch_diameter must exceed roller_mean_diameter"), Constraint(
             ("roller_count", "pitch_diameter", "roller_mean_diameter"), _rollers_fit,
             "the rollers do not fit on the pitch circle: pitch_diameter * sin(180 deg / "
-            "roller_count) must exceed roller_mean_diameter")) + LIFE_CONSTRAINTS,
+            "roller_count) must exceed roller_mean_diameter"), Constraint(
+            ("bore", "outside_diameter"), lambda bore, outside_diameter: bore < outside_diameter,
+            "bore must be smaller than outside_diameter")) + LIFE_CONSTRAINTS
+        + friction_constraints("tapered_roller"),
         # Measured by benchmarks/declared_costs.py; solved point by point, large blocks share
         # the per-call cost of the outputs' numpy and unit conversions
         # (benchmarks/trb_load_kernel.py, benchmarks/RESULTS.md).

@@ -18,6 +18,10 @@ from .tables import Reader, plain, suggestion
 from .values import Value, ValueReader, default_value, stack
 
 
+#: An input not given, in the check of a constraint that takes it (as NaN).
+_UNSET = Value(np.nan, "not given", "")
+
+
 class ModelInputs:
     """Reads the inputs of ``model`` from a table; each input may be given once only."""
 
@@ -128,9 +132,9 @@ class ModelInputs:
             columns, si, axis_of = {}, {}, {}
             for name in constraint.inputs:
                 if name in fixed:
-                    if fixed[name] is None:
+                    if fixed[name] is None and not constraint.unset:
                         break
-                    columns[name] = [fixed[name]]
+                    columns[name] = [fixed[name] or _UNSET]
                     si[name] = stack(columns[name])
                 else:
                     axis = next(a for a in axes if name in a.values)
@@ -156,6 +160,9 @@ class ModelInputs:
             for name, column in columns.items():
                 index = where[axis_names.index(axis_of[name])] if name in axis_of else 0
                 value = column[index]
+                if value is _UNSET:
+                    shown.append(f"{name} not given")
+                    continue
                 unit = "" if value.unit in ("", "1") else f" {value.unit}"
                 if self.model.input(name).kind == "subset":  # as written: a list of names
                     shown.append(f"{name} = {value.shown.split()}")

@@ -205,3 +205,76 @@ def test_a_point_without_a_solution_has_no_friction():
     result = trb_load(radial_load=12000.0, axial_load=0.0, speed=1500 * RPM, **TRB,
                       **TRB_SERIES, **OIL)
     assert np.isnan(result["friction_torque"]).all()
+
+
+def skf_drag_by_hand(roller, n, dm, nu, level, v_m, d, outside, k_z, width=None, k_l=None):
+    """SKF's drag loss of an oil bath [N mm] as its catalogue (2013, "Drag losses") prints it:
+    the rolling elements' part and the bath's viscous part."""
+    h = min(level, 1.2 * dm)
+    t = 2 * math.acos((0.6 * dm - h) / (0.6 * dm))
+    f_t = math.sin(0.5 * t) if t <= math.pi else 1.0
+    f_a = 0.05 * k_z * (outside + d) / (outside - d)
+    r_s = 0.36 * dm ** 2 * (t - math.sin(t)) * f_a
+    bath = 1.093e-7 * n ** 2 * dm ** 3 * (n * dm ** 2 * f_t / nu) ** -1.379 * r_s if r_s else 0.0
+    if not roller:
+        k_ball = k_z * (d + outside) / (outside - d) * 1e-12
+        return 0.4 * v_m * k_ball * dm ** 5 * n ** 2 + bath
+    k_roll = k_l * k_z * (d + outside) / (outside - d) * 1e-12
+    l_d = 5 * k_l * width / dm
+    c_w = 2.789e-10 * l_d ** 3 - 2.786e-4 * l_d ** 2 + 0.0195 * l_d + 0.6439
+    return 4 * v_m * k_roll * c_w * width * dm ** 4 * n ** 2 + bath
+
+
+@pytest.mark.parametrize("level", [5.0, 30.0, 80.0])
+def test_skfs_drag_of_a_cylindrical_roller_bearing_in_an_oil_bath(level):
+    """K_Z = 5.1, K_L = 0.65 (cylindrical roller bearings with a cage); an NU 208 is 18 mm
+    wide; V_M as a user reads it off SKF's diagram. At 80 mm the bearing is submerged (the
+    level counts up to 1.2 dm)."""
+    result = crb_radial(radial_load=5000.0, speed=3000 * RPM, bore=0.04, outside_diameter=0.08,
+                        oil_level=level * 1e-3, drag_loss_factor=3e-4, bearing_width=0.018,
+                        **NU208, **NU2_SERIES, **OIL)
+    drag = skf_drag_by_hand(True, 3000.0, 60.0, NU, level, 3e-4, 40.0, 80.0, 5.1, 18.0, 0.65)
+    assert 1e3 * result["drag_friction_torque"] == pytest.approx(drag, rel=1e-12)
+    assert result["friction_torque"] == pytest.approx(
+        result["rolling_friction_torque"] + result["sliding_friction_torque"]
+        + result["drag_friction_torque"], rel=1e-12)
+
+
+def test_skfs_drag_of_an_angular_contact_ball_bearing_and_a_tapered_one():
+    ball = ball_5dof(radial_load=300.0, axial_load=800.0, speed=6000 * RPM, bore=0.035,
+                     outside_diameter=0.047, oil_level=0.008, drag_loss_factor=2e-4, **ACBB,
+                     **ACBB_SERIES, **OIL)
+    assert 1e3 * ball["drag_friction_torque"] == pytest.approx(
+        skf_drag_by_hand(False, 6000.0, 41.0, NU, 8.0, 2e-4, 35.0, 47.0, 4.4), rel=1e-12)
+    tapered = trb_load(radial_load=12000.0, axial_load=8000.0, speed=1500 * RPM, bore=0.055,
+                       outside_diameter=0.1, oil_level=0.02, drag_loss_factor=3e-4,
+                       bearing_width=0.023, **TRB, **TRB_SERIES, **OIL)
+    assert 1e3 * tapered["drag_friction_torque"] == pytest.approx(
+        skf_drag_by_hand(True, 1500.0, 77.5, NU, 20.0, 3e-4, 55.0, 100.0, 6.0, 23.0, 0.7),
+        rel=1e-12)
+
+
+def test_the_drag_grows_with_the_oil_level_and_speed_and_vanishes_without_oil_or_motion():
+    """With one V_M: at level 0 the bath's part vanishes and the rolling elements' is left
+    (SKF's diagram gives V_M = 0 there)."""
+    rings = {"bore": 0.04, "outside_diameter": 0.08, "drag_loss_factor": 3e-4,
+             "bearing_width": 0.018}
+    levels = crb_radial(radial_load=5000.0, speed=3000 * RPM,
+                        oil_level=np.array([0.0, 0.01, 0.03, 0.06]), **rings, **NU208,
+                        **NU2_SERIES, **OIL)["drag_friction_torque"]
+    speeds = crb_radial(radial_load=5000.0, speed=np.array([0.0, 1e3, 3e3, 6e3]) * RPM,
+                        oil_level=0.03, **rings, **NU208, **NU2_SERIES,
+                        **OIL)["drag_friction_torque"]
+    assert 1e3 * levels[0] == pytest.approx(skf_drag_by_hand(
+        True, 3000.0, 60.0, NU, 0.0, 3e-4, 40.0, 80.0, 5.1, 18.0, 0.65), rel=1e-12)
+    assert speeds[0] == 0.0
+    assert (np.diff(levels) > 0).all() and (np.diff(speeds) > 0).all()
+    without = crb_radial(radial_load=5000.0, speed=3000 * RPM, **NU208, **NU2_SERIES, **OIL)
+    assert without["drag_friction_torque"] == 0.0
+
+
+def test_an_oil_level_without_what_the_drag_needs_is_refused():
+    with pytest.raises(ValueError, match="oil_level needs drag_loss_factor, bore, "
+                                         "outside_diameter and bearing_width"):
+        crb_radial(radial_load=5000.0, speed=3000 * RPM, oil_level=0.03, bore=0.04,
+                   outside_diameter=0.08, drag_loss_factor=3e-4, **NU208, **OIL)
