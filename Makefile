@@ -13,10 +13,17 @@ endif
 
 .PHONY: test test-slow reproduce docs bench clean
 
+# uv installs what pip would, in a fraction of the time (it fetches and unpacks in parallel);
+# where it cannot be had or cannot reach the index, pip does the same install.
+INSTALL = $(VENV)/bin/uv pip install --quiet --python $(PYTHON) --compile-bytecode \
+	--config-settings editable_mode=strict
+PIP_INSTALL = $(PYTHON) -m pip install --quiet --disable-pip-version-check \
+	--config-settings editable_mode=strict
+
 $(STAMP): pyproject.toml
 	python3 -m venv $(VENV)
-	$(PYTHON) -m pip install --quiet --disable-pip-version-check \
-		--config-settings editable_mode=strict -e '.[test,explore]'
+	$(PYTHON) -m pip install --quiet --disable-pip-version-check uv 2>/dev/null || true
+	$(INSTALL) -e '.[test,explore]' 2>/dev/null || $(PIP_INSTALL) -e '.[test,explore]'
 	echo '$(FILES)' > $(VENV)/.files
 	touch $(STAMP)
 
@@ -32,8 +39,7 @@ test-slow: $(STAMP)
 
 # The documentation's tools, beside the test extras (made again when pyproject.toml changes).
 $(VENV)/.docs-installed: pyproject.toml | $(STAMP)
-	$(PYTHON) -m pip install --quiet --disable-pip-version-check \
-		--config-settings editable_mode=strict -e '.[test,explore,docs]'
+	$(INSTALL) -e '.[test,explore,docs]' 2>/dev/null || $(PIP_INSTALL) -e '.[test,explore,docs]'
 	touch $@
 
 # `make docs`: the studies' figures and report (what is missing or stale), the pages written
