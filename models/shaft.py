@@ -1,0 +1,206 @@
+"""A stepped shaft as Timoshenko beam finite elements, on supports and under loads.
+
+The shaft lies along x. Each node has the five degrees of freedom of a bearing's inner ring,
+in the order of :data:`models.ball.DOFS`: axial displacement ``u``, radial displacements ``v``
+(y) and ``w`` (z), and tilts ``theta_y``, ``theta_z`` about y and z (right-handed, so that the
+slopes of the deflection line are ``dv/dx = theta_z`` and ``dw/dx = -theta_y``); torsion is
+left out. Each element is a prismatic stretch of one section between two nodes: a bar for the
+axial displacement and a Timoshenko beam in each bending plane, whose cubic deflection and
+linear rotation make it exact for loads at its nodes [1]_. Nodes sit at the ends of the
+sections, at every support and load, and at the stations where the deflection line is
+reported, so the solution is exact for point loads on a linear shaft (no mesh to refine).
+
+Supports here are linear springs, one stiffness per degree of freedom (rigid as a limit);
+the loads are forces and moments at positions.
+
+References
+----------
+.. [1] J. S. Przemieniecki, Theory of Matrix Structural Analysis, McGraw-Hill (1968),
+   sec. 5.6; Z. Friedman and J. B. Kosmatka, "An improved two-node Timoshenko beam finite
+   element", Computers & Structures 47 (1993) 473-481, doi:10.1016/0045-7949(93)90243-7.
+.. [2] G. R. Cowper, "The shear coefficient in Timoshenko's beam theory", Journal of Applied
+   Mechanics 33 (1966) 335-340, doi:10.1115/1.3625046.
+"""
+from __future__ import annotations
+
+import numpy as np
+
+#: Degrees of freedom per node, as :data:`models.ball.DOFS` names them.
+NODE_DOFS = 5
+#: Nodes closer than this fraction of the shaft's length are one node.
+_MERGE = 1e-12
+
+
+def cowper_shear_coefficient(poisson_ratio, bore_ratio=0.0):
+    """Shear coefficient ``kappa`` of a circular tube [2]_, Table 1:
+    ``6 (1 + nu) (1 + m^2)^2 / ((7 + 6 nu) (1 + m^2)^2 + (20 + 12 nu) m^2)`` with ``m`` the
+    bore over the outside diameter (a solid shaft: ``6 (1 + nu) / (7 + 6 nu)``)."""
+    m2 = np.asarray(bore_ratio, dtype=float) ** 2
+    nu = np.asarray(poisson_ratio, dtype=float)
+    return 6 * (1 + nu) * (1 + m2) ** 2 / ((7 + 6 * nu) * (1 + m2) ** 2 + (20 + 12 * nu) * m2)
+
+
+def bending_element_stiffness(length, bending_stiffness, shear_stiffness):
+    """Stiffness matrix ``(..., 4, 4)`` of a Timoshenko beam element in one plane [1]_, for
+    the deflections and slopes ``(v1, v1', v2, v2')`` of its ends.
+
+    ``EI / ((1 + Phi) L^3) [[12, 6L, -12, 6L], [6L, (4 + Phi) L^2, -6L, (2 - Phi) L^2], ...]``
+    with ``Phi = 12 EI / (kappa G A L^2)``; ``Phi = 0`` is Euler-Bernoulli's.
+
+    Parameters
+    ----------
+    length : array_like
+        ``L`` [m].
+    bending_stiffness : array_like
+        ``EI`` [N m^2].
+    shear_stiffness : array_like
+        ``kappa G A`` [N]; ``inf`` for a beam rigid in shear.
+    """
+    length, ei, shear = np.broadcast_arrays(*(np.asarray(a, dtype=float) for a in (
+        length, bending_stiffness, shear_stiffness)))
+    phi = 12.0 * ei / (shear * length ** 2)
+    s = ei / ((1.0 + phi) * length ** 3)
+    L = length
+    rows = [[12.0 + 0 * L, 6 * L, -12.0 + 0 * L, 6 * L],
+            [6 * L, (4 + phi) * L ** 2, -6 * L, (2 - phi) * L ** 2],
+            [-12.0 + 0 * L, -6 * L, 12.0 + 0 * L, -6 * L],
+            [6 * L, (2 - phi) * L ** 2, -6 * L, (4 + phi) * L ** 2]]
+    return s[..., None, None] * np.moveaxis(np.array(rows), (0, 1), (-2, -1))
+
+
+def shaft_nodes(section_lengths, positions=()):
+    """The nodes' axial positions [m]: both ends, every section boundary and ``positions``
+    (supports, loads, stations), sorted, coincident ones merged; and each section boundary's
+    node index. A position off the shaft is a ``ValueError``."""
+    ends = np.concatenate([[0.0], np.cumsum(np.asarray(section_lengths, dtype=float))])
+    positions = np.asarray(positions, dtype=float).ravel()
+    total = ends[-1]
+    if positions.size and ((positions < -_MERGE * total).any()
+                           or (positions > total * (1 + _MERGE)).any()):
+        raise ValueError(f"a position lies off the shaft (0 to {total * 1e3:g} mm)")
+    candidates = np.sort(np.concatenate([ends, np.clip(positions, 0.0, total)]))
+    keep = np.concatenate([[True], np.diff(candidates) > _MERGE * total])
+    nodes = candidates[keep]
+    return nodes, node_at(nodes, ends)
+
+
+def node_at(nodes, positions):
+    """Index of the node at each of ``positions`` (the nearest)."""
+    return np.abs(np.asarray(nodes)[:, None] - np.atleast_1d(positions)[None, :]).argmin(0)
+
+
+def shaft_stiffness(section_lengths, outside_diameters, bores, youngs_modulus, poisson_ratio,
+                    nodes):
+    """The free shaft's stiffness matrix ``(5 n, 5 n)`` on ``nodes`` [N/m, N, N m/rad].
+
+    Parameters
+    ----------
+    section_lengths, outside_diameters, bores : array_like
+        Per section [m] (a bore of 0: solid).
+    youngs_modulus, poisson_ratio : float
+        ``E`` [Pa] and ``nu`` [-] of the shaft.
+    nodes : array_like
+        Axial positions of the nodes [m], from :func:`shaft_nodes`.
+    """
+    nodes = np.asarray(nodes, dtype=float)
+    ends = np.concatenate([[0.0], np.cumsum(section_lengths)])
+    outside = np.asarray(outside_diameters, dtype=float)
+    bore = np.asarray(bores, dtype=float)
+    # Each element lies in the section that holds its middle.
+    middle = 0.5 * (nodes[:-1] + nodes[1:])
+    section = np.clip(np.searchsorted(ends, middle) - 1, 0, len(outside) - 1)
+    d, di = outside[section], bore[section]
+    area = np.pi / 4 * (d ** 2 - di ** 2)
+    inertia = np.pi / 64 * (d ** 4 - di ** 4)
+    shear_modulus = youngs_modulus / (2 * (1 + poisson_ratio))
+    shear = cowper_shear_coefficient(poisson_ratio, di / d) * shear_modulus * area
+    length = np.diff(nodes)
+    bending = bending_element_stiffness(length, youngs_modulus * inertia, shear)
+    axial = youngs_modulus * area / length
+    size = NODE_DOFS * len(nodes)
+    matrix = np.zeros((size, size))
+    # x-y plane: (v, theta_z); x-z plane: (w, -theta_y), the slope's sign turned.
+    planes = ((1, 4, 1.0), (2, 3, -1.0))
+    for element in range(len(length)):
+        first, second = NODE_DOFS * element, NODE_DOFS * (element + 1)
+        bar = np.array([first, second])
+        matrix[np.ix_(bar, bar)] += axial[element] * np.array([[1.0, -1.0], [-1.0, 1.0]])
+        for deflection, tilt, sign in planes:
+            index = np.array([first + deflection, first + tilt, second + deflection,
+                              second + tilt])
+            turn = np.array([1.0, sign, 1.0, sign])
+            matrix[np.ix_(index, index)] += turn[:, None] * bending[element] * turn[None, :]
+    return matrix
+
+
+def solve_shaft(section_lengths, outside_diameters, bores, youngs_modulus, poisson_ratio,
+                support_positions, support_stiffness, load_positions, loads, stations=()):
+    """A shaft on linear supports under loads: the displacements and what each support
+    carries.
+
+    Parameters
+    ----------
+    section_lengths, outside_diameters, bores : array_like
+        ``(S,)`` per section, from the shaft's left end [m].
+    youngs_modulus, poisson_ratio : float
+        The shaft's ``E`` [Pa], ``nu`` [-].
+    support_positions : array_like
+        ``(B,)`` axial positions of the supports [m].
+    support_stiffness : array_like
+        ``(B, 5)`` each support's stiffness per degree of freedom [N/m, N m/rad] (0: free
+        in that direction, ``inf``: rigid).
+    load_positions : array_like
+        ``(L,)`` axial positions of the loads [m].
+    loads : array_like
+        ``(..., L, 5)`` forces and moments ``(F_x, F_y, F_z, M_y, M_z)`` [N, N m] of each
+        load, for any number of load cases ``...``.
+    stations : array_like
+        ``(P,)`` axial positions where the deflection line is reported [m].
+
+    Returns
+    -------
+    dict of numpy.ndarray
+        ``support_displacement`` ``(..., B, 5)`` [m, rad]; ``support_load`` ``(..., B, 5)``
+        the forces and moments the shaft puts on each support [N, N m] (they balance the
+        loads); ``station_displacement`` ``(..., P, 5)`` [m, rad]; ``solvable``: False where
+        the supports leave the shaft free to move (all values NaN then).
+    """
+    support_positions = np.atleast_1d(np.asarray(support_positions, dtype=float))
+    load_positions = np.atleast_1d(np.asarray(load_positions, dtype=float))
+    stations = np.atleast_1d(np.asarray(stations, dtype=float))
+    nodes, _ = shaft_nodes(section_lengths, np.concatenate([support_positions,
+                                                            load_positions, stations]))
+    matrix = shaft_stiffness(section_lengths, outside_diameters, bores, youngs_modulus,
+                             poisson_ratio, nodes)
+    springs = np.broadcast_to(np.asarray(support_stiffness, dtype=float),
+                              (support_positions.size, NODE_DOFS))
+    at_support = node_at(nodes, support_positions)
+    if len(set(at_support)) < len(at_support):
+        raise ValueError("two supports at one position: give one support its stiffnesses")
+    support_dofs = NODE_DOFS * at_support[:, None] + np.arange(NODE_DOFS)
+    held = np.zeros(matrix.shape[0], dtype=bool)
+    for dofs, stiffness in zip(support_dofs, springs):
+        rigid = np.isinf(stiffness)
+        matrix[dofs[~rigid], dofs[~rigid]] += stiffness[~rigid]
+        held[dofs[rigid]] = True
+    loads = np.asarray(loads, dtype=float)
+    cases = loads.shape[:-2]
+    force = np.zeros(cases + (matrix.shape[0],))
+    for index, node in enumerate(node_at(nodes, load_positions)):
+        force[..., NODE_DOFS * node + np.arange(NODE_DOFS)] += loads[..., index, :]
+    flat = force.reshape(-1, matrix.shape[0]).T
+    free = ~held
+    reduced = matrix[np.ix_(free, free)]
+    solvable = bool(np.linalg.cond(reduced) < 1e-3 / np.finfo(float).eps)
+    displacement = np.zeros_like(flat)
+    displacement[free] = np.linalg.solve(reduced, flat[free]) if solvable else np.nan
+    # What the shaft puts on a rigid support: the load there less what the shaft carries on.
+    carried = flat - matrix @ displacement
+    by_node = displacement.T.reshape(cases + (len(nodes), NODE_DOFS))
+    carried = carried.T.reshape(cases + (len(nodes), NODE_DOFS))
+    at_supports = by_node[..., at_support, :]
+    support_load = np.where(np.isinf(springs), carried[..., at_support, :],
+                            np.where(np.isinf(springs), 0.0, springs) * at_supports)
+    return {"support_displacement": at_supports, "support_load": support_load,
+            "station_displacement": by_node[..., node_at(nodes, stations), :],
+            "solvable": solvable}
