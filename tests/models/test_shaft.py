@@ -77,7 +77,7 @@ def test_a_cantilever_of_two_sections_bends_as_the_moment_area_method_says():
     P / E ((L^3 - b^3) / (3 I1) + b^3 / (3 I2)) plus the shear parts P a / (kappa G A1) +
     P b / (kappa G A2); the tip's slope P / E ((L^2 - b^2) / (2 I1) + b^2 / (2 I2))."""
     a, b, force = 0.2, 0.1, 500.0
-    (a1, i1, s1), (a2, i2, s2) = solid(0.03), solid(0.02)
+    (_, i1, s1), (_, i2, s2) = solid(0.03), solid(0.02)
     length = a + b
     result = solve_shaft([a, b], [0.03, 0.02], [0.0, 0.0], E, NU, [0.0], [CLAMPED],
                          [length], load_y(force), stations=[length])
