@@ -126,12 +126,20 @@ def friction_constraints(kind):
         ("bearing_width",) if _TYPES[kind][3] else ())
 
     def given(oil_level, **others):
-        return np.isnan(oil_level) | np.all([np.isfinite(others[name]) for name in needed],
-                                            axis=0)
+        arrays = np.broadcast_arrays(oil_level, *(others[name] for name in needed))
+        return np.isnan(arrays[0]) | np.all([np.isfinite(a) for a in arrays[1:]], axis=0)
+
+    def bath(oil_level, friction_method, lubrication_method):
+        return np.isnan(oil_level) | ((friction_method == "skf")
+                                      & (lubrication_method == "oil_bath"))
 
     return (Constraint(("oil_level",) + needed, given, "oil_level needs "
                        + ", ".join(needed[:-1]) + " and " + needed[-1] + " (SKF's drag loss)",
-                       unset=True),)
+                       unset=True),
+            Constraint(("oil_level", "friction_method", "lubrication_method"), bath,
+                       "oil_level is an oil bath's, for SKF's drag loss: it needs "
+                       "friction_method 'skf' and lubrication_method 'oil_bath' (Palmgren's "
+                       "f0 holds the lubrication's losses)", unset=True))
 
 
 def _constant_name(symbol):
@@ -223,17 +231,25 @@ def bearing_friction(kind, method, lubrication, speed, pitch_diameter, radial_lo
     if method not in FRICTION_METHODS or lubrication not in LUBRICATION_METHODS:
         raise ValueError(f"friction_method must be one of {FRICTION_METHODS}, "
                          f"lubrication_method one of {LUBRICATION_METHODS}")
+    (speed, pitch_diameter, radial_load, axial_load, kinematic_viscosity, equivalent_load,
+     bore, outside_diameter, axial_load_factor, oil_level, drag_loss_factor,
+     bearing_width) = (np.asarray(np.nan if a is None else a, dtype=float) for a in (
+         speed, pitch_diameter, radial_load, axial_load, kinematic_viscosity, equivalent_load,
+         bore, outside_diameter, axial_load_factor, oil_level, drag_loss_factor,
+         bearing_width))
     rings = np.isfinite(bore) & np.isfinite(outside_diameter)
     mean = 1e3 * np.where(rings, 0.5 * (bore + outside_diameter), pitch_diameter)  # [mm]
     revolutions = np.asarray(speed) * 30.0 / np.pi  # [r/min]
     viscosity = 1e6 * np.asarray(kinematic_viscosity)  # [mm^2/s]
-    none = np.full(np.broadcast(mean, viscosity, radial_load).shape, np.nan)
-    parts = dict.fromkeys(FRICTION_OUTPUT_NAMES[1:6], none)
+    shape = np.broadcast(mean, viscosity, radial_load, axial_load).shape
+    parts = {name: np.full(shape, np.nan) for name in FRICTION_OUTPUT_NAMES[1:6]}
     bath = np.isfinite(oil_level)
     roller = _TYPES[kind][3] is not None
     if np.any(bath & ~(rings & np.isfinite(drag_loss_factor)
                        & (np.isfinite(bearing_width) | (not roller)))):
         raise ValueError(friction_constraints(kind)[0].message)
+    if np.any(bath) and (method, lubrication) != ("skf", "oil_bath"):
+        raise ValueError(friction_constraints(kind)[1].message)
     if method == "skf":
         with np.errstate(over="ignore", invalid="ignore"):  # IEEE results beyond any bearing
             rolling, sliding = skf_frictional_moments(

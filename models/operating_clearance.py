@@ -37,12 +37,13 @@ OPERATING_INPUTS = (
     Input("housing_fit", "um", "diametral interference of outer ring and housing at 20 degC "
           "(negative: a loose fit); needs outside_diameter", default=0.0, minimum=-1000.0,
           maximum=1000.0, label="housing fit"),
-    Input("bore", "mm", "bore d of the inner ring, for the shaft fit and the ring's "
-          "centrifugal expansion; default: neither (NaN)", default=None, minimum=0.0,
-          exclusive_minimum=True, label="bore"),
+    Input("bore", "mm", "bore d of the inner ring, for the shaft fit, the ring's "
+          "centrifugal expansion and SKF's friction (its mean diameter (d + D) / 2, "
+          "replenishment and drag); default: none (NaN; the pitch diameter for the "
+          "friction)", default=None, minimum=0.0, exclusive_minimum=True, label="bore"),
     Input("outside_diameter", "mm", "outside diameter D of the outer ring, for the housing "
-          "fit; default: none", default=None, minimum=0.0, exclusive_minimum=True,
-          label="outside diameter"),
+          "fit and SKF's friction; default: none", default=None, minimum=0.0,
+          exclusive_minimum=True, label="outside diameter"),
     Input("shaft_bore", "mm", "bore of a hollow shaft (0: solid)", default=0.0, minimum=0.0,
           label="shaft bore"),
     Input("housing_outside_diameter", "mm", "outside diameter of the housing around the outer "
@@ -103,17 +104,22 @@ def operating_outputs():
     )
 
 
-def operating_constraints(element):
+def operating_constraints(element, angle=None):
     """The conditions between the operating inputs, checked on a definition before any
     computing (the model's ``ValueError`` says the same of a direct call): a fit needs its
     ring's dimension, and shaft, rings and housing nest around the raceways ``d_m -+`` the
-    rolling element's diameter, the input named ``element``."""
-    def nested_inside(bore, shaft_bore, pitch_diameter, **element_diameter):
-        return ~((bore >= pitch_diameter - element_diameter[element]) | (shaft_bore >= bore))
+    rolling element's diameter, the input named ``element`` (times the cosine of the input
+    named ``angle``, where given: a tapered roller's raceways at its middle)."""
+    around = (element,) + ((angle,) if angle else ())
 
-    def nested_outside(outside_diameter, housing_outside_diameter, pitch_diameter,
-                       **element_diameter):
-        return ~((outside_diameter <= pitch_diameter + element_diameter[element])
+    def offset(named):
+        return named[element] * (np.cos(named[angle]) if angle else 1.0)
+
+    def nested_inside(bore, shaft_bore, pitch_diameter, **named):
+        return ~((bore >= pitch_diameter - offset(named)) | (shaft_bore >= bore))
+
+    def nested_outside(outside_diameter, housing_outside_diameter, pitch_diameter, **named):
+        return ~((outside_diameter <= pitch_diameter + offset(named))
                  | (housing_outside_diameter <= outside_diameter))
 
     return (
@@ -124,11 +130,11 @@ def operating_constraints(element):
                    (housing_fit == 0) | np.isfinite(outside_diameter), "housing_fit needs "
                    "outside_diameter: the fit's effect on the clearance depends on the ring's "
                    "wall", unset=True),
-        Constraint(("bore", "shaft_bore", "pitch_diameter", element), nested_inside,
+        Constraint(("bore", "shaft_bore", "pitch_diameter") + around, nested_inside,
                    f"bore must lie between shaft_bore and the inner raceway's diameter "
                    f"(pitch_diameter - {element})",
                    unset=True),
-        Constraint(("outside_diameter", "housing_outside_diameter", "pitch_diameter", element),
+        Constraint(("outside_diameter", "housing_outside_diameter", "pitch_diameter") + around,
                    nested_outside, f"outside_diameter must lie between the outer raceway's "
                    f"diameter (pitch_diameter + {element}) and housing_outside_diameter",
                    unset=True),

@@ -23,6 +23,8 @@ References
 """
 from __future__ import annotations
 
+from dataclasses import dataclass
+
 import numpy as np
 
 #: Degrees of freedom per node, as :data:`models.ball.DOFS` names them.
@@ -133,6 +135,60 @@ def shaft_stiffness(section_lengths, outside_diameters, bores, youngs_modulus, p
     return matrix
 
 
+@dataclass(frozen=True)
+class AssembledShaft:
+    """A shaft's finite-element system on its supports and under its loads."""
+
+    nodes: np.ndarray  #: axial positions of the nodes [m]
+    matrix: np.ndarray  #: stiffness ``(5 n, 5 n)``, the finite springs included
+    held: np.ndarray  #: the degrees of freedom rigid supports hold ``(5 n,)``
+    force: np.ndarray  #: ``(..., 5 n)`` the loads on the nodes, per load case
+    support_nodes: np.ndarray  #: each support's node
+    support_stiffness: np.ndarray  #: ``(B, 5)`` as given
+    station_nodes: np.ndarray  #: each station's node
+
+    def support_loads(self, displacement):
+        """What the shaft puts on each support ``(..., B, 5)`` [N, N m] at ``displacement``
+        ``(..., 5 n)``: a spring's stiffness times its displacement; on a rigid support's
+        held directions, the loads there less what the shaft carries on."""
+        at = displacement.reshape(displacement.shape[:-1] + (-1, NODE_DOFS))
+        carried = (self.force - displacement @ self.matrix.T).reshape(at.shape)
+        springs = self.support_stiffness
+        return np.where(np.isinf(springs), carried[..., self.support_nodes, :],
+                        np.where(np.isinf(springs), 0.0, springs)
+                        * at[..., self.support_nodes, :])
+
+
+def assemble_shaft(section_lengths, outside_diameters, bores, youngs_modulus, poisson_ratio,
+                   support_positions, support_stiffness, load_positions, loads, stations=()):
+    """The shaft's system (:class:`AssembledShaft`) from the arguments of
+    :func:`solve_shaft`."""
+    support_positions = np.atleast_1d(np.asarray(support_positions, dtype=float))
+    load_positions = np.atleast_1d(np.asarray(load_positions, dtype=float))
+    stations = np.atleast_1d(np.asarray(stations, dtype=float))
+    nodes, _ = shaft_nodes(section_lengths, np.concatenate([support_positions,
+                                                            load_positions, stations]))
+    matrix = shaft_stiffness(section_lengths, outside_diameters, bores, youngs_modulus,
+                             poisson_ratio, nodes)
+    springs = np.array(np.broadcast_to(np.asarray(support_stiffness, dtype=float),
+                                       (support_positions.size, NODE_DOFS)))
+    at_support = node_at(nodes, support_positions)
+    if len(set(at_support)) < len(at_support):
+        raise ValueError("two supports at one position: give one support its stiffnesses")
+    held = np.zeros(matrix.shape[0], dtype=bool)
+    for node, stiffness in zip(at_support, springs):
+        dofs = NODE_DOFS * node + np.arange(NODE_DOFS)
+        rigid = np.isinf(stiffness)
+        matrix[dofs[~rigid], dofs[~rigid]] += stiffness[~rigid]
+        held[dofs[rigid]] = True
+    loads = np.asarray(loads, dtype=float)
+    force = np.zeros(loads.shape[:-2] + (matrix.shape[0],))
+    for index, node in enumerate(node_at(nodes, load_positions)):
+        force[..., NODE_DOFS * node + np.arange(NODE_DOFS)] += loads[..., index, :]
+    return AssembledShaft(nodes, matrix, held, force, at_support, springs,
+                          node_at(nodes, stations))
+
+
 def solve_shaft(section_lengths, outside_diameters, bores, youngs_modulus, poisson_ratio,
                 support_positions, support_stiffness, load_positions, loads, stations=()):
     """A shaft on linear supports under loads: the displacements and what each support
@@ -165,42 +221,17 @@ def solve_shaft(section_lengths, outside_diameters, bores, youngs_modulus, poiss
         loads); ``station_displacement`` ``(..., P, 5)`` [m, rad]; ``solvable``: False where
         the supports leave the shaft free to move (all values NaN then).
     """
-    support_positions = np.atleast_1d(np.asarray(support_positions, dtype=float))
-    load_positions = np.atleast_1d(np.asarray(load_positions, dtype=float))
-    stations = np.atleast_1d(np.asarray(stations, dtype=float))
-    nodes, _ = shaft_nodes(section_lengths, np.concatenate([support_positions,
-                                                            load_positions, stations]))
-    matrix = shaft_stiffness(section_lengths, outside_diameters, bores, youngs_modulus,
-                             poisson_ratio, nodes)
-    springs = np.broadcast_to(np.asarray(support_stiffness, dtype=float),
-                              (support_positions.size, NODE_DOFS))
-    at_support = node_at(nodes, support_positions)
-    if len(set(at_support)) < len(at_support):
-        raise ValueError("two supports at one position: give one support its stiffnesses")
-    support_dofs = NODE_DOFS * at_support[:, None] + np.arange(NODE_DOFS)
-    held = np.zeros(matrix.shape[0], dtype=bool)
-    for dofs, stiffness in zip(support_dofs, springs):
-        rigid = np.isinf(stiffness)
-        matrix[dofs[~rigid], dofs[~rigid]] += stiffness[~rigid]
-        held[dofs[rigid]] = True
-    loads = np.asarray(loads, dtype=float)
-    cases = loads.shape[:-2]
-    force = np.zeros(cases + (matrix.shape[0],))
-    for index, node in enumerate(node_at(nodes, load_positions)):
-        force[..., NODE_DOFS * node + np.arange(NODE_DOFS)] += loads[..., index, :]
-    flat = force.reshape(-1, matrix.shape[0]).T
-    free = ~held
-    reduced = matrix[np.ix_(free, free)]
+    shaft = assemble_shaft(section_lengths, outside_diameters, bores, youngs_modulus,
+                           poisson_ratio, support_positions, support_stiffness,
+                           load_positions, loads, stations)
+    free = ~shaft.held
+    reduced = shaft.matrix[np.ix_(free, free)]
     solvable = bool(np.linalg.cond(reduced) < 1e-3 / np.finfo(float).eps)
-    displacement = np.zeros_like(flat)
-    displacement[free] = np.linalg.solve(reduced, flat[free]) if solvable else np.nan
-    # What the shaft puts on a rigid support: the load there less what the shaft carries on.
-    carried = flat - matrix @ displacement
-    by_node = displacement.T.reshape(cases + (len(nodes), NODE_DOFS))
-    carried = carried.T.reshape(cases + (len(nodes), NODE_DOFS))
-    at_supports = by_node[..., at_support, :]
-    support_load = np.where(np.isinf(springs), carried[..., at_support, :],
-                            np.where(np.isinf(springs), 0.0, springs) * at_supports)
-    return {"support_displacement": at_supports, "support_load": support_load,
-            "station_displacement": by_node[..., node_at(nodes, stations), :],
+    displacement = np.zeros_like(shaft.force)
+    displacement[..., free] = (np.linalg.solve(reduced, shaft.force[..., free, None])[..., 0]
+                               if solvable else np.nan)
+    by_node = displacement.reshape(displacement.shape[:-1] + (-1, NODE_DOFS))
+    return {"support_displacement": by_node[..., shaft.support_nodes, :],
+            "support_load": shaft.support_loads(displacement),
+            "station_displacement": by_node[..., shaft.station_nodes, :],
             "solvable": solvable}

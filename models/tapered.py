@@ -32,6 +32,9 @@ from .limits import (OIL_VALIDITY, SOFTEST_BEARING_SOLID, SPEED_VALIDITY, STEEL_
                      not_steel, outside_operation)
 from .lubrication import (CELSIUS, MINERAL_OIL_PRESSURE_VISCOSITY, entrainment_speed,
                           line_contact_film, walther_viscosity)
+from .operating_clearance import (BEARING_STEEL_EXPANSION, OPERATING_INPUTS,
+                                  REFERENCE_TEMPERATURE, mounted_clearance,
+                                  operating_constraints, operating_outputs)
 from .registry import (CONVERGED, INFEASIBLE, NO_ROOT_IN_RANGE, NOT_CONVERGED,
                        OUT_OF_VALIDITY, Constraint, Input, Model, Output, below,
                        combine_status)
@@ -101,16 +104,54 @@ def cone_curvature_sum(roller_mean_diameter, pitch_diameter, contact_angle):
         np.asarray(pitch_diameter) - roller_mean_diameter * cos_angle)
 
 
-#: The rings' boundary dimensions, for the friction only (SKF's mean diameter, its
-#: replenishment factor and the drag of an oil bath).
-_RINGS = (
-    Input("bore", "mm", "bore d of the cone, for SKF's friction (its mean diameter (d + D) / 2, "
-          "replenishment and drag); default: none (the pitch diameter)", default=None,
-          minimum=0.0, exclusive_minimum=True, label="bore"),
-    Input("outside_diameter", "mm", "outside diameter D of the cup, for SKF's friction; "
-          "default: none", default=None, minimum=0.0, exclusive_minimum=True,
-          label="outside diameter"),
-)
+#: The unmounted clearance of a single tapered roller bearing.
+_CLEARANCE = Input("clearance", "mm", "diametral radial internal clearance at 20 degC, "
+                   "unmounted (negative: preload); a single bearing's rollers carry the same "
+                   "loads whatever it is, the cone moving on axially by (P_d / 2) cot(alpha)",
+                   default=0.0, minimum=-1.0, maximum=1.0, label="clearance")
+
+
+def _rings_hold_rollers(bore, outside_diameter, roller_mean_diameter, outer_contact_angle):
+    """Where the rings' section has room for the rollers between them."""
+    return (outside_diameter - bore
+            > 2.0 * roller_mean_diameter * np.cos(outer_contact_angle))
+
+
+def _raceways_known(pitch_diameter, shaft_fit, housing_fit, inner_ring_temperature,
+                    outer_ring_temperature, bore, speed):
+    """Where the operating clearance's inputs leave it the clearance, or the raceways are
+    known."""
+    quiet = ((shaft_fit == 0) & (housing_fit == 0)
+             & (inner_ring_temperature == REFERENCE_TEMPERATURE)
+             & (outer_ring_temperature == REFERENCE_TEMPERATURE)
+             & ~(np.isfinite(bore) & (speed > 0)))
+    return np.isfinite(pitch_diameter) | quiet
+
+
+def _mounted(clearance, pitch, diameter, angle, speed, youngs_modulus, poisson_ratio,
+             *operating):
+    """The operating clearance (:func:`models.operating_clearance.mounted_clearance`) with
+    the raceways at the rollers' middle, ``d_m -+ D cos(alpha)``. Without a pitch diameter the
+    raceways are unknown, and nothing may act on the clearance (a ``ValueError`` says so)."""
+    unknown = np.isnan(pitch)
+    bore, outside = operating[2], operating[3]
+    # With nothing acting, the changes are zero whatever the raceways: any inside the rings
+    # stand in for unknown ones.
+    stand_in = np.where(np.isfinite(bore) & np.isfinite(outside), 0.5 * (bore + outside),
+                        np.where(np.isfinite(bore), bore + 3.0 * diameter,
+                                 np.where(np.isfinite(outside), outside - 3.0 * diameter,
+                                          10.0 * diameter)))
+    middle = np.where(unknown, stand_in, pitch)
+    offset = diameter * np.cos(angle)
+    mounted = mounted_clearance(clearance, middle - offset, middle + offset, diameter, speed,
+                                youngs_modulus, poisson_ratio, *operating)
+    acting = ((mounted["clearance_change_fit"] != 0)
+              | (mounted["clearance_change_temperature"] != 0)
+              | (np.nan_to_num(mounted["clearance_change_speed"]) != 0))
+    if np.any(unknown & acting):
+        raise ValueError("the operating clearance of trb_load needs pitch_diameter: fits, "
+                         "temperatures and speed change the raceways' diameters")
+    return mounted
 
 
 def trb_load(radial_load, axial_load, roller_count, effective_length, roller_mean_diameter,
@@ -125,7 +166,13 @@ def trb_load(radial_load, axial_load, roller_count, effective_length, roller_mea
              skf_sliding_constant_1=None, skf_sliding_constant_2=None,
              boundary_friction_coefficient=0.15, full_film_friction_coefficient=0.002,
              palmgren_speed_factor=None, palmgren_load_factor=None, oil_level=None,
-             drag_loss_factor=None, bearing_width=None, bore=None, outside_diameter=None):
+             drag_loss_factor=None, bearing_width=None, clearance=0.0, shaft_fit=0.0,
+             housing_fit=0.0, bore=None, outside_diameter=None, shaft_bore=0.0,
+             housing_outside_diameter=None, inner_ring_temperature=REFERENCE_TEMPERATURE,
+             outer_ring_temperature=REFERENCE_TEMPERATURE, shaft_temperature=None,
+             housing_temperature=None, shaft_youngs_modulus=207e9, shaft_poisson_ratio=0.3,
+             shaft_expansion=BEARING_STEEL_EXPANSION, housing_youngs_modulus=207e9,
+             housing_poisson_ratio=0.3, housing_expansion=BEARING_STEEL_EXPANSION):
     """Displacements, roller loads, contact pressure, lubricant film, friction and rating
     life of a tapered roller bearing under combined load.
 
@@ -163,11 +210,24 @@ def trb_load(radial_load, axial_load, roller_count, effective_length, roller_mea
     friction_method, lubrication_method, skf_rolling_constant_1, skf_rolling_constant_2,
     skf_sliding_constant_1, skf_sliding_constant_2, boundary_friction_coefficient,
     full_film_friction_coefficient, palmgren_speed_factor, palmgren_load_factor, oil_level,
-    drag_loss_factor, bearing_width, bore, outside_diameter : str or array_like or None
+    drag_loss_factor, bearing_width : str or array_like or None
         The friction torque's method and constants (:func:`models.friction.bearing_friction`,
         SKF's in its units; coefficients and factors [-]; lengths [m]), with
         ``Y = 0.4 cot(alpha)`` (ISO 281, Table 8); without bore and outside diameter, SKF's
         mean diameter is the pitch diameter and ``phi_rs = 1``.
+    clearance : array_like
+        Diametral radial clearance ``P_d`` [m], unmounted; negative for a preload.
+    shaft_fit, housing_fit, bore, outside_diameter, shaft_bore, housing_outside_diameter,
+    inner_ring_temperature, outer_ring_temperature, shaft_temperature, housing_temperature,
+    shaft_youngs_modulus, shaft_poisson_ratio, shaft_expansion, housing_youngs_modulus,
+    housing_poisson_ratio, housing_expansion : array_like or None
+        The bearing as mounted, for its operating clearance
+        (:func:`models.operating_clearance.operating_clearance`; lengths [m], temperatures
+        [K], moduli [Pa], expansion coefficients [1/K]), with the raceways at the rollers'
+        middle, ``d_m -+ D cos(alpha)``; they need ``pitch_diameter``. A single bearing's
+        rollers carry the same loads whatever its clearance: each roller's gap along its
+        contact normal, ``(P_d / 2) cos(alpha)``, is closed by the cone moving on axially by
+        ``(P_d / 2) cot(alpha)``, which ``axial_displacement`` includes.
 
     Returns
     -------
@@ -242,10 +302,17 @@ def trb_load(radial_load, axial_load, roller_count, effective_length, roller_mea
             skf_rolling_constant_1, skf_rolling_constant_2, skf_sliding_constant_1,
             skf_sliding_constant_2, boundary_friction_coefficient,
             full_film_friction_coefficient, palmgren_speed_factor, palmgren_load_factor,
-            oil_level, drag_loss_factor, bearing_width, bore, outside_diameter)))
+            oil_level, drag_loss_factor, bearing_width, youngs_modulus, poisson_ratio,
+            clearance, shaft_fit, housing_fit, bore, outside_diameter, shaft_bore,
+            housing_outside_diameter, inner_ring_temperature, outer_ring_temperature,
+            shaft_temperature, housing_temperature, shaft_youngs_modulus, shaft_poisson_ratio,
+            shaft_expansion, housing_youngs_modulus, housing_poisson_ratio, housing_expansion)))
     radial, axial, length, diameter, angle, given, pitch, modulus, pressure_limit = arrays[:9]
     speed, life, oil, minimum_safety = arrays[9], arrays[10:16], arrays[16:19], arrays[19]
-    friction = arrays[20:]
+    friction = arrays[20:31]
+    mounted = _mounted(arrays[33], pitch, diameter, angle, speed, *arrays[31:33],
+                       *arrays[34:])
+    fit_lost = mounted.pop("fit_lost")
     constant = np.where(np.isnan(given), paper_contact_constant(length, diameter), given)
     # Inputs that describe no bearing, whatever the outcome: eq. 14's steel constant with
     # other elastic constants, a speed or an oil no bearing runs with.
@@ -289,9 +356,15 @@ def trb_load(radial_load, axial_load, roller_count, effective_length, roller_mea
     outputs.update(bearing_friction(
         "tapered_roller", friction_method, lubrication_method, speed, pitch, radial, axial,
         walther_viscosity(*life[3:]), dict(zip(("r1", "r2", "s1", "s2"), friction[:4])),
-        *friction[4:8], outputs["static_equivalent_load"], *friction[11:13],
+        *friction[4:8], outputs["static_equivalent_load"], *arrays[36:38],
         axial_load_factor=0.4 / np.tan(angle), oil_level=friction[8],
         drag_loss_factor=friction[9], bearing_width=friction[10]))
+    # A clearance only moves the cone on axially: every roller's gap along its contact
+    # normal, (P_d / 2) cos(alpha), is closed by delta_a sin(alpha), the loads unchanged.
+    outputs["axial_displacement"] = (outputs["axial_displacement"]
+                                     + 0.5 * mounted["operating_clearance"] / np.tan(angle))
+    outputs.update(mounted)
+    status = np.where(fit_lost, status | OUT_OF_VALIDITY, status)
     # A point without a solution has no values: NaN, not the iteration's last guess.
     solved = carried & converged
     outputs = {name: np.where(solved.reshape((-1,) + (1,) * (value.ndim - 1)), value, np.nan)
@@ -662,7 +735,7 @@ MODELS = [
                   default=4000.0, minimum=0.0, exclusive_minimum=True,
                   label="contact pressure limit"),
             SPEED_INPUT) + LIFE_INPUTS + FILM_INPUTS + STATIC_INPUTS
-        + friction_inputs("tapered_roller") + _RINGS,
+        + friction_inputs("tapered_roller") + (_CLEARANCE,) + OPERATING_INPUTS,
         outputs=(
             Output("radial_displacement", "mm", "radial displacement delta_r of the inner ring",
                    label="radial displacement"),
@@ -680,7 +753,7 @@ MODELS = [
                    label="largest contact pressure"),
         ) + film_outputs("every loaded roller's cone and cup contact (Pan and Hamrock's line "
                          "contact); NaN without pitch_diameter") + static_outputs("roller")
-        + friction_outputs()
+        + friction_outputs() + operating_outputs()
         + life_outputs("roller loads (one lamina each), inner ring rotating; NaN without "
                          "pitch_diameter", "ISO 281 Table 8, P = Fr for Fa/Fr <= 1.5 tan(alpha), "
                          "else 0.4 Fr + 0.4 cot(alpha) Fa"),
@@ -691,9 +764,16 @@ MODELS = [
             ("roller_count", "pitch_diameter", "roller_mean_diameter"), _rollers_fit,
             "the rollers do not fit on the pitch circle: pitch_diameter * sin(180 deg / "
             "roller_count) must exceed roller_mean_diameter"), Constraint(
-            ("bore", "outside_diameter"), lambda bore, outside_diameter: bore < outside_diameter,
-            "bore must be smaller than outside_diameter")) + LIFE_CONSTRAINTS
-        + friction_constraints("tapered_roller"),
+            ("bore", "outside_diameter", "roller_mean_diameter", "outer_contact_angle"),
+            _rings_hold_rollers, "outside_diameter - bore must exceed the rollers' radial "
+            "extent twice, 2 roller_mean_diameter cos(outer_contact_angle)")) + LIFE_CONSTRAINTS
+        + friction_constraints("tapered_roller")
+        + operating_constraints("roller_mean_diameter", "outer_contact_angle") + (Constraint(
+            ("pitch_diameter", "shaft_fit", "housing_fit", "inner_ring_temperature",
+             "outer_ring_temperature", "bore", "speed"), _raceways_known,
+            "the operating clearance needs pitch_diameter: fits, ring temperatures other "
+            "than 20 degC, and speed with a bore change the raceways' diameters",
+            unset=True),),
         # Measured by benchmarks/declared_costs.py; solved point by point, large blocks share
         # the per-call cost of the outputs' numpy and unit conversions
         # (benchmarks/trb_load_kernel.py, benchmarks/RESULTS.md).

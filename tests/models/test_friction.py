@@ -278,3 +278,36 @@ def test_an_oil_level_without_what_the_drag_needs_is_refused():
                                          "outside_diameter and bearing_width"):
         crb_radial(radial_load=5000.0, speed=3000 * RPM, oil_level=0.03, bore=0.04,
                    outside_diameter=0.08, drag_loss_factor=3e-4, **NU208, **OIL)
+
+
+@pytest.mark.parametrize("varied", [{"axes": {"drag_loss_factor": [1e-4, 2e-4]}},
+                                    {"axes": {"bore": ["45 mm", "50 mm"]}},
+                                    {"sample": {"n": 4, "method": "latin_hypercube", "seed": 1,
+                                                "oil_level": {"distribution": "uniform",
+                                                              "low": "0 mm", "high": "20 mm"},
+                                                "drag_loss_factor": {
+                                                    "distribution": "uniform", "low": 1e-4,
+                                                    "high": 3e-4}}}])
+def test_a_definition_with_what_the_drag_needs_on_axes_or_drawn_is_taken(varied):
+    """The check that an oil level comes with what the drag takes holds across axes."""
+    from bearing_sweep import spec
+
+    fixed = {"radial_load": "4 kN", "bore": "50 mm", "outside_diameter": "80 mm",
+             "bearing_width": "16 mm", "drag_loss_factor": 2e-4, "oil_level": "10 mm"}
+    for name in [*varied.get("axes", {}), *varied.get("sample", {})]:  # settings: no-ops
+        fixed.pop(name, None)
+    document = {"sweep": {"model": "crb_radial", "bearing": "paper000-D"}, "fixed": fixed,
+                **varied}
+    sweep = spec.from_dict(document)
+    assert sweep.model.name == "crb_radial"
+
+
+def test_friction_of_a_direct_call_with_plain_numbers_is_real_and_its_parts_distinct():
+    from bearing_sweep.models.friction import bearing_friction
+
+    result = bearing_friction("cylindrical_roller", "skf", "oil_bath", 100.0, 0.06, -5000.0,
+                              0.0, 2e-5, {"r1": 1.09e-6, "s1": 0.16, "s2": 0.0015}, 0.15, 0.02,
+                              None, None, 5000.0)
+    assert np.isnan(result["friction_torque"]) and not np.iscomplexobj(result["friction_torque"])
+    result["viscous_friction_torque"][...] = 1.0
+    assert np.isnan(result["load_friction_torque"])

@@ -138,3 +138,48 @@ def test_a_fit_without_its_ring_is_refused_in_one_line():
         crb_radial(5000.0, 14, PITCH, ROLLER, 12e-3, shaft_fit=10e-6)
     with pytest.raises(ValueError, match="do not nest"):
         crb_radial(5000.0, 14, PITCH, ROLLER, 12e-3, bore=55e-3)
+
+
+#: The tapered roller bearing of paper 003 (its Table 1), with assumed rings [m].
+TRB = {"roller_count": 16, "effective_length": 0.0215, "roller_mean_diameter": 0.01371,
+       "outer_contact_angle": math.radians(28.0), "pitch_diameter": 0.079537,
+       "radial_load": 12e3, "axial_load": 20e3}
+
+
+def test_a_single_tapered_bearing_s_clearance_moves_its_cone_and_leaves_its_loads():
+    """Every roller's gap along its contact normal is (P_d / 2) cos(alpha): the cone moves
+    on axially by (P_d / 2) cot(alpha) and the rollers carry the same loads."""
+    from bearing_sweep.models.tapered import trb_load
+
+    tight = trb_load(**TRB)
+    loose = trb_load(**TRB, clearance=60e-6)
+    np.testing.assert_allclose(loose["roller_load"], tight["roller_load"], rtol=1e-12)
+    assert loose["radial_displacement"] == pytest.approx(tight["radial_displacement"],
+                                                         rel=1e-12)
+    assert loose["axial_displacement"] - tight["axial_displacement"] == pytest.approx(
+        30e-6 / math.tan(math.radians(28.0)), rel=1e-9)
+    assert loose["operating_clearance"] == 60e-6
+
+
+def test_a_tapered_bearing_s_fit_takes_lames_share_of_its_clearance():
+    """A cone of bore 55 mm pressed on a solid steel shaft: its raceway at the rollers'
+    middle, d_m - D cos(alpha), grows by d / d_i of the fit (Lame, like materials: the
+    shaft's modulus is trb_load's ring modulus, 206 GPa)."""
+    from bearing_sweep.models.tapered import trb_load
+
+    result = trb_load(**TRB, clearance=60e-6, shaft_fit=20e-6, bore=0.055,
+                      shaft_youngs_modulus=206e9)
+    raceway = TRB["pitch_diameter"] - TRB["roller_mean_diameter"] * math.cos(math.radians(28))
+    assert result["clearance_change_fit"] == pytest.approx(-20e-6 * 0.055 / raceway,
+                                                           rel=1e-9)
+    assert result["operating_clearance"] == pytest.approx(
+        60e-6 + result["clearance_change_fit"], rel=1e-12)
+
+
+def test_a_tapered_bearing_s_operating_clearance_needs_its_pitch_diameter():
+    from bearing_sweep.models.tapered import trb_load
+
+    without_pitch = {**TRB, "pitch_diameter": None}
+    assert trb_load(**without_pitch, clearance=40e-6)["operating_clearance"] == 40e-6
+    with pytest.raises(ValueError, match="needs pitch_diameter"):
+        trb_load(**without_pitch, inner_ring_temperature=60 + CELSIUS)
