@@ -107,7 +107,7 @@ def series_constant(inner, outer, exponent=POINT_CONTACT_EXPONENT):
             + np.asarray(outer) ** (-1.0 / exponent)) ** (-exponent)
 
 
-class _Rings:
+class BallRings:
     """Per-point geometry of one group of points with the same ball count and geometry, for
     the compiled equilibrium (:mod:`models.ball_equilibrium`).
 
@@ -363,7 +363,7 @@ def ball_5dof(ball_count, ball_diameter, pitch_diameter, contact_angle,
     scale = np.stack([np.ones_like(radius)] * 3 + [radius] * 2, -1)  # length per unit dof
     load = np.stack(loads, -1) / scale
     load[:, ~free] = 0.0
-    rings = _Rings(ball_count, distance, angle, 0.5 * mounted["operating_clearance"], constant,
+    rings = BallRings(ball_count, distance, angle, 0.5 * mounted["operating_clearance"], constant,
                    geometry)
     scaled, converged, stiffness, condition, contacts = _equilibrium(rings, load, free,
                                                                      ball_count)
@@ -474,7 +474,7 @@ def _film(ball_load, inner, outer, diameter, pitch, angle, modulus, poisson, spe
                         np.concatenate([films[0][1], films[1][1]], axis=-1), roughness)
 
 
-def _equilibrium(rings: _Rings, load, free, ball_count):
+def _equilibrium(rings: BallRings, load, free, ball_count):
     """Displacements where the balls' reaction balances ``load`` in the free directions, the
     stiffness and each ball's contact there (:func:`models.ball_equilibrium.equilibria`).
 

@@ -5,7 +5,7 @@ from hypothesis import assume, given, settings
 from hypothesis import strategies as st
 from scipy.optimize import brentq
 
-from bearing_sweep.models.ball import DOFS, _Rings, ball_5dof, series_constant
+from bearing_sweep.models.ball import DOFS, BallRings, ball_5dof, series_constant
 from bearing_sweep.models.contact import hertz_point
 from bearing_sweep.models.registry import CONVERGED, INFEASIBLE, OUT_OF_VALIDITY
 
@@ -49,7 +49,7 @@ def test_the_stiffness_matrix_is_the_derivative_of_the_equilibrium():
 def test_the_tangent_stiffness_is_the_derivative_of_the_ball_forces(geometry, displacement,
                                                                      clearance):
     distance = np.array([0.05 * 3.14 * MM])
-    rings = _Rings(25, distance, np.array([np.radians(25)]), np.array([0.5 * clearance]),
+    rings = BallRings(25, distance, np.array([np.radians(25)]), np.array([0.5 * clearance]),
                    np.array([1.0649e10]), geometry)
     point = np.array([displacement])
     index = np.array([0])
