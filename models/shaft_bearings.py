@@ -10,7 +10,8 @@ from __future__ import annotations
 
 import numpy as np
 
-from .ball import BallRings, raceway_contacts, series_constant
+from .ball import (MAX_APPROACH_PER_DIAMETER, MAX_CONTACT_PRESSURE, BallRings,
+                   raceway_contacts, series_constant)
 from .shaft import NODE_DOFS, assemble_shaft
 
 #: Newton's tolerance on the residual, relative to the loads.
@@ -26,7 +27,7 @@ class BallSupport:
     def __init__(self, ball_count, ball_diameter, pitch_diameter, contact_angle,
                  inner_curvature_ratio=0.52, outer_curvature_ratio=0.53, clearance=0.0,
                  youngs_modulus=207e9, poisson_ratio=0.3, contact_constant=None,
-                 geometry="jones"):
+                 geometry="jones", pressure_limit=MAX_CONTACT_PRESSURE):
         inner, outer = raceway_contacts(ball_diameter, pitch_diameter, contact_angle,
                                         inner_curvature_ratio, outer_curvature_ratio,
                                         youngs_modulus, poisson_ratio)
@@ -34,6 +35,11 @@ class BallSupport:
             contact_constant = series_constant(inner["contact_constant"],
                                                outer["contact_constant"])
         distance = (inner_curvature_ratio + outer_curvature_ratio - 1.0) * ball_diameter
+        # What ball_5dof's validity takes: a ball's pressure per N^(1/3), the limits.
+        self.unit_pressure = float(np.maximum(inner["max_pressure"], outer["max_pressure"]))
+        self.pressure_limit, self.distance = pressure_limit, float(distance)
+        self.approach_limit = MAX_APPROACH_PER_DIAMETER * ball_diameter
+        self.angled = float(contact_angle) > 0.0
         radius = (0.5 * pitch_diameter
                   + (inner_curvature_ratio - 0.5) * ball_diameter * np.cos(contact_angle))
         # Tilts scaled by the radius of the inner grooves' centres, as ball_5dof solves.
@@ -53,6 +59,19 @@ class BallSupport:
         stiffness = (self.rings.stiffness(scaled, index) * self.scale[:, None]
                      * self.scale[None, :])
         return load, stiffness
+
+    def outside_validity(self, displacement):
+        """Where ``displacement`` ``(n, 5)`` lies outside :func:`models.ball.ball_5dof`'s
+        validity: a ball's pressure above the limit or its approach above 1 % of its
+        diameter, the ring moved beyond the grooves' centre distance, or a loaded ball of an
+        angular contact bearing that has crossed to the other side of its groove."""
+        scaled = np.atleast_2d(np.asarray(displacement, dtype=float)) * self.scale
+        index = np.zeros(len(scaled), dtype=np.int64)
+        approach, load, _, normal_axial, normal_radial, _ = self.rings.contacts(scaled, index)
+        crossed = self.angled & (load > 0) & (np.arctan2(normal_axial, normal_radial) < 0)
+        return ((self.unit_pressure * np.cbrt(load.max(axis=-1)) > self.pressure_limit)
+                | (approach.max(axis=-1) > self.approach_limit)
+                | (np.abs(scaled).max(axis=-1) > self.distance) | crossed.any(axis=-1))
 
 
 def solve_shaft_on_bearings(section_lengths, outside_diameters, bores, youngs_modulus,
@@ -86,7 +105,9 @@ def solve_shaft_on_bearings(section_lengths, outside_diameters, bores, youngs_mo
         ``bearing_displacement`` ``(B, 5)`` [m, rad]; ``bearing_load`` ``(B, 5)`` [N, N m],
         what the shaft puts on each bearing; ``spring_load`` ``(S, 5)``;
         ``station_displacement`` ``(P, 5)``; ``nodes`` the nodes' positions [m] and
-        ``node_displacement`` ``(n, 5)``; ``stiffness``, the system's tangent matrix on its
+        ``node_displacement`` ``(n, 5)``; ``bearing_outside_validity`` ``(B,)``, where a
+        bearing's solution lies outside its own model's validity (values kept, as that
+        model keeps them); ``stiffness``, the system's tangent matrix on its
         free degrees of freedom, those of ``free`` ``(5 n,)`` (the ones no rigid support
         holds), in their order; ``converged``: the residual below 1e-10 of the loads (else
         the values are NaN).
@@ -163,7 +184,10 @@ def solve_shaft_on_bearings(section_lengths, outside_diameters, bores, youngs_mo
     if not converged:
         whole[:], carried[:] = np.nan, np.nan
     by_node = whole.reshape(-1, NODE_DOFS)
-    return {"bearing_displacement": by_node[shaft.support_nodes[len(springs):]],
+    at_bearings = by_node[shaft.support_nodes[len(springs):]]
+    outside = np.array([bool(bearing.outside_validity(place[None])[0]) if converged else False
+                        for bearing, place in zip(bearings, at_bearings)], dtype=bool)
+    return {"bearing_displacement": at_bearings, "bearing_outside_validity": outside,
             "bearing_load": carried,
             "spring_load": shaft.support_loads(whole)[:len(springs)],
             "station_displacement": by_node[shaft.station_nodes], "nodes": shaft.nodes,

@@ -6,6 +6,7 @@ import numpy as np
 import pytest
 
 from bearing_sweep.models.ball import ball_5dof
+from bearing_sweep.models.registry import OUT_OF_VALIDITY
 from bearing_sweep.models.shaft_bearings import BallSupport, solve_shaft_on_bearings
 
 E, NU = 207e9, 0.3
@@ -129,3 +130,31 @@ def test_a_bearing_s_tangent_is_the_derivative_of_its_loads():
                                        (plus[0] - minus[0]) / (2 * step[column]),
                                        rtol=1e-4, atol=1e-3 * np.abs(tangent[0]).max())
 
+
+
+def test_a_bearing_outside_its_model_s_validity_is_flagged_as_its_model_flags_it():
+    """An angular contact bearing pulled against its contact angle carries the pull on the
+    other side of its grooves: ball_5dof solves it and marks it out of validity; so does the
+    shaft's equilibrium, with the same displacement."""
+    loads = (-1000.0, 100.0, 0.0, 0.0, 0.0)
+    result = solve_shaft_on_bearings([0.05], [0.03], [0.0], E, NU, [0.025],
+                                     [BallSupport(**ACBB)], [0.025], _loads(loads))
+    alone = ball_5dof(**ACBB, axial_load=loads[0], radial_load=loads[1])
+    assert alone["status"][0] & OUT_OF_VALIDITY
+    assert result["converged"] and result["bearing_outside_validity"].tolist() == [True]
+    np.testing.assert_allclose(result["bearing_displacement"][0], alone["displacement"][0],
+                               rtol=1e-7, atol=1e-13)
+    within = solve_shaft_on_bearings([0.05], [0.03], [0.0], E, NU, [0.025],
+                                     [BallSupport(**ACBB)], [0.025],
+                                     _loads((1000.0, 100.0, 0.0, 0.0, 0.0)))
+    assert within["bearing_outside_validity"].tolist() == [False]
+
+
+@pytest.mark.parametrize("loads", [(500.0, 200.0, 0.0, 0.0, 0.0), (3e4, 0.0, 0.0, 0.0, 0.0),
+                                   (2000.0, 1500.0, 0.0, 0.0, 5.0)])
+def test_the_flag_is_ball_5dof_s_at_the_same_loads(loads):
+    """Heavy loads take a ball above 4200 MPa (ISO 76's reference stress)."""
+    result = solve_shaft_on_bearings([0.05], [0.03], [0.0], E, NU, [0.025],
+                                     [BallSupport(**ACBB)], [0.025], _loads(loads))
+    alone = ball_5dof(**ACBB, axial_load=loads[0], radial_load=loads[1], moment_z=loads[4])
+    assert result["bearing_outside_validity"][0] == bool(alone["status"][0] & OUT_OF_VALIDITY)
