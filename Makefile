@@ -34,12 +34,19 @@ $(STAMP): pyproject.toml
 test: $(STAMP)
 	$(PYTHON) -m pytest -q -m "not slow" -n 2 --dist loadgroup
 
-test-slow: $(STAMP)
+test-slow: $(STAMP) $(VENV)/.ross-installed
 	$(PYTHON) -m pytest -q -m slow
+
+# ross, for the slow tests of the rotor-dynamics coefficients (made again when pyproject.toml
+# changes).
+$(VENV)/.ross-installed: pyproject.toml | $(STAMP)
+	$(INSTALL) -e '.[test,explore,ross]' 2>/dev/null || $(PIP_INSTALL) -e '.[test,explore,ross]'
+	touch $@
 
 # The documentation's tools, beside the test extras (made again when pyproject.toml changes).
 $(VENV)/.docs-installed: pyproject.toml | $(STAMP)
-	$(INSTALL) -e '.[test,explore,docs]' 2>/dev/null || $(PIP_INSTALL) -e '.[test,explore,docs]'
+	$(INSTALL) -e '.[test,explore,docs,ross]' 2>/dev/null \
+		|| $(PIP_INSTALL) -e '.[test,explore,docs,ross]'
 	touch $@
 
 # `make docs`: the studies' figures and report (what is missing or stale), the pages written

@@ -1,0 +1,109 @@
+"""A bearing's stiffness for a rotor-dynamics model: the coefficients over speed from a result
+of ``ball_5dof`` swept over speed, and ross ``BearingElement`` objects built from them.
+
+ross (the optional extra ``ross``) takes a bearing as linear springs and dampers in the two
+lateral directions of its node, as functions of the rotor's speed. Its ``x`` and ``y`` are the
+models' ``radial_y`` and ``radial_z``; the four lateral terms come from the result's
+``stiffness_matrix`` (dF/dq of the bearing's own equilibrium at each speed). The tilt and
+axial terms the matrix also holds have no place in a ross ``BearingElement`` (its rotations
+are the shaft elements'), so a rotor built so leaves the bearing's moment stiffness out: it is
+then somewhat softer in its conical modes than the bearings make it.
+"""
+from __future__ import annotations
+
+import os
+
+import numpy as np
+import xarray as xr
+
+from .definition.values import convert_written
+from .stores import open_result
+
+#: The lateral directions of a ross bearing, as the models name them.
+_LATERAL = ("radial_y", "radial_z")
+
+
+def bearing_coefficients(result: str | os.PathLike | xr.Dataset, speed: str = "speed") -> dict:
+    """The lateral stiffness of a bearing over speed.
+
+    Parameters
+    ----------
+    result : path or xarray.Dataset
+        A result of ``ball_5dof`` whose only axis with more than one value is ``speed`` (select
+        one value of the others first: ``result.sel(axial_load=...)``).
+    speed : str
+        The speed's dimension.
+
+    Returns
+    -------
+    dict of numpy.ndarray
+        ``frequency`` [rad/s], the speeds in increasing order; ``kxx``, ``kyy``, ``kxy``,
+        ``kyx`` [N/m] at each, ross's ``x`` and ``y`` being the models' ``radial_y`` and
+        ``radial_z``.
+
+    Raises
+    ------
+    ValueError
+        A result without a stiffness matrix over speed, another axis of several values, fewer
+        than two speeds, or a speed whose point has no stiffness (not converged).
+    """
+    data = result if isinstance(result, xr.Dataset) else open_result(result)
+    if "stiffness_matrix" not in data or speed not in data["stiffness_matrix"].dims:
+        raise ValueError(f"the result needs a stiffness_matrix along {speed!r} (a ball_5dof "
+                         f"result swept over {speed})")
+    matrix = data["stiffness_matrix"]
+    others = [dim for dim in matrix.dims
+              if dim not in (speed, "load_dof", "dof") and matrix.sizes[dim] > 1]
+    if others:
+        raise ValueError(f"the result varies along {', '.join(others)} too: select one value "
+                         "of each first, e.g. result.sel(name=value)")
+    matrix = matrix.squeeze([dim for dim in matrix.dims
+                             if dim not in (speed, "load_dof", "dof")], drop=True)
+    units = data.get("stiffness_matrix_units")
+    if units is not None:
+        lateral = units.sel(load_dof=list(_LATERAL), dof=list(_LATERAL)).values
+        if not np.all(lateral == "N/m"):
+            raise ValueError(f"the lateral stiffness is stored in {set(lateral.ravel())}, "
+                             "not N/m")
+    speeds = convert_written(data[speed].values, data[speed].attrs.get("units", "rad/s"),
+                             "rad/s")
+    if speeds.size < 2:
+        raise ValueError(f"the result has {speeds.size} {speed}: a rotor's bearings need "
+                         "their stiffness at two speeds or more")
+    order = np.argsort(speeds)
+    terms = {f"k{a}{b}": matrix.sel(load_dof=row, dof=column).transpose(speed).values[order]
+             for a, row in zip("xy", _LATERAL) for b, column in zip("xy", _LATERAL)}
+    missing = ~np.all(np.isfinite(np.stack(list(terms.values()))), axis=0)
+    if missing.any():
+        raise ValueError(f"no stiffness at {speed} {speeds[order][missing].tolist()} rad/s "
+                         "(points not converged)")
+    return {"frequency": speeds[order], **terms}
+
+
+def bearing_element(result: str | os.PathLike | xr.Dataset, node: int, damping: float = 0.0,
+                    speed: str = "speed", **options):
+    """A ross ``BearingElement`` at ``node`` with the bearing's stiffness over speed.
+
+    Parameters
+    ----------
+    result, speed
+        As :func:`bearing_coefficients` takes them.
+    node : int
+        The rotor's node the bearing sits at.
+    damping : float
+        ``cxx = cyy`` [N s/m], as the user gives it (the model computes no damping).
+    **options
+        Passed to ``ross.BearingElement`` (``tag``, ``scale_factor``, ...).
+    """
+    try:
+        import ross
+    except ImportError as error:
+        raise ImportError("a ross BearingElement needs ross: pip install "
+                          "'bearing-sweep[ross]'") from error
+    coefficients = bearing_coefficients(result, speed)
+    count = coefficients["frequency"].size
+    return ross.BearingElement(n=node, kxx=coefficients["kxx"], kyy=coefficients["kyy"],
+                               kxy=coefficients["kxy"], kyx=coefficients["kyx"],
+                               cxx=np.full(count, float(damping)),
+                               cyy=np.full(count, float(damping)),
+                               frequency=coefficients["frequency"], **options)

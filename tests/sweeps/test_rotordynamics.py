@@ -1,0 +1,63 @@
+"""A bearing's stiffness over speed for a rotor-dynamics model, and ross BearingElements from
+it."""
+import math
+
+import numpy as np
+import pytest
+
+import bearing_sweep
+from bearing_sweep.rotordynamics import bearing_coefficients, bearing_element
+
+SPEEDS = ["2000 rpm", "6000 rpm", "10000 rpm", "14000 rpm", "18000 rpm"]
+#: The 71807AC of paper 001 preloaded, its inner ring growing with speed (a bore given), so
+#: that its operating clearance and stiffness change along the speeds.
+DEFINITION = {"sweep": {"model": "ball_5dof", "bearing": "paper001-71807AC"},
+              "fixed": {"axial_load": "1 kN", "radial_load": "300 N", "bore": "35 mm",
+                        "outside_diameter": "47 mm", "shaft_fit": "5 um",
+                        "clearance": "-2 um"},
+              "axes": {"speed": list(reversed(SPEEDS))}}
+
+
+@pytest.fixture(scope="module")
+def swept():
+    return bearing_sweep.run(DEFINITION, workers=0, progress=False)
+
+
+def test_the_coefficients_are_the_stiffness_matrix_s_lateral_terms_in_rad_per_s(swept):
+    coefficients = bearing_coefficients(swept)
+    np.testing.assert_allclose(coefficients["frequency"],
+                               np.array([2000, 6000, 10000, 14000, 18000]) * math.pi / 30,
+                               rtol=1e-12)
+    at = swept.stiffness_matrix.sel(speed=6000.0)
+    assert coefficients["kxx"][1] == at.sel(load_dof="radial_y", dof="radial_y")
+    assert coefficients["kyx"][1] == at.sel(load_dof="radial_z", dof="radial_y")
+    # The inner ring's centrifugal growth takes clearance: the bearing stiffens with speed.
+    assert (np.diff(coefficients["kxx"]) > 0).all()
+
+
+def test_a_result_with_another_axis_or_without_speeds_is_refused_in_a_line(swept):
+    with pytest.raises(ValueError, match="select one value"):
+        bearing_coefficients(swept.expand_dims(axial_load=[1.0, 2.0]))
+    with pytest.raises(ValueError, match="two speeds or more"):
+        bearing_coefficients(swept.isel(speed=[0]))
+    with pytest.raises(ValueError, match="stiffness_matrix along 'speed'"):
+        bearing_coefficients(swept.drop_vars("stiffness_matrix"))
+
+
+@pytest.mark.slow
+def test_a_ross_rotor_on_two_bearings_from_a_sweep_bounces_on_their_springs(swept):
+    """A short, thick steel rotor (0.2 m long, 0.3 m across: its bending is some 1e-3 of the
+    bearings' compliance) on two such bearings: its first two lateral modes are the rigid
+    rotor bouncing on the bearings' springs in each direction, omega = (2 k / m)^(1/2), with
+    k the bearing's kyy and kxx (tolerance 1 %: the rotor's shear and bending, and the
+    bearings' cross terms, shift them slightly; its conical modes lie 3 % above)."""
+    import ross
+
+    steel = ross.Material(name="test_steel", rho=7810, E=211e9, G_s=81.2e9)
+    shaft = [ross.ShaftElement(L=0.05, idl=0.0, odl=0.3, material=steel) for _ in range(4)]
+    rotor = ross.Rotor(shaft, [], [bearing_element(swept, node, damping=0.0)
+                                   for node in (0, 4)])
+    modal = rotor.run_modal(speed=0.0)
+    coefficients = bearing_coefficients(swept)
+    expected = [math.sqrt(2 * coefficients[k][0] / rotor.m) for k in ("kyy", "kxx")]
+    np.testing.assert_allclose(np.sort(modal.wn[:2]), np.sort(expected), rtol=1e-2)
