@@ -24,7 +24,7 @@ from __future__ import annotations
 
 import numpy as np
 
-#: The Weibull slope of rating lives by bearing kind [4]_.
+#: The Weibull slope of rating lives by bearing kind (Harris and Kotzalas, ch. 11).
 WEIBULL_SLOPES = {"ball": 10.0 / 9.0, "roller": 9.0 / 8.0}
 _ITERATIONS = 60
 
