@@ -12,6 +12,7 @@ then somewhat softer in its conical modes than the bearings make it.
 from __future__ import annotations
 
 import os
+import sys
 
 import numpy as np
 import xarray as xr
@@ -95,11 +96,7 @@ def bearing_element(result: str | os.PathLike | xr.Dataset, node: int, damping: 
     **options
         Passed to ``ross.BearingElement`` (``tag``, ``scale_factor``, ...).
     """
-    try:
-        import ross
-    except ImportError as error:
-        raise ImportError("a ross BearingElement needs ross: pip install "
-                          "'bearing-sweep[ross]'") from error
+    ross = _ross()
     coefficients = bearing_coefficients(result, speed)
     count = coefficients["frequency"].size
     return ross.BearingElement(n=node, kxx=coefficients["kxx"], kyy=coefficients["kyy"],
@@ -107,3 +104,23 @@ def bearing_element(result: str | os.PathLike | xr.Dataset, node: int, damping: 
                                cxx=np.full(count, float(damping)),
                                cyy=np.full(count, float(damping)),
                                frequency=coefficients["frequency"], **options)
+
+
+def _ross():
+    """ross, imported so that the user's pint application registry stays as it was: ross's
+    dependency ccp loads its unit definitions into that registry where one is in use (where
+    they clash with pint's own), and makes its registry the application's."""
+    if "ross" in sys.modules:
+        return sys.modules["ross"]
+    import pint
+
+    in_use = pint.get_application_registry().get()
+    pint.set_application_registry(pint.registry.LazyRegistry())
+    try:
+        import ross
+    except ImportError as error:
+        raise ImportError("a ross BearingElement needs ross: pip install "
+                          "'bearing-sweep[ross]'") from error
+    finally:
+        pint.set_application_registry(in_use)
+    return ross

@@ -61,3 +61,25 @@ def test_a_ross_rotor_on_two_bearings_from_a_sweep_bounces_on_their_springs(swep
     coefficients = bearing_coefficients(swept)
     expected = [math.sqrt(2 * coefficients[k][0] / rotor.m) for k in ("kyy", "kxx")]
     np.testing.assert_allclose(np.sort(modal.wn[:2]), np.sort(expected), rtol=1e-2)
+
+
+@pytest.mark.slow
+def test_ross_imports_beside_pint_xarray_and_leaves_its_unit_registry(swept, tmp_path):
+    """ross's dependency ccp loads its units into pint's application registry where one is
+    in use (pint-xarray's, here), where they clash; bearing_element imports ross beside it
+    and leaves that registry as it was. In a fresh process: ross not yet imported."""
+    import subprocess
+    import sys
+
+    swept.to_netcdf(tmp_path / "swept.nc")
+    script = tmp_path / "check.py"
+    script.write_text(
+        "import pint, pint_xarray, xarray as xr\n"
+        "xr.DataArray([1.0], dims='x').pint.quantify('m')\n"
+        "before = pint.get_application_registry().get()\n"
+        "from bearing_sweep.rotordynamics import bearing_element\n"
+        f"bearing_element(xr.open_dataset({str(tmp_path / 'swept.nc')!r}), 0)\n"
+        "assert pint.get_application_registry().get() is before\n")
+    done = subprocess.run([sys.executable, str(script)], cwd=tmp_path, capture_output=True,
+                          text=True, timeout=300)
+    assert done.returncode == 0, done.stderr[-2000:]
