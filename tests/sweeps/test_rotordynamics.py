@@ -51,12 +51,12 @@ def test_a_ross_rotor_on_two_bearings_from_a_sweep_bounces_on_their_springs(swep
     rotor bouncing on the bearings' springs in each direction, omega = (2 k / m)^(1/2), with
     k the bearing's kyy and kxx (tolerance 1 %: the rotor's shear and bending, and the
     bearings' cross terms, shift them slightly; its conical modes lie 3 % above)."""
-    import ross
+    bearings = [bearing_element(swept, node, damping=0.0) for node in (0, 4)]
+    import ross  # as bearing_element imported it, beside the tests' pint registry
 
     steel = ross.Material(name="test_steel", rho=7810, E=211e9, G_s=81.2e9)
     shaft = [ross.ShaftElement(L=0.05, idl=0.0, odl=0.3, material=steel) for _ in range(4)]
-    rotor = ross.Rotor(shaft, [], [bearing_element(swept, node, damping=0.0)
-                                   for node in (0, 4)])
+    rotor = ross.Rotor(shaft, [], bearings)
     modal = rotor.run_modal(speed=0.0)
     coefficients = bearing_coefficients(swept)
     expected = [math.sqrt(2 * coefficients[k][0] / rotor.m) for k in ("kyy", "kxx")]
