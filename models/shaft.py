@@ -72,8 +72,8 @@ def bending_element_stiffness(length, bending_stiffness, shear_stiffness):
 
 def shaft_nodes(section_lengths, positions=()):
     """The nodes' axial positions [m]: both ends, every section boundary and ``positions``
-    (supports, loads, stations), sorted, coincident ones merged; and each section boundary's
-    node index. A position off the shaft is a ``ValueError``."""
+    (supports, loads, stations), sorted, coincident ones merged. A position off the shaft is
+    a ``ValueError``."""
     ends = np.concatenate([[0.0], np.cumsum(np.asarray(section_lengths, dtype=float))])
     positions = np.asarray(positions, dtype=float).ravel()
     total = ends[-1]
@@ -82,8 +82,7 @@ def shaft_nodes(section_lengths, positions=()):
         raise ValueError(f"a position lies off the shaft (0 to {total * 1e3:g} mm)")
     candidates = np.sort(np.concatenate([ends, np.clip(positions, 0.0, total)]))
     keep = np.concatenate([[True], np.diff(candidates) > _MERGE * total])
-    nodes = candidates[keep]
-    return nodes, node_at(nodes, ends)
+    return candidates[keep]
 
 
 def node_at(nodes, positions):
@@ -166,8 +165,8 @@ def assemble_shaft(section_lengths, outside_diameters, bores, youngs_modulus, po
     support_positions = np.atleast_1d(np.asarray(support_positions, dtype=float))
     load_positions = np.atleast_1d(np.asarray(load_positions, dtype=float))
     stations = np.atleast_1d(np.asarray(stations, dtype=float))
-    nodes, _ = shaft_nodes(section_lengths, np.concatenate([support_positions,
-                                                            load_positions, stations]))
+    nodes = shaft_nodes(section_lengths,
+                        np.concatenate([support_positions, load_positions, stations]))
     matrix = shaft_stiffness(section_lengths, outside_diameters, bores, youngs_modulus,
                              poisson_ratio, nodes)
     springs = np.array(np.broadcast_to(np.asarray(support_stiffness, dtype=float),
