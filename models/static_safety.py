@@ -132,7 +132,7 @@ def ball_rating(ball_count, ball_diameter, pitch_diameter, contact_angle, radial
     known = (((degrees == 0.0) | ((degrees >= angles[0] - 1e-9) & (degrees <= angles[-1] + 1e-9))
               | (axial == 0.0)) & (np.asarray(moment_load, dtype=float) == 0.0))
     load = np.where(known, np.maximum(radial, combined), np.nan)
-    with np.errstate(divide="ignore", invalid="ignore"):
+    with np.errstate(divide="ignore", invalid="ignore", over="ignore"):
         safety = rating / load
     return {"static_load_rating": rating, "static_equivalent_load": load,
             "static_safety_factor": safety}
@@ -170,7 +170,7 @@ def roller_rating(roller_count, effective_length, roller_diameter, pitch_diamete
     rating = (_ROLLER_RATING_FACTOR * (1.0 - roller_diameter * cos_angle / pitch_diameter)
               * roller_count * effective_length * roller_diameter * cos_angle)
     radial, axial = np.asarray(radial_load, dtype=float), np.abs(axial_load)
-    with np.errstate(divide="ignore", invalid="ignore"):
+    with np.errstate(divide="ignore", invalid="ignore", over="ignore"):
         combined = 0.5 * radial + 0.22 * axial / np.tan(contact_angle)
         load = np.where(np.asarray(contact_angle) == 0, radial, np.maximum(radial, combined))
         safety = rating / load
@@ -202,7 +202,7 @@ def static_safety(largest_pressure, kind, minimum_static_safety):
        stresses).
     """
     reference, exponent = _REFERENCES[kind]
-    with np.errstate(divide="ignore"):
+    with np.errstate(divide="ignore", over="ignore"):
         factor = (reference / np.asarray(largest_pressure, dtype=float)) ** exponent
     required = np.nan if minimum_static_safety is None else minimum_static_safety
     with np.errstate(invalid="ignore"):
