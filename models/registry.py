@@ -292,6 +292,11 @@ class Model:
     validity: str = ""
     #: Values along output dimensions that a few inputs fix (``DimCoordinate``), by dimension.
     dim_coordinates: dict = field(default_factory=dict)
+    #: The tables of a definition that give the structure of a model built anew for each
+    #: definition (a shaft's sections, supports and loads), and ``assemble``, which builds it
+    #: from what they hold (as the model's module says). Empty for a model of fixed inputs.
+    tables: tuple[str, ...] = ()
+    assemble: Callable[..., "Model"] | None = None
 
     def input(self, name: str) -> Input:
         return next(i for i in self.inputs if i.name == name)

@@ -60,6 +60,13 @@ class BallSupport:
                      * self.scale[None, :])
         return load, stiffness
 
+    def largest_pressure(self, displacement):
+        """The largest maximum Hertz pressure [Pa] of the balls at each ``displacement``
+        ``(n, 5)`` (their larger contact, inner or outer)."""
+        scaled = np.atleast_2d(np.asarray(displacement, dtype=float)) * self.scale
+        load = self.rings.contacts(scaled, np.zeros(len(scaled), dtype=np.int64))[1]
+        return self.unit_pressure * np.cbrt(load.max(axis=-1))
+
     def outside_validity(self, displacement):
         """Where ``displacement`` ``(n, 5)`` lies outside :func:`models.ball.ball_5dof`'s
         validity: a ball's pressure above the limit or its approach above 1 % of its
@@ -103,7 +110,8 @@ def solve_shaft_on_bearings(section_lengths, outside_diameters, bores, youngs_mo
     -------
     dict
         ``bearing_displacement`` ``(B, 5)`` [m, rad]; ``bearing_load`` ``(B, 5)`` [N, N m],
-        what the shaft puts on each bearing; ``spring_load`` ``(S, 5)``;
+        what the shaft puts on each bearing; ``spring_load`` and ``spring_displacement``
+        ``(S, 5)``;
         ``station_displacement`` ``(P, 5)``; ``nodes`` the nodes' positions [m] and
         ``node_displacement`` ``(n, 5)``; ``bearing_outside_validity`` ``(B,)``, where a
         bearing's solution lies outside its own model's validity (values kept, as that
@@ -190,6 +198,7 @@ def solve_shaft_on_bearings(section_lengths, outside_diameters, bores, youngs_mo
     return {"bearing_displacement": at_bearings, "bearing_outside_validity": outside,
             "bearing_load": carried,
             "spring_load": shaft.support_loads(whole)[:len(springs)],
+            "spring_displacement": by_node[shaft.support_nodes[:len(springs)]],
             "station_displacement": by_node[shaft.station_nodes], "nodes": shaft.nodes,
             "node_displacement": by_node, "stiffness": tangent, "free": free,
             "converged": converged}

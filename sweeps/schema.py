@@ -88,23 +88,64 @@ def _definition(model: Model) -> dict:
                  "title": {"type": "string", "description": "the result's title"}}}
     fixed = {name: _fixed(spec) for name, spec in ((i.name, i) for i in model.inputs)}
     axes = {i.name: _plain_axis(i) for i in model.inputs}
+    fixed_table = {"type": "object", "additionalProperties": False, "properties": fixed,
+                   "description": "one value for each parameter held fixed"}
     zipped = {"type": "object", "additionalProperties": False, "minProperties": 1,
               "description": "a zipped axis: its parameters vary together, one value per label",
               "properties": {"labels": _LABELS,
                              **{i.name: _column(i) for i in model.inputs}}}
+    axes_table = {"type": "object", "properties": axes, "additionalProperties": zipped,
+                  "propertyNames": {"pattern": f"^{AXIS_NAME.pattern}$",
+                                    "not": {"enum": sorted(RESERVED_NAMES)}},
+                  "description": "each key a dimension of the grid, in order: a parameter's "
+                                 "values, or a table of zipped parameters"}
+    sampled = _sample(model)
+    if model.tables:  # the inputs of the system's supports and loads, named either way
+        system = {"patternProperties": {_SYSTEM_INPUT_NAMES: {}}}
+        fixed_table |= system
+        sampled |= system
+        zipped |= system
+        axes_table |= system | {"propertyNames": {"anyOf": [
+            axes_table["propertyNames"], {"pattern": _SYSTEM_INPUT_NAMES}]}}
     return {"type": "object", "additionalProperties": False, "required": ["sweep"],
             "description": f"{model.name}: {model.summary}",
             "properties": {
                 "sweep": sweep,
-                "fixed": {"type": "object", "additionalProperties": False, "properties": fixed,
-                          "description": "one value for each parameter held fixed"},
-                "axes": {"type": "object", "properties": axes, "additionalProperties": zipped,
-                         "propertyNames": {"pattern": f"^{AXIS_NAME.pattern}$",
-                                           "not": {"enum": sorted(RESERVED_NAMES)}},
-                         "description": "each key a dimension of the grid, in order: a "
-                                        "parameter's values, or a table of zipped parameters"},
-                "sample": _sample(model),
-                "output": OUTPUT}}
+                "fixed": fixed_table,
+                "axes": axes_table,
+                "sample": sampled,
+                "output": OUTPUT, **_system_tables(model)}}
+
+
+#: The inputs of a shaft system's supports and loads, as [fixed], [axes] and [sample] may
+#: name them: ``supports.A.clearance`` or ``supports_A_clearance``.
+_SYSTEM_INPUT_NAMES = r"^(supports|loads)(\.[^.]+\.|_)[A-Za-z0-9_]+$"
+
+
+def _system_tables(model: Model) -> dict:
+    """The tables that give a model's structure (a shaft's [shaft], [supports], [loads]) and,
+    where it has them, the names of their inputs in [fixed], [axes] and [sample]."""
+    if not model.tables:
+        return {}
+    from .models import shaft_system as system
+
+    def inputs(declared, required=()):
+        return {"type": "object", "additionalProperties": False, "required": list(required),
+                "properties": {i.name: _fixed(i) for i in declared}}
+
+    kinds = [inputs(declared, ["model"]) for declared in system.SUPPORT_INPUTS.values()]
+    for kind, schema in zip(system.SUPPORT_INPUTS, kinds):
+        schema["properties"] |= {"model": {"const": kind}, "bearing": {"type": "string"}}
+    name = {"pattern": f"^{system.NAME_PATTERN}$"}
+    return {
+        "shaft": {"type": "object", "additionalProperties": False, "required": ["sections"],
+                  "properties": {"sections": {"type": "array", "minItems": 1,
+                                              "items": inputs(system.SECTION_INPUTS,
+                                                              ["length", "diameter"])}}},
+        "supports": {"type": "object", "minProperties": 1, "propertyNames": name,
+                     "additionalProperties": {"oneOf": kinds}},
+        "loads": {"type": "object", "propertyNames": name,
+                  "additionalProperties": inputs(system.LOAD_INPUTS)}}
 
 
 #: The [output] table: how the result file stores the outputs (``definition.output.storage_options``).

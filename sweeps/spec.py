@@ -19,6 +19,7 @@ from .definition.axes import Axis
 from .definition.inputs import ModelInputs
 from .definition.output import output_table
 from .definition.sampling import Sampling
+from .definition.system import assembled
 from .definition.tables import Reader, SpecError, suggestion, written
 from .definition.values import Value
 from .definition.writing import toml_text
@@ -101,10 +102,6 @@ def from_dict(document: dict, where: str = "<definition>") -> Sweep:
 
 def _sweep(reader: Reader, document: dict, text: str) -> Sweep:
     """The whole definition: its [sweep] head and [output], the model's inputs, the grid."""
-    for key in document:
-        if key not in SECTIONS:
-            reader.fail(key, "unknown section" + suggestion(key, SECTIONS)
-                        + " (accepted: [sweep], [fixed], [axes], [sample], [output])")
     storage = output_table(reader, document)
     head = reader.table(document, "sweep", ("model", "bearing", "title"))
     name = head.get("model")
@@ -121,9 +118,19 @@ def _sweep(reader: Reader, document: dict, text: str) -> Sweep:
         model = find_model(name)
     except SpecError as error:
         reader.fail("sweep.model", str(error))
-    bearing = head.get("bearing")
+    sections = SECTIONS + model.tables
+    for key in document:
+        if key not in sections:
+            reader.fail(key, "unknown section" + suggestion(key, sections)
+                        + " (accepted: " + ", ".join(f"[{s}]" for s in sections) + ")")
+    bearing, presets = head.get("bearing"), []
+    if model.tables:
+        if bearing is not None:
+            reader.fail("sweep.bearing", f"a {model.name} names each support's bearing in "
+                        "its own table: [supports.<name>] bearing = ...")
+        model, document, presets = assembled(reader, document, model)
     inputs = ModelInputs(reader, model)
-    fixed, origin, axes, sampling = inputs.read(document, bearing, "sweep.bearing")
+    fixed, origin, axes, sampling = inputs.read(document, bearing, "sweep.bearing", presets)
     points = int(np.prod([len(axis) for axis in axes], dtype=np.float64))
     if points > MAX_POINTS:
         reader.fail("sample.n" if sampling and len(axes) == 1 else "axes",

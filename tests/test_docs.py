@@ -172,7 +172,7 @@ def test_the_notebook_runs_headless_and_shows_tables_and_a_figure(tmp_path):
         return "".join(output.get("data", {}).get(kind, "") for output in cell.outputs)
 
     models, described, outputs = (shown(code[i], "text/html") for i in range(3))
-    assert models.count("<tr>") == 10 and ">crb_radial<" in models  # a header, nine models
+    assert models.count("<tr>") == 11 and ">crb_radial<" in models  # a header, ten models
     assert ">radial_stiffness<" in described and ">N/mm<" in described
     assert "radial_stiffness" in outputs and "max_contact_pressure" in outputs
     printed = "".join(output.get("text", "") for output in code[4].outputs)

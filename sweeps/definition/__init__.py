@@ -8,6 +8,8 @@
 - :mod:`.sampling`: the [sample] table: distributions and the drawn ``sample`` axis.
 - :mod:`.inputs`: every input of one model from its [fixed], [axes] and [sample] tables,
   defaults and presets, and the conditions between them.
+- :mod:`.system`: the tables that give a model's structure (a shaft's [shaft], [supports]
+  and [loads]), read into the inputs of the model they build.
 - :mod:`.output`: the [output] table and the ``--encoding``/``--compression`` options.
 - :mod:`.writing`: a definition given as a dict written out as TOML text.
 

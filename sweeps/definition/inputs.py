@@ -44,12 +44,13 @@ class ModelInputs:
             self.fail(key, f"parameter {name!r} is given twice (also at {self.seen[name]})")
         self.seen[name] = self.reader.key(key)
 
-    def read(self, table: dict, bearing, bearing_key: str
+    def read(self, table: dict, bearing, bearing_key: str, presets=()
              ) -> tuple[dict[str, Value | None], dict[str, str], list[Axis], Sampling | None]:
         """The inputs given in ``table`` (its [fixed], [axes] and [sample] tables) over the
-        preset ``bearing`` (None: none; named at ``bearing_key``): every input's fixed value
-        (None: derived by the model), where each came from, the axes (the drawn ``sample``
-        axis first) and how it was drawn."""
+        preset ``bearing`` (None: none; named at ``bearing_key``) and the values of
+        ``presets`` (``(values, where they come from)``, such as a shaft's supports'
+        presets): every input's fixed value (None: derived by the model), where each came
+        from, the axes (the drawn ``sample`` axis first) and how it was drawn."""
         model, reader = self.model, self.reader
         fixed_raw = reader.table(table, "fixed", None)
         axes_raw = reader.table(table, "axes", None)
@@ -58,6 +59,9 @@ class ModelInputs:
         if bearing is not None:
             for key, value in self.preset(bearing, bearing_key).items():
                 fixed[key], origin[key] = value, f"preset {bearing}"
+        for values, where in presets:
+            for key, value in values.items():
+                fixed[key], origin[key] = value, where
         for key, raw in fixed_raw.items():
             where = f"fixed.{key}"
             self.claim(key, where)

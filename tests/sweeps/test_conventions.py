@@ -165,6 +165,12 @@ OUTSIDE_VALIDITY = {
                    '"80 mm"]', "converged"),
     "hertz_point": ('[fixed]\ncurvature_1x = "0.2 1/mm"\ncurvature_1y = "0.2 1/mm"\n'
                     'curvature_2x = "-0.19 1/mm"', 'load = ["10 N", "1 MN"]', "converged"),
+    "shaft_system": ('[shaft]\nsections = [{ length = "200 mm", diameter = "40 mm" }]\n'
+                     '[supports.A]\nmodel = "ball_5dof"\nbearing = "paper001-71807AC"\n'
+                     'position = "20 mm"\n[supports.B]\nmodel = "spring"\n'
+                     'position = "180 mm"\nradial_stiffness = "1e6 N/mm"\n[loads.gear]\n'
+                     'position = "100 mm"', '"loads.gear.force_x" = ["1 kN", "300 kN"]',
+                     "converged"),
     "trb_load": ('bearing = "paper003-table1"\n[fixed]\nradial_load = "10 kN"',
                  'axial_load = ["27 kN", "5000 kN"]', "converged"),
     "trb_rib": ('bearing = "paper003-table1-rib"\n[fixed]\nrib_angle = "89 deg"',

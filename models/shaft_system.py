@@ -1,0 +1,326 @@
+"""Bearings on a shaft as one model: a stepped shaft of Timoshenko beam elements on rolling
+bearings and linear supports, under forces and moments at positions.
+
+A definition gives the system's structure in tables of its own (the shaft's sections, each
+support with its model and inputs, each load); :func:`assemble` builds from them the model
+of that system, whose inputs are the shaft's (:data:`SHAFT_INPUTS`), each support's
+(``supports_<name>_<input>``) and each load's (``loads_<name>_<input>``), so that any of
+them can be an axis or be sampled. Each point is the coupled nonlinear equilibrium of
+:func:`models.shaft_bearings.solve_shaft_on_bearings`: the shaft's stiffness with every
+bearing's own force-displacement law and analytic stiffness, solved by Newton's method.
+
+References
+----------
+.. [1] T. A. Harris and M. N. Kotzalas, Rolling Bearing Analysis, 5th ed., CRC Press
+   (2006), vol. 2, ch. 1 (bearings on a flexible shaft), doi:10.1201/9781420006582.
+"""
+from __future__ import annotations
+
+from dataclasses import replace
+
+import numpy as np
+
+from .ball import DOFS, MODELS as BALL_MODELS
+from .registry import (CONVERGED, INFEASIBLE, NOT_CONVERGED, OUT_OF_VALIDITY, Constraint,
+                       DimCoordinate, Input, Model, Output)
+from .shaft import NODE_DOFS
+from .shaft_bearings import BallSupport, solve_shaft_on_bearings
+
+#: The kinds of support a definition names in ``[supports.<name>] model``.
+SUPPORT_KINDS = ("ball_5dof", "spring")
+#: Names of supports and loads: they prefix input names, so they are plain identifiers.
+NAME_PATTERN = r"[A-Za-z][A-Za-z0-9]*(_[A-Za-z0-9]+)*"
+
+#: One section of the shaft, as ``[shaft] sections`` lists them.
+SECTION_INPUTS = (
+    Input("length", "mm", "length of the section", minimum=0.0, exclusive_minimum=True),
+    Input("diameter", "mm", "outside diameter of the section", minimum=0.0,
+          exclusive_minimum=True),
+    Input("bore", "mm", "bore of a hollow section (0: solid)", default=0.0, minimum=0.0),
+)
+
+SHAFT_INPUTS = (
+    Input("shaft_youngs_modulus", "GPa", "Young's modulus of the shaft", default=210.0,
+          minimum=0.0, exclusive_minimum=True),
+    Input("shaft_poisson_ratio", "1", "Poisson's ratio of the shaft", default=0.3,
+          minimum=0.0, maximum=0.5, exclusive_minimum=True),
+    Input("station_count", "1", "number of stations, evenly spaced from the shaft's left end "
+          "to its right end, where the deflection line is reported", default=21, kind="count",
+          minimum=2, maximum=2001),
+)
+
+_POSITION = Input("position", "mm", "axial position along the shaft, from its left end",
+                  minimum=0.0)
+#: The inputs of :func:`models.ball.ball_5dof` that make a ball bearing a support (its loads
+#: and displacements are the shaft's).
+_BALL_GEOMETRY = ("ball_count", "ball_diameter", "pitch_diameter", "contact_angle",
+                  "inner_curvature_ratio", "outer_curvature_ratio", "clearance",
+                  "youngs_modulus", "poisson_ratio", "contact_constant", "geometry",
+                  "pressure_limit")
+#: Each kind of support's inputs, as one support's table names them.
+SUPPORT_INPUTS = {
+    "ball_5dof": (replace(_POSITION, meaning="axial position of the bearing's centre along "
+                          "the shaft, from its left end"),)
+    + tuple(BALL_MODELS[0].input(name) for name in _BALL_GEOMETRY)
+    + (Input("axial_direction", "", "the direction of the shaft's thrust the bearing "
+             "carries: positive along x (as ball_5dof takes it), or negative (the bearing "
+             "mounted the other way round)", default="positive", kind="choice",
+             choices=("positive", "negative")),),
+    "spring": (
+        replace(_POSITION, meaning="axial position of the support along the shaft, from its "
+                "left end"),
+        Input("radial_stiffness", "N/mm", "stiffness in each radial direction (y and z)",
+              minimum=0.0),
+        Input("axial_stiffness", "N/mm", "axial stiffness (0: free axially)", default=0.0,
+              minimum=0.0),
+        Input("tilt_stiffness", "N*m/rad", "stiffness against a tilt about y and about z "
+              "(0: free to tilt)", default=0.0, minimum=0.0),
+    ),
+}
+#: A load's inputs, as one load's table names them: on the shaft, in the bearings' axes.
+LOAD_INPUTS = (
+    replace(_POSITION, meaning="axial position of the load along the shaft, from its left "
+            "end", default=0.0),
+    Input("force_x", "N", "axial force Fx on the shaft", default=0.0),
+    Input("force_y", "N", "radial force Fy on the shaft", default=0.0),
+    Input("force_z", "N", "radial force Fz on the shaft", default=0.0),
+    Input("moment_y", "N*m", "moment My on the shaft", default=0.0),
+    Input("moment_z", "N*m", "moment Mz on the shaft", default=0.0),
+)
+
+_DOF_UNITS = ("m", "m", "m", "rad", "rad")
+#: The radial directions of the deflection line.
+_DIRECTIONS = ("y", "z")
+_LOAD_UNITS = ("N", "N", "N", "N*m", "N*m")
+
+def outputs(support_count: int) -> tuple[Output, ...]:
+    """The outputs of a system of ``support_count`` supports (their entry units are
+    nested per support)."""
+    return (
+    Output("support_load", "N, N*m", "forces and moments the shaft puts on each support "
+           "(Fx, Fy, Fz, My, Mz; the support's reaction is their opposite)",
+           dims=("support", "dof"), entry_units=(_LOAD_UNITS,) * support_count,
+           label="load on the support"),
+    Output("radial_support_load", "N", "radial load on each support, sqrt(Fy^2 + Fz^2)",
+           dims=("support",), label="radial load on the support"),
+    Output("support_displacement", "m, rad", "displacement and tilt of the shaft at each "
+           "support (a bearing's inner ring, its outer ring held)", dims=("support", "dof"),
+           entry_units=(_DOF_UNITS,) * support_count, label="displacement at the support"),
+    Output("largest_contact_pressure", "MPa", "largest maximum Hertz contact pressure of "
+           "each bearing's rolling elements (NaN for a spring)", dims=("support",),
+           label="largest contact pressure"),
+    Output("deflection", "um", "radial displacements v (y) and w (z) of the shaft's axis "
+           "along its length, at the stations", dims=("position", "direction"),
+           label="deflection"),
+    Output("slope", "mrad", "slopes dv/dx and dw/dx of the shaft's deflection line at the "
+           "stations", dims=("position", "direction"), label="slope of the deflection line"),
+    )
+
+
+def _shaft_template(shaft_youngs_modulus=210e9, shaft_poisson_ratio=0.3, station_count=21):
+    """The inputs every shaft system shares; the system itself is built by :func:`assemble`
+    from its definition's ``[shaft]``, ``[supports]`` and ``[loads]`` tables, and computed
+    by the model that builds.
+
+    Parameters
+    ----------
+    shaft_youngs_modulus : float
+        Young's modulus of the shaft [Pa].
+    shaft_poisson_ratio : float
+        Poisson's ratio of the shaft [-].
+    station_count : int
+        Number of stations, evenly spaced from the shaft's left end to its right end, where
+        the deflection line is reported [-].
+
+    Raises
+    ------
+    ValueError
+        Always: the shaft, its supports and its loads are not inputs of this function.
+    """
+    raise ValueError("a shaft system needs its [shaft], [supports] and [loads] tables: "
+                     "build its model with models.shaft_system.assemble")
+
+
+_SUMMARY = ("A stepped shaft on rolling bearings and linear supports under forces and moments: "
+            "the coupled nonlinear equilibrium (Timoshenko beam elements, each bearing's own "
+            "force-displacement law), the loads on each support, the shaft's deflection line.")
+_REFERENCE = ("Przemieniecki, Theory of Matrix Structural Analysis (1968), 5.6; paper 001, "
+              "eq. 1-9 for the ball bearings; Harris & Kotzalas, Rolling Bearing Analysis "
+              "(2006), vol. 2, ch. 1")
+_VALIDITY = ("a bearing's solution outside its own model's validity (for ball_5dof: contact "
+             "pressure above its pressure_limit, a ball's approach above 1 % of its diameter, "
+             "the ring beyond the grooves, a ball on the cut-away side of its groove). "
+             "Not modelled: the shaft's torsion and own weight, the housings' compliance "
+             "(give a spring for it), centrifugal and gyroscopic ball loads.")
+_VERSION = "1"
+
+
+def assemble(sections, supports, loads) -> Model:
+    """The model of one shaft system.
+
+    Parameters
+    ----------
+    sections : sequence of (float, float, float)
+        Each section's length, outside diameter and bore [m], from the shaft's left end.
+    supports : dict
+        Each support's kind (one of :data:`SUPPORT_KINDS`) by its name.
+    loads : sequence of str
+        The loads' names.
+
+    Returns
+    -------
+    Model
+        ``shaft_system`` with the inputs :data:`SHAFT_INPUTS`, ``supports_<name>_<input>``
+        for each support's :data:`SUPPORT_INPUTS` and ``loads_<name>_<input>`` for each
+        load's :data:`LOAD_INPUTS`, the :func:`outputs` on dimensions ``support``
+        (named as the definition names them), ``dof`` and ``position`` (the stations).
+    """
+    sections = np.asarray(sections, dtype=float).reshape(-1, 3)
+    supports, loads = dict(supports), tuple(loads)
+    if not len(sections) or not supports:
+        raise ValueError("a shaft system needs at least one section and one support")
+    length = float(sections[:, 0].sum())
+    inputs = list(SHAFT_INPUTS)
+    for name, kind in supports.items():
+        inputs += [_prefixed(spec, "supports", name) for spec in SUPPORT_INPUTS[kind]]
+    for name in loads:
+        inputs += [_prefixed(spec, "loads", name) for spec in LOAD_INPUTS]
+    positions = tuple(f"supports_{name}_position" for name in supports) + tuple(
+        f"loads_{name}_position" for name in loads)
+
+    def on_shaft(**values):
+        inside = True
+        for name in positions:
+            inside = inside & (values[name] >= 0.0) & (values[name] <= length * (1 + 1e-12))
+        return inside
+
+    def apart(**values):
+        at, separate = [values[f"supports_{name}_position"] for name in supports], True
+        for index, first in enumerate(at):
+            for second in at[index + 1:]:
+                separate = separate & (np.abs(first - second) > 1e-9 * length)
+        return separate
+
+    def shaft_system(**values):
+        return _solve(sections, supports, loads, values)
+
+    return Model(
+        name="shaft_system", function=shaft_system, summary=_SUMMARY, reference=_REFERENCE,
+        version=_VERSION, inputs=tuple(inputs), outputs=outputs(len(supports)),
+        dim_sizes={"support": tuple(supports), "dof": DOFS, "direction": _DIRECTIONS,
+                   "position": "station_count"},
+        dim_coordinates={"position": DimCoordinate(
+            ("station_count",), lambda size, station_count: np.linspace(0.0, length, size),
+            "mm", "axial position along the shaft")},
+        constraints=(
+            Constraint(positions, on_shaft, f"every support and load lies on the shaft, "
+                       f"between 0 and its length {length * 1e3:g} mm"),
+            Constraint(positions[:len(supports)], apart, "two supports at one position: "
+                       "give one support the stiffness of both"),
+        ),
+        seconds_per_point=5e-3, points_per_call=1000, validity=_VALIDITY)
+
+
+#: The longest label of an axis (its netCDF ``long_name``) a figure shows whole.
+_LABEL_LENGTH = 48
+
+
+def _prefixed(spec: Input, table: str, name: str) -> Input:
+    """A support's or load's input as the system names it, labelled with its owner."""
+    label = f"{name}: {spec.short}"
+    if len(label) > _LABEL_LENGTH:
+        label = f"{name}: {spec.name.replace('_', ' ')}"
+    return replace(spec, name=f"{table}_{name}_{spec.name}", label=label)
+
+
+class _Mirrored:
+    """A bearing mounted the other way round: its axial direction and tilts reversed."""
+
+    _FLIP = np.array([-1.0, 1.0, 1.0, -1.0, -1.0])
+
+    def __init__(self, bearing):
+        self.bearing = bearing
+
+    def loads(self, displacement):
+        load, stiffness = self.bearing.loads(displacement * self._FLIP)
+        return load * self._FLIP, stiffness * self._FLIP[:, None] * self._FLIP[None, :]
+
+    def outside_validity(self, displacement):
+        return self.bearing.outside_validity(displacement * self._FLIP)
+
+    def largest_pressure(self, displacement):
+        return self.bearing.largest_pressure(displacement * self._FLIP)
+
+
+def _solve(sections, supports, loads, values):
+    """Every point's equilibrium: ``values`` each input's SI value, one per point or one for
+    all."""
+    count = max([np.size(v) for v in values.values() if not isinstance(v, str)] + [1])
+
+    def at(name, point):
+        value = values[name]
+        return value if isinstance(value, str) or np.ndim(value) == 0 else value[point]
+
+    stations = np.linspace(0.0, sections[:, 0].sum(), int(values["station_count"]))
+    names = list(supports)
+    out = {"support_load": np.full((count, len(names), NODE_DOFS), np.nan),
+           "support_displacement": np.full((count, len(names), NODE_DOFS), np.nan),
+           "largest_contact_pressure": np.full((count, len(names)), np.nan),
+           "deflection": np.full((count, stations.size, 2), np.nan),
+           "slope": np.full((count, stations.size, 2), np.nan),
+           "status": np.full(count, NOT_CONVERGED, dtype=np.int8)}
+    balls = [n for n in names if supports[n] == "ball_5dof"]
+    springs = [n for n in names if supports[n] == "spring"]
+    for point in range(count):
+        def of(name, field):
+            return at(f"supports_{name}_{field}", point)
+
+        bearings = []
+        for name in balls:
+            bearing = BallSupport(**{field: of(name, field) for field in _BALL_GEOMETRY})
+            bearings.append(bearing if of(name, "axial_direction") == "positive"
+                            else _Mirrored(bearing))
+        stiffness = [[of(n, "axial_stiffness")] + [of(n, "radial_stiffness")] * 2
+                     + [of(n, "tilt_stiffness")] * 2 for n in springs]
+        load_vectors = [[at(f"loads_{n}_{spec.name}", point) for spec in LOAD_INPUTS[1:]]
+                        for n in loads]
+        try:
+            solved = solve_shaft_on_bearings(
+                sections[:, 0], sections[:, 1], sections[:, 2],
+                at("shaft_youngs_modulus", point), at("shaft_poisson_ratio", point),
+                [of(n, "position") for n in balls], bearings,
+                [at(f"loads_{n}_position", point) for n in loads],
+                np.reshape(load_vectors, (len(loads), NODE_DOFS)),
+                [of(n, "position") for n in springs], stiffness, stations)
+        except ValueError:  # the shaft's system cannot be put together at these inputs
+            out["status"][point] = INFEASIBLE
+            continue
+        if not solved["converged"]:
+            continue
+        order = [names.index(n) for n in balls] + [names.index(n) for n in springs]
+        place = {"support_load": np.concatenate([solved["bearing_load"],
+                                                 solved["spring_load"]]),
+                 "support_displacement": np.concatenate([solved["bearing_displacement"],
+                                                         solved["spring_displacement"]])}
+        for key, value in place.items():
+            out[key][point, order] = value
+        for index, (name, bearing) in enumerate(zip(balls, bearings)):
+            out["largest_contact_pressure"][point, names.index(name)] = float(
+                bearing.largest_pressure(solved["bearing_displacement"][index][None])[0])
+        line = solved["station_displacement"]
+        out["deflection"][point] = line[:, 1:3]
+        out["slope"][point] = np.stack([line[:, 4], -line[:, 3]], axis=-1)  # dv/dx, dw/dx
+        out["status"][point] = CONVERGED | np.where(
+            solved["bearing_outside_validity"].any(), OUT_OF_VALIDITY, 0)
+    out["radial_support_load"] = np.hypot(out["support_load"][..., 1],
+                                          out["support_load"][..., 2])
+    return out
+
+
+MODELS = [Model(
+    name="shaft_system", function=_shaft_template, summary=_SUMMARY, reference=_REFERENCE,
+    version=_VERSION, inputs=SHAFT_INPUTS, outputs=outputs(0),
+    dim_sizes={"support": (), "dof": DOFS, "direction": _DIRECTIONS,
+               "position": "station_count"},
+    tables=("shaft", "supports", "loads"), assemble=assemble,
+    seconds_per_point=5e-3, points_per_call=1000, validity=_VALIDITY)]

@@ -1,0 +1,130 @@
+"""The shaft system model: a shaft on ball bearings and springs, checked against beam theory
+in closed form, against statics, and against ball_5dof solving the same bearing alone."""
+import numpy as np
+import pytest
+
+from bearing_sweep.models.ball import ball_5dof
+from bearing_sweep.models.registry import CONVERGED, OUT_OF_VALIDITY, outcome
+from bearing_sweep.models.shaft_system import assemble
+
+#: The 71807AC of paper 001 (Table 1), in SI, with the paper's contact constant.
+BEARING = {"ball_count": 25, "ball_diameter": 3.14e-3, "pitch_diameter": 41e-3,
+           "contact_angle": np.radians(25.0), "inner_curvature_ratio": 0.52,
+           "outer_curvature_ratio": 0.53, "clearance": 0.0, "youngs_modulus": 207e9,
+           "poisson_ratio": 0.3, "contact_constant": 1.0649e10, "geometry": "jones",
+           "pressure_limit": 4.2e9}
+LOAD = {"force_x": 0.0, "force_y": 0.0, "force_z": 0.0, "moment_y": 0.0, "moment_z": 0.0}
+
+
+def solve(sections, supports, loads, **values):
+    """The system's outputs at one point: ``supports`` and ``loads`` map names to their
+    inputs (a support's with ``kind``), in SI."""
+    model = assemble(sections, {name: s["kind"] for name, s in supports.items()}, list(loads))
+    given = {"shaft_youngs_modulus": 210e9, "shaft_poisson_ratio": 0.3, "station_count": 21}
+    given |= values
+    for name, support in supports.items():
+        given |= {f"supports_{name}_{key}": value for key, value in support.items()
+                  if key != "kind"}
+    for name, load in loads.items():
+        given |= {f"loads_{name}_{key}": value for key, value in (LOAD | load).items()}
+    assert {i.name for i in model.inputs} == set(given)
+    return {key: np.asarray(value)[0] for key, value in model.function(**given).items()}
+
+
+def spring(position, radial, axial=0.0, tilt=0.0):
+    return {"kind": "spring", "position": position, "radial_stiffness": radial,
+            "axial_stiffness": axial, "tilt_stiffness": tilt}
+
+
+def ball(position, direction="positive", **changed):
+    return {"kind": "ball_5dof", "position": position, "axial_direction": direction,
+            **BEARING, **changed}
+
+
+def test_a_shaft_on_two_stiff_springs_bends_as_timoshenko_beam_theory_says():
+    # Simply supported, a load P at mid-span L: the centre deflects
+    # P L^3 / (48 E I) + P L / (4 kappa G A) (Roark's Formulas for Stress and Strain, 7th ed.,
+    # Table 8.1 case 1e, and 8.10 for the shear term), plus each spring's P / (2 k).
+    diameter, span, load, stiffness, E, nu = 0.04, 0.3, 5e3, 1e10, 210e9, 0.3
+    result = solve([(0.4, diameter, 0.0)],
+                   {"A": spring(0.05, stiffness, axial=1e8), "B": spring(0.35, stiffness)},
+                   {"gear": {"position": 0.2, "force_y": load}}, station_count=9)
+    area, inertia = np.pi * diameter**2 / 4, np.pi * diameter**4 / 64
+    kappa, shear_modulus = 6 * (1 + nu) / (7 + 6 * nu), E / (2 * (1 + nu))
+    expected = (load * span**3 / (48 * E * inertia) + load * span / (4 * kappa * shear_modulus
+                                                                      * area)
+                + load / (2 * stiffness))
+    centre = list(np.linspace(0.0, 0.4, 9)).index(0.2)
+    assert result["status"] == CONVERGED
+    assert result["deflection"][centre, 0] == pytest.approx(expected, rel=1e-9)
+    assert result["slope"][centre, 0] == pytest.approx(0.0, abs=1e-12)
+    assert result["support_load"][:, 1] == pytest.approx([load / 2, load / 2], rel=1e-9)
+
+
+@pytest.mark.parametrize("case", range(3))
+def test_what_the_supports_carry_balances_every_force_and_moment(case):
+    generator = np.random.default_rng(case)
+    loads = {f"load{i}": {"position": float(generator.uniform(0.0, 0.2)),
+                          **dict(zip(LOAD, generator.uniform(-1, 1, 5) * [300, 2e3, 2e3, 20, 20]))}
+             for i in range(2)}
+    loads["load0"]["force_x"] = 400.0  # the bearing carries the thrust, one way
+    result = solve([(0.12, 0.04, 0.0), (0.08, 0.035, 0.01)],
+                   {"A": ball(0.02), "B": spring(0.18, 1e9, tilt=1e4)}, loads)
+    assert outcome(result["status"]) == CONVERGED
+    on_supports = result["support_load"]
+    positions = np.array([0.02, 0.18])
+    applied = np.array([[load[k] for k in LOAD] for load in loads.values()])
+    at = np.array([load["position"] for load in loads.values()])
+    assert on_supports[:, :3].sum(axis=0) == pytest.approx(applied[:, :3].sum(axis=0),
+                                                           abs=1e-6)
+
+    def moments(x, forces):  # about the shaft's left end: r x F with r along x, plus M
+        return np.stack([-x * forces[:, 2] + forces[:, 3], x * forces[:, 1] + forces[:, 4]],
+                        axis=-1).sum(axis=0)
+
+    assert moments(positions, on_supports) == pytest.approx(moments(at, applied), abs=1e-6)
+
+
+def test_a_bearing_on_the_shaft_is_the_bearing_ball_5dof_solves_under_the_same_loads():
+    result = solve([(0.12, 0.04, 0.0), (0.08, 0.035, 0.01)],
+                   {"A": ball(0.02), "B": spring(0.18, 1e9, axial=0.0)},
+                   {"gear": {"position": 0.1, "force_x": 500.0, "force_y": 3e3,
+                             "force_z": -1e3, "moment_y": 15.0}})
+    assert outcome(result["status"]) == CONVERGED
+    load = result["support_load"][0]
+    alone = ball_5dof(**{k: v for k, v in BEARING.items() if k != "pressure_limit"},
+                      axial_load=load[0], radial_load=load[1], radial_load_z=load[2],
+                      moment_y=load[3], moment_z=load[4])
+    assert result["support_displacement"][0] == pytest.approx(
+        np.asarray(alone["displacement"]).ravel(), rel=1e-6, abs=1e-12)
+    assert result["largest_contact_pressure"][0] == pytest.approx(
+        np.ravel(alone["largest_contact_pressure"])[0], rel=1e-6)
+    assert np.isnan(result["largest_contact_pressure"][1])  # a spring has no contacts
+
+
+def test_a_bearing_carries_thrust_one_way_as_mounted():
+    shaft = [(0.2, 0.04, 0.0)]
+    loads = {"gear": {"position": 0.1, "force_x": -500.0, "force_y": 2e3}}
+    against = solve(shaft, {"A": ball(0.02), "B": spring(0.18, 1e9)}, loads)
+    mounted = solve(shaft, {"A": ball(0.02, "negative"), "B": spring(0.18, 1e9)}, loads)
+    # Nothing else holds the shaft axially: the bearing mounted against the thrust carries it
+    # on the side of its grooves an angular contact ring cuts away, as ball_5dof does, and
+    # the point is flagged outside validity.
+    assert against["status"] == CONVERGED | OUT_OF_VALIDITY
+    assert mounted["status"] == CONVERGED
+    assert mounted["support_load"][0, 0] == pytest.approx(-500.0, rel=1e-9)
+
+
+def test_a_bearing_past_its_validity_flags_the_point_and_keeps_its_values():
+    result = solve([(0.2, 0.04, 0.0)], {"A": ball(0.02), "B": spring(0.18, 1e9)},
+                   {"gear": {"position": 0.1, "force_x": 3e5}})
+    assert result["status"] == CONVERGED | OUT_OF_VALIDITY
+    assert result["largest_contact_pressure"][0] > 4.2e9  # [Pa], the limit given
+    assert np.isfinite(result["support_load"]).all()
+
+
+def test_a_system_with_no_support_or_no_section_is_refused():
+    with pytest.raises(ValueError, match="at least one section and one support"):
+        assemble([], {"A": "spring"}, [])
+    with pytest.raises(ValueError, match="at least one section and one support"):
+        assemble([(0.1, 0.02, 0.0)], {}, [])
