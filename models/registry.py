@@ -293,9 +293,10 @@ class Model:
     #: Values along output dimensions that a few inputs fix (``DimCoordinate``), by dimension.
     dim_coordinates: dict = field(default_factory=dict)
     #: The tables of a definition that give the structure of a model built anew for each
-    #: definition (a shaft's sections, supports and loads), and ``assemble``, which builds it
-    #: from what they hold (as the model's module says). Empty for a model of fixed inputs.
-    tables: tuple[str, ...] = ()
+    #: definition (a shaft's sections, supports and loads), each with the inputs its entries
+    #: take by kind of entry, and ``assemble``, which builds the model from what they hold
+    #: (as the model's module says). Empty for a model of fixed inputs.
+    tables: dict[str, dict[str, tuple[Input, ...]]] = field(default_factory=dict)
     assemble: Callable[..., "Model"] | None = None
 
     def input(self, name: str) -> Input:

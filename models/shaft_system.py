@@ -80,7 +80,7 @@ SUPPORT_INPUTS = {
 #: A load's inputs, as one load's table names them: on the shaft, in the bearings' axes.
 LOAD_INPUTS = (
     replace(_POSITION, meaning="axial position of the load along the shaft, from its left "
-            "end", default=0.0),
+            "end"),
     Input("force_x", "N", "axial force Fx on the shaft", default=0.0),
     Input("force_y", "N", "radial force Fy on the shaft", default=0.0),
     Input("force_z", "N", "radial force Fz on the shaft", default=0.0),
@@ -112,6 +112,8 @@ def outputs(support_count: int) -> tuple[Output, ...]:
     Output("deflection", "um", "radial displacements v (y) and w (z) of the shaft's axis "
            "along its length, at the stations", dims=("position", "direction"),
            label="deflection"),
+    Output("largest_deflection", "um", "largest radial displacement of the shaft's axis "
+           "over the stations, sqrt(v^2 + w^2)", label="largest deflection"),
     Output("slope", "mrad", "slopes dv/dx and dw/dx of the shaft's deflection line at the "
            "stations", dims=("position", "direction"), label="slope of the deflection line"),
     )
@@ -312,6 +314,8 @@ def _solve(sections, supports, loads, values):
         out["slope"][point] = np.stack([line[:, 4], -line[:, 3]], axis=-1)  # dv/dx, dw/dx
         out["status"][point] = CONVERGED | np.where(
             solved["bearing_outside_validity"].any(), OUT_OF_VALIDITY, 0)
+    out["largest_deflection"] = np.hypot(out["deflection"][..., 0],
+                                         out["deflection"][..., 1]).max(axis=-1)
     out["radial_support_load"] = np.hypot(out["support_load"][..., 1],
                                           out["support_load"][..., 2])
     return out
@@ -322,5 +326,6 @@ MODELS = [Model(
     version=_VERSION, inputs=SHAFT_INPUTS, outputs=outputs(0),
     dim_sizes={"support": (), "dof": DOFS, "direction": _DIRECTIONS,
                "position": "station_count"},
-    tables=("shaft", "supports", "loads"), assemble=assemble,
+    tables={"shaft": {"sections": SECTION_INPUTS}, "supports": SUPPORT_INPUTS,
+            "loads": {"load": LOAD_INPUTS}}, assemble=assemble,
     seconds_per_point=5e-3, points_per_call=1000, validity=_VALIDITY)]

@@ -264,6 +264,15 @@ def list_models() -> ModelList:
                       "version": m.version} for m in all_models().values())
 
 
+def _input(i) -> dict:
+    """One input's declaration as :func:`describe` gives it."""
+    return {"name": i.name, "unit": i.unit, "meaning": i.meaning, "dims": i.dims,
+            "kind": i.kind, "default": None if i.required else (
+                list(i.default) if i.kind == "subset" else i.default),
+            "required": i.default is REQUIRED, "minimum": i.minimum, "maximum": i.maximum,
+            "range": i.range_text(), "choices": i.choices}
+
+
 def describe(name: str) -> ModelDescription:
     """One model's declaration as data, what ``bearing-sweep describe`` prints.
 
@@ -277,7 +286,9 @@ def describe(name: str) -> ModelDescription:
         ``dtype``, ``"int"`` for one stored as integers; an input also
         ``kind``, ``default``, ``required``, ``minimum``, ``maximum``, ``range`` and
         ``choices``; ``default`` is None for a required input and for one the model derives
-        when it is not given), ``validity``, ``conditions`` and ``statuses``.
+        when it is not given), ``tables`` (for a model whose definition gives its structure in
+        tables of its own, a shaft system's: each table's inputs by kind of entry, as
+        ``inputs``), ``validity``, ``conditions`` and ``statuses``.
 
     Raises
     ------
@@ -293,12 +304,9 @@ def describe(name: str) -> ModelDescription:
     return ModelDescription({
         "name": model.name, "version": model.version, "summary": model.summary,
         "reference": model.reference, "function": f"{function.__module__}.{function.__qualname__}",
-        "inputs": [{"name": i.name, "unit": i.unit, "meaning": i.meaning, "dims": i.dims,
-                    "kind": i.kind, "default": None if i.required else (
-                        list(i.default) if i.kind == "subset" else i.default),
-                    "required": i.default is REQUIRED, "minimum": i.minimum,
-                    "maximum": i.maximum, "range": i.range_text(), "choices": i.choices}
-                   for i in model.inputs],
+        "inputs": [_input(i) for i in model.inputs],
+        "tables": {table: {kind: [_input(i) for i in inputs] for kind, inputs in kinds.items()}
+                   for table, kinds in model.tables.items()},
         "outputs": [{"name": o.name, "unit": o.unit, "meaning": o.meaning, "dims": o.dims,
                      "dtype": o.dtype, "depends_on": o.depends_on} for o in model.outputs],
         "validity": model.validity,

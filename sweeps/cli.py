@@ -138,12 +138,14 @@ def _describe(name: str) -> str:
     model = api.describe(name)
     lines = [f"{model['name']} (version {model['version']}): {model['summary']}",
              f"Reference: {model['reference']}", "", "Inputs:"]
-    for i in model["inputs"]:
-        default = "required" if i["required"] else (
-            "derived" if i["default"] is None else f"default {i['default']}")
-        unit = f" [{i['unit']}]" if i["unit"] not in ("", "1") else ""
-        dims = f" per {', '.join(i['dims'])}" if i["dims"] else ""
-        lines.append(f"  {i['name']}{unit}{dims}: {i['meaning']}; {default}; {i['range']}")
+    lines += [_input_line(i) for i in model["inputs"]]
+    for table, kinds in model["tables"].items():
+        for kind, inputs in kinds.items():
+            entry = f"[{table}.<name>] model = {kind!r}" if table == "supports" else (
+                f"[{table}] {kind}" if table == "shaft" else f"[{table}.<name>]")
+            lines += ["", f"Inputs of each {entry} (on an axis: \"{table}.<name>.<input>\"):"
+                      if table != "shaft" else f"Inputs of each of {entry}:"]
+            lines += [_input_line(i) for i in inputs]
     lines += ["", "Outputs:"]
     for o in model["outputs"]:
         dims = f" (dims: {', '.join(o['dims'])})" if o["dims"] else ""
@@ -158,6 +160,14 @@ def _describe(name: str) -> str:
         lines.append(f"Validity (out_of_validity beyond): {model['validity']}")
     lines += [f"Condition: {condition}" for condition in model["conditions"]]
     return "\n".join(lines)
+
+
+def _input_line(i: dict) -> str:
+    default = "required" if i["required"] else (
+        "derived" if i["default"] is None else f"default {i['default']}")
+    unit = f" [{i['unit']}]" if i["unit"] not in ("", "1") else ""
+    dims = f" per {', '.join(i['dims'])}" if i["dims"] else ""
+    return f"  {i['name']}{unit}{dims}: {i['meaning']}; {default}; {i['range']}"
 
 
 def _indices_table(analyzed) -> str:

@@ -118,7 +118,7 @@ def _sweep(reader: Reader, document: dict, text: str) -> Sweep:
         model = find_model(name)
     except SpecError as error:
         reader.fail("sweep.model", str(error))
-    sections = SECTIONS + model.tables
+    sections = SECTIONS + tuple(model.tables)
     for key in document:
         if key not in sections:
             reader.fail(key, "unknown section" + suggestion(key, sections)

@@ -106,6 +106,21 @@ def test_the_sampling_example_runs_and_analyze_names_what_drives_the_stiffness(t
             output="radial_stiffness", input="crown", bound="high")) < 0.05
 
 
+def test_the_shaft_system_example_runs_and_its_supports_carry_the_gear(tmp_path, run_cli):
+    import xarray as xr
+
+    definition = blocks(PAGES["user-guide/shaft-systems.md"], "toml")[0]
+    (tmp_path / "shaft.toml").write_text(definition)
+    done = run_cli("run", "shaft.toml", "-o", "shaft.nc", cwd=tmp_path, timeout=300)
+    assert done.returncode == 0, done.stderr
+    with xr.open_dataset(tmp_path / "shaft.nc") as result:
+        assert result.status.dims == ("loads_gear_force_y", "supports_A_clearance")
+        assert (result.status == 0).all()
+        carried = result.support_load.sel(dof="radial_y").sum("support")
+        gap = abs(carried - result.loads_gear_force_y) / result.loads_gear_force_y
+        assert float(gap.max()) < 1e-9
+
+
 def test_every_model_page_holds_its_whole_declaration(docs_module):
     import bearing_sweep
 

@@ -57,6 +57,7 @@ def test_a_shaft_on_two_stiff_springs_bends_as_timoshenko_beam_theory_says():
     centre = list(np.linspace(0.0, 0.4, 9)).index(0.2)
     assert result["status"] == CONVERGED
     assert result["deflection"][centre, 0] == pytest.approx(expected, rel=1e-9)
+    assert result["largest_deflection"] == pytest.approx(expected, rel=1e-9)  # symmetric
     assert result["slope"][centre, 0] == pytest.approx(0.0, abs=1e-12)
     assert result["support_load"][:, 1] == pytest.approx([load / 2, load / 2], rel=1e-9)
 
