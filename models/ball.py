@@ -541,10 +541,12 @@ def _fixed_angle_not_singular(geometry, fixed_dofs):
                                                 np.asarray(fixed_dofs, dtype=object))
 
 
-_DOF_UNITS = ("m", "m", "m", "rad", "rad")
+#: The SI unit of each displacement of :data:`DOFS`, and of each entry of a stiffness matrix
+#: over them.
+DOF_UNITS = ("m", "m", "m", "rad", "rad")
 # Entry (i, j) is dF_i/dq_j in SI; N*m/m is N. Stored so, the matrix is symmetric.
-_STIFFNESS_UNITS = tuple(
-    tuple("N" if (load, dof) == ("N*m", "m") else f"{load}/{dof}" for dof in _DOF_UNITS)
+STIFFNESS_UNITS = tuple(
+    tuple("N" if (load, dof) == ("N*m", "m") else f"{load}/{dof}" for dof in DOF_UNITS)
     for load in ("N", "N", "N", "N*m", "N*m"))
 
 MODELS = [Model(
@@ -595,13 +597,13 @@ MODELS = [Model(
     + friction_inputs("angular_contact_ball"),
     outputs=(
         Output("displacement", "m, rad", "displacement of the inner ring", dims=("dof",),
-               entry_units=_DOF_UNITS,
+               entry_units=DOF_UNITS,
                label="displacement of the inner ring"),
         Output("axial_displacement", "mm", "axial displacement of the inner ring"),
         Output("radial_displacement", "mm", "radial displacement of the inner ring (y-z)"),
         Output("stiffness_matrix", "N/m, N/rad, N, N*m/rad", "stiffness matrix "
                "dF_i/dq_j (eq. 9), in SI so that it is symmetric as stored",
-               dims=("load_dof", "dof"), entry_units=_STIFFNESS_UNITS,
+               dims=("load_dof", "dof"), entry_units=STIFFNESS_UNITS,
                label="stiffness matrix"),
         Output("axial_stiffness", "N/mm", "axial stiffness dFx/d(delta_x) (eq. 10)"),
         Output("radial_stiffness", "N/mm", "radial stiffness dFy/d(delta_y) (eq. 10)"),

@@ -20,10 +20,10 @@ from dataclasses import replace
 
 import numpy as np
 
-from .ball import DOFS, MODELS as BALL_MODELS
+from .ball import DOF_UNITS, DOFS, MODELS as BALL_MODELS, STIFFNESS_UNITS
 from .registry import (CONVERGED, INFEASIBLE, NOT_CONVERGED, OUT_OF_VALIDITY, Constraint,
                        DimCoordinate, Input, Model, Output)
-from .shaft import NODE_DOFS
+from .shaft import NODE_DOFS, node_at
 from .shaft_bearings import BallSupport, solve_shaft_on_bearings
 
 #: The kinds of support a definition names in ``[supports.<name>] model``.
@@ -88,14 +88,13 @@ LOAD_INPUTS = (
     Input("moment_z", "N*m", "moment Mz on the shaft", default=0.0),
 )
 
-_DOF_UNITS = ("m", "m", "m", "rad", "rad")
 #: The radial directions of the deflection line.
 _DIRECTIONS = ("y", "z")
 _LOAD_UNITS = ("N", "N", "N", "N*m", "N*m")
 
-def outputs(support_count: int) -> tuple[Output, ...]:
-    """The outputs of a system of ``support_count`` supports (their entry units are
-    nested per support)."""
+def outputs(support_count: int, load_count: int) -> tuple[Output, ...]:
+    """The outputs of a system of ``support_count`` supports and ``load_count`` loads (their
+    entry units are nested per support and per load)."""
     return (
     Output("support_load", "N, N*m", "forces and moments the shaft puts on each support "
            "(Fx, Fy, Fz, My, Mz; the support's reaction is their opposite)",
@@ -105,10 +104,14 @@ def outputs(support_count: int) -> tuple[Output, ...]:
            dims=("support",), label="radial load on the support"),
     Output("support_displacement", "m, rad", "displacement and tilt of the shaft at each "
            "support (a bearing's inner ring, its outer ring held)", dims=("support", "dof"),
-           entry_units=(_DOF_UNITS,) * support_count, label="displacement at the support"),
+           entry_units=(DOF_UNITS,) * support_count, label="displacement at the support"),
     Output("largest_contact_pressure", "MPa", "largest maximum Hertz contact pressure of "
            "each bearing's rolling elements (NaN for a spring)", dims=("support",),
            label="largest contact pressure"),
+    Output("stiffness_at_load", "N/m, N/rad, N, N*m/rad", "stiffness matrix dF_i/dq_j of "
+           "the whole system at each load's position (the inverse of its compliance there), in "
+           "SI so that it is symmetric as stored", dims=("load", "load_dof", "dof"),
+           entry_units=(STIFFNESS_UNITS,) * load_count, label="stiffness at the load"),
     Output("deflection", "um", "radial displacements v (y) and w (z) of the shaft's axis "
            "along its length, at the stations", dims=("position", "direction"),
            label="deflection"),
@@ -208,9 +211,9 @@ def assemble(sections, supports, loads) -> Model:
 
     return Model(
         name="shaft_system", function=shaft_system, summary=_SUMMARY, reference=_REFERENCE,
-        version=_VERSION, inputs=tuple(inputs), outputs=outputs(len(supports)),
-        dim_sizes={"support": tuple(supports), "dof": DOFS, "direction": _DIRECTIONS,
-                   "position": "station_count"},
+        version=_VERSION, inputs=tuple(inputs), outputs=outputs(len(supports), len(loads)),
+        dim_sizes={"support": tuple(supports), "load": loads, "dof": DOFS, "load_dof": DOFS,
+                   "direction": _DIRECTIONS, "position": "station_count"},
         dim_coordinates={"position": DimCoordinate(
             ("station_count",), lambda size, station_count: np.linspace(0.0, length, size),
             "mm", "axial position along the shaft")},
@@ -270,6 +273,7 @@ def _solve(sections, supports, loads, values):
            "largest_contact_pressure": np.full((count, len(names)), np.nan),
            "deflection": np.full((count, stations.size, 2), np.nan),
            "slope": np.full((count, stations.size, 2), np.nan),
+           "stiffness_at_load": np.full((count, len(loads), NODE_DOFS, NODE_DOFS), np.nan),
            "status": np.full(count, NOT_CONVERGED, dtype=np.int8)}
     balls = [n for n in names if supports[n] == "ball_5dof"]
     springs = [n for n in names if supports[n] == "spring"]
@@ -309,6 +313,8 @@ def _solve(sections, supports, loads, values):
         for index, (name, bearing) in enumerate(zip(balls, bearings)):
             out["largest_contact_pressure"][point, names.index(name)] = float(
                 bearing.largest_pressure(solved["bearing_displacement"][index][None])[0])
+        out["stiffness_at_load"][point] = _stiffness_at(
+            solved, [at(f"loads_{n}_position", point) for n in loads])
         line = solved["station_displacement"]
         out["deflection"][point] = line[:, 1:3]
         out["slope"][point] = np.stack([line[:, 4], -line[:, 3]], axis=-1)  # dv/dx, dw/dx
@@ -321,11 +327,25 @@ def _solve(sections, supports, loads, values):
     return out
 
 
+def _stiffness_at(solved, positions):
+    """The system's tangent stiffness condensed to the nodes at ``positions``, one 5 x 5
+    matrix each: the inverse of the compliance block of that node."""
+    compliance = np.linalg.inv(solved["stiffness"])
+    row_of = np.cumsum(solved["free"]) - 1
+    matrices = np.full((len(positions), NODE_DOFS, NODE_DOFS), np.nan)
+    for index, node in enumerate(node_at(solved["nodes"], positions)):
+        dofs = NODE_DOFS * node + np.arange(NODE_DOFS)
+        if solved["free"][dofs].all():  # a rigid support's node has no finite stiffness
+            rows = row_of[dofs]
+            matrices[index] = np.linalg.inv(compliance[np.ix_(rows, rows)])
+    return matrices
+
+
 MODELS = [Model(
     name="shaft_system", function=_shaft_template, summary=_SUMMARY, reference=_REFERENCE,
-    version=_VERSION, inputs=SHAFT_INPUTS, outputs=outputs(0),
-    dim_sizes={"support": (), "dof": DOFS, "direction": _DIRECTIONS,
-               "position": "station_count"},
+    version=_VERSION, inputs=SHAFT_INPUTS, outputs=outputs(0, 0),
+    dim_sizes={"support": (), "load": (), "dof": DOFS, "load_dof": DOFS,
+               "direction": _DIRECTIONS, "position": "station_count"},
     tables={"shaft": {"sections": SECTION_INPUTS}, "supports": SUPPORT_INPUTS,
             "loads": {"load": LOAD_INPUTS}}, assemble=assemble,
     seconds_per_point=5e-3, points_per_call=1000, validity=_VALIDITY)]

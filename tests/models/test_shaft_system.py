@@ -129,3 +129,58 @@ def test_a_system_with_no_support_or_no_section_is_refused():
         assemble([], {"A": "spring"}, [])
     with pytest.raises(ValueError, match="at least one section and one support"):
         assemble([(0.1, 0.02, 0.0)], {}, [])
+
+
+def test_an_overhung_load_s_reactions_are_those_of_statics():
+    # Supports at 0 and L, a load P at L + a beyond the second: R_A = -P a / L and
+    # R_B = P (L + a) / L (Roark's Formulas for Stress and Strain, 7th ed., Table 8.1 case
+    # 1a with the load outside the span), whatever the supports' stiffness.
+    span, overhang, load = 0.3, 0.1, 2e3
+    result = solve([(span + overhang, 0.04, 0.0)],
+                   {"A": spring(0.0, 1e8, axial=1e8), "B": spring(span, 3e8)},
+                   {"nose": {"position": span + overhang, "force_z": load}})
+    assert result["support_load"][:, 2] == pytest.approx(
+        [-load * overhang / span, load * (span + overhang) / span], rel=1e-9)
+
+
+def test_a_two_span_shaft_on_three_stiff_supports_shares_a_mid_span_load_as_beam_theory():
+    # Two equal spans, a load P at the middle of the first: the supports carry 13/32, 11/16
+    # and -3/32 of P (Roark, Table 8.2 continuous beams; the three-moment equation). The
+    # shaft is slender (span 2 m, 20 mm) so that shear, which the Euler-Bernoulli values leave
+    # out, moves them by about (d/L)^2 = 1e-4 of P, and the springs are 1e8 times stiffer than
+    # the shaft's bending.
+    span, load = 2.0, 100.0
+    supports = {"A": spring(0.0, 1e12, axial=1e6), "B": spring(span, 1e12),
+                "C": spring(2 * span, 1e12)}
+    result = solve([(2 * span, 0.02, 0.0)], supports,
+                   {"mid": {"position": span / 2, "force_y": load}})
+    assert result["support_load"][:, 1] == pytest.approx(
+        [13 / 32 * load, 11 / 16 * load, -3 / 32 * load], abs=2e-4 * load)
+
+
+def test_the_stiffness_at_a_load_is_the_derivative_of_the_equilibrium():
+    # Central differences of the displacement under the load (its position at bearing A, so
+    # that all five displacements there are outputs) against the inverse of the stiffness.
+    shaft = [(0.12, 0.04, 0.0), (0.08, 0.035, 0.01)]
+    supports = {"A": ball(0.05), "B": spring(0.18, 1e9, tilt=1e4)}
+    applied = {"force_x": 600.0, "force_y": 2e3, "force_z": -800.0, "moment_y": 6.0,
+               "moment_z": -4.0}
+
+    def displacement(**change):
+        loads = {"gear": {"position": 0.05, **{k: v + change.get(k, 0.0)
+                                               for k, v in applied.items()}}}
+        return solve(shaft, supports, loads)
+
+    result = displacement()
+    assert result["status"] == CONVERGED
+    steps = {"force_x": 1.0, "force_y": 1.0, "force_z": 1.0, "moment_y": 0.01,
+             "moment_z": 0.01}
+    compliance = np.empty((5, 5))
+    for column, (name, step) in enumerate(steps.items()):
+        up = displacement(**{name: step})["support_displacement"][0]
+        down = displacement(**{name: -step})["support_displacement"][0]
+        compliance[:, column] = (up - down) / (2 * step)
+    stiffness = result["stiffness_at_load"][0]
+    assert np.linalg.inv(compliance) == pytest.approx(stiffness, rel=1e-4,
+                                                      abs=1e-6 * np.abs(stiffness).max())
+    assert stiffness == pytest.approx(stiffness.T, rel=1e-9, abs=1e-9 * np.abs(stiffness).max())
