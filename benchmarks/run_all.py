@@ -17,7 +17,7 @@ SCRIPTS = ("crb_radial_throughput.py", "ball_5dof_throughput.py", "ball_5dof_ker
            "cage_slip_cost.py", "cage_dynamics_6dof_cost.py", "worker_scaling.py",
            "output_encoding.py", "declared_costs.py", "cluster_break_even.py",
            "crb_radial_kernel.py", "zarr_cluster.py", "zarr_structure.py", "startup.py",
-           "operating_outputs.py")
+           "operating_outputs.py", "shaft_system_cost.py")
 RATIO = re.compile(r"^\s+(?:ratio|speed-up):\D*?([\d.]+)x(.*)$")
 GOAL = re.compile(r"goal:?\s*([^)]*)")
 

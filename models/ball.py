@@ -142,6 +142,12 @@ class BallRings:
             return self.compiled.sums_at(*self._points(scaled, index), self.rings,
                                          self.jones, self.psi)[0]
 
+    def reaction_and_stiffness(self, scaled, index):
+        """:meth:`reaction` and :meth:`stiffness` at once."""
+        with np.errstate(all="ignore"):
+            return self.compiled.sums_at(*self._points(scaled, index), self.rings,
+                                         self.jones, self.psi)[:2]
+
     def stiffness(self, scaled, index):
         """Scaled tangent stiffness d(reaction)/d(displacement), ``(n, 5, 5)`` (eq. 9)."""
         with np.errstate(all="ignore"):

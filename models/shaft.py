@@ -151,7 +151,9 @@ class AssembledShaft:
         ``(..., 5 n)``: a spring's stiffness times its displacement; on a rigid support's
         held directions, the loads there less what the shaft carries on."""
         at = displacement.reshape(displacement.shape[:-1] + (-1, NODE_DOFS))
-        carried = (self.force - displacement @ self.matrix.T).reshape(at.shape)
+        # Each case's sums in one order, whatever the batch (einsum, not a matrix product).
+        carried = (self.force - np.einsum("ij,...j->...i", self.matrix, displacement)
+                   ).reshape(at.shape)
         springs = self.support_stiffness
         return np.where(np.isinf(springs), carried[..., self.support_nodes, :],
                         np.where(np.isinf(springs), 0.0, springs)

@@ -5,6 +5,9 @@ A bearing support takes the shaft's displacement and tilt at its position as its
 ring's (the outer ring held in a rigid housing) and answers with the loads its rolling
 elements carry and their tangent stiffness, as its own model computes them; the equilibrium
 ``K_shaft U + sum_b f_b(U_b) = F`` is solved by Newton's method with that analytic tangent.
+The shaft is linear: its degrees of freedom away from the bearings are condensed out
+(static condensation), so Newton's method iterates on the bearings' displacements alone, for
+many load cases at once.
 """
 from __future__ import annotations
 
@@ -21,13 +24,18 @@ _MAX_ITERATIONS = 100
 
 class BallSupport:
     """A ball bearing as a shaft's support, from the inputs :func:`models.ball.ball_5dof`
-    takes (SI): the loads its balls carry at a displacement of its inner ring, and their
-    stiffness (paper 001, eq. 6-9), in the shaft's degrees of freedom."""
+    takes (SI, each one value or one per load case of a batch of ``cases``, the ball count
+    and geometry one for all): the loads its balls carry at a displacement of its inner
+    ring, and their stiffness (paper 001, eq. 6-9), in the shaft's degrees of freedom."""
 
     def __init__(self, ball_count, ball_diameter, pitch_diameter, contact_angle,
                  inner_curvature_ratio=0.52, outer_curvature_ratio=0.53, clearance=0.0,
                  youngs_modulus=207e9, poisson_ratio=0.3, contact_constant=None,
-                 geometry="jones", pressure_limit=MAX_CONTACT_PRESSURE):
+                 geometry="jones", pressure_limit=MAX_CONTACT_PRESSURE, cases=1):
+        (ball_diameter, pitch_diameter, contact_angle, inner_curvature_ratio,
+         outer_curvature_ratio, clearance) = (np.atleast_1d(np.asarray(v, dtype=float)) for v in (
+             ball_diameter, pitch_diameter, contact_angle, inner_curvature_ratio,
+             outer_curvature_ratio, clearance))
         inner, outer = raceway_contacts(ball_diameter, pitch_diameter, contact_angle,
                                         inner_curvature_ratio, outer_curvature_ratio,
                                         youngs_modulus, poisson_ratio)
@@ -35,57 +43,70 @@ class BallSupport:
             contact_constant = series_constant(inner["contact_constant"],
                                                outer["contact_constant"])
         distance = (inner_curvature_ratio + outer_curvature_ratio - 1.0) * ball_diameter
-        # What ball_5dof's validity takes: a ball's pressure per N^(1/3), the limits.
-        self.unit_pressure = float(np.maximum(inner["max_pressure"], outer["max_pressure"]))
-        self.pressure_limit, self.distance = pressure_limit, float(distance)
-        self.approach_limit = MAX_APPROACH_PER_DIAMETER * ball_diameter
-        self.angled = float(contact_angle) > 0.0
         radius = (0.5 * pitch_diameter
                   + (inner_curvature_ratio - 0.5) * ball_diameter * np.cos(contact_angle))
+        # What ball_5dof's validity takes: a ball's pressure per N^(1/3), the limits.
+        (self.unit_pressure, self.pressure_limit, self.distance, self.approach_limit,
+         self.angled, radius, half_clearance, constant, contact_angle) = np.broadcast_arrays(
+            np.maximum(inner["max_pressure"], outer["max_pressure"]), pressure_limit, distance,
+            MAX_APPROACH_PER_DIAMETER * ball_diameter, contact_angle > 0.0, radius,
+            0.5 * clearance, np.asarray(contact_constant, dtype=float), contact_angle,
+            np.zeros(cases))[:-1]
+        self.count = self.distance.size
         # Tilts scaled by the radius of the inner grooves' centres, as ball_5dof solves.
-        self.scale = np.array([1.0, 1.0, 1.0, radius, radius])
-        self.rings = BallRings(int(ball_count), np.atleast_1d(float(distance)),
-                               np.atleast_1d(float(contact_angle)),
-                               np.atleast_1d(0.5 * float(clearance)),
-                               np.atleast_1d(float(np.asarray(contact_constant))), geometry)
+        self.scale = np.stack(np.broadcast_arrays(1.0, 1.0, 1.0, radius, radius), axis=-1)
+        self.rings = BallRings(int(ball_count), self.distance, contact_angle, half_clearance,
+                               constant, geometry)
 
-    def loads(self, displacement):
-        """Loads ``(n, 5)`` [N, N m] the balls carry at the inner ring's ``displacement``
-        ``(n, 5)`` [m, rad], and their stiffness ``(n, 5, 5)``."""
+    def _rows(self, displacement, cases):
+        """The displacement as ``(n, 5)`` and the row of each of its cases among the
+        bearing's values: the first for all where the bearing has one set of values, else
+        ``cases`` (by default each case its own)."""
         displacement = np.atleast_2d(np.asarray(displacement, dtype=float))
-        scaled = displacement * self.scale
-        index = np.zeros(len(scaled), dtype=np.int64)
-        load = self.rings.reaction(scaled, index) * self.scale
-        stiffness = (self.rings.stiffness(scaled, index) * self.scale[:, None]
-                     * self.scale[None, :])
-        return load, stiffness
+        if self.count == 1:
+            return displacement, np.zeros(len(displacement), dtype=np.int64)
+        if cases is None:
+            cases = np.arange(len(displacement))
+        return displacement, np.asarray(cases, dtype=np.int64)
 
-    def largest_pressure(self, displacement):
+    def loads(self, displacement, cases=None):
+        """Loads ``(n, 5)`` [N, N m] the balls carry at the inner ring's ``displacement``
+        ``(n, 5)`` [m, rad] in the load ``cases`` (rows of the bearing's values), and their
+        stiffness ``(n, 5, 5)``."""
+        displacement, rows = self._rows(displacement, cases)
+        scale = self.scale[rows]
+        reaction, stiffness = self.rings.reaction_and_stiffness(displacement * scale, rows)
+        return reaction * scale, stiffness * scale[:, :, None] * scale[:, None, :]
+
+    def largest_pressure(self, displacement, cases=None):
         """The largest maximum Hertz pressure [Pa] of the balls at each ``displacement``
         ``(n, 5)`` (their larger contact, inner or outer)."""
-        scaled = np.atleast_2d(np.asarray(displacement, dtype=float)) * self.scale
-        load = self.rings.contacts(scaled, np.zeros(len(scaled), dtype=np.int64))[1]
-        return self.unit_pressure * np.cbrt(load.max(axis=-1))
+        displacement, rows = self._rows(displacement, cases)
+        load = self.rings.contacts(displacement * self.scale[rows], rows)[1]
+        return self.unit_pressure[rows] * np.cbrt(load.max(axis=-1))
 
-    def outside_validity(self, displacement):
+    def outside_validity(self, displacement, cases=None):
         """Where ``displacement`` ``(n, 5)`` lies outside :func:`models.ball.ball_5dof`'s
         validity: a ball's pressure above the limit or its approach above 1 % of its
         diameter, the ring moved beyond the grooves' centre distance, or a loaded ball of an
         angular contact bearing that has crossed to the other side of its groove."""
-        scaled = np.atleast_2d(np.asarray(displacement, dtype=float)) * self.scale
-        index = np.zeros(len(scaled), dtype=np.int64)
-        approach, load, _, normal_axial, normal_radial, _ = self.rings.contacts(scaled, index)
-        crossed = self.angled & (load > 0) & (np.arctan2(normal_axial, normal_radial) < 0)
-        return ((self.unit_pressure * np.cbrt(load.max(axis=-1)) > self.pressure_limit)
-                | (approach.max(axis=-1) > self.approach_limit)
-                | (np.abs(scaled).max(axis=-1) > self.distance) | crossed.any(axis=-1))
+        displacement, rows = self._rows(displacement, cases)
+        scaled = displacement * self.scale[rows]
+        approach, load, _, normal_axial, normal_radial, _ = self.rings.contacts(scaled, rows)
+        crossed = self.angled[rows, None] & (load > 0) & (
+            np.arctan2(normal_axial, normal_radial) < 0)
+        return ((self.unit_pressure[rows] * np.cbrt(load.max(axis=-1))
+                 > self.pressure_limit[rows])
+                | (approach.max(axis=-1) > self.approach_limit[rows])
+                | (np.abs(scaled).max(axis=-1) > self.distance[rows]) | crossed.any(axis=-1))
 
 
 def solve_shaft_on_bearings(section_lengths, outside_diameters, bores, youngs_modulus,
                             poisson_ratio, bearing_positions, bearings, load_positions, loads,
                             spring_positions=(), spring_stiffness=(), stations=(),
                             typical_displacement=1e-6):
-    """The shaft's equilibrium on its bearings (and linear supports) under one load case.
+    """The shaft's equilibrium on its bearings (and linear supports), in one load case or in
+    a batch of them.
 
     Parameters
     ----------
@@ -94,10 +115,12 @@ def solve_shaft_on_bearings(section_lengths, outside_diameters, bores, youngs_mo
     bearing_positions : array_like
         ``(B,)`` axial positions of the bearings [m].
     bearings : sequence
-        ``B`` supports with a method ``loads(displacement) -> (load, stiffness)``, such as
-        :class:`BallSupport`.
+        ``B`` supports with a method ``loads(displacement, cases) -> (load, stiffness)`` and
+        ``outside_validity(displacement, cases)``, such as :class:`BallSupport` (whose
+        values may differ from one load case to the next).
     load_positions, loads : array_like
-        ``(L,)`` positions [m] and ``(L, 5)`` forces and moments [N, N m].
+        ``(L,)`` positions [m] and ``(L, 5)`` forces and moments [N, N m], or ``(n, L, 5)``
+        for ``n`` load cases.
     spring_positions, spring_stiffness : array_like
         Linear supports, as :func:`models.shaft.solve_shaft` takes them.
     stations : array_like
@@ -109,17 +132,21 @@ def solve_shaft_on_bearings(section_lengths, outside_diameters, bores, youngs_mo
     Returns
     -------
     dict
+        With a leading axis of load cases where ``loads`` has one:
         ``bearing_displacement`` ``(B, 5)`` [m, rad]; ``bearing_load`` ``(B, 5)`` [N, N m],
         what the shaft puts on each bearing; ``spring_load`` and ``spring_displacement``
-        ``(S, 5)``;
-        ``station_displacement`` ``(P, 5)``; ``nodes`` the nodes' positions [m] and
-        ``node_displacement`` ``(n, 5)``; ``bearing_outside_validity`` ``(B,)``, where a
-        bearing's solution lies outside its own model's validity (values kept, as that
-        model keeps them); ``stiffness``, the system's tangent matrix on its
-        free degrees of freedom, those of ``free`` ``(5 n,)`` (the ones no rigid support
-        holds), in their order; ``converged``: the residual below 1e-10 of the loads (else
-        the values are NaN).
+        ``(S, 5)``; ``station_displacement`` ``(P, 5)``; ``nodes`` the nodes' positions [m]
+        (one set for all cases) and ``node_displacement`` ``(n, 5)``;
+        ``bearing_outside_validity`` ``(B,)``, where a bearing's solution lies outside its
+        own model's validity (values kept, as that model keeps them); ``stiffness``, the
+        system's tangent matrix on its free degrees of freedom, those of ``free`` ``(5 n,)``
+        (the ones no rigid support holds), in their order; ``converged``: the residual below
+        1e-10 of the loads (else the values are NaN).
     """
+    loads = np.asarray(loads, dtype=float)
+    single = loads.ndim == 2
+    loads = loads.reshape((-1,) + loads.shape[-2:])
+    cases = len(loads)
     springs = np.asarray(spring_stiffness, dtype=float).reshape(-1, NODE_DOFS)
     count = len(bearings)
     shaft = assemble_shaft(section_lengths, outside_diameters, bores, youngs_modulus,
@@ -127,78 +154,125 @@ def solve_shaft_on_bearings(section_lengths, outside_diameters, bores, youngs_mo
                            np.concatenate([np.atleast_1d(spring_positions),
                                            np.atleast_1d(bearing_positions)]),
                            np.concatenate([springs, np.zeros((count, NODE_DOFS))]),
-                           load_positions, np.asarray(loads, dtype=float)[None], stations)
+                           load_positions, loads, stations)
     free = ~shaft.held
-    shaft_matrix = shaft.matrix[np.ix_(free, free)]
-    force = shaft.force[0, free]
-    # Each bearing's degrees of freedom, and their rows among the free ones.
-    bearing_dofs = NODE_DOFS * shaft.support_nodes[len(springs):, None] + np.arange(NODE_DOFS)
+    matrix = shaft.matrix[np.ix_(free, free)]
+    force = shaft.force[:, free]
+    # Each bearing's free degrees of freedom, and their rows among the free ones.
     row_of = np.cumsum(free) - 1
+    dofs = NODE_DOFS * shaft.support_nodes[len(springs):, None] + np.arange(NODE_DOFS)
+    taken = free[dofs]  # (B, 5)
+    bearing_rows = [row_of[d[t]] for d, t in zip(dofs, taken)]
+    inner = np.concatenate(bearing_rows + [np.zeros(0, dtype=np.int64)]).astype(np.int64)
+    outer = np.setdiff1d(np.arange(matrix.shape[0]), inner)
+    spans = np.cumsum([0] + [len(r) for r in bearing_rows])
+    everything = np.arange(cases)
 
-    def full(free_displacement):
-        whole = np.zeros(shaft.matrix.shape[0])
-        whole[free] = free_displacement
-        return whole
+    def bearing_terms(moved, which):
+        """What the bearings carry at the condensed displacement ``moved`` of the cases
+        ``which``: their force and tangent in the condensed rows, and their loads."""
+        carried = np.zeros((len(which), count, NODE_DOFS))
+        pushed = np.zeros_like(moved)
+        tangent = np.zeros(moved.shape + moved.shape[-1:])
+        for index, bearing in enumerate(bearings):
+            span, take = slice(spans[index], spans[index + 1]), taken[index]
+            whole = np.zeros((len(which), NODE_DOFS))
+            whole[:, take] = moved[:, span]
+            load, stiffness = bearing.loads(whole, which)
+            carried[:, index] = load
+            pushed[:, span] = load[:, take]
+            tangent[:, span, span] = stiffness[:, take][:, :, take]
+        return pushed, tangent, carried
 
-    def system(free_displacement):
-        """Residual, tangent and each bearing's loads at a displacement."""
-        whole = full(free_displacement)
-        residual = shaft_matrix @ free_displacement - force
-        tangent = shaft_matrix.copy()
-        carried = np.zeros((count, NODE_DOFS))
-        for index, (bearing, dofs) in enumerate(zip(bearings, bearing_dofs)):
-            load, stiffness = bearing.loads(whole[dofs][None, :])
-            carried[index] = load[0]
-            take = free[dofs]
-            rows = row_of[dofs[take]]
-            residual[rows] += load[0][take]
-            tangent[np.ix_(rows, rows)] += stiffness[0][np.ix_(take, take)]
-        return residual, tangent, carried
+    # Static condensation: the shaft's other degrees of freedom follow the bearings' linearly.
+    held_still = matrix[np.ix_(outer, outer)]
+    if np.linalg.cond(held_still) < 1e-3 / np.finfo(float).eps:
+        inverse = np.linalg.inv(held_still)
+        follow = inverse @ matrix[np.ix_(outer, inner)]
+        rest = _each(force[:, outer], inverse)
+    else:  # the springs leave the shaft free to move (with its bearings held still)
+        follow = np.full((len(outer), len(inner)), np.nan)
+        rest = np.full((cases, len(outer)), np.nan)
+    condensed = matrix[np.ix_(inner, inner)] - matrix[np.ix_(inner, outer)] @ follow
+    target = force[:, inner] - _each(rest, matrix[np.ix_(inner, outer)])
 
-    start_matrix = shaft_matrix.copy()
-    for bearing, dofs in zip(bearings, bearing_dofs):
-        _, stiffness = bearing.loads(np.full((1, NODE_DOFS), typical_displacement))
-        take = free[dofs]
-        rows = row_of[dofs[take]]
-        start_matrix[np.ix_(rows, rows)] += stiffness[0][np.ix_(take, take)]
-    try:
-        displacement = np.linalg.solve(start_matrix, force)
-    except np.linalg.LinAlgError:
-        displacement = np.zeros_like(force)
-    scale = max(float(np.abs(force).max(initial=0.0)), 1.0)
-    residual, tangent, carried = system(displacement)
-    converged = False
-    for _ in range(_MAX_ITERATIONS):
-        norm = np.linalg.norm(residual)
-        if norm <= _TOLERANCE * scale:
-            converged = True
+    def residual(moved, which):
+        pushed, tangent, carried = bearing_terms(moved, which)
+        return (_each(moved, condensed) + pushed - target[which], condensed + tangent,
+                carried)
+
+    scale = np.maximum(np.abs(loads).reshape(cases, -1).max(axis=1), 1.0)
+    _, start, _ = bearing_terms(np.full((cases, len(inner)), typical_displacement), everything)
+    moved = _solved(condensed + start, target) if len(inner) else np.zeros((cases, 0))
+    converged = np.zeros(cases, dtype=bool)
+    failed = ~np.isfinite(moved).all(axis=1) | ~np.isfinite(rest).all(axis=1)
+    for _ in range(_MAX_ITERATIONS + 1):
+        which = np.flatnonzero(~converged & ~failed)
+        if not which.size:
             break
-        try:
-            step = np.linalg.solve(tangent, -residual)
-        except np.linalg.LinAlgError:
-            break
-        factor = 1.0
-        while factor > 1e-6:  # halve the step until the residual falls
-            trial = displacement + factor * step
-            trial_state = system(trial)
-            if np.linalg.norm(trial_state[0]) < norm:
+        remaining, tangent, _ = residual(moved[which], which)
+        norm = np.linalg.norm(remaining, axis=1)
+        done = norm <= _TOLERANCE * scale[which]
+        converged[which[done]] = True
+        which, remaining, tangent, norm = (v[~done] for v in (which, remaining, tangent, norm))
+        step = _solved(tangent, -remaining)
+        pending = np.isfinite(step).all(axis=1)
+        failed[which[~pending]] = True
+        factor = np.ones(len(which))
+        for _ in range(20):  # halve each case's step until its residual falls
+            if not pending.any():
                 break
-            factor *= 0.5
-        else:
-            break
-        displacement = trial
-        residual, tangent, carried = trial_state
-    whole = full(displacement)
-    if not converged:
-        whole[:], carried[:] = np.nan, np.nan
-    by_node = whole.reshape(-1, NODE_DOFS)
-    at_bearings = by_node[shaft.support_nodes[len(springs):]]
-    outside = np.array([bool(bearing.outside_validity(place[None])[0]) if converged else False
-                        for bearing, place in zip(bearings, at_bearings)], dtype=bool)
-    return {"bearing_displacement": at_bearings, "bearing_outside_validity": outside,
-            "bearing_load": carried,
-            "spring_load": shaft.support_loads(whole)[:len(springs)],
-            "spring_displacement": by_node[shaft.support_nodes[:len(springs)]],
-            "station_displacement": by_node[shaft.station_nodes], "nodes": shaft.nodes,
-            "node_displacement": by_node, "stiffness": tangent, "free": free,
-            "converged": converged}
+            trying = np.flatnonzero(pending)
+            trial = moved[which[trying]] + factor[trying, None] * step[trying]
+            better = np.linalg.norm(residual(trial, which[trying])[0], axis=1) < norm[trying]
+            moved[which[trying[better]]] = trial[better]
+            pending[trying[better]] = False
+            factor[pending] *= 0.5
+        failed[which[pending]] = True
+    _, tangent, carried = residual(moved, everything)
+    displacement = np.zeros((cases, matrix.shape[0]))
+    displacement[:, inner] = moved
+    displacement[:, outer] = rest - _each(moved, follow)
+    whole = np.zeros((cases, shaft.matrix.shape[0]))
+    whole[:, free] = displacement
+    whole[~converged], carried[~converged] = np.nan, np.nan
+    stiffness = np.broadcast_to(matrix, (cases,) + matrix.shape).copy()
+    stiffness[:, inner[:, None], inner[None, :]] += tangent - condensed
+    by_node = whole.reshape(cases, -1, NODE_DOFS)
+    at_bearings = by_node[:, shaft.support_nodes[len(springs):]]
+    outside = np.zeros((cases, count), dtype=bool)
+    for index, bearing in enumerate(bearings):
+        fine = np.flatnonzero(converged)
+        if fine.size:
+            outside[fine, index] = bearing.outside_validity(at_bearings[fine, index], fine)
+    result = {"bearing_displacement": at_bearings, "bearing_outside_validity": outside,
+              "bearing_load": carried,
+              "spring_load": shaft.support_loads(whole)[:, :len(springs)],
+              "spring_displacement": by_node[:, shaft.support_nodes[:len(springs)]],
+              "station_displacement": by_node[:, shaft.station_nodes],
+              "node_displacement": by_node, "stiffness": stiffness, "converged": converged}
+    if single:
+        result = {key: value[0] for key, value in result.items()}
+        result["converged"] = bool(result["converged"])
+    return result | {"nodes": shaft.nodes, "free": free}
+
+
+def _each(vectors, matrix):
+    """``matrix`` times each of ``vectors`` ``(n, k)``, each case's sums in one order
+    whatever the batch (a matrix product's blocking would depend on ``n``)."""
+    return np.einsum("ij,nj->ni", matrix, vectors)
+
+
+def _solved(matrices, vectors):
+    """``matrices`` ``(n, m, m)`` solved for ``vectors`` ``(n, m)``, NaN where a matrix is
+    singular."""
+    try:
+        return np.linalg.solve(matrices, vectors[..., None])[..., 0]
+    except np.linalg.LinAlgError:  # one singular matrix: each case on its own
+        solved = np.full(vectors.shape, np.nan)
+        for case, (matrix, vector) in enumerate(zip(matrices, vectors)):
+            try:
+                solved[case] = np.linalg.solve(matrix, vector)
+            except np.linalg.LinAlgError:
+                pass
+        return solved

@@ -223,7 +223,7 @@ def assemble(sections, supports, loads) -> Model:
             Constraint(positions[:len(supports)], apart, "two supports at one position: "
                        "give one support the stiffness of both"),
         ),
-        seconds_per_point=5e-3, points_per_call=1000, validity=_VALIDITY)
+        seconds_per_point=2e-4, points_per_call=1000, validity=_VALIDITY)
 
 
 #: The longest label of an axis (its netCDF ``long_name``) a figure shows whole.
@@ -246,28 +246,41 @@ class _Mirrored:
     def __init__(self, bearing):
         self.bearing = bearing
 
-    def loads(self, displacement):
-        load, stiffness = self.bearing.loads(displacement * self._FLIP)
+    def loads(self, displacement, cases=None):
+        load, stiffness = self.bearing.loads(displacement * self._FLIP, cases)
         return load * self._FLIP, stiffness * self._FLIP[:, None] * self._FLIP[None, :]
 
-    def outside_validity(self, displacement):
-        return self.bearing.outside_validity(displacement * self._FLIP)
+    def outside_validity(self, displacement, cases=None):
+        return self.bearing.outside_validity(displacement * self._FLIP, cases)
 
-    def largest_pressure(self, displacement):
-        return self.bearing.largest_pressure(displacement * self._FLIP)
+    def largest_pressure(self, displacement, cases=None):
+        return self.bearing.largest_pressure(displacement * self._FLIP, cases)
 
 
 def _solve(sections, supports, loads, values):
     """Every point's equilibrium: ``values`` each input's SI value, one per point or one for
-    all."""
+    all. Points whose shaft, positions and springs are the same are solved together."""
     count = max([np.size(v) for v in values.values() if not isinstance(v, str)] + [1])
 
-    def at(name, point):
+    def every(name):
         value = values[name]
-        return value if isinstance(value, str) or np.ndim(value) == 0 else value[point]
+        return value if isinstance(value, str) else np.broadcast_to(value, (count,))
 
     stations = np.linspace(0.0, sections[:, 0].sum(), int(values["station_count"]))
     names = list(supports)
+    balls = [n for n in names if supports[n] == "ball_5dof"]
+    springs = [n for n in names if supports[n] == "spring"]
+    spring_fields = ("axial_stiffness", "radial_stiffness", "radial_stiffness",
+                     "tilt_stiffness", "tilt_stiffness")
+    linear = np.stack(
+        [every("shaft_youngs_modulus"), every("shaft_poisson_ratio")]
+        + [every(f"supports_{n}_position") for n in balls + springs]
+        + [every(f"loads_{n}_position") for n in loads]
+        + [every(f"supports_{n}_{field}") for n in springs for field in spring_fields],
+        axis=-1)
+    load_vectors = np.stack([np.stack([every(f"loads_{n}_{spec.name}")
+                                       for spec in LOAD_INPUTS[1:]], axis=-1) for n in loads],
+                            axis=1) if loads else np.zeros((count, 0, NODE_DOFS))
     out = {"support_load": np.full((count, len(names), NODE_DOFS), np.nan),
            "support_displacement": np.full((count, len(names), NODE_DOFS), np.nan),
            "largest_contact_pressure": np.full((count, len(names)), np.nan),
@@ -275,51 +288,54 @@ def _solve(sections, supports, loads, values):
            "slope": np.full((count, stations.size, 2), np.nan),
            "stiffness_at_load": np.full((count, len(loads), NODE_DOFS, NODE_DOFS), np.nan),
            "status": np.full(count, NOT_CONVERGED, dtype=np.int8)}
-    balls = [n for n in names if supports[n] == "ball_5dof"]
-    springs = [n for n in names if supports[n] == "spring"]
-    for point in range(count):
-        def of(name, field):
-            return at(f"supports_{name}_{field}", point)
-
+    order = [names.index(n) for n in balls] + [names.index(n) for n in springs]
+    _, group_of = np.unique(linear, axis=0, return_inverse=True)
+    for group in np.unique(group_of):
+        members = np.flatnonzero(group_of.ravel() == group)
+        first = linear[members[0]]
         bearings = []
         for name in balls:
-            bearing = BallSupport(**{field: of(name, field) for field in _BALL_GEOMETRY})
-            bearings.append(bearing if of(name, "axial_direction") == "positive"
-                            else _Mirrored(bearing))
-        stiffness = [[of(n, "axial_stiffness")] + [of(n, "radial_stiffness")] * 2
-                     + [of(n, "tilt_stiffness")] * 2 for n in springs]
-        load_vectors = [[at(f"loads_{n}_{spec.name}", point) for spec in LOAD_INPUTS[1:]]
-                        for n in loads]
+            given = {field: values[f"supports_{name}_{field}"] for field in _BALL_GEOMETRY}
+            bearing = BallSupport(**{field: value if isinstance(value, str) or value is None
+                                     or np.ndim(value) == 0 else value[members]
+                                     for field, value in given.items()},
+                                  cases=members.size)
+            bearings.append(bearing if values[f"supports_{name}_axial_direction"]
+                            == "positive" else _Mirrored(bearing))
+        at_springs = first[2 + len(balls) + len(springs) + len(loads):].reshape(-1, NODE_DOFS)
         try:
             solved = solve_shaft_on_bearings(
-                sections[:, 0], sections[:, 1], sections[:, 2],
-                at("shaft_youngs_modulus", point), at("shaft_poisson_ratio", point),
-                [of(n, "position") for n in balls], bearings,
-                [at(f"loads_{n}_position", point) for n in loads],
-                np.reshape(load_vectors, (len(loads), NODE_DOFS)),
-                [of(n, "position") for n in springs], stiffness, stations)
+                sections[:, 0], sections[:, 1], sections[:, 2], first[0], first[1],
+                first[2:2 + len(balls)], bearings,
+                first[2 + len(balls) + len(springs):2 + len(balls) + len(springs) + len(loads)],
+                load_vectors[members], first[2 + len(balls):2 + len(balls) + len(springs)],
+                at_springs, stations)
         except ValueError:  # the shaft's system cannot be put together at these inputs
-            out["status"][point] = INFEASIBLE
+            out["status"][members] = INFEASIBLE
             continue
-        if not solved["converged"]:
-            continue
-        order = [names.index(n) for n in balls] + [names.index(n) for n in springs]
+        fine = solved["converged"]
+        solved_points = members[fine]
         place = {"support_load": np.concatenate([solved["bearing_load"],
-                                                 solved["spring_load"]]),
+                                                 solved["spring_load"]], axis=1),
                  "support_displacement": np.concatenate([solved["bearing_displacement"],
-                                                         solved["spring_displacement"]])}
+                                                         solved["spring_displacement"]],
+                                                        axis=1)}
         for key, value in place.items():
-            out[key][point, order] = value
+            out[key][solved_points[:, None], order] = value[fine]
+        cases = np.flatnonzero(fine)
         for index, (name, bearing) in enumerate(zip(balls, bearings)):
-            out["largest_contact_pressure"][point, names.index(name)] = float(
-                bearing.largest_pressure(solved["bearing_displacement"][index][None])[0])
-        out["stiffness_at_load"][point] = _stiffness_at(
-            solved, [at(f"loads_{n}_position", point) for n in loads])
-        line = solved["station_displacement"]
-        out["deflection"][point] = line[:, 1:3]
-        out["slope"][point] = np.stack([line[:, 4], -line[:, 3]], axis=-1)  # dv/dx, dw/dx
-        out["status"][point] = CONVERGED | np.where(
-            solved["bearing_outside_validity"].any(), OUT_OF_VALIDITY, 0)
+            if cases.size:
+                out["largest_contact_pressure"][solved_points, names.index(name)] = \
+                    bearing.largest_pressure(solved["bearing_displacement"][cases, index],
+                                             cases)
+        out["stiffness_at_load"][solved_points] = _stiffness_at(
+            solved, first[2 + len(balls) + len(springs):][:len(loads)])[fine]
+        line = solved["station_displacement"][fine]
+        out["deflection"][solved_points] = line[..., 1:3]
+        out["slope"][solved_points] = np.stack([line[..., 4], -line[..., 3]],
+                                               axis=-1)  # dv/dx, dw/dx
+        out["status"][solved_points] = CONVERGED | np.where(
+            solved["bearing_outside_validity"][fine].any(axis=-1), OUT_OF_VALIDITY, 0)
     out["largest_deflection"] = np.hypot(out["deflection"][..., 0],
                                          out["deflection"][..., 1]).max(axis=-1)
     out["radial_support_load"] = np.hypot(out["support_load"][..., 1],
@@ -329,15 +345,28 @@ def _solve(sections, supports, loads, values):
 
 def _stiffness_at(solved, positions):
     """The system's tangent stiffness condensed to the nodes at ``positions``, one 5 x 5
-    matrix each: the inverse of the compliance block of that node."""
-    compliance = np.linalg.inv(solved["stiffness"])
-    row_of = np.cumsum(solved["free"]) - 1
-    matrices = np.full((len(positions), NODE_DOFS, NODE_DOFS), np.nan)
-    for index, node in enumerate(node_at(solved["nodes"], positions)):
-        dofs = NODE_DOFS * node + np.arange(NODE_DOFS)
-        if solved["free"][dofs].all():  # a rigid support's node has no finite stiffness
-            rows = row_of[dofs]
-            matrices[index] = np.linalg.inv(compliance[np.ix_(rows, rows)])
+    matrix each per load case: the inverse of the compliance block of that node."""
+    stiffness, free = solved["stiffness"], solved["free"]
+    matrices = np.full((len(stiffness), len(positions), NODE_DOFS, NODE_DOFS), np.nan)
+    row_of = np.cumsum(free) - 1
+    held = [not free[NODE_DOFS * node + np.arange(NODE_DOFS)].all()
+            for node in node_at(solved["nodes"], positions)]
+    rows = np.concatenate([row_of[NODE_DOFS * node + np.arange(NODE_DOFS)]
+                           for node, rigid in zip(node_at(solved["nodes"], positions), held)
+                           if not rigid] + [np.zeros(0, dtype=np.int64)])
+    solvable = np.isfinite(stiffness).all(axis=(1, 2))
+    if not rows.size or not solvable.any():
+        return matrices
+    unit = np.zeros((stiffness.shape[-1], rows.size))
+    unit[rows, np.arange(rows.size)] = 1.0
+    # The compliance's columns at those rows alone, not its whole inverse.
+    columns = np.linalg.solve(stiffness[solvable], np.broadcast_to(
+        unit, (int(solvable.sum()),) + unit.shape))
+    blocks = columns[:, rows, :]
+    kept = [index for index, rigid in enumerate(held) if not rigid]
+    for block, index in enumerate(kept):  # a rigid support's node has no finite stiffness
+        part = slice(NODE_DOFS * block, NODE_DOFS * (block + 1))
+        matrices[solvable, index] = np.linalg.inv(blocks[:, part, part])
     return matrices
 
 
@@ -348,4 +377,4 @@ MODELS = [Model(
                "direction": _DIRECTIONS, "position": "station_count"},
     tables={"shaft": {"sections": SECTION_INPUTS}, "supports": SUPPORT_INPUTS,
             "loads": {"load": LOAD_INPUTS}}, assemble=assemble,
-    seconds_per_point=5e-3, points_per_call=1000, validity=_VALIDITY)]
+    seconds_per_point=2e-4, points_per_call=1000, validity=_VALIDITY)]
