@@ -15,6 +15,7 @@ import numpy as np
 
 from .ball import (MAX_APPROACH_PER_DIAMETER, MAX_CONTACT_PRESSURE, BallRings,
                    raceway_contacts, series_constant)
+from .life import ball_bearing_reference_life
 from .shaft import NODE_DOFS, assemble_shaft
 
 #: Newton's tolerance on the residual, relative to the loads.
@@ -53,6 +54,10 @@ class BallSupport:
             0.5 * clearance, np.asarray(contact_constant, dtype=float), contact_angle,
             np.zeros(cases))[:-1]
         self.count = self.distance.size
+        # What ISO/TS 16281's reference life takes besides the ball loads.
+        self.geometry = np.broadcast_arrays(ball_diameter, pitch_diameter, contact_angle,
+                                            inner_curvature_ratio, outer_curvature_ratio,
+                                            np.zeros(self.count))[:-1]
         # Tilts scaled by the radius of the inner grooves' centres, as ball_5dof solves.
         self.scale = np.stack(np.broadcast_arrays(1.0, 1.0, 1.0, radius, radius), axis=-1)
         self.rings = BallRings(int(ball_count), self.distance, contact_angle, half_clearance,
@@ -84,6 +89,17 @@ class BallSupport:
         displacement, rows = self._rows(displacement, cases)
         load = self.rings.contacts(displacement * self.scale[rows], rows)[1]
         return self.unit_pressure[rows] * np.cbrt(load.max(axis=-1))
+
+    def reference_life(self, displacement, rating, cases=None):
+        """ISO/TS 16281's reference rating life L10r [10^6 revolutions] of the inner ring
+        rotating under the ball loads at ``displacement`` ``(n, 5)``, with the dynamic load
+        ``rating`` [N] (one, or one per case); infinite without load."""
+        displacement, rows = self._rows(displacement, cases)
+        load = self.rings.contacts(displacement * self.scale[rows], rows)[1]
+        diameter, pitch, angle, inner, outer = (value[rows] for value in self.geometry)
+        with np.errstate(divide="ignore", invalid="ignore"):
+            return ball_bearing_reference_life(load, rating, diameter, pitch, angle, inner,
+                                               outer)
 
     def outside_validity(self, displacement, cases=None):
         """Where ``displacement`` ``(n, 5)`` lies outside :func:`models.ball.ball_5dof`'s

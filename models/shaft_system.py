@@ -20,9 +20,11 @@ from dataclasses import replace
 
 import numpy as np
 
+from .bearing_life import LIFE_INPUTS
 from .ball import DOF_UNITS, DOFS, MODELS as BALL_MODELS, STIFFNESS_UNITS
 from .registry import (CONVERGED, INFEASIBLE, NOT_CONVERGED, OUT_OF_VALIDITY, Constraint,
                        DimCoordinate, Input, Model, Output)
+from .life_combination import WEIBULL_SLOPES, system_life
 from .shaft import NODE_DOFS, node_at
 from .shaft_bearings import BallSupport, solve_shaft_on_bearings
 
@@ -62,6 +64,7 @@ SUPPORT_INPUTS = {
     "ball_5dof": (replace(_POSITION, meaning="axial position of the bearing's centre along "
                           "the shaft, from its left end"),)
     + tuple(BALL_MODELS[0].input(name) for name in _BALL_GEOMETRY)
+    + (next(spec for spec in LIFE_INPUTS if spec.name == "dynamic_load_rating"),)
     + (Input("axial_direction", "", "the direction of the shaft's thrust the bearing "
              "carries: positive along x (as ball_5dof takes it), or negative (the bearing "
              "mounted the other way round)", default="positive", kind="choice",
@@ -105,6 +108,14 @@ def outputs(support_count: int, load_count: int) -> tuple[Output, ...]:
     Output("support_displacement", "m, rad", "displacement and tilt of the shaft at each "
            "support (a bearing's inner ring, its outer ring held)", dims=("support", "dof"),
            entry_units=(DOF_UNITS,) * support_count, label="displacement at the support"),
+    Output("reference_rating_life", "Mturn", "basic reference rating life L10r of each "
+           "bearing, ISO/TS 16281, from its ball loads, the inner ring rotating; millions of "
+           "revolutions, NaN for a spring or without a dynamic_load_rating",
+           dims=("support",), label="reference rating life L10r"),
+    Output("system_reference_life", "Mturn", "reference rating life of the bearings "
+           "together, the system failing with its first bearing: sum (L/L10r_i)^e = 1 with "
+           "Weibull slope e = 10/9 for ball bearings (Lundberg and Palmgren; Harris and "
+           "Kotzalas ch. 11); NaN where a bearing has no life", label="system reference life"),
     Output("largest_contact_pressure", "MPa", "largest maximum Hertz contact pressure of "
            "each bearing's rolling elements (NaN for a spring)", dims=("support",),
            label="largest contact pressure"),
@@ -256,6 +267,9 @@ class _Mirrored:
     def largest_pressure(self, displacement, cases=None):
         return self.bearing.largest_pressure(displacement * self._FLIP, cases)
 
+    def reference_life(self, displacement, rating, cases=None):
+        return self.bearing.reference_life(displacement * self._FLIP, rating, cases)
+
 
 def _solve(sections, supports, loads, values):
     """Every point's equilibrium: ``values`` each input's SI value, one per point or one for
@@ -284,6 +298,7 @@ def _solve(sections, supports, loads, values):
     out = {"support_load": np.full((count, len(names), NODE_DOFS), np.nan),
            "support_displacement": np.full((count, len(names), NODE_DOFS), np.nan),
            "largest_contact_pressure": np.full((count, len(names)), np.nan),
+           "reference_rating_life": np.full((count, len(names)), np.nan),
            "deflection": np.full((count, stations.size, 2), np.nan),
            "slope": np.full((count, stations.size, 2), np.nan),
            "stiffness_at_load": np.full((count, len(loads), NODE_DOFS, NODE_DOFS), np.nan),
@@ -325,9 +340,15 @@ def _solve(sections, supports, loads, values):
         cases = np.flatnonzero(fine)
         for index, (name, bearing) in enumerate(zip(balls, bearings)):
             if cases.size:
-                out["largest_contact_pressure"][solved_points, names.index(name)] = \
-                    bearing.largest_pressure(solved["bearing_displacement"][cases, index],
-                                             cases)
+                at_bearing = solved["bearing_displacement"][cases, index]
+                column = names.index(name)
+                out["largest_contact_pressure"][solved_points, column] = \
+                    bearing.largest_pressure(at_bearing, cases)
+                rating = values[f"supports_{name}_dynamic_load_rating"]
+                if rating is not None:
+                    out["reference_rating_life"][solved_points, column] = \
+                        bearing.reference_life(at_bearing, rating if np.ndim(rating) == 0
+                                               else rating[members][cases], cases)
         out["stiffness_at_load"][solved_points] = _stiffness_at(
             solved, first[2 + len(balls) + len(springs):][:len(loads)])[fine]
         line = solved["station_displacement"][fine]
@@ -336,6 +357,11 @@ def _solve(sections, supports, loads, values):
                                                axis=-1)  # dv/dx, dw/dx
         out["status"][solved_points] = CONVERGED | np.where(
             solved["bearing_outside_validity"][fine].any(axis=-1), OUT_OF_VALIDITY, 0)
+    turns = 2e6 * np.pi  # 10^6 revolutions [rad]
+    lives = out["reference_rating_life"][:, [names.index(n) for n in balls]]
+    out["system_reference_life"] = (system_life(lives, WEIBULL_SLOPES["ball"]) if balls
+                                    else np.full(count, np.nan)) * turns
+    out["reference_rating_life"] *= turns
     out["largest_deflection"] = np.hypot(out["deflection"][..., 0],
                                          out["deflection"][..., 1]).max(axis=-1)
     out["radial_support_load"] = np.hypot(out["support_load"][..., 1],

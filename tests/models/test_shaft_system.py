@@ -12,7 +12,7 @@ BEARING = {"ball_count": 25, "ball_diameter": 3.14e-3, "pitch_diameter": 41e-3,
            "contact_angle": np.radians(25.0), "inner_curvature_ratio": 0.52,
            "outer_curvature_ratio": 0.53, "clearance": 0.0, "youngs_modulus": 207e9,
            "poisson_ratio": 0.3, "contact_constant": 1.0649e10, "geometry": "jones",
-           "pressure_limit": 4.2e9}
+           "pressure_limit": 4.2e9, "dynamic_load_rating": 4150.0}
 LOAD = {"force_x": 0.0, "force_y": 0.0, "force_z": 0.0, "moment_y": 0.0, "moment_z": 0.0}
 
 
@@ -101,6 +101,23 @@ def test_a_bearing_on_the_shaft_is_the_bearing_ball_5dof_solves_under_the_same_l
     assert result["largest_contact_pressure"][0] == pytest.approx(
         np.ravel(alone["largest_contact_pressure"])[0], rel=1e-6)
     assert np.isnan(result["largest_contact_pressure"][1])  # a spring has no contacts
+    assert result["reference_rating_life"][0] == pytest.approx(
+        np.ravel(alone["reference_rating_life"])[0], rel=1e-6)
+    assert np.isnan(result["reference_rating_life"][1])
+
+
+def test_the_system_s_life_is_the_weibull_combination_of_its_bearings_lives():
+    # A pair of bearings sharing a load: the system survives while both do,
+    # L = (L_A^-e + L_B^-e)^(-1/e), e = 10/9 for ball bearings (Lundberg and Palmgren;
+    # Harris and Kotzalas, Rolling Bearing Analysis, 5th ed., ch. 11), here by hand.
+    result = solve([(0.2, 0.04, 0.0)], {"A": ball(0.03), "B": ball(0.17)},
+                   {"gear": {"position": 0.08, "force_x": 400.0, "force_y": 1500.0}})
+    assert outcome(result["status"]) == CONVERGED
+    first, second = result["reference_rating_life"]
+    e = 10 / 9
+    assert result["system_reference_life"] == pytest.approx(
+        (first**-e + second**-e) ** (-1 / e), rel=1e-12)
+    assert result["system_reference_life"] < min(first, second)
 
 
 def test_a_bearing_carries_thrust_one_way_as_mounted():
