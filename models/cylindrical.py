@@ -688,6 +688,30 @@ def crb_radial(radial_load, roller_count, pitch_diameter, roller_diameter, effec
     return {name: value.reshape(shape + value.shape[1:]) for name, value in outputs.items()}
 
 
+def roller_set(roller_count, pitch_diameter, roller_diameter, effective_length,
+               clearance=0.0, crown=0.0, crown_profile="logarithmic", slices=60,
+               slice_law="uniform", outer_contact="crowned", speed=0.0,
+               roller_density=7850.0, contact_constant=None):
+    """The rollers of :func:`crb_radial`'s bearings (each argument one value or one per
+    bearing, SI, the counts and choices one for all), aligned, for a model that moves their
+    ring itself: ``roller_set(...).loads(displacement, points, ...)`` gives the radial load and
+    stiffness of the bearings ``points`` at a radial displacement (eq. 1-10), the rollers
+    placed from the displacement's direction as :func:`crb_radial` places them from its load's
+    (a roller on that line)."""
+    if contact_constant is None:
+        contact_constant = palmgren_constant(effective_length)
+    pitch, diameter, length, clearance, crown, speed, density, constant = (
+        np.array(a, dtype=float) for a in np.broadcast_arrays(*(np.atleast_1d(np.asarray(
+            v, dtype=float)) for v in (pitch_diameter, roller_diameter, effective_length,
+                                       clearance, crown, speed, roller_density,
+                                       contact_constant))))
+    azimuth = 2.0 * np.pi * np.arange(int(roller_count)) / int(roller_count)
+    return _RollerSet(np.broadcast_to(np.cos(azimuth), (pitch.size, azimuth.size)).copy(),
+                      0.5 * clearance, crown, constant,
+                      centrifugal_force(diameter, length, pitch, speed, density), int(slices),
+                      crown_profile, slice_law, outer_contact)
+
+
 def _solve(rollers, load, perturbation):
     """Solve a flat batch of bearings; see :func:`crb_radial`."""
     cos_azimuth, half_clearance = rollers.cos, rollers.half_clearance

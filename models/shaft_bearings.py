@@ -15,7 +15,9 @@ import numpy as np
 
 from .ball import (MAX_APPROACH_PER_DIAMETER, MAX_CONTACT_PRESSURE, BallRings,
                    raceway_contacts, series_constant)
-from .life import ball_bearing_reference_life
+from .contact import (APPROACH_LIMIT, ROLLER_PRESSURE_LIMIT, effective_modulus,
+                      line_contact_pressure)
+from .life import ball_bearing_reference_life, roller_bearing_reference_life
 from .shaft import NODE_DOFS, assemble_shaft
 
 #: Newton's tolerance on the residual, relative to the loads.
@@ -115,6 +117,133 @@ class BallSupport:
                  > self.pressure_limit[rows])
                 | (approach.max(axis=-1) > self.approach_limit[rows])
                 | (np.abs(scaled).max(axis=-1) > self.distance[rows]) | crossed.any(axis=-1))
+
+
+class RollerSupport:
+    """A cylindrical roller bearing as a shaft's support, from the inputs
+    :func:`models.cylindrical.crb_radial` takes (SI, each one value or one per load case of a
+    batch of ``cases``): in each radial direction the load and stiffness that model gives at
+    the inner ring's radial displacement, as a vector along it; nothing axially (the rings of
+    an NU or N bearing slide) nor against a tilt (crb_radial takes a misalignment, but gives
+    no moment for it).
+
+    The radial law ``F(delta)`` is the bearing's along the displacement ``d`` of length
+    ``delta``, the rollers placed from its direction as crb_radial places them from its
+    load's: the force ``F(delta) d / delta`` derives from a potential, and its tangent
+    ``F' n n^T + (F / delta)(I - n n^T)`` is symmetric (``n = d / delta``).
+    """
+
+    #: Below this radial displacement [m] the direction is taken as y and F / delta as F'.
+    _CENTRED = 1e-15
+
+    def __init__(self, roller_count, pitch_diameter, roller_diameter, effective_length,
+                 clearance=0.0, crown=0.0, crown_profile="logarithmic", slices=60,
+                 slice_law="uniform", outer_contact="crowned", speed=0.0,
+                 roller_density=7850.0, contact_constant=None, youngs_modulus=207e9,
+                 poisson_ratio=0.3, pressure_limit=ROLLER_PRESSURE_LIMIT, cases=1):
+        from .cylindrical import roller_set
+
+        (pitch_diameter, roller_diameter, effective_length, clearance, crown,
+         self.pressure_limit, modulus, _) = np.broadcast_arrays(
+            pitch_diameter, roller_diameter, effective_length, clearance, crown,
+            pressure_limit, effective_modulus(youngs_modulus, poisson_ratio), np.zeros(cases))
+        self.rollers = roller_set(roller_count, pitch_diameter, roller_diameter,
+                                  effective_length, clearance, crown, crown_profile, slices,
+                                  slice_law, outer_contact, speed, roller_density,
+                                  contact_constant)
+        self.count = self.rollers.crown.size
+        # What crb_radial's pressure and validity take.
+        self.length, self.modulus = effective_length, modulus
+        self.diameter, self.pitch = roller_diameter, pitch_diameter
+        self.curvatures = (2.0 / roller_diameter + 2.0 / (pitch_diameter - roller_diameter),
+                           2.0 / roller_diameter - 2.0 / (pitch_diameter + roller_diameter))
+        self.approach_limit = APPROACH_LIMIT * roller_diameter
+
+    def _rows(self, count, cases):
+        if self.count == 1:
+            return np.zeros(count, dtype=np.int64)
+        return np.arange(count) if cases is None else np.asarray(cases, dtype=np.int64)
+
+    def radial(self, displacement, cases=None):
+        """The radial load [N] and stiffness [N/m] at each radial ``displacement`` [m] of
+        the load ``cases``, where every roller's balance converged, and each roller's inner
+        approach (``(count, Z)``, the rows of those cases filled)."""
+        rows = self._rows(len(displacement), cases)
+        shape = self.rollers.cos.shape
+        split = np.full(shape + (3,), np.nan)
+        roller_load, deflection = np.zeros(shape), np.zeros(shape)
+        force, slope, converged = self.rollers.loads(
+            np.ascontiguousarray(displacement, dtype=float), np.ascontiguousarray(rows), split,
+            roller_load, deflection)
+        return force, slope, converged, deflection
+
+    def _contacts(self, displacement, cases):
+        """Each contact's approaches at the radial displacements of the load ``cases``, as
+        crb_radial forms its pressure and validity from them (one case at a time where the
+        bearing has one set of values for several)."""
+        delta = np.hypot(displacement[:, 1], displacement[:, 2])
+        if self.count == 1 and len(delta) > 1:
+            parts = [self._contacts(row[None], None) for row in displacement]
+            return tuple(np.concatenate(part) for part in zip(*parts))
+        rows = self._rows(len(delta), cases)
+        every = np.zeros(self.count)
+        every[rows] = delta
+        deflection = self.radial(every, np.arange(self.count))[3]
+        inner, outer = self.rollers.approaches(every, deflection)
+        return inner[rows], outer[rows], rows
+
+    def largest_pressure(self, displacement, cases=None):
+        """The largest Hertz line-contact pressure [Pa] of the rollers' most loaded slices at
+        each ``displacement`` ``(n, 5)``, as :func:`models.cylindrical.crb_radial` forms it."""
+        displacement = np.atleast_2d(np.asarray(displacement, dtype=float))
+        inner, outer, rows = self._contacts(displacement, cases)
+        every = (np.zeros((self.count,) + inner.shape[1:]),) * 2
+        every[0][rows], every[1][rows] = inner, outer
+        loads = self.rollers.largest_line_loads(*every, self.length)
+        return np.maximum(*(line_contact_pressure(load[rows], curvature[rows, None],
+                                                  self.modulus[rows, None]).max(axis=-1)
+                            for load, curvature in zip(loads, self.curvatures)))
+
+    def reference_life(self, displacement, rating, cases=None):
+        """ISO/TS 16281's reference rating life L10r [10^6 revolutions] of the inner ring
+        rotating under the rollers' lamina loads at ``displacement`` ``(n, 5)``, with the
+        dynamic load ``rating`` [N], as :func:`models.cylindrical.crb_radial` forms it."""
+        displacement = np.atleast_2d(np.asarray(displacement, dtype=float))
+        inner, outer, rows = self._contacts(displacement, cases)
+        laminae = self.rollers.lamina_loads(inner, outer, rows)
+        with np.errstate(divide="ignore", invalid="ignore"):
+            return roller_bearing_reference_life(
+                laminae[0], rating, self.diameter[rows], self.pitch[rows],
+                outer_lamina_loads=laminae[1], lamina_weights=self.rollers.gap_count)
+
+    def outside_validity(self, displacement, cases=None):
+        """Where ``displacement`` ``(n, 5)`` lies outside crb_radial's validity: a contact's
+        pressure above the limit, or a roller's approach above APPROACH_LIMIT of its
+        diameter."""
+        displacement = np.atleast_2d(np.asarray(displacement, dtype=float))
+        inner, outer, rows = self._contacts(displacement, cases)
+        return ((self.largest_pressure(displacement, cases) > self.pressure_limit[rows])
+                | ((inner + outer).max(axis=-1) > self.approach_limit[rows]))
+
+    def loads(self, displacement, cases=None):
+        """Loads ``(n, 5)`` [N, N m] at the inner ring's ``displacement`` ``(n, 5)``, and
+        their stiffness ``(n, 5, 5)``: radial terms only."""
+        displacement = np.atleast_2d(np.asarray(displacement, dtype=float))
+        radial = displacement[:, 1:3]
+        delta = np.hypot(radial[:, 0], radial[:, 1])
+        centred = delta < self._CENTRED
+        direction = np.where(centred[:, None], [1.0, 0.0],
+                             radial / np.where(centred, 1.0, delta)[:, None])
+        force, slope, converged, _ = self.radial(np.where(centred, 0.0, delta), cases)
+        secant = np.where(centred, slope, force / np.where(centred, 1.0, delta))
+        along = np.einsum("ni,nj->nij", direction, direction)
+        load = np.zeros_like(displacement)
+        stiffness = np.zeros(displacement.shape + (5,))
+        load[:, 1:3] = force[:, None] * direction
+        stiffness[:, 1:3, 1:3] = (slope[:, None, None] * along
+                                  + secant[:, None, None] * (np.eye(2) - along))
+        load[~converged], stiffness[~converged] = np.nan, np.nan
+        return load, stiffness
 
 
 def solve_shaft_on_bearings(section_lengths, outside_diameters, bores, youngs_modulus,

@@ -22,14 +22,15 @@ import numpy as np
 
 from .bearing_life import LIFE_INPUTS
 from .ball import DOF_UNITS, DOFS, MODELS as BALL_MODELS, STIFFNESS_UNITS
+from .cylindrical import MODELS as ROLLER_MODELS
 from .registry import (CONVERGED, INFEASIBLE, NOT_CONVERGED, OUT_OF_VALIDITY, Constraint,
                        DimCoordinate, Input, Model, Output)
 from .life_combination import WEIBULL_SLOPES, system_life
 from .shaft import NODE_DOFS, node_at
-from .shaft_bearings import BallSupport, solve_shaft_on_bearings
+from .shaft_bearings import BallSupport, RollerSupport, solve_shaft_on_bearings
 
 #: The kinds of support a definition names in ``[supports.<name>] model``.
-SUPPORT_KINDS = ("ball_5dof", "spring")
+SUPPORT_KINDS = ("ball_5dof", "crb_radial", "spring")
 #: Names of supports and loads: they prefix input names, so they are plain identifiers.
 NAME_PATTERN = r"[A-Za-z][A-Za-z0-9]*(_[A-Za-z0-9]+)*"
 
@@ -59,6 +60,15 @@ _BALL_GEOMETRY = ("ball_count", "ball_diameter", "pitch_diameter", "contact_angl
                   "inner_curvature_ratio", "outer_curvature_ratio", "clearance",
                   "youngs_modulus", "poisson_ratio", "contact_constant", "geometry",
                   "pressure_limit")
+#: The inputs of :func:`models.cylindrical.crb_radial` that make a cylindrical roller
+#: bearing a support (its radial load and displacement are the shaft's).
+_ROLLER_GEOMETRY = ("roller_count", "pitch_diameter", "roller_diameter", "effective_length",
+                    "clearance", "crown", "crown_profile", "slices", "slice_law",
+                    "outer_contact", "speed", "roller_density", "contact_constant",
+                    "youngs_modulus", "poisson_ratio", "pressure_limit")
+#: Each rolling-element kind's support, the inputs it is built from, its Weibull slope.
+_BEARINGS = {"ball_5dof": (BallSupport, _BALL_GEOMETRY, WEIBULL_SLOPES["ball"]),
+             "crb_radial": (RollerSupport, _ROLLER_GEOMETRY, WEIBULL_SLOPES["roller"])}
 #: Each kind of support's inputs, as one support's table names them.
 SUPPORT_INPUTS = {
     "ball_5dof": (replace(_POSITION, meaning="axial position of the bearing's centre along "
@@ -69,6 +79,10 @@ SUPPORT_INPUTS = {
              "carries: positive along x (as ball_5dof takes it), or negative (the bearing "
              "mounted the other way round)", default="positive", kind="choice",
              choices=("positive", "negative")),),
+    "crb_radial": (replace(_POSITION, meaning="axial position of the bearing's centre "
+                           "along the shaft, from its left end"),)
+    + tuple(ROLLER_MODELS[0].input(name) for name in _ROLLER_GEOMETRY)
+    + (next(spec for spec in LIFE_INPUTS if spec.name == "dynamic_load_rating"),),
     "spring": (
         replace(_POSITION, meaning="axial position of the support along the shaft, from its "
                 "left end"),
@@ -109,13 +123,14 @@ def outputs(support_count: int, load_count: int) -> tuple[Output, ...]:
            "support (a bearing's inner ring, its outer ring held)", dims=("support", "dof"),
            entry_units=(DOF_UNITS,) * support_count, label="displacement at the support"),
     Output("reference_rating_life", "Mturn", "basic reference rating life L10r of each "
-           "bearing, ISO/TS 16281, from its ball loads, the inner ring rotating; millions of "
-           "revolutions, NaN for a spring or without a dynamic_load_rating",
+           "bearing, ISO/TS 16281, from its ball or lamina loads, the inner ring rotating; "
+           "millions of revolutions, NaN for a spring or without a dynamic_load_rating",
            dims=("support",), label="reference rating life L10r"),
     Output("system_reference_life", "Mturn", "reference rating life of the bearings "
            "together, the system failing with its first bearing: sum (L/L10r_i)^e = 1 with "
-           "Weibull slope e = 10/9 for ball bearings (Lundberg and Palmgren; Harris and "
-           "Kotzalas ch. 11); NaN where a bearing has no life", label="system reference life"),
+           "Weibull slopes e = 10/9 for ball and 9/8 for roller bearings (Lundberg and "
+           "Palmgren; Harris and Kotzalas ch. 11); NaN where a bearing has no life",
+           label="system reference life"),
     Output("largest_contact_pressure", "MPa", "largest maximum Hertz contact pressure of "
            "each bearing's rolling elements (NaN for a spring)", dims=("support",),
            label="largest contact pressure"),
@@ -161,13 +176,18 @@ _SUMMARY = ("A stepped shaft on rolling bearings and linear supports under force
             "the coupled nonlinear equilibrium (Timoshenko beam elements, each bearing's own "
             "force-displacement law), the loads on each support, the shaft's deflection line.")
 _REFERENCE = ("Przemieniecki, Theory of Matrix Structural Analysis (1968), 5.6; paper 001, "
-              "eq. 1-9 for the ball bearings; Harris & Kotzalas, Rolling Bearing Analysis "
-              "(2006), vol. 2, ch. 1")
+              "eq. 1-9 for the ball bearings; paper 000, eq. 1-10 for the cylindrical roller "
+              "bearings; Harris & Kotzalas, Rolling Bearing Analysis (2006), vol. 2, ch. 1")
 _VALIDITY = ("a bearing's solution outside its own model's validity (for ball_5dof: contact "
              "pressure above its pressure_limit, a ball's approach above 1 % of its diameter, "
-             "the ring beyond the grooves, a ball on the cut-away side of its groove). "
-             "Not modelled: the shaft's torsion and own weight, the housings' compliance "
-             "(give a spring for it), centrifugal and gyroscopic ball loads.")
+             "the ring beyond the grooves, a ball on the cut-away side of its groove; for "
+             "crb_radial: contact pressure above its pressure_limit, a roller's approach above "
+             "2 % of its diameter). Not modelled: the shaft's torsion and own weight, the "
+             "housings' compliance (give a spring for it), centrifugal and gyroscopic ball "
+             "loads; a cylindrical roller bearing's moment against a tilt (crb_radial gives "
+             "none) and its axial load (its rings slide), and the direction of its rollers "
+             "against a radial displacement: it answers one in any direction as crb_radial "
+             "answers one along its load line.")
 _VERSION = "1"
 
 
@@ -282,13 +302,13 @@ def _solve(sections, supports, loads, values):
 
     stations = np.linspace(0.0, sections[:, 0].sum(), int(values["station_count"]))
     names = list(supports)
-    balls = [n for n in names if supports[n] == "ball_5dof"]
+    bearing_names = [n for n in names if supports[n] in _BEARINGS]
     springs = [n for n in names if supports[n] == "spring"]
     spring_fields = ("axial_stiffness", "radial_stiffness", "radial_stiffness",
                      "tilt_stiffness", "tilt_stiffness")
     linear = np.stack(
         [every("shaft_youngs_modulus"), every("shaft_poisson_ratio")]
-        + [every(f"supports_{n}_position") for n in balls + springs]
+        + [every(f"supports_{n}_position") for n in bearing_names + springs]
         + [every(f"loads_{n}_position") for n in loads]
         + [every(f"supports_{n}_{field}") for n in springs for field in spring_fields],
         axis=-1)
@@ -303,28 +323,29 @@ def _solve(sections, supports, loads, values):
            "slope": np.full((count, stations.size, 2), np.nan),
            "stiffness_at_load": np.full((count, len(loads), NODE_DOFS, NODE_DOFS), np.nan),
            "status": np.full(count, NOT_CONVERGED, dtype=np.int8)}
-    order = [names.index(n) for n in balls] + [names.index(n) for n in springs]
+    order = [names.index(n) for n in bearing_names] + [names.index(n) for n in springs]
+    # The columns of ``linear``: the shaft's material, then the positions and the springs.
+    cut = np.cumsum([2, len(bearing_names), len(springs), len(loads)])
+    bearings_at, springs_at = slice(cut[0], cut[1]), slice(cut[1], cut[2])
+    loads_at, stiffness_at = slice(cut[2], cut[3]), slice(cut[3], None)
     _, group_of = np.unique(linear, axis=0, return_inverse=True)
     for group in np.unique(group_of):
         members = np.flatnonzero(group_of.ravel() == group)
         first = linear[members[0]]
         bearings = []
-        for name in balls:
-            given = {field: values[f"supports_{name}_{field}"] for field in _BALL_GEOMETRY}
-            bearing = BallSupport(**{field: value if isinstance(value, str) or value is None
-                                     or np.ndim(value) == 0 else value[members]
-                                     for field, value in given.items()},
-                                  cases=members.size)
-            bearings.append(bearing if values[f"supports_{name}_axial_direction"]
-                            == "positive" else _Mirrored(bearing))
-        at_springs = first[2 + len(balls) + len(springs) + len(loads):].reshape(-1, NODE_DOFS)
+        for name in bearing_names:
+            kind, fields, _ = _BEARINGS[supports[name]]
+            given = {field: values[f"supports_{name}_{field}"] for field in fields}
+            bearing = kind(**{field: value if isinstance(value, str) or value is None
+                              or np.ndim(value) == 0 else value[members]
+                              for field, value in given.items()}, cases=members.size)
+            bearings.append(_Mirrored(bearing) if values.get(
+                f"supports_{name}_axial_direction") == "negative" else bearing)
         try:
             solved = solve_shaft_on_bearings(
                 sections[:, 0], sections[:, 1], sections[:, 2], first[0], first[1],
-                first[2:2 + len(balls)], bearings,
-                first[2 + len(balls) + len(springs):2 + len(balls) + len(springs) + len(loads)],
-                load_vectors[members], first[2 + len(balls):2 + len(balls) + len(springs)],
-                at_springs, stations)
+                first[bearings_at], bearings, first[loads_at], load_vectors[members],
+                first[springs_at], first[stiffness_at].reshape(-1, NODE_DOFS), stations)
         except ValueError:  # the shaft's system cannot be put together at these inputs
             out["status"][members] = INFEASIBLE
             continue
@@ -338,7 +359,7 @@ def _solve(sections, supports, loads, values):
         for key, value in place.items():
             out[key][solved_points[:, None], order] = value[fine]
         cases = np.flatnonzero(fine)
-        for index, (name, bearing) in enumerate(zip(balls, bearings)):
+        for index, (name, bearing) in enumerate(zip(bearing_names, bearings)):
             if cases.size:
                 at_bearing = solved["bearing_displacement"][cases, index]
                 column = names.index(name)
@@ -350,7 +371,7 @@ def _solve(sections, supports, loads, values):
                         bearing.reference_life(at_bearing, rating if np.ndim(rating) == 0
                                                else rating[members][cases], cases)
         out["stiffness_at_load"][solved_points] = _stiffness_at(
-            solved, first[2 + len(balls) + len(springs):][:len(loads)])[fine]
+            solved, first[loads_at])[fine]
         line = solved["station_displacement"][fine]
         out["deflection"][solved_points] = line[..., 1:3]
         out["slope"][solved_points] = np.stack([line[..., 4], -line[..., 3]],
@@ -358,8 +379,9 @@ def _solve(sections, supports, loads, values):
         out["status"][solved_points] = CONVERGED | np.where(
             solved["bearing_outside_validity"][fine].any(axis=-1), OUT_OF_VALIDITY, 0)
     turns = 2e6 * np.pi  # 10^6 revolutions [rad]
-    lives = out["reference_rating_life"][:, [names.index(n) for n in balls]]
-    out["system_reference_life"] = (system_life(lives, WEIBULL_SLOPES["ball"]) if balls
+    lives = out["reference_rating_life"][:, [names.index(n) for n in bearing_names]]
+    slopes = [_BEARINGS[supports[n]][2] for n in bearing_names]
+    out["system_reference_life"] = (system_life(lives, slopes) if bearing_names
                                     else np.full(count, np.nan)) * turns
     out["reference_rating_life"] *= turns
     out["largest_deflection"] = np.hypot(out["deflection"][..., 0],

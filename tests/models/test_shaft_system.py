@@ -4,6 +4,7 @@ import numpy as np
 import pytest
 
 from bearing_sweep.models.ball import ball_5dof
+from bearing_sweep.models.cylindrical import crb_radial
 from bearing_sweep.models.registry import CONVERGED, OUT_OF_VALIDITY, outcome
 from bearing_sweep.models.shaft_system import assemble
 
@@ -201,3 +202,40 @@ def test_the_stiffness_at_a_load_is_the_derivative_of_the_equilibrium():
     assert np.linalg.inv(compliance) == pytest.approx(stiffness, rel=1e-4,
                                                       abs=1e-6 * np.abs(stiffness).max())
     assert stiffness == pytest.approx(stiffness.T, rel=1e-9, abs=1e-9 * np.abs(stiffness).max())
+
+
+#: A cylindrical roller bearing in SI, as crb_radial takes it: 14 crowned rollers.
+ROLLERS = {"roller_count": 14, "pitch_diameter": 65e-3, "roller_diameter": 10e-3,
+           "effective_length": 9.6e-3, "clearance": 10e-6, "crown": 4e-6,
+           "crown_profile": "logarithmic", "slices": 60, "slice_law": "uniform",
+           "outer_contact": "crowned", "speed": 0.0, "roller_density": 7850.0,
+           "contact_constant": None, "youngs_modulus": 207e9, "poisson_ratio": 0.3,
+           "pressure_limit": 4.0e9, "dynamic_load_rating": 48e3}
+
+
+def test_a_roller_bearing_on_the_shaft_is_the_one_crb_radial_solves_under_its_load():
+    result = solve([(0.3, 0.045, 0.0)],
+                   {"front": ball(0.03), "rear": {"kind": "crb_radial", "position": 0.27,
+                                                  **ROLLERS}},
+                   {"gear": {"position": 0.2, "force_x": 300.0, "force_y": 4e3,
+                             "force_z": 1.5e3}})
+    assert outcome(result["status"]) == CONVERGED
+    on_rear = result["support_load"][1]
+    assert on_rear[[0, 3, 4]] == pytest.approx(0.0, abs=1e-9)  # no thrust, no moment
+    radial = float(np.hypot(on_rear[1], on_rear[2]))
+    alone = crb_radial(radial_load=radial, **{k: v for k, v in ROLLERS.items()
+                                               if k != "pressure_limit"})
+    moved = result["support_displacement"][1]
+    assert np.hypot(moved[1], moved[2]) == pytest.approx(
+        np.ravel(alone["radial_displacement"])[0], rel=1e-7)
+    # the load along the displacement, as the law's symmetry has it
+    across = on_rear[1] * moved[2] - on_rear[2] * moved[1]
+    assert across == pytest.approx(0.0, abs=1e-9 * radial * np.abs(moved).max())
+    assert result["largest_contact_pressure"][1] == pytest.approx(
+        np.ravel(alone["largest_contact_pressure"])[0], rel=1e-6)
+    assert result["reference_rating_life"][1] == pytest.approx(
+        np.ravel(alone["reference_rating_life"])[0], rel=1e-6)
+    # a ball and a roller bearing: sum (L / L_i)^e_i = 1 with their own slopes
+    lives, slopes = result["reference_rating_life"], np.array([10 / 9, 9 / 8])
+    assert np.sum((result["system_reference_life"] / lives) ** slopes) == pytest.approx(
+        1.0, rel=1e-12)
