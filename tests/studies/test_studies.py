@@ -161,7 +161,8 @@ def test_every_reduction_applies_to_a_study_definition():
 
 
 @pytest.mark.parametrize("name", ["ball_stiffness", "tapered_rib", "runout", "cage_slip",
-                                  "radial_stiffness", "life", "operating_conditions"])
+                                  "radial_stiffness", "life", "operating_conditions",
+                                  "spindle"])
 @pytest.mark.parametrize("resolution", RESOLUTIONS)
 def test_a_study_regenerates_its_figures_and_report(name, resolution, run_study, run_cli):
     study = find_studies(STUDIES)[name]
@@ -185,7 +186,8 @@ def test_a_study_regenerates_its_figures_and_report(name, resolution, run_study,
 
 
 @pytest.mark.parametrize("name", ["ball_stiffness", "tapered_rib", "runout",
-                                  "radial_stiffness", "life", "operating_conditions"])
+                                  "radial_stiffness", "life", "operating_conditions",
+                                  "spindle"])
 @pytest.mark.parametrize("resolution", RESOLUTIONS)
 def test_a_study_selects_by_quantity_not_by_stored_numbers(name, resolution, run_study,
                                                            study_figures, tmp_path):
@@ -437,7 +439,8 @@ def drawn(tmp_path_factory, study_figures):
 
 
 @pytest.mark.parametrize("name", ["ball_stiffness", "tapered_rib", "runout", "cage_slip",
-                                  "radial_stiffness", "life", "operating_conditions"])
+                                  "radial_stiffness", "life", "operating_conditions",
+                                  "spindle"])
 @pytest.mark.parametrize("resolution", RESOLUTIONS)
 def test_every_figure_of_a_study_reads_at_a_glance(name, resolution, run_study, drawn):
     """Labelled axes with units, no blank panel, no internal name, no legend over data, no
