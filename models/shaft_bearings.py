@@ -18,7 +18,7 @@ from .ball import (MAX_APPROACH_PER_DIAMETER, MAX_CONTACT_PRESSURE, BallRings,
 from .contact import (APPROACH_LIMIT, ROLLER_PRESSURE_LIMIT, effective_modulus,
                       line_contact_pressure)
 from .life import ball_bearing_reference_life, roller_bearing_reference_life
-from .shaft import NODE_DOFS, assemble_shaft
+from .shaft import NODE_DOFS, assemble_shaft, banded_solve, node_at
 
 #: Newton's tolerance on the residual, relative to the loads.
 _TOLERANCE = 1e-10
@@ -249,7 +249,7 @@ class RollerSupport:
 def solve_shaft_on_bearings(section_lengths, outside_diameters, bores, youngs_modulus,
                             poisson_ratio, bearing_positions, bearings, load_positions, loads,
                             spring_positions=(), spring_stiffness=(), stations=(),
-                            typical_displacement=1e-6):
+                            typical_displacement=1e-6, compliance_at=()):
     """The shaft's equilibrium on its bearings (and linear supports), in one load case or in
     a batch of them.
 
@@ -273,6 +273,9 @@ def solve_shaft_on_bearings(section_lengths, outside_diameters, bores, youngs_mo
     typical_displacement : float
         The bearings' displacement [m] in every direction whose stiffness starts Newton's
         iteration (from the shaft on springs that stiff).
+    compliance_at : array_like
+        Positions [m] (each a node: a load's, a support's or a station's) where the system's
+        compliance is wanted.
 
     Returns
     -------
@@ -283,10 +286,13 @@ def solve_shaft_on_bearings(section_lengths, outside_diameters, bores, youngs_mo
         ``(S, 5)``; ``station_displacement`` ``(P, 5)``; ``nodes`` the nodes' positions [m]
         (one set for all cases) and ``node_displacement`` ``(n, 5)``;
         ``bearing_outside_validity`` ``(B,)``, where a bearing's solution lies outside its
-        own model's validity (values kept, as that model keeps them); ``stiffness``, the
-        system's tangent matrix on its free degrees of freedom, those of ``free`` ``(5 n,)``
-        (the ones no rigid support holds), in their order; ``converged``: the residual below
-        1e-10 of the loads (else the values are NaN).
+        own model's validity (values kept, as that model keeps them); ``compliance``
+        ``(5 C, 5 C)`` [m/N, ...], the tangent compliance among the degrees of freedom of the
+        positions ``compliance_at``, five each in order (NaN where a rigid support holds one
+        of them); ``converged``: the residual below 1e-10 of the loads (else the values are
+        NaN). For one load case also ``stiffness``, the system's tangent matrix on its free
+        degrees of freedom, those of ``free`` ``(5 n,)`` (the ones no rigid support holds),
+        in their order.
     """
     loads = np.asarray(loads, dtype=float)
     single = loads.ndim == 2
@@ -332,13 +338,13 @@ def solve_shaft_on_bearings(section_lengths, outside_diameters, bores, youngs_mo
     # Static condensation: the shaft's other degrees of freedom follow the bearings' linearly.
     held_still = matrix[np.ix_(outer, outer)]
     if np.linalg.cond(held_still) < 1e-3 / np.finfo(float).eps:
-        inverse = np.linalg.inv(held_still)
-        follow = inverse @ matrix[np.ix_(outer, inner)]
-        rest = _each(force[:, outer], inverse)
+        follow = banded_solve(held_still, matrix[np.ix_(outer, inner)])
+        rest = banded_solve(held_still, force[:, outer].T).T
     else:  # the springs leave the shaft free to move (with its bearings held still)
         follow = np.full((len(outer), len(inner)), np.nan)
         rest = np.full((cases, len(outer)), np.nan)
-    condensed = matrix[np.ix_(inner, inner)] - matrix[np.ix_(inner, outer)] @ follow
+    condensed = matrix[np.ix_(inner, inner)] - np.einsum("ij,jk->ik",
+                                                         matrix[np.ix_(inner, outer)], follow)
     target = force[:, inner] - _each(rest, matrix[np.ix_(inner, outer)])
 
     def residual(moved, which):
@@ -381,8 +387,9 @@ def solve_shaft_on_bearings(section_lengths, outside_diameters, bores, youngs_mo
     whole = np.zeros((cases, shaft.matrix.shape[0]))
     whole[:, free] = displacement
     whole[~converged], carried[~converged] = np.nan, np.nan
-    stiffness = np.broadcast_to(matrix, (cases,) + matrix.shape).copy()
-    stiffness[:, inner[:, None], inner[None, :]] += tangent - condensed
+    compliance = _compliance(shaft, free, row_of, inner, outer, held_still, follow, tangent,
+                             compliance_at)
+    compliance[~converged] = np.nan
     by_node = whole.reshape(cases, -1, NODE_DOFS)
     at_bearings = by_node[:, shaft.support_nodes[len(springs):]]
     outside = np.zeros((cases, count), dtype=bool)
@@ -395,11 +402,38 @@ def solve_shaft_on_bearings(section_lengths, outside_diameters, bores, youngs_mo
               "spring_load": shaft.support_loads(whole)[:, :len(springs)],
               "spring_displacement": by_node[:, shaft.support_nodes[:len(springs)]],
               "station_displacement": by_node[:, shaft.station_nodes],
-              "node_displacement": by_node, "stiffness": stiffness, "converged": converged}
+              "node_displacement": by_node, "compliance": compliance, "converged": converged}
     if single:
         result = {key: value[0] for key, value in result.items()}
         result["converged"] = bool(result["converged"])
+        result["stiffness"] = matrix.copy()
+        result["stiffness"][np.ix_(inner, inner)] += tangent[0] - condensed
     return result | {"nodes": shaft.nodes, "free": free}
+
+
+def _compliance(shaft, free, row_of, inner, outer, held_still, follow, tangent, positions):
+    """The tangent compliance ``(n, 5 C, 5 C)`` among the degrees of freedom at
+    ``positions``, from the condensed system: a unit force there moves the bearings by
+    ``S^-1 (e_b - F^T e_o)`` (``S``, each case's condensed tangent; ``F``, how the shaft
+    follows its bearings) and the rest of the shaft by ``K_oo^-1 e_o - F u_b``."""
+    cases = len(tangent)
+    nodes = node_at(shaft.nodes, np.atleast_1d(np.asarray(positions, dtype=float)))
+    dofs = (NODE_DOFS * nodes[:, None] + np.arange(NODE_DOFS)).ravel()
+    compliance = np.full((cases, dofs.size, dofs.size), np.nan)
+    if not dofs.size or not free[dofs].all() or not np.isfinite(follow).all():
+        return compliance  # a rigid support's node has no finite compliance
+    rows = row_of[dofs]
+    unit = np.zeros((free.sum(), rows.size))
+    unit[rows, np.arange(rows.size)] = 1.0
+    moved = np.zeros((cases, free.sum(), rows.size))
+    if inner.size:
+        pushed = unit[inner] - np.einsum("ji,jk->ik", follow, unit[outer])
+        moved[:, inner] = np.linalg.solve(tangent, np.broadcast_to(
+            pushed, (cases,) + pushed.shape))
+    moved[:, outer] = banded_solve(held_still, unit[outer])[None] - np.einsum(
+        "ij,njk->nik", follow, moved[:, inner])
+    compliance[:] = moved[:, rows]
+    return compliance
 
 
 def _each(vectors, matrix):

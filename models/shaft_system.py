@@ -26,7 +26,7 @@ from .cylindrical import MODELS as ROLLER_MODELS
 from .registry import (CONVERGED, INFEASIBLE, NOT_CONVERGED, OUT_OF_VALIDITY, Constraint,
                        DimCoordinate, Input, Model, Output)
 from .life_combination import WEIBULL_SLOPES, system_life
-from .shaft import NODE_DOFS, node_at
+from .shaft import NODE_DOFS
 from .shaft_bearings import BallSupport, RollerSupport, solve_shaft_on_bearings
 
 #: The kinds of support a definition names in ``[supports.<name>] model``.
@@ -345,7 +345,8 @@ def _solve(sections, supports, loads, values):
             solved = solve_shaft_on_bearings(
                 sections[:, 0], sections[:, 1], sections[:, 2], first[0], first[1],
                 first[bearings_at], bearings, first[loads_at], load_vectors[members],
-                first[springs_at], first[stiffness_at].reshape(-1, NODE_DOFS), stations)
+                first[springs_at], first[stiffness_at].reshape(-1, NODE_DOFS), stations,
+                compliance_at=first[loads_at])
         except ValueError:  # the shaft's system cannot be put together at these inputs
             out["status"][members] = INFEASIBLE
             continue
@@ -371,7 +372,7 @@ def _solve(sections, supports, loads, values):
                         bearing.reference_life(at_bearing, rating if np.ndim(rating) == 0
                                                else rating[members][cases], cases)
         out["stiffness_at_load"][solved_points] = _stiffness_at(
-            solved, first[loads_at])[fine]
+            solved["compliance"], len(loads))[fine]
         line = solved["station_displacement"][fine]
         out["deflection"][solved_points] = line[..., 1:3]
         out["slope"][solved_points] = np.stack([line[..., 4], -line[..., 3]],
@@ -391,31 +392,15 @@ def _solve(sections, supports, loads, values):
     return out
 
 
-def _stiffness_at(solved, positions):
-    """The system's tangent stiffness condensed to the nodes at ``positions``, one 5 x 5
-    matrix each per load case: the inverse of the compliance block of that node."""
-    stiffness, free = solved["stiffness"], solved["free"]
-    matrices = np.full((len(stiffness), len(positions), NODE_DOFS, NODE_DOFS), np.nan)
-    row_of = np.cumsum(free) - 1
-    held = [not free[NODE_DOFS * node + np.arange(NODE_DOFS)].all()
-            for node in node_at(solved["nodes"], positions)]
-    rows = np.concatenate([row_of[NODE_DOFS * node + np.arange(NODE_DOFS)]
-                           for node, rigid in zip(node_at(solved["nodes"], positions), held)
-                           if not rigid] + [np.zeros(0, dtype=np.int64)])
-    solvable = np.isfinite(stiffness).all(axis=(1, 2))
-    if not rows.size or not solvable.any():
-        return matrices
-    unit = np.zeros((stiffness.shape[-1], rows.size))
-    unit[rows, np.arange(rows.size)] = 1.0
-    # The compliance's columns at those rows alone, not its whole inverse.
-    columns = np.linalg.solve(stiffness[solvable], np.broadcast_to(
-        unit, (int(solvable.sum()),) + unit.shape))
-    blocks = columns[:, rows, :]
-    kept = [index for index, rigid in enumerate(held) if not rigid]
-    for block, index in enumerate(kept):  # a rigid support's node has no finite stiffness
-        part = slice(NODE_DOFS * block, NODE_DOFS * (block + 1))
-        matrices[solvable, index] = np.linalg.inv(blocks[:, part, part])
-    return matrices
+def _stiffness_at(compliance, count):
+    """The system's tangent stiffness at each of ``count`` positions, one 5 x 5 matrix per
+    load case: the inverse of the compliance block of that position."""
+    stiffness = np.full((len(compliance), count, NODE_DOFS, NODE_DOFS), np.nan)
+    solvable = np.isfinite(compliance).all(axis=(1, 2))
+    for index in range(count):
+        part = slice(NODE_DOFS * index, NODE_DOFS * (index + 1))
+        stiffness[solvable, index] = np.linalg.inv(compliance[solvable, part, part])
+    return stiffness
 
 
 MODELS = [Model(

@@ -2,9 +2,10 @@
 its ``[supports.<name>]`` and its ``[loads.<name>]`` (:mod:`..models.shaft_system`).
 
 The tables are checked where they are written, then read as the inputs of the model they
-build: a support's or load's key ``clearance`` is the input ``supports_<name>_clearance``,
-given in [fixed]; its preset gives the values below them; [fixed], [axes] and [sample] may
-name those inputs either way, ``supports.A.clearance`` or ``supports_A_clearance``.
+build: a support's or load's key ``clearance`` is the input ``supports_<name>_clearance``.
+A support's preset gives the values below its table's, and an axis or a sample replaces
+either; [fixed], [axes] and [sample] may name those inputs either way,
+``supports.A.clearance`` or ``supports_A_clearance``.
 """
 from __future__ import annotations
 

@@ -93,3 +93,14 @@ def test_the_results_do_not_depend_on_how_the_points_are_chunked():
                  "largest_contact_pressure"):
         np.testing.assert_allclose(whole[name], one_by_one[name], rtol=0, atol=0,
                                    err_msg=name)
+
+
+@pytest.mark.slow
+def test_the_results_do_not_depend_on_the_workers_that_compute_them():
+    # The model of one system travels to the workers with the grid.
+    definition = SYSTEM + '[axes]\n"loads.gear.force_y" = ["1 kN", "2 kN", "4 kN", "6 kN"]\n'
+    alone = api.run(definition, workers=0, progress=False)
+    clustered = api.run(definition, workers=2, chunk_size=1, progress=False)
+    assert (clustered.status == 0).all()
+    for name in ("support_load", "stiffness_at_load", "deflection", "system_reference_life"):
+        np.testing.assert_array_equal(alone[name], clustered[name], err_msg=name)
