@@ -1,5 +1,6 @@
 """A bearing's stiffness for a rotor-dynamics model: the coefficients over speed from a result
-of ``ball_5dof`` swept over speed, and ross ``BearingElement`` objects built from them.
+of ``ball_5dof`` or ``crb_radial`` swept over speed, and ross ``BearingElement`` objects built
+from them.
 
 ross (the optional extra ``ross``) takes a bearing as linear springs and dampers in the two
 lateral directions of its node, as functions of the rotor's speed. Its ``x`` and ``y`` are the
@@ -8,6 +9,11 @@ models' ``radial_y`` and ``radial_z``; the four lateral terms come from the resu
 axial terms the matrix also holds have no place in a ross ``BearingElement`` (its rotations
 are the shaft elements'), so a rotor built so leaves the bearing's moment stiffness out: it is
 then somewhat softer in its conical modes than the bearings make it.
+
+A ``crb_radial`` result holds the stiffness along its load, ``dF/d(delta)``. Across the load
+the rollers answer a small sideways displacement as they answer one of the whole
+displacement's direction turned: the load stays along the displacement, so the stiffness
+across it is the secant ``F / delta`` (the law derives from a potential of ``|delta|``).
 """
 from __future__ import annotations
 
@@ -30,8 +36,10 @@ def bearing_coefficients(result: str | os.PathLike | xr.Dataset, speed: str = "s
     Parameters
     ----------
     result : path or xarray.Dataset
-        A result of ``ball_5dof`` whose only axis with more than one value is ``speed`` (select
-        one value of the others first: ``result.sel(axial_load=...)``).
+        A result of ``ball_5dof`` or ``crb_radial`` whose only axis with more than one value
+        is ``speed`` (select one value of the others first: ``result.sel(axial_load=...)``).
+        A ``crb_radial`` bearing's load is along ``radial_y``: ``kxx`` is its stiffness
+        along the load, ``kyy`` the secant ``F / delta`` across it.
     speed : str
         The speed's dimension.
 
@@ -49,9 +57,11 @@ def bearing_coefficients(result: str | os.PathLike | xr.Dataset, speed: str = "s
         than two speeds, or a speed whose point has no stiffness (not converged).
     """
     data = result if isinstance(result, xr.Dataset) else open_result(result)
+    if data.attrs.get("model") == "crb_radial" and "radial_stiffness" in data:
+        data = _roller_matrix(data)
     if "stiffness_matrix" not in data or speed not in data["stiffness_matrix"].dims:
         raise ValueError(f"the result needs a stiffness_matrix along {speed!r} (a ball_5dof "
-                         f"result swept over {speed})")
+                         f"or crb_radial result swept over {speed})")
     matrix = data["stiffness_matrix"]
     others = [dim for dim in matrix.dims
               if dim not in (speed, "load_dof", "dof") and matrix.sizes[dim] > 1]
@@ -79,6 +89,25 @@ def bearing_coefficients(result: str | os.PathLike | xr.Dataset, speed: str = "s
         raise ValueError(f"no stiffness at {speed} {speeds[order][missing].tolist()} rad/s "
                          "(points not converged)")
     return {"frequency": speeds[order], **terms}
+
+
+def _roller_matrix(data: xr.Dataset) -> xr.Dataset:
+    """A ``crb_radial`` result with its lateral stiffness as a ``stiffness_matrix`` [N/m]:
+    along the load ``dF/d(delta)``, across it ``F / delta``."""
+    def si(name, unit):
+        variable = data[name]
+        return variable.copy(data=convert_written(variable.values, variable.attrs["units"],
+                                                  unit))
+
+    along = si("radial_stiffness", "N/m")
+    with np.errstate(divide="ignore", invalid="ignore"):
+        across = si("radial_load", "N") / si("radial_displacement", "m")
+    across, along = xr.broadcast(across, along)
+    zero = xr.zeros_like(along)
+    matrix = xr.concat([xr.concat([along, zero], "dof"), xr.concat([zero, across], "dof")],
+                       "load_dof").assign_coords(load_dof=list(_LATERAL), dof=list(_LATERAL))
+    return data.drop_vars([name for name in ("stiffness_matrix_units",) if name in data]) \
+        .assign(stiffness_matrix=matrix)
 
 
 def bearing_element(result: str | os.PathLike | xr.Dataset, node: int, damping: float = 0.0,

@@ -35,6 +35,22 @@ def test_the_coefficients_are_the_stiffness_matrix_s_lateral_terms_in_rad_per_s(
     assert (np.diff(coefficients["kxx"]) > 0).all()
 
 
+def test_a_roller_bearing_s_coefficients_are_its_stiffness_along_and_its_secant_across():
+    # Across its load a cylindrical roller bearing's rollers answer a sideways step as a turn
+    # of the displacement: the load stays along it, so the stiffness across is F / delta.
+    swept = bearing_sweep.run({"sweep": {"model": "crb_radial", "bearing": "paper000-D"},
+                               "fixed": {"radial_load": "5 kN", "clearance": "10 um"},
+                               "axes": {"speed": SPEEDS}}, workers=0, progress=False)
+    coefficients = bearing_coefficients(swept)
+    np.testing.assert_allclose(coefficients["kxx"], 1e3 * swept.radial_stiffness.values,
+                               rtol=1e-12)  # N/mm to N/m
+    assert swept.radial_displacement.attrs["units"] == "mm"
+    np.testing.assert_allclose(coefficients["kyy"],
+                               5e3 / (1e-3 * swept.radial_displacement.values), rtol=1e-12)
+    assert (coefficients["kxy"] == 0).all() and (coefficients["kyx"] == 0).all()
+    assert (coefficients["kyy"] < coefficients["kxx"]).all()  # a stiffening contact law
+
+
 def test_a_result_with_another_axis_or_without_speeds_is_refused_in_a_line(swept):
     with pytest.raises(ValueError, match="select one value"):
         bearing_coefficients(swept.expand_dims(axial_load=[1.0, 2.0]))
