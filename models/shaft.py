@@ -134,6 +134,43 @@ def shaft_stiffness(section_lengths, outside_diameters, bores, youngs_modulus, p
     return matrix
 
 
+def weight_loads(section_lengths, outside_diameters, bores, nodes, density, gravity):
+    """The shaft's own weight as loads on its nodes ``(..., 5 n)`` [N, N m]: each element's
+    ``q = rho A g`` per unit length spread as a uniform load, ``q h / 2`` on each of its
+    nodes and the moments ``+-q h^2 / 12`` that go with them (the consistent loads, with which
+    the nodes' displacements are exact for a uniform load, shear included [1]_).
+
+    Parameters
+    ----------
+    section_lengths, outside_diameters, bores, nodes
+        As :func:`shaft_stiffness` takes them.
+    density : array_like
+        ``rho`` [kg/m^3], one per load case ``...``.
+    gravity : array_like
+        ``(..., 3)`` the acceleration of gravity along x, y and z [m/s^2].
+    """
+    nodes = np.asarray(nodes, dtype=float)
+    ends = np.concatenate([[0.0], np.cumsum(section_lengths)])
+    outside, bore = (np.asarray(v, dtype=float) for v in (outside_diameters, bores))
+    section = np.clip(np.searchsorted(ends, 0.5 * (nodes[:-1] + nodes[1:])) - 1, 0,
+                      len(outside) - 1)
+    area = np.pi / 4 * (outside[section] ** 2 - bore[section] ** 2)
+    length = np.diff(nodes)
+    gravity = np.asarray(gravity, dtype=float)
+    per_length = (np.asarray(density, dtype=float)[..., None, None] * area[:, None]
+                  * gravity[..., None, :])  # (..., elements, 3)
+    loads = np.zeros(gravity.shape[:-1] + (len(nodes), NODE_DOFS))
+    half = per_length * length[:, None] / 2
+    loads[..., :-1, :3] += half
+    loads[..., 1:, :3] += half
+    # x-y plane: the slope dv/dx is theta_z; x-z plane: dw/dx is -theta_y.
+    for axis, tilt, sign in ((1, 4, 1.0), (2, 3, -1.0)):
+        moment = per_length[..., axis] * length ** 2 / 12
+        loads[..., :-1, tilt] += sign * moment
+        loads[..., 1:, tilt] -= sign * moment
+    return loads.reshape(gravity.shape[:-1] + (-1,))
+
+
 @dataclass(frozen=True)
 class AssembledShaft:
     """A shaft's finite-element system on its supports and under its loads."""

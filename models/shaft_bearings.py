@@ -18,7 +18,7 @@ from .ball import (MAX_APPROACH_PER_DIAMETER, MAX_CONTACT_PRESSURE, BallRings,
 from .contact import (APPROACH_LIMIT, ROLLER_PRESSURE_LIMIT, effective_modulus,
                       line_contact_pressure)
 from .life import ball_bearing_reference_life, roller_bearing_reference_life
-from .shaft import NODE_DOFS, assemble_shaft, banded_solve, node_at
+from .shaft import NODE_DOFS, assemble_shaft, banded_solve, node_at, weight_loads
 
 #: Newton's tolerance on the residual, relative to the loads.
 _TOLERANCE = 1e-10
@@ -249,7 +249,7 @@ class RollerSupport:
 def solve_shaft_on_bearings(section_lengths, outside_diameters, bores, youngs_modulus,
                             poisson_ratio, bearing_positions, bearings, load_positions, loads,
                             spring_positions=(), spring_stiffness=(), stations=(),
-                            typical_displacement=1e-6, compliance_at=()):
+                            typical_displacement=1e-6, compliance_at=(), own_weight=None):
     """The shaft's equilibrium on its bearings (and linear supports), in one load case or in
     a batch of them.
 
@@ -276,6 +276,10 @@ def solve_shaft_on_bearings(section_lengths, outside_diameters, bores, youngs_mo
     compliance_at : array_like
         Positions [m] (each a node: a load's, a support's or a station's) where the system's
         compliance is wanted.
+    own_weight : tuple or None
+        ``(density, gravity)``: the shaft's density [kg/m^3] and the acceleration of gravity
+        along x, y, z [m/s^2], each one for all cases or one per case (``(n,)``, ``(n, 3)``);
+        the shaft's weight is then a load too (:func:`models.shaft.weight_loads`).
 
     Returns
     -------
@@ -296,8 +300,8 @@ def solve_shaft_on_bearings(section_lengths, outside_diameters, bores, youngs_mo
     """
     loads = np.asarray(loads, dtype=float)
     single = loads.ndim == 2
-    loads = loads.reshape((-1,) + loads.shape[-2:])
-    cases = len(loads)
+    cases = 1 if single else len(loads)
+    loads = loads.reshape((cases,) + loads.shape[-2:])
     springs = np.asarray(spring_stiffness, dtype=float).reshape(-1, NODE_DOFS)
     count = len(bearings)
     shaft = assemble_shaft(section_lengths, outside_diameters, bores, youngs_modulus,
@@ -306,6 +310,11 @@ def solve_shaft_on_bearings(section_lengths, outside_diameters, bores, youngs_mo
                                            np.atleast_1d(bearing_positions)]),
                            np.concatenate([springs, np.zeros((count, NODE_DOFS))]),
                            load_positions, loads, stations)
+    if own_weight is not None:
+        density, gravity = own_weight
+        shaft.force[...] += weight_loads(section_lengths, outside_diameters, bores,
+                                         shaft.nodes, np.broadcast_to(density, (cases,)),
+                                         np.broadcast_to(gravity, (cases, 3)))
     free = ~shaft.held
     matrix = shaft.matrix[np.ix_(free, free)]
     force = shaft.force[:, free]
@@ -352,7 +361,7 @@ def solve_shaft_on_bearings(section_lengths, outside_diameters, bores, youngs_mo
         return (_each(moved, condensed) + pushed - target[which], condensed + tangent,
                 carried)
 
-    scale = np.maximum(np.abs(loads).reshape(cases, -1).max(axis=1), 1.0)
+    scale = np.maximum(np.abs(force).max(axis=1, initial=0.0), 1.0)
     _, start, _ = bearing_terms(np.full((cases, len(inner)), typical_displacement), everything)
     moved = _solved(condensed + start, target) if len(inner) else np.zeros((cases, 0))
     converged = np.zeros(cases, dtype=bool)

@@ -47,6 +47,13 @@ SHAFT_INPUTS = (
           minimum=0.0, exclusive_minimum=True),
     Input("shaft_poisson_ratio", "1", "Poisson's ratio of the shaft", default=0.3,
           minimum=0.0, maximum=0.5, exclusive_minimum=True),
+    Input("shaft_density", "kg/m^3", "density of the shaft, for its own weight",
+          default=7850.0, minimum=0.0),
+    Input("gravity_x", "m/s^2", "acceleration of gravity along the shaft's axis x (0: the "
+          "shaft's weight left out)", default=0.0),
+    Input("gravity_y", "m/s^2", "acceleration of gravity along y (-9.81 for a horizontal "
+          "shaft whose y points up)", default=0.0),
+    Input("gravity_z", "m/s^2", "acceleration of gravity along z", default=0.0),
     Input("station_count", "1", "number of stations, evenly spaced from the shaft's left end "
           "to its right end, where the deflection line is reported", default=21, kind="count",
           minimum=2, maximum=2001),
@@ -148,7 +155,8 @@ def outputs(support_count: int, load_count: int) -> tuple[Output, ...]:
     )
 
 
-def _shaft_template(shaft_youngs_modulus=210e9, shaft_poisson_ratio=0.3, station_count=21):
+def _shaft_template(shaft_youngs_modulus=210e9, shaft_poisson_ratio=0.3, shaft_density=7850.0,
+                    gravity_x=0.0, gravity_y=0.0, gravity_z=0.0, station_count=21):
     """The inputs every shaft system shares; the system itself is built by :func:`assemble`
     from its definition's ``[shaft]``, ``[supports]`` and ``[loads]`` tables, and computed
     by the model that builds.
@@ -159,6 +167,10 @@ def _shaft_template(shaft_youngs_modulus=210e9, shaft_poisson_ratio=0.3, station
         Young's modulus of the shaft [Pa].
     shaft_poisson_ratio : float
         Poisson's ratio of the shaft [-].
+    shaft_density : float
+        Density of the shaft, for its own weight [kg/m^3].
+    gravity_x, gravity_y, gravity_z : float
+        Acceleration of gravity along x, y and z [m/s^2] (0: no weight).
     station_count : int
         Number of stations, evenly spaced from the shaft's left end to its right end, where
         the deflection line is reported [-].
@@ -182,7 +194,7 @@ _VALIDITY = ("a bearing's solution outside its own model's validity (for ball_5d
              "pressure above its pressure_limit, a ball's approach above 1 % of its diameter, "
              "the ring beyond the grooves, a ball on the cut-away side of its groove; for "
              "crb_radial: contact pressure above its pressure_limit, a roller's approach above "
-             "2 % of its diameter). Not modelled: the shaft's torsion and own weight, the "
+             "2 % of its diameter). Not modelled: the shaft's torsion, the "
              "housings' compliance (give a spring for it), centrifugal and gyroscopic ball "
              "loads; a cylindrical roller bearing's moment against a tilt (crb_radial gives "
              "none) and its axial load (its rings slide), and the direction of its rollers "
@@ -346,7 +358,9 @@ def _solve(sections, supports, loads, values):
                 sections[:, 0], sections[:, 1], sections[:, 2], first[0], first[1],
                 first[bearings_at], bearings, first[loads_at], load_vectors[members],
                 first[springs_at], first[stiffness_at].reshape(-1, NODE_DOFS), stations,
-                compliance_at=first[loads_at])
+                compliance_at=first[loads_at],
+                own_weight=(every("shaft_density")[members], np.stack(
+                    [every(f"gravity_{axis}")[members] for axis in "xyz"], axis=-1)))
         except ValueError:  # the shaft's system cannot be put together at these inputs
             out["status"][members] = INFEASIBLE
             continue

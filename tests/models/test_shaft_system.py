@@ -21,7 +21,8 @@ def solve(sections, supports, loads, **values):
     """The system's outputs at one point: ``supports`` and ``loads`` map names to their
     inputs (a support's with ``kind``), in SI."""
     model = assemble(sections, {name: s["kind"] for name, s in supports.items()}, list(loads))
-    given = {"shaft_youngs_modulus": 210e9, "shaft_poisson_ratio": 0.3, "station_count": 21}
+    given = {"shaft_youngs_modulus": 210e9, "shaft_poisson_ratio": 0.3, "station_count": 21,
+             "shaft_density": 7850.0, "gravity_x": 0.0, "gravity_y": 0.0, "gravity_z": 0.0}
     given |= values
     for name, support in supports.items():
         given |= {f"supports_{name}_{key}": value for key, value in support.items()
@@ -147,6 +148,29 @@ def test_a_system_with_no_support_or_no_section_is_refused():
         assemble([], {"A": "spring"}, [])
     with pytest.raises(ValueError, match="at least one section and one support"):
         assemble([(0.1, 0.02, 0.0)], {}, [])
+
+
+def test_a_shaft_under_its_own_weight_bends_as_timoshenko_beam_theory_says():
+    # Simply supported, a uniform load q = rho A g over the span L: the middle deflects
+    # 5 q L^4 / (384 E I) + q L^2 / (8 kappa G A) (Roark's Formulas for Stress and Strain,
+    # 7th ed., Table 8.1 case 2e, and 8.10 for the shear term), plus each spring's q L / (2 k);
+    # each support carries half the weight. The shaft ends at the supports.
+    diameter, span, density, gravity, stiffness, E, nu = 0.05, 1.2, 7850.0, -9.81, 1e11, \
+        210e9, 0.3
+    result = solve([(span, diameter, 0.0)],
+                   {"A": spring(0.0, stiffness, axial=1e8), "B": spring(span, stiffness)},
+                   {}, station_count=11, shaft_density=density, gravity_y=gravity)
+    area, inertia = np.pi * diameter**2 / 4, np.pi * diameter**4 / 64
+    kappa, shear_modulus = 6 * (1 + nu) / (7 + 6 * nu), E / (2 * (1 + nu))
+    per_length = density * area * gravity
+    expected = (5 * per_length * span**4 / (384 * E * inertia)
+                + per_length * span**2 / (8 * kappa * shear_modulus * area)
+                + per_length * span / (2 * stiffness))
+    assert result["status"] == CONVERGED
+    assert result["deflection"][5, 0] == pytest.approx(expected, rel=1e-9)
+    assert result["support_load"][:, 1] == pytest.approx([per_length * span / 2] * 2,
+                                                         rel=1e-9)
+    assert result["deflection"][:, 1] == pytest.approx(0.0, abs=1e-18)  # nothing along z
 
 
 def test_an_overhung_load_s_reactions_are_those_of_statics():

@@ -26,6 +26,7 @@ SI_PER_DECLARED = {
     "rpm": TURN / 60, "N": 1.0, "mm": 1e-3, "um": 1e-6, "deg": math.pi / 180, "mrad": 1e-3,
     "rad": 1.0, "mm^2/s": 1e-6, "GPa": 1e9, "MPa": 1e6, "1/GPa": 1e-9, "kg/m^3": 1.0,
     "N*m": 1.0, "mPa*s": 1e-3, "1/K": 1.0, "kg": 1.0, "m/s": 1.0, "s": 1.0, "1": 1.0, "1/mm": 1e3, "N/m": 1.0,
+    "m/s^2": 1.0,
 }
 
 #: Spellings of each declared unit: (unit as written, its magnitude for a declared value v).
@@ -66,6 +67,8 @@ SPELLINGS = {
     "1": [("1", lambda v: v), ("%", lambda v: v * 100)],
     "1/mm": [("1/mm", lambda v: v), ("1/m", lambda v: v * 1e3), ("mm^-1", lambda v: v)],
     "N/m": [("N/m", lambda v: v), ("N/mm", lambda v: v / 1e3)],
+    "m/s^2": [("m/s^2", lambda v: v), ("mm/s^2", lambda v: v * 1e3),
+              ("ft/s^2", lambda v: v / 0.3048)],
 }
 
 
