@@ -41,6 +41,9 @@ def assembled(reader: Reader, document: dict, template: Model
             reader.fail("supports", "a shaft system needs at least one support: "
                         "[supports.<name>] with model = " + " or ".join(
                             repr(k) for k in kinds))
+        if table == "loads" and not entries:  # its outputs per load need one
+            reader.fail("loads", "a shaft system needs at least one load: [loads.<name>] "
+                        "with a position (its forces may be zero, the shaft's weight alone)")
         for name, entry in entries.items():
             where = reader.within(table)
             if not re.fullmatch(system.NAME_PATTERN, name):
@@ -65,6 +68,9 @@ def assembled(reader: Reader, document: dict, template: Model
                     accepted = sorted(inputs) + (list(_SUPPORT_KEYS) if kinds else [])
                     own.fail(key, "unknown key" + suggestion(key, accepted)
                              + f" (accepted: {', '.join(accepted)})")
+                if isinstance(raw, list) and not inputs[key].dims:
+                    own.fail(key, f"one value here; vary it on an axis instead: [axes] "
+                             f'"{table}.{name}.{key}" = [...]')
                 given.setdefault(f"{table}.{name}", {})[f"{table}_{name}_{key}"] = \
                     ValueReader(own).value(inputs[key], raw, key, fixed=True)
             if kinds is None:
@@ -95,7 +101,34 @@ def assembled(reader: Reader, document: dict, template: Model
             presets.append((_preset(reader.within(f"supports.{name}"), values, model, name,
                                     kind, bearing), f"preset {bearing}"))
     presets += [(entries, table) for table, entries in given.items()]
+    _check_given(reader, system, supports, loads, presets, translated)
     return model, translated, presets
+
+
+def _check_given(reader: Reader, system, supports: dict, loads: list, presets: list,
+                 translated: dict):
+    """Every required input of each support and load given somewhere: its table, its
+    preset, [fixed], an axis or a sample; else one line at its table."""
+    named = {key for values, _ in presets for key in values}
+    for table in ("fixed", "axes", "sample"):
+        for key, raw in (translated.get(table) or {}).items():
+            named.add(key)
+            if isinstance(raw, dict):  # a zipped axis' columns
+                named.update(raw)
+    entries = [("supports", name, system.SUPPORT_INPUTS[kind])
+               for name, kind in supports.items()]
+    entries += [("loads", name, system.LOAD_INPUTS) for name in loads]
+    for table, name, declared in entries:
+        missing = [spec for spec in declared
+                   if spec.required and f"{table}_{name}_{spec.name}" not in named]
+        if missing:
+            described = ", ".join(f"{spec.name!r}" + ("" if spec.unit in ("", "1")
+                                                      else f" [{spec.unit}]")
+                                  for spec in missing)
+            what = "its preset (bearing = ...), " if table == "supports" else ""
+            reader.within(table).fail(name, f"missing {described}: give "
+                                      f"{'them' if len(missing) > 1 else 'it'} in "
+                                      f"[{table}.{name}], {what}or on an axis")
 
 
 def _sections(reader: Reader, values: ValueReader, shaft: dict, system) -> list:
