@@ -197,7 +197,7 @@ class RollerSupport:
         each ``displacement`` ``(n, 5)``, as :func:`models.cylindrical.crb_radial` forms it."""
         displacement = np.atleast_2d(np.asarray(displacement, dtype=float))
         inner, outer, rows = self._contacts(displacement, cases)
-        every = (np.zeros((self.count,) + inner.shape[1:]),) * 2
+        every = tuple(np.zeros((self.count,) + inner.shape[1:]) for _ in range(2))
         every[0][rows], every[1][rows] = inner, outer
         loads = self.rollers.largest_line_loads(*every, self.length)
         return np.maximum(*(line_contact_pressure(load[rows], curvature[rows, None],

@@ -237,17 +237,20 @@ ROLLERS = {"roller_count": 14, "pitch_diameter": 65e-3, "roller_diameter": 10e-3
            "pressure_limit": 4.0e9, "dynamic_load_rating": 48e3}
 
 
-def test_a_roller_bearing_on_the_shaft_is_the_one_crb_radial_solves_under_its_load():
+@pytest.mark.parametrize("speed", [0.0, 2 * np.pi * 12000 / 60])
+def test_a_roller_bearing_on_the_shaft_is_the_one_crb_radial_solves_under_its_load(speed):
+    # Spinning, the rollers' centrifugal force loads the outer contacts more than the inner.
+    rollers = ROLLERS | {"speed": speed}
     result = solve([(0.3, 0.045, 0.0)],
                    {"front": ball(0.03), "rear": {"kind": "crb_radial", "position": 0.27,
-                                                  **ROLLERS}},
+                                                  **rollers}},
                    {"gear": {"position": 0.2, "force_x": 300.0, "force_y": 4e3,
                              "force_z": 1.5e3}})
     assert outcome(result["status"]) == CONVERGED
     on_rear = result["support_load"][1]
     assert on_rear[[0, 3, 4]] == pytest.approx(0.0, abs=1e-9)  # no thrust, no moment
     radial = float(np.hypot(on_rear[1], on_rear[2]))
-    alone = crb_radial(radial_load=radial, **{k: v for k, v in ROLLERS.items()
+    alone = crb_radial(radial_load=radial, **{k: v for k, v in rollers.items()
                                                if k != "pressure_limit"})
     moved = result["support_displacement"][1]
     assert np.hypot(moved[1], moved[2]) == pytest.approx(
