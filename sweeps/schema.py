@@ -129,8 +129,12 @@ def _system_tables(model: Model) -> dict:
         return {}
     from .models import shaft_system as system
 
-    def inputs(declared, required=()):
-        return {"type": "object", "additionalProperties": False, "required": list(required),
+    def inputs(declared, required=None):
+        """A table of ``declared`` inputs; ``required`` None: those the declaration requires
+        (a section's). A support's and a load's may come from a preset or an axis."""
+        return {"type": "object", "additionalProperties": False,
+                "required": [i.name for i in declared if i.required] if required is None
+                else list(required),
                 "properties": {i.name: _fixed(i) for i in declared}}
 
     kinds = [inputs(declared, ["model"]) for declared in system.SUPPORT_INPUTS.values()]
@@ -140,12 +144,11 @@ def _system_tables(model: Model) -> dict:
     return {
         "shaft": {"type": "object", "additionalProperties": False, "required": ["sections"],
                   "properties": {"sections": {"type": "array", "minItems": 1,
-                                              "items": inputs(system.SECTION_INPUTS,
-                                                              ["length", "diameter"])}}},
+                                              "items": inputs(system.SECTION_INPUTS)}}},
         "supports": {"type": "object", "minProperties": 1, "propertyNames": name,
                      "additionalProperties": {"oneOf": kinds}},
-        "loads": {"type": "object", "propertyNames": name,
-                  "additionalProperties": inputs(system.LOAD_INPUTS)}}
+        "loads": {"type": "object", "minProperties": 1, "propertyNames": name,
+                  "additionalProperties": inputs(system.LOAD_INPUTS, [])}}
 
 
 #: The [output] table: how the result file stores the outputs (``definition.output.storage_options``).
