@@ -101,14 +101,16 @@ def life_outputs(elements, equivalent_load):
     return (
         Output("reference_rating_life", "Mturn", f"basic reference rating life L10r, ISO/TS "
                f"16281, from the {elements}; millions of revolutions, {missing}",
-               label="reference rating life L10r"),
+               label="reference rating life L10r", cycle="revolutions"),
         Output("modified_reference_rating_life", "Mturn", "modified reference rating life "
                f"L10rm = aISO L10r (ISO/TS 16281, 90 % reliability); {modified}",
-               label="modified reference rating life L10rm"),
+               label="modified reference rating life L10rm", cycle="revolutions"),
         Output("basic_rating_life", "Mturn", "basic rating life L10 = (Cr/P)^p, ISO 281, "
-               f"from the equivalent dynamic load; {missing}", label="basic rating life L10"),
+               f"from the equivalent dynamic load; {missing}", label="basic rating life L10",
+               cycle="revolutions"),
         Output("modified_rating_life", "Mturn", "modified rating life L10m = aISO L10 (ISO "
-               f"281); {modified}", label="modified rating life L10m"),
+               f"281); {modified}", label="modified rating life L10m",
+               cycle="revolutions"),
         Output("equivalent_dynamic_load", "N", f"ISO 281 dynamic equivalent load P: "
                f"{equivalent_load}", label="equivalent dynamic load P"),
         Output("viscosity_ratio", "1", "viscosity ratio kappa = nu / nu1 (ISO 281 9.3.3); "
@@ -119,9 +121,9 @@ def life_outputs(elements, equivalent_load):
                "(ISO 281 9.3.3, with the reference load of ISO/TS 16281)",
                label="life modification factor aISO"),
         Output("reference_rating_hours", "h", "L10r in hours at the given speed (infinite "
-               "at rest)", label="reference rating life L10rh"),
+               "at rest)", label="reference rating life L10rh", cycle="time"),
         Output("modified_reference_rating_hours", "h", "L10rm in hours at the given speed",
-               label="modified reference rating life L10rmh"),
+               label="modified reference rating life L10rmh", cycle="time"),
         Output("load_rating_ratio", "1", "P/Cr: above 0.5 the lives are beyond ISO 281's "
                "life equation (ISO 281:2007 5.3.1, 7.3.1: such loads may deform the most "
                f"loaded contact plastically); {missing}", label="load ratio P/Cr",

@@ -215,6 +215,11 @@ class Output:
     #: stores it on the grid's axes that hold those inputs only, after checking that its
     #: values are the same along the others. None: it may depend on every input.
     depends_on: tuple[str, ...] | None = None
+    #: How a duty cycle combines a rating life over its load cases, by Palmgren and Miner
+    #: (``life_combination.duty_cycle_life``): ``"revolutions"`` for a life in revolutions,
+    #: over the cases' shares of the revolutions; ``"time"`` for one in hours, over their
+    #: shares of the time. Empty: not combined.
+    cycle: str = ""
 
     @property
     def short(self) -> str:
@@ -298,6 +303,11 @@ class Model:
     #: (as the model's module says). Empty for a model of fixed inputs.
     tables: dict[str, dict[str, tuple[Input, ...]]] = field(default_factory=dict)
     assemble: Callable[..., "Model"] | None = None
+    #: Outputs a duty cycle combines otherwise than by Palmgren and Miner (a system's life:
+    #: the Weibull combination of its bearings' lives over the cycle), each a function of
+    #: ``{name: values}`` of the outputs with ``cycle = "miner"`` combined over the cycle
+    #: (the output's own dimensions last), by name.
+    cycle_combinations: dict[str, Callable] = field(default_factory=dict)
 
     def input(self, name: str) -> Input:
         return next(i for i in self.inputs if i.name == name)

@@ -132,7 +132,7 @@ def outputs(support_count: int, load_count: int) -> tuple[Output, ...]:
     Output("reference_rating_life", "Mturn", "basic reference rating life L10r of each "
            "bearing, ISO/TS 16281, from its ball or lamina loads, the inner ring rotating; "
            "millions of revolutions, NaN for a spring or without a dynamic_load_rating",
-           dims=("support",), label="reference rating life L10r"),
+           dims=("support",), label="reference rating life L10r", cycle="revolutions"),
     Output("system_reference_life", "Mturn", "reference rating life of the bearings "
            "together, the system failing with its first bearing: sum (L/L10r_i)^e = 1 with "
            "Weibull slopes e = 10/9 for ball and 9/8 for roller bearings (Lundberg and "
@@ -252,6 +252,17 @@ def assemble(sections, supports, loads) -> Model:
     def shaft_system(**values):
         return _solve(sections, supports, loads, values)
 
+    bearing_columns = [i for i, kind in enumerate(supports.values()) if kind in _BEARINGS]
+    slopes = [_BEARINGS[kind][2] for kind in supports.values() if kind in _BEARINGS]
+
+    def system_over_cycle(combined):
+        """The system's life over a duty cycle: its bearings' lives over the cycle (each
+        by Palmgren and Miner) combined as in one load case."""
+        lives = combined["reference_rating_life"]
+        if not bearing_columns:
+            return np.full(lives.shape[:-1], np.nan)
+        return system_life(lives[..., bearing_columns], slopes)
+
     return Model(
         name="shaft_system", function=shaft_system, summary=_SUMMARY, reference=_REFERENCE,
         version=_VERSION, inputs=tuple(inputs), outputs=outputs(len(supports), len(loads)),
@@ -266,7 +277,8 @@ def assemble(sections, supports, loads) -> Model:
             Constraint(positions[:len(supports)], apart, "two supports at one position: "
                        "give one support the stiffness of both"),
         ),
-        seconds_per_point=2e-4, points_per_call=1000, validity=_VALIDITY)
+        seconds_per_point=2e-4, points_per_call=1000, validity=_VALIDITY,
+        cycle_combinations={"system_reference_life": system_over_cycle})
 
 
 #: The longest label of an axis (its netCDF ``long_name``) a figure shows whole.

@@ -17,6 +17,7 @@ from typing import TYPE_CHECKING
 import numpy as np
 
 from .models.registry import STATUS_MEANINGS, STATUS_VALUES, VALUES_KEPT, values_kept
+from .duty_cycle import SUFFIX as CYCLE_SUFFIX
 from .grid import Grid
 
 if TYPE_CHECKING:
@@ -180,7 +181,7 @@ def on_grid(data: xr.Dataset) -> xr.Dataset:
     data = data.copy()
     for name, variable in data.data_vars.items():
         if variable.attrs.get("coverage_content_type") != "modelResult" \
-                or set(status.dims) <= set(variable.dims):
+                or set(status.dims) <= set(variable.dims) or name.endswith(CYCLE_SUFFIX):
             continue
         own = [d for d in variable.dims if d not in status.dims]
         data[name] = variable.broadcast_like(status).where(held).transpose(

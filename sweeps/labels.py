@@ -16,8 +16,11 @@ import numpy as np
 from .models.registry import STATUS_DESCRIPTIONS, STATUS_MASKS, STATUS_MEANINGS, STATUS_VALUES
 from . import units
 from .dependence import stored_dims, stored_shape
+from .duty_cycle import STATUS as CYCLE_STATUS, cycle_names, cycle_variables, \
+    time_share_coordinate
 from .grid import Grid
 from .sample import saltelli_rows
+from .definition.axes import TIME_SHARE
 from .definition.values import Value, convert_written
 from .spec import Sweep
 
@@ -100,6 +103,7 @@ def labelled(sweep: Sweep, grid: Grid, outputs: dict, status: np.ndarray,
         "comment": STATUS_COMMENT,
         "coverage_content_type": "qualityInformation",
     })
+    data_vars.update(cycle_variables(sweep, grid, outputs, status))
     data_vars.update(fixed_inputs(sweep))
     coords = coordinates(sweep)
     for dim in dict.fromkeys(d for o in model.outputs for d in o.dims):  # in declared order
@@ -142,6 +146,9 @@ def labelled(sweep: Sweep, grid: Grid, outputs: dict, status: np.ndarray,
         encodings[spec.name] = sweep.storage.variable_encoding(spec.dtype == "int")
     encodings["status"] = {**sweep.storage.variable_encoding(integral=True),
                            "dtype": np.int8, "_FillValue": None}  # every point has one
+    for name in cycle_names(sweep):
+        encodings[name] = dict(encodings["status"]) if name == CYCLE_STATUS \
+            else sweep.storage.variable_encoding()
     return Labelled(data_vars, coords, attrs, encodings)
 
 
@@ -204,6 +211,8 @@ def coordinates(sweep: Sweep) -> dict:
             coords[name] = ((axis.name,) + extra, declared_values(sweep, name, values), attrs)
         if sampling is not None and sampling.blocks:
             coords.update(saltelli_coordinates(sampling))
+        if axis.time_shares is not None:
+            coords[TIME_SHARE] = time_share_coordinate(axis)
     return coords
 
 

@@ -22,6 +22,7 @@ from matplotlib.figure import Figure
 from matplotlib.lines import Line2D
 
 from .dependence import flag_holds, held_points, on_grid
+from .duty_cycle import SUFFIX as CYCLE_SUFFIX
 from .models.registry import get_model
 from .stores import is_result, open_result
 from .stores.durable import OutputLock, write_durably
@@ -295,11 +296,13 @@ def _statuses(status: xr.DataArray) -> str:
 
 
 def _outputs(data, declared: bool = False) -> list[str]:
-    """The result's outputs, in the file's order (a netCDF file's is the model's), or with
-    ``declared`` in the order the model declares them (a zarr store lists its variables by
-    name; this imports the model)."""
+    """The result's outputs at its points, in the file's order (a netCDF file's is the
+    model's), or with ``declared`` in the order the model declares them (a zarr store lists
+    its variables by name; this imports the model). Lives over a duty cycle are not at its
+    points: each stands for all the cycle's."""
     found = [n for n, v in data.data_vars.items()
-             if v.attrs.get("coverage_content_type") == "modelResult"]
+             if v.attrs.get("coverage_content_type") == "modelResult"
+             and not n.endswith(CYCLE_SUFFIX)]
     try:
         order = [o.name for o in get_model(data.attrs.get("model", "")).outputs] \
             if declared else found

@@ -21,7 +21,7 @@ from dataclasses import replace
 from .models.catalogue import PRESETS
 from .models.registry import Input, Model, all_models
 from . import sample, units
-from .definition.axes import AXIS_NAME, RESERVED_NAMES
+from .definition.axes import AXIS_NAME, RESERVED_NAMES, TIME_SHARE
 from .storage import ENCODINGS, Storage
 
 DRAFT = "http://json-schema.org/draft-07/schema#"
@@ -94,6 +94,12 @@ def _definition(model: Model) -> dict:
               "description": "a zipped axis: its parameters vary together, one value per label",
               "properties": {"labels": _LABELS,
                              **{i.name: _column(i) for i in model.inputs}}}
+    if any(o.cycle for o in model.outputs):
+        zipped["properties"][TIME_SHARE] = {
+            "type": "array", "minItems": 1, "items": {"type": "number", "minimum": 0},
+            "description": "a duty cycle: each load case's share of the time, in proportion; "
+                           "the result holds the rating lives over the cycle beside each "
+                           "case's"}
     axes_table = {"type": "object", "properties": axes, "additionalProperties": zipped,
                   "propertyNames": {"pattern": f"^{AXIS_NAME.pattern}$",
                                     "not": {"enum": sorted(RESERVED_NAMES)}},

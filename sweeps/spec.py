@@ -49,6 +49,11 @@ class Sweep:
     storage: Storage = Storage()  # the [output] table: how the outputs are written
 
     @property
+    def duty_cycle(self) -> Axis | None:
+        """The zipped axis of a duty cycle's load cases (with their ``time_shares``), if any."""
+        return next((axis for axis in self.axes if axis.time_shares is not None), None)
+
+    @property
     def sha256(self) -> str:
         return hashlib.sha256(self.text.encode()).hexdigest()
 

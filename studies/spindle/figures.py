@@ -5,7 +5,6 @@ from pathlib import Path
 
 import numpy as np
 
-from bearing_sweep.models.life_combination import WEIBULL_SLOPES, duty_cycle_life, system_life
 from bearing_sweep.plotting import in_unit, result, save, subplots
 
 FIGURES = {
@@ -25,8 +24,6 @@ OVERHANG = 0.0475
 #: The shaft between the bearings: 55 mm with a 12 mm bore, steel [m^4, Pa].
 SPAN_INERTIA = np.pi * (0.055**4 - 0.012**4) / 64
 STEEL = 210e9
-#: The duty cycle's time shares, all at one speed (so the shares of revolutions too).
-TIME_SHARES = {"roughing": 0.2, "finishing": 0.5, "idling": 0.3}
 PRELOADS = {"light": "2 µm", "medium": "5 µm", "heavy": "10 µm"}
 BEARINGS = {"front_a": "front, first", "front_b": "front, second", "rear": "rear"}
 
@@ -104,13 +101,11 @@ def _span(results, figures):
 
 
 def cycle_lives(data) -> dict:
-    """Each bearing's reference life over the duty cycle and the system's [10^6 rev]."""
-    lives = in_unit(data.reference_rating_life, "Mturn")
-    shares = np.array([TIME_SHARES[str(case)] for case in data.case.values])
-    over = {support: float(duty_cycle_life(lives.sel(support=support).values, shares))
-            for support in BEARINGS}
-    slopes = [WEIBULL_SLOPES["ball"]] * 2 + [WEIBULL_SLOPES["roller"]]
-    over["system"] = float(system_life(np.array([over[s] for s in BEARINGS]), slopes))
+    """Each bearing's reference life over the duty cycle and the system's [10^6 rev], as the
+    result holds them."""
+    lives = in_unit(data.reference_rating_life_over_duty_cycle, "Mturn")
+    over = {support: float(lives.sel(support=support)) for support in BEARINGS}
+    over["system"] = float(in_unit(data.system_reference_life_over_duty_cycle, "Mturn"))
     return over
 
 
@@ -129,8 +124,9 @@ def _duty_cycle(results, figures):
     axis.axhline(over["system"], color="0.3", linestyle="--",
                  label=f"system over the cycle: {over['system']:.3g}")
     axis.set_yscale("log")
+    shares = dict(zip(cases, data.time_share.values))
     axis.set_xticks(np.arange(len(groups)),
-                    [f"{g} ({TIME_SHARES[g]:.0%})" if g in TIME_SHARES else g for g in groups])
+                    [f"{g} ({shares[g]:.0%})" if g in shares else g for g in groups])
     axis.set(xlabel="cutting case (time share)", ylabel="reference life L10r [10⁶ rev]",
              title="Lives by case and over the duty cycle")
     axis.legend(fontsize=8)

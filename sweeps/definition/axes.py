@@ -2,6 +2,7 @@
 ``{start, stop, num or step}``, or a zipped axis of several parameters under one name."""
 from __future__ import annotations
 
+import math
 import re
 from dataclasses import dataclass, field
 
@@ -19,6 +20,9 @@ RESERVED_NAMES = {"status", "sample", "saltelli_block", "saltelli_replicate", "s
                   "output", "input", "bound"}
 #: A name of a variable or dimension (CF conventions 2.3), at most 64 characters.
 AXIS_NAME = re.compile(r"[A-Za-z][A-Za-z0-9_]{0,63}")
+#: The column of a zipped axis that makes it a duty cycle: each load case's share of the time,
+#: over which the model's rating lives are combined (``Output.cycle``).
+TIME_SHARE = "time_share"
 #: Most values on one axis (each is validated on its own before any computing).
 MAX_AXIS_VALUES = 10**6
 #: Two values of an axis closer than this, relative to their size, are one value written
@@ -33,6 +37,8 @@ class Axis:
     name: str
     values: dict[str, list[Value]]
     labels: list | None = None  # a zipped axis' labels
+    #: A duty cycle's axis: each load case's share of the time (:data:`TIME_SHARE`).
+    time_shares: list[float] | None = None
     #: Each parameter's SI values stacked, points first: built once, for the conditions
     #: between parameters and for every chunk's model inputs.
     si: dict[str, np.ndarray] = field(init=False, repr=False)
@@ -86,7 +92,7 @@ class AxisReader:
                       "result)")
         values = {}
         for parameter, column in raw.items():
-            if parameter == "labels":
+            if parameter in ("labels", TIME_SHARE):
                 continue
             self.claim(parameter, f"{key}.{parameter}")
             values[parameter] = self.axis_values(inputs[parameter], column, f"{key}.{parameter}",
@@ -103,11 +109,37 @@ class AxisReader:
         if labels is not None:
             self.check_labels(labels, f"{key}.labels")
             lengths["labels"] = len(labels)
+        shares = None
+        if TIME_SHARE in raw:
+            shares = self.time_shares(raw[TIME_SHARE], f"{key}.{TIME_SHARE}")
+            lengths[TIME_SHARE] = len(shares)
         if len(set(lengths.values())) > 1:
             described = ", ".join(f"{p} has {n}" for p, n in lengths.items())
             self.fail(key, f"ragged zipped axis: {described} values; all must have the same number")
+        if shares is not None and "speed" in values and not any(
+                share * np.max(v.si) > 0 for share, v in zip(shares, values["speed"])):
+            self.fail(f"{key}.{TIME_SHARE}", "every load case that takes time is at rest "
+                      "(speed 0): a duty cycle's lives share its revolutions, and there are none")
         return Axis(name, values, labels if labels is not None else list(range(len(
-            next(iter(values.values()))))))
+            next(iter(values.values()))))), shares)
+
+    def time_shares(self, raw, key: str) -> list[float]:
+        """A duty cycle's time shares: numbers >= 0, not all 0 (their sum need not be 1: the
+        shares are in proportion to them), for a model with a life to combine."""
+        if not any(o.cycle for o in self.model.outputs):
+            self.fail(key, f"a duty cycle combines rating lives, and {self.model.name!r} "
+                      "reports none: leave time_share out")
+        if not isinstance(raw, list) or not raw or not all(
+                isinstance(x, (int, float)) and not isinstance(x, bool) for x in raw):
+            self.fail(key, "expected a non-empty list of numbers, each load case's share of "
+                      "the duty cycle's time (in proportion: 0.25 or 25 or 6 h alike)")
+        for index, share in enumerate(raw):
+            if not (math.isfinite(share) and share >= 0):
+                self.fail(f"{key}[{index}]", f"{share!r}: a share of time is a finite number "
+                          ">= 0")
+        if not sum(raw) > 0:
+            self.fail(key, "every share is 0: give at least one load case a share of the time")
+        return [float(x) for x in raw]
 
     def check_labels(self, labels, key: str):
         """A zipped axis' labels: strings a file stores as written, or integers in order."""

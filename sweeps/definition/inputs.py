@@ -69,6 +69,10 @@ class ModelInputs:
                                                         fixed=True), "fixed"
         axis_reader = AxisReader(self.values, model, self.claim)
         axes = [axis_reader.axis(key, raw) for key, raw in axes_raw.items()]
+        cycles = [axis.name for axis in axes if axis.time_shares is not None]
+        if len(cycles) > 1:
+            self.fail(f"axes.{cycles[1]}.time_share", f"a second duty cycle (axes.{cycles[0]} "
+                      "is one): one zipped axis holds the load cases and their time shares")
         sample_raw = reader.table(table, "sample", None)
         samples = SampleReader(self.values, model, self.claim)
         sampled = samples.sampled(sample_raw)

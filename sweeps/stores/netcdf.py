@@ -17,6 +17,7 @@ from typing import TYPE_CHECKING
 import numpy as np
 
 from ..dependence import reductions
+from ..duty_cycle import cycle_names, stored_cycle
 from ..grid import Grid, block_shape
 from ..spec import Sweep
 from . import hdf5_chunks
@@ -136,7 +137,8 @@ class ChunkWriter:
             shape = np.shape(structure.data_vars[name][1])
             if shape:  # a scalar is stored whole, without chunks
                 structure.encodings[name]["chunksizes"] = points + shape[len(grid.shape):]
-        write_structure(structure, target, {o.name for o in grid.model.outputs} | {"status"})
+        write_structure(structure, target, {o.name for o in grid.model.outputs} | {"status"}
+                        | set(cycle_names(sweep)))
 
     def _structure(self):
         return structure(self.sweep, self.grid, self.provenance, sorted(self.errors))
@@ -153,6 +155,11 @@ class ChunkWriter:
         with writing(self.output):
             self.target.sync()  # the HDF5 chunks this completed are compressed now
 
+    def _stored(self, name: str) -> np.ndarray:
+        """The values of variable ``name`` as the file holds them, NaN where it has none."""
+        values = self.target.variables[name][...]
+        return np.ma.filled(values, np.nan) if values.dtype.kind == "f" else np.asarray(values)
+
     def reopen(self, target):
         """Go on with ``target``, the file opened again (its chunks written meanwhile)."""
         self.target = target
@@ -163,6 +170,9 @@ class ChunkWriter:
         for name, reduction in self.reduced.items():
             values = stored_reduction(reduction, reduction.output.dtype == "int")
             with writing(self.output):
+                self.target.variables[name][...] = values
+        with writing(self.output):
+            for name, values in stored_cycle(self.sweep, self.grid, self._stored).items():
                 self.target.variables[name][...] = values
         structure = self._structure()
         with writing(self.output):

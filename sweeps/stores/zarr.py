@@ -33,6 +33,7 @@ from pathlib import Path
 import numpy as np
 
 from ..dependence import reductions, split_reduced
+from ..duty_cycle import stored_cycle
 from ..grid import Grid, block_shape
 from ..spec import Sweep
 from .base import FileStore
@@ -196,6 +197,8 @@ class StoreParts(Parts):
         with writing(self.output):
             for name, reduction in reduced.items():
                 group[name][...] = stored_reduction(reduction, reduction.output.dtype == "int")
+            for name, values in stored_cycle(sweep, grid, lambda n: group[n][...]).items():
+                group[name][...] = values
             group.attrs.put(attribute_values(attributes))
             zarr.consolidate_metadata(str(self.store), zarr_format=ZARR_FORMAT)
             flush([self.store / ".zattrs", self.store / ".zmetadata", self.store])
