@@ -23,14 +23,16 @@ import numpy as np
 from .bearing_life import LIFE_INPUTS
 from .ball import DOF_UNITS, DOFS, MODELS as BALL_MODELS, STIFFNESS_UNITS
 from .cylindrical import MODELS as ROLLER_MODELS
-from .registry import (CONVERGED, INFEASIBLE, NOT_CONVERGED, OUT_OF_VALIDITY, Constraint,
-                       DimCoordinate, Input, Model, Output)
+from .registry import (CONVERGED, INFEASIBLE, NOT_CONVERGED, OUT_OF_VALIDITY, REQUIRED,
+                       Constraint, DimCoordinate, Input, Model, Output)
 from .life_combination import WEIBULL_SLOPES, system_life
 from .shaft import NODE_DOFS
 from .shaft_bearings import BallSupport, RollerSupport, solve_shaft_on_bearings
+from .shaft_tapered import TaperedSupport
+from .tapered import MODELS as TAPERED_MODELS
 
 #: The kinds of support a definition names in ``[supports.<name>] model``.
-SUPPORT_KINDS = ("ball_5dof", "crb_radial", "spring")
+SUPPORT_KINDS = ("ball_5dof", "crb_radial", "trb_load", "spring")
 #: Names of supports and loads: they prefix input names, so they are plain identifiers.
 NAME_PATTERN = r"[A-Za-z][A-Za-z0-9]*(_[A-Za-z0-9]+)*"
 
@@ -73,23 +75,37 @@ _ROLLER_GEOMETRY = ("roller_count", "pitch_diameter", "roller_diameter", "effect
                     "clearance", "crown", "crown_profile", "slices", "slice_law",
                     "outer_contact", "speed", "roller_density", "contact_constant",
                     "youngs_modulus", "poisson_ratio", "pressure_limit")
+#: The inputs of :func:`models.tapered.trb_load` that make a tapered roller bearing a
+#: support (its loads and displacements are the shaft's).
+_TAPERED_GEOMETRY = ("roller_count", "effective_length", "roller_mean_diameter",
+                     "outer_contact_angle", "pitch_diameter", "clearance", "contact_constant",
+                     "youngs_modulus", "poisson_ratio", "pressure_limit")
 #: Each rolling-element kind's support, the inputs it is built from, its Weibull slope.
 _BEARINGS = {"ball_5dof": (BallSupport, _BALL_GEOMETRY, WEIBULL_SLOPES["ball"]),
-             "crb_radial": (RollerSupport, _ROLLER_GEOMETRY, WEIBULL_SLOPES["roller"])}
+             "crb_radial": (RollerSupport, _ROLLER_GEOMETRY, WEIBULL_SLOPES["roller"]),
+             "trb_load": (TaperedSupport, _TAPERED_GEOMETRY, WEIBULL_SLOPES["roller"])}
+_AXIAL_DIRECTION = Input(
+    "axial_direction", "", "the direction of the shaft's thrust the bearing carries: "
+    "positive along x (as ball_5dof and trb_load take it), or negative (the bearing mounted "
+    "the other way round)", default="positive", kind="choice", choices=("positive", "negative"))
 #: Each kind of support's inputs, as one support's table names them.
 SUPPORT_INPUTS = {
     "ball_5dof": (replace(_POSITION, meaning="axial position of the bearing's centre along "
                           "the shaft, from its left end"),)
     + tuple(BALL_MODELS[0].input(name) for name in _BALL_GEOMETRY)
     + (next(spec for spec in LIFE_INPUTS if spec.name == "dynamic_load_rating"),)
-    + (Input("axial_direction", "", "the direction of the shaft's thrust the bearing "
-             "carries: positive along x (as ball_5dof takes it), or negative (the bearing "
-             "mounted the other way round)", default="positive", kind="choice",
-             choices=("positive", "negative")),),
+    + (_AXIAL_DIRECTION,),
     "crb_radial": (replace(_POSITION, meaning="axial position of the bearing's centre "
                            "along the shaft, from its left end"),)
     + tuple(ROLLER_MODELS[0].input(name) for name in _ROLLER_GEOMETRY)
     + (next(spec for spec in LIFE_INPUTS if spec.name == "dynamic_load_rating"),),
+    "trb_load": (replace(_POSITION, meaning="axial position of the bearing's centre along "
+                         "the shaft, from its left end"),)
+    + tuple(replace(TAPERED_MODELS[0].input(name), default=REQUIRED)
+            if name == "pitch_diameter" else TAPERED_MODELS[0].input(name)
+            for name in _TAPERED_GEOMETRY)
+    + (next(spec for spec in LIFE_INPUTS if spec.name == "dynamic_load_rating"),
+       _AXIAL_DIRECTION),
     "spring": (
         replace(_POSITION, meaning="axial position of the support along the shaft, from its "
                 "left end"),
@@ -145,6 +161,11 @@ def outputs(support_count: int, load_count: int) -> tuple[Output, ...]:
            "the whole system at each load's position (the inverse of its compliance there), in "
            "SI so that it is symmetric as stored", dims=("load", "load_dof", "dof"),
            entry_units=(STIFFNESS_UNITS,) * load_count, label="stiffness at the load"),
+    Output("support_stiffness", "N/m, N/rad, N, N*m/rad", "each support's own stiffness "
+           "matrix dF_i/dq_j at the equilibrium (a bearing's tangent, a spring's diagonal), in "
+           "SI so that it is symmetric as stored: a bearing's springs for a rotor-dynamics "
+           "model", dims=("support", "load_dof", "dof"),
+           entry_units=(STIFFNESS_UNITS,) * support_count, label="stiffness of the support"),
     Output("deflection", "um", "radial displacements v (y) and w (z) of the shaft's axis "
            "along its length, at the stations", dims=("position", "direction"),
            label="deflection"),
@@ -189,18 +210,21 @@ _SUMMARY = ("A stepped shaft on rolling bearings and linear supports under force
             "force-displacement law), the loads on each support, the shaft's deflection line.")
 _REFERENCE = ("Przemieniecki, Theory of Matrix Structural Analysis (1968), 5.6; paper 001, "
               "eq. 1-9 for the ball bearings; paper 000, eq. 1-10 for the cylindrical roller "
-              "bearings; Harris & Kotzalas, Rolling Bearing Analysis (2006), vol. 2, ch. 1")
+              "bearings; paper 003, eq. 13-18 for the tapered roller bearings; Harris & "
+              "Kotzalas, Rolling Bearing Analysis (2006), vol. 2, ch. 1")
 _VALIDITY = ("a bearing's solution outside its own model's validity (for ball_5dof: contact "
              "pressure above its pressure_limit, a ball's approach above 1 % of its diameter, "
              "the ring beyond the grooves, a ball on the cut-away side of its groove; for "
-             "crb_radial: contact pressure above its pressure_limit, a roller's approach above "
-             "2 % of its diameter). Not modelled: the shaft's torsion, the "
+             "crb_radial and trb_load: contact pressure above its pressure_limit, a roller's "
+             "approach above 2 % of its diameter). Not modelled: the shaft's torsion, the "
              "housings' compliance (give a spring for it), centrifugal and gyroscopic ball "
              "loads; a cylindrical roller bearing's moment against a tilt (crb_radial gives "
              "none) and its axial load (its rings slide), and the direction of its rollers "
              "against a radial displacement: it answers one in any direction as crb_radial "
-             "answers one along its load line.")
-_VERSION = "1"
+             "answers one along its load line; a tapered roller bearing's rollers tilted by "
+             "the shaft's slope (their load moves, its spread along them does not: trb_load "
+             "has no crown).")
+_VERSION = "2"
 
 
 def assemble(sections, supports, loads) -> Model:
@@ -346,6 +370,7 @@ def _solve(sections, supports, loads, values):
            "deflection": np.full((count, stations.size, 2), np.nan),
            "slope": np.full((count, stations.size, 2), np.nan),
            "stiffness_at_load": np.full((count, len(loads), NODE_DOFS, NODE_DOFS), np.nan),
+           "support_stiffness": np.full((count, len(names), NODE_DOFS, NODE_DOFS), np.nan),
            "status": np.full(count, NOT_CONVERGED, dtype=np.int8)}
     order = [names.index(n) for n in bearing_names] + [names.index(n) for n in springs]
     # The columns of ``linear``: the shaft's material, then the positions and the springs.
@@ -392,6 +417,8 @@ def _solve(sections, supports, loads, values):
                 column = names.index(name)
                 out["largest_contact_pressure"][solved_points, column] = \
                     bearing.largest_pressure(at_bearing, cases)
+                out["support_stiffness"][solved_points, column] = bearing.loads(
+                    at_bearing, cases)[1]
                 rating = values[f"supports_{name}_dynamic_load_rating"]
                 if rating is not None:
                     out["reference_rating_life"][solved_points, column] = \
@@ -405,6 +432,13 @@ def _solve(sections, supports, loads, values):
                                                axis=-1)  # dv/dx, dw/dx
         out["status"][solved_points] = CONVERGED | np.where(
             solved["bearing_outside_validity"][fine].any(axis=-1), OUT_OF_VALIDITY, 0)
+    solved = np.flatnonzero(np.isfinite(out["support_load"]).all(axis=(1, 2)))
+    diagonal = np.arange(NODE_DOFS)
+    for name in springs:  # a spring's stiffness: its own, at every point that is solved
+        stiffness = np.zeros((solved.size, NODE_DOFS, NODE_DOFS))
+        stiffness[:, diagonal, diagonal] = np.stack(
+            [every(f"supports_{name}_{field}")[solved] for field in spring_fields], axis=-1)
+        out["support_stiffness"][solved, names.index(name)] = stiffness
     turns = 2e6 * np.pi  # 10^6 revolutions [rad]
     lives = out["reference_rating_life"][:, [names.index(n) for n in bearing_names]]
     slopes = [_BEARINGS[supports[n]][2] for n in bearing_names]

@@ -1,6 +1,6 @@
 """A bearing's stiffness for a rotor-dynamics model: the coefficients over speed from a result
-of ``ball_5dof`` or ``crb_radial`` swept over speed, and ross ``BearingElement`` objects built
-from them.
+of ``ball_5dof``, ``crb_radial`` or ``shaft_system`` swept over speed, and ross
+``BearingElement`` objects built from them.
 
 ross (the optional extra ``ross``) takes a bearing as linear springs and dampers in the two
 lateral directions of its node, as functions of the rotor's speed. Its ``x`` and ``y`` are the
@@ -30,18 +30,24 @@ from .stores import open_result
 _LATERAL = ("radial_y", "radial_z")
 
 
-def bearing_coefficients(result: str | os.PathLike | xr.Dataset, speed: str = "speed") -> dict:
+def bearing_coefficients(result: str | os.PathLike | xr.Dataset, speed: str = "speed",
+                         support: str | None = None) -> dict:
     """The lateral stiffness of a bearing over speed.
 
     Parameters
     ----------
     result : path or xarray.Dataset
-        A result of ``ball_5dof`` or ``crb_radial`` whose only axis with more than one value
-        is ``speed`` (select one value of the others first: ``result.sel(axial_load=...)``).
-        A ``crb_radial`` bearing's load is along ``radial_y``: ``kxx`` is its stiffness
-        along the load, ``kyy`` the secant ``F / delta`` across it.
+        A result of ``ball_5dof``, ``crb_radial`` or ``shaft_system`` whose only axis with
+        more than one value is ``speed`` (select one value of the others first:
+        ``result.sel(axial_load=...)``). A ``crb_radial`` bearing's load is along
+        ``radial_y``: ``kxx`` is its stiffness along the load, ``kyy`` the secant
+        ``F / delta`` across it. A ``shaft_system``'s bearing is its ``support``, with its
+        stiffness at the system's equilibrium (``support_stiffness``).
     speed : str
-        The speed's dimension.
+        The speed's dimension (a shaft system's: its roller bearings' speed axis, such as
+        ``supports_rear_speed``, or a zipped axis holding their speeds).
+    support : str, optional
+        The support of a ``shaft_system`` result.
 
     Returns
     -------
@@ -57,6 +63,11 @@ def bearing_coefficients(result: str | os.PathLike | xr.Dataset, speed: str = "s
         than two speeds, or a speed whose point has no stiffness (not converged).
     """
     data = result if isinstance(result, xr.Dataset) else open_result(result)
+    if data.attrs.get("model") == "shaft_system":
+        data = _support_matrix(data, support)
+    elif support is not None:
+        raise ValueError("support names a shaft system's support; this result is of "
+                         f"{data.attrs.get('model', 'another model')}")
     if data.attrs.get("model") == "crb_radial" and "radial_stiffness" in data:
         data = _roller_matrix(data)
     if "stiffness_matrix" not in data or speed not in data["stiffness_matrix"].dims:
@@ -91,6 +102,20 @@ def bearing_coefficients(result: str | os.PathLike | xr.Dataset, speed: str = "s
     return {"frequency": speeds[order], **terms}
 
 
+def _support_matrix(data: xr.Dataset, support: str | None) -> xr.Dataset:
+    """A ``shaft_system`` result with its ``support``'s stiffness as a ``stiffness_matrix``."""
+    names = [str(name) for name in data["support"].values]
+    if support not in names:
+        raise ValueError(f"support {support!r} is not one of the shaft's: "
+                         f"{', '.join(names)} (bearing_coefficients(result, support=...))")
+    if "support_stiffness" not in data:
+        raise ValueError("the shaft system's result holds no support_stiffness (a result of "
+                         "an earlier version: run it again)")
+    chosen = data.sel(support=support)
+    return chosen.assign(stiffness_matrix=chosen["support_stiffness"],
+                         stiffness_matrix_units=chosen["support_stiffness_units"])
+
+
 def _roller_matrix(data: xr.Dataset) -> xr.Dataset:
     """A ``crb_radial`` result with its lateral stiffness as a ``stiffness_matrix`` [N/m]:
     along the load ``dF/d(delta)``, across it ``F / delta``."""
@@ -111,12 +136,12 @@ def _roller_matrix(data: xr.Dataset) -> xr.Dataset:
 
 
 def bearing_element(result: str | os.PathLike | xr.Dataset, node: int, damping: float = 0.0,
-                    speed: str = "speed", **options):
+                    speed: str = "speed", support: str | None = None, **options):
     """A ross ``BearingElement`` at ``node`` with the bearing's stiffness over speed.
 
     Parameters
     ----------
-    result, speed
+    result, speed, support
         As :func:`bearing_coefficients` takes them.
     node : int
         The rotor's node the bearing sits at.
@@ -126,7 +151,7 @@ def bearing_element(result: str | os.PathLike | xr.Dataset, node: int, damping: 
         Passed to ``ross.BearingElement`` (``tag``, ``scale_factor``, ...).
     """
     ross = _ross()
-    coefficients = bearing_coefficients(result, speed)
+    coefficients = bearing_coefficients(result, speed, support)
     count = coefficients["frequency"].size
     return ross.BearingElement(n=node, kxx=coefficients["kxx"], kyy=coefficients["kyy"],
                                kxy=coefficients["kxy"], kyx=coefficients["kyx"],

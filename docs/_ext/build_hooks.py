@@ -7,6 +7,7 @@ from pathlib import Path
 
 from sphinx.util import logging
 
+import campbell
 import doc_examples
 import generated_pages
 
@@ -23,7 +24,9 @@ def hand_written_pages(docs: Path) -> list[str]:
 
 
 def _generate(app) -> None:
-    generated_pages.write_all(Path(app.srcdir) / "generated")
+    generated = Path(app.srcdir) / "generated"
+    generated_pages.write_all(generated)
+    campbell.campbell_figure(generated / "campbell.png")
 
 
 def _run_examples(app) -> None:

@@ -106,6 +106,12 @@ def test_a_bearing_on_the_shaft_is_the_bearing_ball_5dof_solves_under_the_same_l
     assert result["reference_rating_life"][0] == pytest.approx(
         np.ravel(alone["reference_rating_life"])[0], rel=1e-6)
     assert np.isnan(result["reference_rating_life"][1])
+    # the bearing's own stiffness at that equilibrium, a rotor-dynamics model's springs
+    np.testing.assert_allclose(result["support_stiffness"][0],
+                               np.asarray(alone["stiffness_matrix"]).reshape(5, 5),
+                               rtol=1e-5, atol=1e-6 * np.abs(alone["stiffness_matrix"]).max())
+    np.testing.assert_array_equal(result["support_stiffness"][1],
+                                  np.diag([0.0, 1e9, 1e9, 0.0, 0.0]))
 
 
 def test_the_system_s_life_is_the_weibull_combination_of_its_bearings_lives():
@@ -262,6 +268,15 @@ def test_a_roller_bearing_on_the_shaft_is_the_one_crb_radial_solves_under_its_lo
         np.ravel(alone["largest_contact_pressure"])[0], rel=1e-6)
     assert result["reference_rating_life"][1] == pytest.approx(
         np.ravel(alone["reference_rating_life"])[0], rel=1e-6)
+    # Its stiffness: crb_radial's along the displacement, the secant F / delta across it.
+    stiffness = result["support_stiffness"][1][1:3, 1:3]
+    along = moved[1:3] / np.hypot(moved[1], moved[2])
+    normal = np.array([-along[1], along[0]])
+    assert along @ stiffness @ along == pytest.approx(
+        np.ravel(alone["radial_stiffness"])[0], rel=1e-6)
+    assert normal @ stiffness @ normal == pytest.approx(
+        radial / np.hypot(moved[1], moved[2]), rel=1e-6)
+    assert along @ stiffness @ normal == pytest.approx(0.0, abs=1e-9 * np.abs(stiffness).max())
     # a ball and a roller bearing: sum (L / L_i)^e_i = 1 with their own slopes
     lives, slopes = result["reference_rating_life"], np.array([10 / 9, 9 / 8])
     assert np.sum((result["system_reference_life"] / lives) ** slopes) == pytest.approx(

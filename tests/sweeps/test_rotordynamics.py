@@ -51,6 +51,51 @@ def test_a_roller_bearing_s_coefficients_are_its_stiffness_along_and_its_secant_
     assert (coefficients["kyy"] < coefficients["kxx"]).all()  # a stiffening contact law
 
 
+#: A shaft on a ball bearing at its front and a cylindrical roller bearing at its rear.
+SHAFT = """
+[sweep]
+model = "shaft_system"
+[shaft]
+sections = [{ length = "300 mm", diameter = "45 mm" }]
+[supports.front]
+model = "ball_5dof"
+bearing = "paper001-71807AC"
+position = "30 mm"
+[supports.rear]
+model = "crb_radial"
+bearing = "paper000-D"
+position = "270 mm"
+clearance = "10 um"
+[loads.gear]
+position = "200 mm"
+force_x = "300 N"
+force_y = "4 kN"
+[axes]
+"supports.rear.speed" = ["2000 rpm", "6000 rpm", "10000 rpm", "14000 rpm", "18000 rpm"]
+"""
+
+
+def test_a_shaft_system_s_bearings_give_their_own_stiffness_at_its_equilibrium():
+    system = bearing_sweep.run(SHAFT, workers=0, progress=False)
+    rear = bearing_coefficients(system, speed="supports_rear_speed", support="rear")
+    np.testing.assert_allclose(rear["frequency"],
+                               np.array([2000, 6000, 10000, 14000, 18000]) * math.pi / 30,
+                               rtol=1e-12)
+    stiffness = system.support_stiffness.sel(support="rear")
+    np.testing.assert_array_equal(rear["kxx"], stiffness.sel(load_dof="radial_y",
+                                                             dof="radial_y").values)
+    # The rollers' centrifugal force presses every one on the outer ring: those contacts,
+    # preloaded, are stiffer, and so is the bearing at the same load.
+    assert (np.diff(rear["kxx"]) > 0).all()
+    front = bearing_coefficients(system, speed="supports_rear_speed", support="front")
+    assert front["kxx"].min() > 0 and np.isfinite(front["kyx"]).all()
+    with pytest.raises(ValueError, match="not one of the shaft's: front, rear"):
+        bearing_coefficients(system, speed="supports_rear_speed", support="middle")
+    with pytest.raises(ValueError, match="names a shaft system's support"):
+        bearing_coefficients(bearing_sweep.run(DEFINITION, workers=0, progress=False),
+                             support="rear")
+
+
 def test_a_result_with_another_axis_or_without_speeds_is_refused_in_a_line(swept):
     with pytest.raises(ValueError, match="select one value"):
         bearing_coefficients(swept.expand_dims(axial_load=[1.0, 2.0]))
