@@ -26,8 +26,10 @@ from .cylindrical import MODELS as ROLLER_MODELS
 from .registry import (CONVERGED, INFEASIBLE, NOT_CONVERGED, OUT_OF_VALIDITY, REQUIRED,
                        Constraint, DimCoordinate, Input, Model, Output)
 from .life_combination import WEIBULL_SLOPES, system_life
+from .limits import SPEED_VALIDITY, beyond_speed_factor
 from .shaft import NODE_DOFS
 from .shaft_bearings import BallSupport, RollerSupport, solve_shaft_on_bearings
+from .shaft_mounting import SUPPORT_OPERATING_INPUTS, mounted, support_constraints
 from .shaft_tapered import TaperedSupport
 from .tapered import MODELS as TAPERED_MODELS
 
@@ -56,6 +58,9 @@ SHAFT_INPUTS = (
     Input("gravity_y", "m/s^2", "acceleration of gravity along y (-9.81 for a horizontal "
           "shaft whose y points up)", default=0.0),
     Input("gravity_z", "m/s^2", "acceleration of gravity along z", default=0.0),
+    Input("speed", "rpm", "speed of the shaft and its bearings' inner rings: the rollers' "
+          "centrifugal force, the inner rings' centrifugal growth", default=0.0, minimum=0.0,
+          label="shaft speed"),
     Input("station_count", "1", "number of stations, evenly spaced from the shaft's left end "
           "to its right end, where the deflection line is reported", default=21, kind="count",
           minimum=2, maximum=2001),
@@ -73,7 +78,7 @@ _BALL_GEOMETRY = ("ball_count", "ball_diameter", "pitch_diameter", "contact_angl
 #: bearing a support (its radial load and displacement are the shaft's).
 _ROLLER_GEOMETRY = ("roller_count", "pitch_diameter", "roller_diameter", "effective_length",
                     "clearance", "crown", "crown_profile", "slices", "slice_law",
-                    "outer_contact", "speed", "roller_density", "contact_constant",
+                    "outer_contact", "roller_density", "contact_constant",
                     "youngs_modulus", "poisson_ratio", "pressure_limit")
 #: The inputs of :func:`models.tapered.trb_load` that make a tapered roller bearing a
 #: support (its loads and displacements are the shaft's).
@@ -92,18 +97,18 @@ _AXIAL_DIRECTION = Input(
 SUPPORT_INPUTS = {
     "ball_5dof": (replace(_POSITION, meaning="axial position of the bearing's centre along "
                           "the shaft, from its left end"),)
-    + tuple(BALL_MODELS[0].input(name) for name in _BALL_GEOMETRY)
+    + tuple(BALL_MODELS[0].input(name) for name in _BALL_GEOMETRY) + SUPPORT_OPERATING_INPUTS
     + (next(spec for spec in LIFE_INPUTS if spec.name == "dynamic_load_rating"),)
     + (_AXIAL_DIRECTION,),
     "crb_radial": (replace(_POSITION, meaning="axial position of the bearing's centre "
                            "along the shaft, from its left end"),)
-    + tuple(ROLLER_MODELS[0].input(name) for name in _ROLLER_GEOMETRY)
+    + tuple(ROLLER_MODELS[0].input(name) for name in _ROLLER_GEOMETRY) + SUPPORT_OPERATING_INPUTS
     + (next(spec for spec in LIFE_INPUTS if spec.name == "dynamic_load_rating"),),
     "trb_load": (replace(_POSITION, meaning="axial position of the bearing's centre along "
                          "the shaft, from its left end"),)
     + tuple(replace(TAPERED_MODELS[0].input(name), default=REQUIRED)
             if name == "pitch_diameter" else TAPERED_MODELS[0].input(name)
-            for name in _TAPERED_GEOMETRY)
+            for name in _TAPERED_GEOMETRY) + SUPPORT_OPERATING_INPUTS
     + (next(spec for spec in LIFE_INPUTS if spec.name == "dynamic_load_rating"),
        _AXIAL_DIRECTION),
     "spring": (
@@ -149,6 +154,10 @@ def outputs(support_count: int, load_count: int) -> tuple[Output, ...]:
            "bearing, ISO/TS 16281, from its ball or lamina loads, the inner ring rotating; "
            "millions of revolutions, NaN for a spring or without a dynamic_load_rating",
            dims=("support",), label="reference rating life L10r", cycle="revolutions"),
+    Output("operating_clearance", "um", "each bearing's diametral clearance as mounted: "
+           "its clearance changed by its fits, temperatures and the inner ring's speed "
+           "(negative: a preload; NaN for a spring)", dims=("support",),
+           label="operating clearance"),
     Output("system_reference_life", "Mturn", "reference rating life of the bearings "
            "together, the system failing with its first bearing: sum (L/L10r_i)^e = 1 with "
            "Weibull slopes e = 10/9 for ball and 9/8 for roller bearings (Lundberg and "
@@ -177,7 +186,7 @@ def outputs(support_count: int, load_count: int) -> tuple[Output, ...]:
 
 
 def _shaft_template(shaft_youngs_modulus=210e9, shaft_poisson_ratio=0.3, shaft_density=7850.0,
-                    gravity_x=0.0, gravity_y=0.0, gravity_z=0.0, station_count=21):
+                    gravity_x=0.0, gravity_y=0.0, gravity_z=0.0, speed=0.0, station_count=21):
     """The inputs every shaft system shares; the system itself is built by :func:`assemble`
     from its definition's ``[shaft]``, ``[supports]`` and ``[loads]`` tables, and computed
     by the model that builds.
@@ -192,6 +201,9 @@ def _shaft_template(shaft_youngs_modulus=210e9, shaft_poisson_ratio=0.3, shaft_d
         Density of the shaft, for its own weight [kg/m^3].
     gravity_x, gravity_y, gravity_z : float
         Acceleration of gravity along x, y and z [m/s^2] (0: no weight).
+    speed : float
+        Speed of the shaft and its bearings' inner rings [rad/s]: the rollers' centrifugal
+        force, the inner rings' centrifugal growth.
     station_count : int
         Number of stations, evenly spaced from the shaft's left end to its right end, where
         the deflection line is reported [-].
@@ -216,7 +228,9 @@ _VALIDITY = ("a bearing's solution outside its own model's validity (for ball_5d
              "pressure above its pressure_limit, a ball's approach above 1 % of its diameter, "
              "the ring beyond the grooves, a ball on the cut-away side of its groove; for "
              "crb_radial and trb_load: contact pressure above its pressure_limit, a roller's "
-             "approach above 2 % of its diameter). Not modelled: the shaft's torsion, the "
+             "approach above 2 % of its diameter); a ring whose fit is lost at temperature "
+             "or speed; for a bearing, " + SPEED_VALIDITY + ". Not modelled: the shaft's "
+             "torsion, the "
              "housings' compliance (give a spring for it), centrifugal and gyroscopic ball "
              "loads; a cylindrical roller bearing's moment against a tilt (crb_radial gives "
              "none) and its axial load (its rings slide), and the direction of its rollers "
@@ -224,7 +238,7 @@ _VALIDITY = ("a bearing's solution outside its own model's validity (for ball_5d
              "answers one along its load line; a tapered roller bearing's rollers tilted by "
              "the shaft's slope (their load moves, its spread along them does not: trb_load "
              "has no crown).")
-_VERSION = "2"
+_VERSION = "3"
 
 
 def assemble(sections, supports, loads) -> Model:
@@ -300,7 +314,8 @@ def assemble(sections, supports, loads) -> Model:
                        f"between 0 and its length {length * 1e3:g} mm"),
             Constraint(positions[:len(supports)], apart, "two supports at one position: "
                        "give one support the stiffness of both"),
-        ),
+        ) + tuple(constraint for name, kind in supports.items() if kind in _BEARINGS
+                  for constraint in support_constraints(sections, name, kind)),
         seconds_per_point=2e-4, points_per_call=1000, validity=_VALIDITY,
         cycle_combinations={"system_reference_life": system_over_cycle})
 
@@ -371,6 +386,7 @@ def _solve(sections, supports, loads, values):
            "slope": np.full((count, stations.size, 2), np.nan),
            "stiffness_at_load": np.full((count, len(loads), NODE_DOFS, NODE_DOFS), np.nan),
            "support_stiffness": np.full((count, len(names), NODE_DOFS, NODE_DOFS), np.nan),
+           "operating_clearance": np.full((count, len(names)), np.nan),
            "status": np.full(count, NOT_CONVERGED, dtype=np.int8)}
     order = [names.index(n) for n in bearing_names] + [names.index(n) for n in springs]
     # The columns of ``linear``: the shaft's material, then the positions and the springs.
@@ -382,12 +398,31 @@ def _solve(sections, supports, loads, values):
         members = np.flatnonzero(group_of.ravel() == group)
         first = linear[members[0]]
         bearings = []
+        fit_lost = np.zeros(members.size, dtype=bool)
         for name in bearing_names:
             kind, fields, _ = _BEARINGS[supports[name]]
-            given = {field: values[f"supports_{name}_{field}"] for field in fields}
-            bearing = kind(**{field: value if isinstance(value, str) or value is None
-                              or np.ndim(value) == 0 else value[members]
-                              for field, value in given.items()}, cases=members.size)
+
+            def given(field, name=name):
+                value = values[f"supports_{name}_{field}"]
+                return value if isinstance(value, str) or value is None \
+                    or np.ndim(value) == 0 else value[members]
+
+            def numbers(field, name=name):
+                value = values[f"supports_{name}_{field}"]
+                return np.broadcast_to(np.nan if value is None else value, (count,))[members]
+
+            clearance = mounted(sections, name, supports[name], numbers,
+                                every("shaft_youngs_modulus")[members],
+                                every("shaft_poisson_ratio")[members], every("speed")[members])
+            fit_lost |= clearance["fit_lost"] | beyond_speed_factor(
+                every("speed")[members], numbers("pitch_diameter"))
+            out["operating_clearance"][members, names.index(name)] = \
+                clearance["operating_clearance"]
+            chosen = {field: given(field) for field in fields}
+            chosen["clearance"] = clearance["operating_clearance"]
+            if supports[name] == "crb_radial":
+                chosen["speed"] = every("speed")[members]
+            bearing = kind(**chosen, cases=members.size)
             bearings.append(_Mirrored(bearing) if values.get(
                 f"supports_{name}_axial_direction") == "negative" else bearing)
         try:
@@ -399,7 +434,7 @@ def _solve(sections, supports, loads, values):
                 own_weight=(every("shaft_density")[members], np.stack(
                     [every(f"gravity_{axis}")[members] for axis in "xyz"], axis=-1)))
         except ValueError:  # the shaft's system cannot be put together at these inputs
-            out["status"][members] = INFEASIBLE
+            out["status"][members] = INFEASIBLE | np.where(fit_lost, OUT_OF_VALIDITY, 0)
             continue
         fine = solved["converged"]
         solved_points = members[fine]
@@ -432,6 +467,9 @@ def _solve(sections, supports, loads, values):
                                                axis=-1)  # dv/dx, dw/dx
         out["status"][solved_points] = CONVERGED | np.where(
             solved["bearing_outside_validity"][fine].any(axis=-1), OUT_OF_VALIDITY, 0)
+        # A ring whose fit is lost may creep, a bearing may run faster than any does:
+        # outside validity, whatever the outcome.
+        out["status"][members[fit_lost]] |= OUT_OF_VALIDITY
     solved = np.flatnonzero(np.isfinite(out["support_load"]).all(axis=(1, 2)))
     diagonal = np.arange(NODE_DOFS)
     for name in springs:  # a spring's stiffness: its own, at every point that is solved

@@ -44,8 +44,7 @@ def bearing_coefficients(result: str | os.PathLike | xr.Dataset, speed: str = "s
         ``F / delta`` across it. A ``shaft_system``'s bearing is its ``support``, with its
         stiffness at the system's equilibrium (``support_stiffness``).
     speed : str
-        The speed's dimension (a shaft system's: its roller bearings' speed axis, such as
-        ``supports_rear_speed``, or a zipped axis holding their speeds).
+        The speed's dimension.
     support : str, optional
         The support of a ``shaft_system`` result.
 

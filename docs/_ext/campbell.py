@@ -3,13 +3,15 @@ roller bearing, solved by ``shaft_system`` over the speed, its bearings' stiffne
 speed given to ross as ``BearingElement`` objects, and ross's damped natural frequencies drawn
 against the speed.
 
-ross prints and warns as it imports (its dependency ccp looks for a REFPROP library): both are
-kept from the build's output here, and nothing of the caller's warning filters changes.
+ross prints and warns as it imports (its dependency ccp looks for a REFPROP library, from C
+and from Python): both are kept from the build's output here, and the caller's warning
+filters are as they were after it.
 """
 from __future__ import annotations
 
 import contextlib
-import io
+import os
+import sys
 import warnings
 from pathlib import Path
 
@@ -17,7 +19,7 @@ import numpy as np
 
 #: The rotor: a 600 mm shaft of 40 mm, a preloaded angular contact ball bearing at 50 mm and a
 #: cylindrical roller bearing at 550 mm (each at a node of the 50 mm ross elements), a gear's
-#: load between them; the roller bearing's speed swept, as its stiffness depends on it.
+#: load between them; the shaft's speed swept (its roller bearing's stiffness depends on it).
 DEFINITION = """
 [sweep]
 model = "shaft_system"
@@ -39,11 +41,10 @@ position = "300 mm"
 force_x = "300 N"
 force_y = "2 kN"
 [axes]
-"supports.rear.speed" = { start = "1000 rpm", stop = "30000 rpm", num = 11 }
+speed = { start = "1000 rpm", stop = "30000 rpm", num = 11 }
 """
 #: The ross model: elements, the bearings' nodes, the damping given to each [m, N s/m].
 ELEMENT_LENGTH, DIAMETER, NODES, DAMPING = 0.05, 0.04, {"front": 1, "rear": 11}, 200.0
-SPEED = "supports_rear_speed"
 
 
 def campbell_figure(path: Path) -> Path:
@@ -53,15 +54,15 @@ def campbell_figure(path: Path) -> Path:
     from bearing_sweep.rotordynamics import bearing_coefficients, bearing_element
 
     system = bearing_sweep.run(DEFINITION, workers=0, progress=False)
-    swept = bearing_coefficients(system, speed=SPEED, support="rear")["frequency"]
+    swept = bearing_coefficients(system, support="rear")["frequency"]
     speeds = np.linspace(swept[0], swept[-1], 30)  # rad/s, within the sweep's speeds
-    with warnings.catch_warnings(), contextlib.redirect_stdout(io.StringIO()):
+    with warnings.catch_warnings(), _descriptors_silenced():
         warnings.simplefilter("ignore")
         import ross
         steel = ross.Material(name="docs_steel", rho=7850, E=210e9, G_s=81e9)
         shaft = [ross.ShaftElement(L=ELEMENT_LENGTH, idl=0.0, odl=DIAMETER, material=steel)
                  for _ in range(12)]
-        bearings = [bearing_element(system, node, damping=DAMPING, speed=SPEED, support=name)
+        bearings = [bearing_element(system, node, damping=DAMPING, support=name)
                     for name, node in NODES.items()]
         rotor = ross.Rotor(shaft, [], bearings)
         campbell = rotor.run_campbell(speeds, frequencies=4)
@@ -95,3 +96,24 @@ def campbell_figure(path: Path) -> Path:
     axis.legend(fontsize=8, loc="center left")
     save(figure, path.parent, path.name)
     return path
+
+
+@contextlib.contextmanager
+def _descriptors_silenced():
+    """The process' standard output and error sent to the null device for the block (a C
+    library's prints too), then restored."""
+    sys.stdout.flush()
+    sys.stderr.flush()
+    saved = [os.dup(1), os.dup(2)]
+    try:
+        with open(os.devnull, "w") as null:
+            os.dup2(null.fileno(), 1)
+            os.dup2(null.fileno(), 2)
+            yield
+    finally:
+        sys.stdout.flush()
+        sys.stderr.flush()
+        os.dup2(saved[0], 1)
+        os.dup2(saved[1], 2)
+        for descriptor in saved:
+            os.close(descriptor)

@@ -106,6 +106,6 @@ def test_every_dimensionless_coefficient_has_a_valid_range():
 
 def test_every_model_that_takes_a_speed_states_its_limit():
     models = [m for m in _own_models() if any(i.name == "speed" for i in m.inputs)]
-    assert len(models) == 6
+    assert len(models) == 7
     for model in models:
         assert "n dm above 4e6" in model.validity, model.name

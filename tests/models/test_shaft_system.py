@@ -6,6 +6,8 @@ import pytest
 from bearing_sweep.models.ball import ball_5dof
 from bearing_sweep.models.cylindrical import crb_radial
 from bearing_sweep.models.registry import CONVERGED, OUT_OF_VALIDITY, outcome
+from bearing_sweep.definition.values import default_value
+from bearing_sweep.models.shaft_mounting import SUPPORT_OPERATING_INPUTS
 from bearing_sweep.models.shaft_system import assemble
 
 #: The 71807AC of paper 001 (Table 1), in SI, with the paper's contact constant.
@@ -15,6 +17,9 @@ BEARING = {"ball_count": 25, "ball_diameter": 3.14e-3, "pitch_diameter": 41e-3,
            "poisson_ratio": 0.3, "contact_constant": 1.0649e10, "geometry": "jones",
            "pressure_limit": 4.2e9, "dynamic_load_rating": 4150.0}
 LOAD = {"force_x": 0.0, "force_y": 0.0, "force_z": 0.0, "moment_y": 0.0, "moment_z": 0.0}
+#: A bearing's fits and temperatures, at their defaults unless a test gives them: unmounted,
+#: at 20 degC.
+MOUNTING = {spec.name for spec in SUPPORT_OPERATING_INPUTS}
 
 
 def solve(sections, supports, loads, **values):
@@ -22,13 +27,16 @@ def solve(sections, supports, loads, **values):
     inputs (a support's with ``kind``), in SI."""
     model = assemble(sections, {name: s["kind"] for name, s in supports.items()}, list(loads))
     given = {"shaft_youngs_modulus": 210e9, "shaft_poisson_ratio": 0.3, "station_count": 21,
-             "shaft_density": 7850.0, "gravity_x": 0.0, "gravity_y": 0.0, "gravity_z": 0.0}
+             "shaft_density": 7850.0, "gravity_x": 0.0, "gravity_y": 0.0, "gravity_z": 0.0,
+             "speed": 0.0}
     given |= values
     for name, support in supports.items():
         given |= {f"supports_{name}_{key}": value for key, value in support.items()
                   if key != "kind"}
     for name, load in loads.items():
         given |= {f"loads_{name}_{key}": value for key, value in (LOAD | load).items()}
+    given |= {spec.name: default_value(spec).si for spec in model.inputs
+              if spec.name not in given and spec.name.split("_", 2)[-1] in MOUNTING}
     assert {i.name for i in model.inputs} == set(given)
     return {key: np.asarray(value)[0] for key, value in model.function(**given).items()}
 
@@ -112,6 +120,50 @@ def test_a_bearing_on_the_shaft_is_the_bearing_ball_5dof_solves_under_the_same_l
                                rtol=1e-5, atol=1e-6 * np.abs(alone["stiffness_matrix"]).max())
     np.testing.assert_array_equal(result["support_stiffness"][1],
                                   np.diag([0.0, 1e9, 1e9, 0.0, 0.0]))
+
+
+def test_a_bearing_mounted_on_the_shaft_has_the_clearance_ball_5dof_gives_it_mounted():
+    # A 10 um shaft fit, the rings at 45 and 30 degC, the shaft hollow where the bearing
+    # sits (its second section): ball_5dof with the same fits and the shaft's bore and
+    # material gives the same operating clearance, and the same equilibrium.
+    mounting = {"shaft_fit": 10e-6, "bore": 35e-3, "outside_diameter": 47e-3,
+                "inner_ring_temperature": 318.15, "outer_ring_temperature": 303.15}
+    result = solve([(0.02, 0.04, 0.0), (0.18, 0.035, 0.01)],
+                   {"A": ball(0.1, clearance=-2e-6, **mounting),
+                    "B": spring(0.19, 1e9, axial=0.0)},
+                   {"gear": {"position": 0.15, "force_x": 500.0, "force_y": 2e3}},
+                   speed=2 * np.pi * 6000 / 60)
+    assert outcome(result["status"]) == CONVERGED
+    load = result["support_load"][0]
+    alone = ball_5dof(**{k: v for k, v in BEARING.items() if k != "pressure_limit"} | {
+        "clearance": -2e-6}, **mounting, shaft_bore=0.01, shaft_youngs_modulus=210e9,
+                      shaft_poisson_ratio=0.3, speed=2 * np.pi * 6000 / 60,
+                      axial_load=load[0], radial_load=load[1], radial_load_z=load[2],
+                      moment_y=load[3], moment_z=load[4])
+    assert result["operating_clearance"][0] == pytest.approx(
+        np.ravel(alone["operating_clearance"])[0], rel=1e-12)
+    assert result["operating_clearance"][0] < -2e-6  # the fit and the warm inner ring
+    assert result["support_displacement"][0] == pytest.approx(
+        np.asarray(alone["displacement"]).ravel(), rel=1e-6, abs=1e-12)
+    assert np.isnan(result["operating_clearance"][1])  # a spring has none
+
+
+def test_an_unmounted_bearing_at_rest_and_20_degc_keeps_its_clearance_exactly():
+    result = solve([(0.2, 0.04, 0.0)], {"A": ball(0.02, clearance=7e-6),
+                                        "B": spring(0.18, 1e9, axial=1e8)},
+                   {"gear": {"position": 0.1, "force_y": 1e3}})
+    assert result["operating_clearance"][0] == 7e-6
+
+
+def test_a_fit_lost_at_temperature_flags_the_point():
+    # A light shaft fit, the shaft much warmer than the ring: the fit opens; the ring may
+    # creep on its seat, so the point is out of validity, its values kept.
+    result = solve([(0.2, 0.04, 0.0)],
+                   {"A": ball(0.02, shaft_fit=2e-6, bore=35e-3, shaft_temperature=293.15,
+                              inner_ring_temperature=353.15),
+                    "B": spring(0.18, 1e9, axial=1e8)},
+                   {"gear": {"position": 0.1, "force_y": 1e3}})
+    assert result["status"] & OUT_OF_VALIDITY and np.isfinite(result["support_load"]).all()
 
 
 def test_the_system_s_life_is_the_weibull_combination_of_its_bearings_lives():
@@ -238,7 +290,7 @@ def test_the_stiffness_at_a_load_is_the_derivative_of_the_equilibrium():
 ROLLERS = {"roller_count": 14, "pitch_diameter": 65e-3, "roller_diameter": 10e-3,
            "effective_length": 9.6e-3, "clearance": 10e-6, "crown": 4e-6,
            "crown_profile": "logarithmic", "slices": 60, "slice_law": "uniform",
-           "outer_contact": "crowned", "speed": 0.0, "roller_density": 7850.0,
+           "outer_contact": "crowned", "roller_density": 7850.0,
            "contact_constant": None, "youngs_modulus": 207e9, "poisson_ratio": 0.3,
            "pressure_limit": 4.0e9, "dynamic_load_rating": 48e3}
 
@@ -246,18 +298,18 @@ ROLLERS = {"roller_count": 14, "pitch_diameter": 65e-3, "roller_diameter": 10e-3
 @pytest.mark.parametrize("speed", [0.0, 2 * np.pi * 12000 / 60])
 def test_a_roller_bearing_on_the_shaft_is_the_one_crb_radial_solves_under_its_load(speed):
     # Spinning, the rollers' centrifugal force loads the outer contacts more than the inner.
-    rollers = ROLLERS | {"speed": speed}
+    rollers = ROLLERS
     result = solve([(0.3, 0.045, 0.0)],
                    {"front": ball(0.03), "rear": {"kind": "crb_radial", "position": 0.27,
                                                   **rollers}},
                    {"gear": {"position": 0.2, "force_x": 300.0, "force_y": 4e3,
-                             "force_z": 1.5e3}})
+                             "force_z": 1.5e3}}, speed=speed)
     assert outcome(result["status"]) == CONVERGED
     on_rear = result["support_load"][1]
     assert on_rear[[0, 3, 4]] == pytest.approx(0.0, abs=1e-9)  # no thrust, no moment
     radial = float(np.hypot(on_rear[1], on_rear[2]))
-    alone = crb_radial(radial_load=radial, **{k: v for k, v in rollers.items()
-                                               if k != "pressure_limit"})
+    alone = crb_radial(radial_load=radial, speed=speed, **{
+        k: v for k, v in rollers.items() if k != "pressure_limit"})
     moved = result["support_displacement"][1]
     assert np.hypot(moved[1], moved[2]) == pytest.approx(
         np.ravel(alone["radial_displacement"])[0], rel=1e-7)

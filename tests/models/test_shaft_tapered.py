@@ -4,10 +4,13 @@ differences and against statics on a shaft."""
 import numpy as np
 import pytest
 
+from bearing_sweep.definition.values import default_value
 from bearing_sweep.models.registry import CONVERGED, OUT_OF_VALIDITY, outcome
+from bearing_sweep.models.shaft_mounting import SUPPORT_OPERATING_INPUTS
 from bearing_sweep.models.shaft_tapered import TaperedSupport
 from bearing_sweep.models.tapered import trb_load
 
+MOUNTING = {spec.name for spec in SUPPORT_OPERATING_INPUTS}
 #: Paper 003's bearing (Table 1), in SI, with eq. 14's contact constant.
 TAPERED = {"roller_count": 16, "effective_length": 21.5e-3, "roller_mean_diameter": 13.71e-3,
            "outer_contact_angle": np.radians(28.0), "pitch_diameter": 79.537e-3}
@@ -67,7 +70,8 @@ def system(loads, clearance=0.0, **values):
     model = assemble(np.array([(0.3, 0.045, 0.0)]), {"A": "trb_load", "B": "trb_load"},
                      list(loads))
     given = {"shaft_youngs_modulus": 210e9, "shaft_poisson_ratio": 0.3, "station_count": 5,
-             "shaft_density": 7850.0, "gravity_x": 0.0, "gravity_y": 0.0, "gravity_z": 0.0}
+             "shaft_density": 7850.0, "gravity_x": 0.0, "gravity_y": 0.0, "gravity_z": 0.0,
+             "speed": 0.0}
     for name, position, direction in (("A", 0.05, "positive"), ("B", 0.25, "negative")):
         given |= {f"supports_{name}_{key}": value for key, value in TAPERED.items()}
         given |= {f"supports_{name}_position": position, f"supports_{name}_clearance": clearance,
@@ -80,6 +84,8 @@ def system(loads, clearance=0.0, **values):
     for name, load in loads.items():
         given |= {f"loads_{name}_{key}": load.get(key, 0.0) for key in
                   ("position", "force_x", "force_y", "force_z", "moment_y", "moment_z")}
+    given |= {spec.name: default_value(spec).si for spec in model.inputs  # unmounted, 20 degC
+              if spec.name not in given and spec.name.split("_", 2)[-1] in MOUNTING}
     assert {i.name for i in model.inputs} == set(given)
     return {key: np.asarray(value)[0] for key, value in model.function(**given).items()}
 

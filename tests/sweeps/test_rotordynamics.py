@@ -71,13 +71,13 @@ position = "200 mm"
 force_x = "300 N"
 force_y = "4 kN"
 [axes]
-"supports.rear.speed" = ["2000 rpm", "6000 rpm", "10000 rpm", "14000 rpm", "18000 rpm"]
+speed = ["2000 rpm", "6000 rpm", "10000 rpm", "14000 rpm", "18000 rpm"]
 """
 
 
 def test_a_shaft_system_s_bearings_give_their_own_stiffness_at_its_equilibrium():
     system = bearing_sweep.run(SHAFT, workers=0, progress=False)
-    rear = bearing_coefficients(system, speed="supports_rear_speed", support="rear")
+    rear = bearing_coefficients(system, support="rear")
     np.testing.assert_allclose(rear["frequency"],
                                np.array([2000, 6000, 10000, 14000, 18000]) * math.pi / 30,
                                rtol=1e-12)
@@ -87,10 +87,10 @@ def test_a_shaft_system_s_bearings_give_their_own_stiffness_at_its_equilibrium()
     # The rollers' centrifugal force presses every one on the outer ring: those contacts,
     # preloaded, are stiffer, and so is the bearing at the same load.
     assert (np.diff(rear["kxx"]) > 0).all()
-    front = bearing_coefficients(system, speed="supports_rear_speed", support="front")
+    front = bearing_coefficients(system, support="front")
     assert front["kxx"].min() > 0 and np.isfinite(front["kyx"]).all()
     with pytest.raises(ValueError, match="not one of the shaft's: front, rear"):
-        bearing_coefficients(system, speed="supports_rear_speed", support="middle")
+        bearing_coefficients(system, support="middle")
     with pytest.raises(ValueError, match="names a shaft system's support"):
         bearing_coefficients(bearing_sweep.run(DEFINITION, workers=0, progress=False),
                              support="rear")
