@@ -144,3 +144,43 @@ def test_ross_imports_beside_pint_xarray_and_leaves_its_unit_registry(swept, tmp
     done = subprocess.run([sys.executable, str(script)], cwd=tmp_path, capture_output=True,
                           text=True, timeout=300)
     assert done.returncode == 0, done.stderr[-2000:]
+
+
+@pytest.mark.slow
+def test_a_ross_rotor_on_a_shaft_systems_bearings_bends_between_its_bounds():
+    """A 500 mm steel shaft of 40 mm on a 71807AC at its left end and the roller bearing D at
+    its right (ross nodes 0 and 10 of 50 mm elements), their stiffness at each speed from the
+    shaft system's equilibrium under a gear's load. Its first lateral mode lies below the
+    same shaft's pinned on rigid supports, (pi/2) (EI / (rho A))^(1/2) / L^2 (Euler-Bernoulli),
+    and above Dunkerley's lower bound, 1 / omega_1^2 <= trace of the flexibility times the
+    mass: the pinned beam's sum over its modes, pi^4 / 90 / omega_b^2 (omega_n = n^2
+    omega_b), plus the rigid shaft's two modes on the bearings' softer springs (S. Dunkerley,
+    On the whirling and vibration of shafts, Phil. Trans. R. Soc. A 185 (1894) 279-360,
+    doi:10.1098/rsta.1894.0008). The shaft's shear, which ross models and the
+    bound leaves out, softens it by some 1 %: the lower bound is taken 3 % lower."""
+    system = bearing_sweep.run(SHAFT.replace('"300 mm", diameter = "45 mm"',
+                                             '"500 mm", diameter = "40 mm"')
+                               .replace('position = "30 mm"', 'position = "0 mm"')
+                               .replace('position = "270 mm"', 'position = "500 mm"')
+                               .replace('position = "200 mm"', 'position = "250 mm"'),
+                               workers=0, progress=False)
+    bearings = [bearing_element(system, node, damping=0.0, support=name)
+                for name, node in (("front", 0), ("rear", 10))]
+    import ross  # as bearing_element imported it
+
+    steel = ross.Material(name="test_steel_2", rho=7850, E=210e9, G_s=81e9)
+    shaft = [ross.ShaftElement(L=0.05, idl=0.0, odl=0.04, material=steel) for _ in range(10)]
+    rotor = ross.Rotor(shaft, [], bearings)
+    speeds = bearing_coefficients(system, support="rear")["frequency"]
+    lowest = min(rotor.run_modal(speed=speed).wn[0] for speed in speeds[[0, -1]])
+    length, area, inertia = 0.5, math.pi * 0.04**2 / 4, math.pi * 0.04**4 / 64
+    pinned = math.pi**2 / length**2 * math.sqrt(210e9 * inertia / (7850 * area))
+    springs = [min(bearing_coefficients(system, support=name)[k].min() for k in ("kxx", "kyy"))
+               for name in ("front", "rear")]
+    mass = 7850 * area * length
+    stiffness = np.array([[springs[0] + springs[1], (springs[1] - springs[0]) * length / 2],
+                          [(springs[1] - springs[0]) * length / 2,
+                           (springs[0] + springs[1]) * length**2 / 4]])
+    inverse_rigid = np.trace(np.linalg.solve(stiffness, np.diag([mass, mass * length**2 / 12])))
+    bound = 1 / math.sqrt(math.pi**4 / 90 / pinned**2 + inverse_rigid)
+    assert 0.97 * bound < lowest < pinned
