@@ -25,6 +25,18 @@ _TOLERANCE = 1e-10
 _MAX_ITERATIONS = 100
 
 
+def case_rows(displacement, count: int, cases=None):
+    """A bearing's ``displacement`` as ``(n, 5)`` and the row of each of its cases among the
+    bearing's ``count`` sets of values: the first for all where it has one, else ``cases``
+    (by default each case its own)."""
+    displacement = np.atleast_2d(np.asarray(displacement, dtype=float))
+    if count == 1:
+        return displacement, np.zeros(len(displacement), dtype=np.int64)
+    if cases is None:
+        cases = np.arange(len(displacement))
+    return displacement, np.asarray(cases, dtype=np.int64)
+
+
 class BallSupport:
     """A ball bearing as a shaft's support, from the inputs :func:`models.ball.ball_5dof`
     takes (SI, each one value or one per load case of a batch of ``cases``, the ball count
@@ -66,15 +78,7 @@ class BallSupport:
                                constant, geometry)
 
     def _rows(self, displacement, cases):
-        """The displacement as ``(n, 5)`` and the row of each of its cases among the
-        bearing's values: the first for all where the bearing has one set of values, else
-        ``cases`` (by default each case its own)."""
-        displacement = np.atleast_2d(np.asarray(displacement, dtype=float))
-        if self.count == 1:
-            return displacement, np.zeros(len(displacement), dtype=np.int64)
-        if cases is None:
-            cases = np.arange(len(displacement))
-        return displacement, np.asarray(cases, dtype=np.int64)
+        return case_rows(displacement, self.count, cases)
 
     def loads(self, displacement, cases=None):
         """Loads ``(n, 5)`` [N, N m] the balls carry at the inner ring's ``displacement``

@@ -26,6 +26,7 @@ import numpy as np
 from .contact import APPROACH_LIMIT, ROLLER_PRESSURE_LIMIT, effective_modulus, \
     line_contact_pressure
 from .life import roller_bearing_reference_life
+from .shaft_bearings import case_rows
 from .tapered import LOAD_EXPONENT, cone_curvature_sum, paper_contact_constant
 
 
@@ -56,14 +57,6 @@ class TaperedSupport:
             length, diameter, pitch, angle, modulus)
         self.curvature = cone_curvature_sum(diameter, pitch, angle)
 
-    def _rows(self, displacement, cases):
-        displacement = np.atleast_2d(np.asarray(displacement, dtype=float))
-        if self.count == 1:
-            return displacement, np.zeros(len(displacement), dtype=np.int64)
-        if cases is None:
-            cases = np.arange(len(displacement))
-        return displacement, np.asarray(cases, dtype=np.int64)
-
     def _gradient(self, rows):
         """``d(delta_i)/dq`` ``(n, Z, 5)``: each roller's compression per degree of freedom."""
         sin, cos, radius = (value[rows, None] for value in (self.sin, self.cos, self.radius))
@@ -73,7 +66,7 @@ class TaperedSupport:
 
     def _rollers(self, displacement, cases):
         """Each roller's compression and load ``(n, Z)`` [m, N] and the rows of the cases."""
-        displacement, rows = self._rows(displacement, cases)
+        displacement, rows = case_rows(displacement, self.count, cases)
         gradient = self._gradient(rows)
         compression = np.einsum("nzk,nk->nz", gradient, displacement) - self.gap[rows, None]
         load = self.constant[rows, None] * np.maximum(compression, 0.0) ** LOAD_EXPONENT
