@@ -6,8 +6,10 @@ A life in revolutions is combined by Palmgren and Miner over the cases' shares o
 revolutions, ``t_i n_i / sum(t n)`` with ``n`` the speed where it is a column of the axis (at
 one speed for all, the shares of the time); a life in hours over the shares of the time
 (:func:`bearing_sweep.models.life_combination.duty_cycle_life`; ``Output.cycle`` says
-which). A model may combine an output otherwise (a system's life: the Weibull combination of
-its bearings' lives over the cycle, ``Model.cycle_combinations``). The cases without a share
+which). A case at rest uses up no life, whatever the model says of its life there (a
+modified life needs a film, and at rest there is none); its time still counts in the
+cycle's. A model may combine an output otherwise (a system's life: the Weibull combination
+of its bearings' lives over the cycle, ``Model.cycle_combinations``). The cases without a share
 of the time take no part. ``status_over_duty_cycle`` is the most severe status of the cases
 that do, out of validity where any of them is; a combined life is NaN where it keeps no
 values.
@@ -40,8 +42,10 @@ def cycle_names(sweep) -> list[str]:
 
 
 def shares(axis) -> np.ndarray:
-    """The duty cycle's time shares, summing to 1."""
+    """The duty cycle's time shares, summing to 1 (scaled by the largest first: shares near
+    the largest float would overflow their sum)."""
     given = np.asarray(axis.time_shares, dtype=float)
+    given = given / given.max()
     return given / given.sum()
 
 
@@ -61,21 +65,24 @@ def cycle_variables(sweep, grid, outputs: dict, status: np.ndarray) -> dict:
     dims = tuple(d for d in grid.dims if d != axis.name)
     weights = {"time": shares(axis)[taken]}
     speed = axis.si.get("speed")
-    weights["revolutions"] = weights["time"] * (
-        1.0 if speed is None else np.asarray(speed, dtype=float)[taken])
+    resting = np.zeros(taken.size, dtype=bool)
+    weights["revolutions"] = weights["time"]
+    if speed is not None:
+        resting = np.asarray(speed, dtype=float)[taken] == 0
+        weights["revolutions"] = weights["time"] * np.asarray(speed, dtype=float)[taken]
     variables, combined = {}, {}
     for spec in combined_outputs(grid.model):
         if spec.name in grid.model.cycle_combinations:
             continue
-        weight = weights[spec.cycle]
-        cases = taken[weight > 0]  # a case at rest uses up no revolutions, whatever its life
         values = np.take(outputs[spec.name].reshape(grid.shape + np.shape(
-            outputs[spec.name])[1:]), cases, axis=at)
+            outputs[spec.name])[1:]), taken, axis=at)
         if sweep.storage.encoding == "float32":  # from the lives as every store holds them
             values = values.astype(np.float32).astype(float)
         shape = [1] * values.ndim
         shape[at] = -1
-        life = duty_cycle_life(values, weight[weight > 0].reshape(shape), axis=at)
+        # A case at rest uses up no life, whatever its value there; its time still counts.
+        values = np.where(resting.reshape(shape), np.inf, values)
+        life = duty_cycle_life(values, weights[spec.cycle].reshape(shape), axis=at)
         combined[spec.name] = np.where(_along(held, life), life, np.nan)
     for name, combine in grid.model.cycle_combinations.items():
         life = np.asarray(combine(combined), dtype=float)

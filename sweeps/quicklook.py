@@ -343,6 +343,9 @@ def _kind(data, name: str, axes: list) -> str:
         return "a sweep axis (draw against it with --x)"
     if name in data.attrs.get("fixed_inputs", "").split():
         return "an input the sweep holds fixed"
+    if name.endswith(CYCLE_SUFFIX):
+        return ("one value over the duty cycle for all its cases (read it with xarray: "
+                f"data[{name!r}])")
     return "not an output of the model"
 
 

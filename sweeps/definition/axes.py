@@ -15,9 +15,10 @@ from .values import VALUES_KEYS, Value, ValueReader, convert_written, stack
 
 _RANGE_KEYS = {"start", "stop", "num", "step", "units"}
 #: Names a result or its analysis uses: the status of each point, the [sample] axis and
-#: the blocks of its Saltelli design, and the dimensions of `analyze`'s output.
+#: the blocks of its Saltelli design, the dimensions of `analyze`'s output, and a duty
+#: cycle's time shares and status.
 RESERVED_NAMES = {"status", "sample", "saltelli_block", "saltelli_replicate", "statistic",
-                  "output", "input", "bound"}
+                  "output", "input", "bound", "time_share", "status_over_duty_cycle"}
 #: A name of a variable or dimension (CF conventions 2.3), at most 64 characters.
 AXIS_NAME = re.compile(r"[A-Za-z][A-Za-z0-9_]{0,63}")
 #: The column of a zipped axis that makes it a duty cycle: each load case's share of the time,
@@ -84,12 +85,13 @@ class AxisReader:
                       "conventions 2.3; netCDF and zarr read other characters as paths or "
                       "refuse them)")
         taken = {o.name for o in model.outputs} | {d for o in model.outputs for d in o.dims} \
-            | {f"{o.name}_units" for o in model.outputs if o.entry_units}
+            | {f"{o.name}_units" for o in model.outputs if o.entry_units} \
+            | {f"{o.name}_over_duty_cycle" for o in model.outputs}
         if name in taken | RESERVED_NAMES:
             self.fail(key, f"the axis name {name!r} is taken by an output or its dimension"
                       if name in taken else f"the axis name {name!r} is reserved (for the "
-                      "status of each point, the [sample] axis and the analysis of a sampled "
-                      "result)")
+                      "status of each point, the [sample] axis, the analysis of a sampled "
+                      "result and a duty cycle's time shares and status)")
         values = {}
         for parameter, column in raw.items():
             if parameter in ("labels", TIME_SHARE):
@@ -137,7 +139,10 @@ class AxisReader:
             if not (math.isfinite(share) and share >= 0):
                 self.fail(f"{key}[{index}]", f"{share!r}: a share of time is a finite number "
                           ">= 0")
-        if not sum(raw) > 0:
+        for index, share in enumerate(raw):
+            if isinstance(share, int):
+                self.reader.fits(share, f"{key}[{index}]")
+        if not max(raw) > 0:
             self.fail(key, "every share is 0: give at least one load case a share of the time")
         return [float(x) for x in raw]
 

@@ -148,3 +148,21 @@ def test_a_case_without_a_share_of_the_time_takes_no_part():
     revolutions = np.array([1 * 1500.0, 3 * 3000.0]) / (1 * 1500.0 + 3 * 3000.0)
     assert variables["reference_rating_life_over_duty_cycle"][1][0] == pytest.approx(
         1.0 / (revolutions[0] / 1e3 + revolutions[1] / 4e3), rel=1e-14)
+
+
+def test_a_case_at_rest_uses_up_no_life_even_where_its_modified_life_is_unknown():
+    # At rest there is no film: the modified life's kappa is 0 and the model gives it no
+    # value. The case uses up none of it, as it uses up no revolutions.
+    text = ROLLER_CYCLE.replace('dynamic_load_rating = "48.4 kN"', 'dynamic_load_rating = '
+                                '"48.4 kN"\nfatigue_load_limit = "6 kN"\nviscosity_40 = '
+                                '"68 mm^2/s"\nviscosity_100 = "8.5 mm^2/s"')
+    data = api.run(text, workers=0, progress=False)
+    hours = data.modified_reference_rating_hours.transpose("clearance", "case").values
+    assert np.isnan(hours[:, 2]).all() and np.isfinite(hours[:, :2]).all()
+    shares = np.array([1, 3, 2]) / 6  # the time at rest counts in the cycle's hours
+    np.testing.assert_allclose(data.modified_reference_rating_hours_over_duty_cycle.values,
+                               1.0 / np.sum(shares[:2] / hours[:, :2], axis=1), rtol=1e-13)
+    revolutions = data.modified_reference_rating_life_over_duty_cycle.values * 1e6
+    mean_speed = (1 * 1500 + 3 * 3000) / 6 * 60.0  # rev/h over the whole cycle
+    np.testing.assert_allclose(revolutions, data.modified_reference_rating_hours_over_duty_cycle
+                               .values * mean_speed, rtol=1e-12)
