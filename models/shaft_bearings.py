@@ -23,6 +23,9 @@ from .shaft import NODE_DOFS, assemble_shaft, banded_solve, node_at, weight_load
 #: Newton's tolerance on the residual, relative to the loads.
 _TOLERANCE = 1e-10
 _MAX_ITERATIONS = 100
+#: Levenberg-Marquardt's damping where Newton's step first fails, and beyond which a case
+#: has failed, relative to the shaft's own stiffness.
+_FIRST_DAMPING, _LAST_DAMPING = 1e-6, 1e3
 
 
 def case_rows(displacement, count: int, cases=None):
@@ -366,10 +369,23 @@ def solve_shaft_on_bearings(section_lengths, outside_diameters, bores, youngs_mo
                 carried)
 
     scale = np.maximum(np.abs(force).max(axis=1, initial=0.0), 1.0)
-    _, start, _ = bearing_terms(np.full((cases, len(inner)), typical_displacement), everything)
-    moved = _solved(condensed + start, target) if len(inner) else np.zeros((cases, 0))
+    moved = np.full((cases, len(inner)), np.nan) if len(inner) else np.zeros((cases, 0))
+    # Start from the shaft on the bearings' stiffness at a typical displacement; a bearing
+    # that carries nothing there (its clearance, or its rollers thrown out at speed) at a
+    # larger one.
+    for typical in typical_displacement * np.array([1.0, 10.0, 100.0]):
+        unset = np.flatnonzero(~np.isfinite(moved).all(axis=1))
+        if not unset.size:
+            break
+        _, start, _ = bearing_terms(np.full((unset.size, len(inner)), typical), unset)
+        moved[unset] = _solved(condensed + start, target[unset])
     converged = np.zeros(cases, dtype=bool)
     failed = ~np.isfinite(moved).all(axis=1) | ~np.isfinite(rest).all(axis=1)
+    # Levenberg-Marquardt's damping of each case's step, raised where Newton's step fails (a
+    # bearing that carries nothing gives the shaft no stiffness there), lowered where it
+    # succeeds: the diagonal of the shaft's condensed stiffness times it.
+    damping = np.zeros(cases)
+    diagonal = np.abs(np.diagonal(condensed))
     for _ in range(_MAX_ITERATIONS + 1):
         which = np.flatnonzero(~converged & ~failed)
         if not which.size:
@@ -379,9 +395,8 @@ def solve_shaft_on_bearings(section_lengths, outside_diameters, bores, youngs_mo
         done = norm <= _TOLERANCE * scale[which]
         converged[which[done]] = True
         which, remaining, tangent, norm = (v[~done] for v in (which, remaining, tangent, norm))
-        step = _solved(tangent, -remaining)
+        step = _solved(tangent + damping[which, None, None] * np.diag(diagonal), -remaining)
         pending = np.isfinite(step).all(axis=1)
-        failed[which[~pending]] = True
         factor = np.ones(len(which))
         for _ in range(20):  # halve each case's step until its residual falls
             if not pending.any():
@@ -392,7 +407,11 @@ def solve_shaft_on_bearings(section_lengths, outside_diameters, bores, youngs_mo
             moved[which[trying[better]]] = trial[better]
             pending[trying[better]] = False
             factor[pending] *= 0.5
-        failed[which[pending]] = True
+        stuck = pending | ~np.isfinite(step).all(axis=1)
+        previous = damping[which]
+        damping[which] = np.where(stuck, np.maximum(10.0 * previous, _FIRST_DAMPING),
+                                  0.1 * previous)
+        failed[which[stuck & (damping[which] > _LAST_DAMPING)]] = True
     _, tangent, carried = residual(moved, everything)
     displacement = np.zeros((cases, matrix.shape[0]))
     displacement[:, inner] = moved

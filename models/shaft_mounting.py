@@ -14,8 +14,12 @@ from dataclasses import replace
 
 import numpy as np
 
-from .operating_clearance import OPERATING_INPUTS, mounted_clearance, operating_constraints
+from .operating_clearance import OPERATING_INPUTS, mounted_clearance
+from .registry import Constraint
 
+#: How far [relative] a ring's bore may differ from its seat's diameter: a written value's
+#: rounding, not a fit (a fit is its own input).
+SEAT_TOLERANCE = 1e-9
 #: The operating inputs the shaft gives rather than the support.
 FROM_SHAFT = ("shaft_bore", "shaft_youngs_modulus", "shaft_poisson_ratio")
 #: The operating inputs of a rolling-element support.
@@ -36,11 +40,12 @@ def section_bore(sections: np.ndarray, position) -> np.ndarray:
     return sections[index, 2]
 
 
-def support_constraints(sections: np.ndarray, name: str, kind: str) -> tuple:
-    """The operating inputs' conditions (a fit needs its ring; shaft, rings and housing
-    nest) of support ``name``, on its prefixed inputs, the shaft's bore taken from the
+def support_constraints(sections: np.ndarray, name: str, model, inputs) -> tuple:
+    """The conditions of support ``name``'s own ``model`` between the ``inputs`` it takes on
+    the shaft (its rolling elements fit on the pitch circle, a fit needs its ring, shaft,
+    rings and housing nest, ...), on its prefixed inputs, the shaft's bore taken from the
     section at its position."""
-    element, angle = ELEMENTS[kind]
+    taken = {spec.name for spec in inputs} | {"shaft_bore"}
 
     def prefixed(constraint):
         inputs = tuple(f"supports_{name}_{'position' if n == 'shaft_bore' else n}"
@@ -55,7 +60,19 @@ def support_constraints(sections: np.ndarray, name: str, kind: str) -> tuple:
         return replace(constraint, inputs=inputs, check=check,
                        message=f"support {name}: {constraint.message}")
 
-    return tuple(prefixed(c) for c in operating_constraints(element, angle))
+    ends = np.cumsum(sections[:, 0])
+
+    def on_its_seat(**given):
+        bore, position = given[f"supports_{name}_bore"], given[f"supports_{name}_position"]
+        index = np.minimum(np.searchsorted(ends, position), len(sections) - 1)
+        seat = sections[index, 1]
+        return np.isnan(bore) | (np.abs(bore - seat) <= SEAT_TOLERANCE * seat)
+
+    seated = Constraint((f"supports_{name}_bore", f"supports_{name}_position"), on_its_seat,
+                        f"support {name}: its bore differs from the shaft's diameter at its "
+                        "position; the inner ring sits on its seat (give the section there "
+                        "the bore's diameter, the fit as shaft_fit)", unset=True)
+    return tuple(prefixed(c) for c in model.constraints if set(c.inputs) <= taken) + (seated,)
 
 
 def mounted(sections: np.ndarray, name: str, kind: str, given, shaft_modulus,

@@ -89,6 +89,9 @@ _TAPERED_GEOMETRY = ("roller_count", "effective_length", "roller_mean_diameter",
 _BEARINGS = {"ball_5dof": (BallSupport, _BALL_GEOMETRY, WEIBULL_SLOPES["ball"]),
              "crb_radial": (RollerSupport, _ROLLER_GEOMETRY, WEIBULL_SLOPES["roller"]),
              "trb_load": (TaperedSupport, _TAPERED_GEOMETRY, WEIBULL_SLOPES["roller"])}
+#: Each rolling-element kind's own model, whose conditions between inputs its support keeps.
+_OWN_MODELS = {"ball_5dof": BALL_MODELS[0], "crb_radial": ROLLER_MODELS[0],
+               "trb_load": TAPERED_MODELS[0]}
 _AXIAL_DIRECTION = Input(
     "axial_direction", "", "the direction of the shaft's thrust the bearing carries: "
     "positive along x (as ball_5dof and trb_load take it), or negative (the bearing mounted "
@@ -106,7 +109,8 @@ SUPPORT_INPUTS = {
     + (next(spec for spec in LIFE_INPUTS if spec.name == "dynamic_load_rating"),),
     "trb_load": (replace(_POSITION, meaning="axial position of the bearing's centre along "
                          "the shaft, from its left end"),)
-    + tuple(replace(TAPERED_MODELS[0].input(name), default=REQUIRED)
+    + tuple(replace(TAPERED_MODELS[0].input(name), default=REQUIRED,
+                    meaning="pitch diameter dm at the middle of the rollers", label="")
             if name == "pitch_diameter" else TAPERED_MODELS[0].input(name)
             for name in _TAPERED_GEOMETRY) + SUPPORT_OPERATING_INPUTS
     + (next(spec for spec in LIFE_INPUTS if spec.name == "dynamic_load_rating"),
@@ -315,7 +319,8 @@ def assemble(sections, supports, loads) -> Model:
             Constraint(positions[:len(supports)], apart, "two supports at one position: "
                        "give one support the stiffness of both"),
         ) + tuple(constraint for name, kind in supports.items() if kind in _BEARINGS
-                  for constraint in support_constraints(sections, name, kind)),
+                  for constraint in support_constraints(sections, name, _OWN_MODELS[kind],
+                                                        SUPPORT_INPUTS[kind])),
         seconds_per_point=2e-4, points_per_call=1000, validity=_VALIDITY,
         cycle_combinations={"system_reference_life": system_over_cycle})
 

@@ -83,7 +83,7 @@ def assembled(reader: Reader, document: dict, template: Model
                     "(a support's or load's name followed by an input's): rename one")
     translated = {key: value for key, value in document.items()
                   if key not in template.tables}
-    fixed = {_undotted(key): raw for key, raw in document.get("fixed", {}).items()} \
+    fixed = _undotted_table(reader, "fixed", document.get("fixed", {})) \
         if isinstance(document.get("fixed", {}), dict) else document["fixed"]
     for table, entries in given.items():
         for key in entries:
@@ -92,8 +92,10 @@ def assembled(reader: Reader, document: dict, template: Model
     translated["fixed"] = fixed
     for table in ("axes", "sample"):
         if isinstance(document.get(table), dict):
-            translated[table] = {_undotted(key): _undotted_within(raw)
-                                 for key, raw in document[table].items()}
+            translated[table] = {
+                key: _undotted_table(reader, f"{table}.{key}", raw) if isinstance(raw, dict)
+                else raw for key, raw in _undotted_table(reader, table,
+                                                         document[table]).items()}
     presets = []
     for name, kind in supports.items():
         bearing = document["supports"][name].get("bearing")
@@ -183,7 +185,14 @@ def _undotted(key: str) -> str:
     return "_".join(match.groups()) if match else key
 
 
-def _undotted_within(raw):
-    """A zipped axis' or a distribution's table with its dotted keys undotted."""
-    return {_undotted(key): value for key, value in raw.items()} if isinstance(raw, dict) \
-        else raw
+def _undotted_table(reader: Reader, where: str, table: dict) -> dict:
+    """``table`` with its dotted keys undotted; one line at ``where`` for an input written
+    both ways (``"supports.A.clearance"`` and ``supports_A_clearance``)."""
+    undotted = {}
+    for key, value in table.items():
+        name = _undotted(key)
+        if name in undotted:
+            earlier = next(k for k in table if _undotted(k) == name)
+            reader.fail(f"{where}.{key}", f"given twice: also as {earlier!r} (the same input)")
+        undotted[name] = value
+    return undotted
