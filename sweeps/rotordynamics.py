@@ -24,6 +24,7 @@ import numpy as np
 import xarray as xr
 
 from .definition.values import convert_written
+from .models.registry import out_of_validity
 from .stores import open_result
 
 #: The lateral directions of a ross bearing, as the models name them.
@@ -70,8 +71,8 @@ def bearing_coefficients(result: str | os.PathLike | xr.Dataset, speed: str = "s
     if data.attrs.get("model") == "crb_radial" and "radial_stiffness" in data:
         data = _roller_matrix(data)
     if "stiffness_matrix" not in data or speed not in data["stiffness_matrix"].dims:
-        raise ValueError(f"the result needs a stiffness_matrix along {speed!r} (a ball_5dof "
-                         f"or crb_radial result swept over {speed})")
+        raise ValueError(f"the result needs a stiffness_matrix along {speed!r} (a ball_5dof, "
+                         f"crb_radial or shaft_system result swept over {speed})")
     matrix = data["stiffness_matrix"]
     others = [dim for dim in matrix.dims
               if dim not in (speed, "load_dof", "dof") and matrix.sizes[dim] > 1]
@@ -98,6 +99,14 @@ def bearing_coefficients(result: str | os.PathLike | xr.Dataset, speed: str = "s
     if missing.any():
         raise ValueError(f"no stiffness at {speed} {speeds[order][missing].tolist()} rad/s "
                          "(points not converged)")
+    if "status" in data and speed in data["status"].dims:
+        status = data["status"].squeeze([d for d in data["status"].dims if d != speed],
+                                        drop=True).values[order]
+        outside = out_of_validity(status)
+        if outside.any():
+            raise ValueError(f"the points at {speed} {speeds[order][outside].tolist()} rad/s "
+                             "lie outside the model's validity (status out_of_validity): "
+                             "select the speeds within it")
     return {"frequency": speeds[order], **terms}
 
 

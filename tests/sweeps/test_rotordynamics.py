@@ -6,6 +6,7 @@ import numpy as np
 import pytest
 
 import bearing_sweep
+from bearing_sweep.models.registry import OUT_OF_VALIDITY
 from bearing_sweep.rotordynamics import bearing_coefficients, bearing_element
 
 SPEEDS = ["2000 rpm", "6000 rpm", "10000 rpm", "14000 rpm", "18000 rpm"]
@@ -103,6 +104,10 @@ def test_a_result_with_another_axis_or_without_speeds_is_refused_in_a_line(swept
         bearing_coefficients(swept.isel(speed=[0]))
     with pytest.raises(ValueError, match="stiffness_matrix along 'speed'"):
         bearing_coefficients(swept.drop_vars("stiffness_matrix"))
+    flagged = swept.copy()
+    flagged["status"] = flagged["status"].copy(data=flagged["status"].values | OUT_OF_VALIDITY)
+    with pytest.raises(ValueError, match="outside the model's validity"):
+        bearing_coefficients(flagged)
 
 
 @pytest.mark.slow
