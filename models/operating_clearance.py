@@ -111,6 +111,7 @@ def operating_constraints(element, angle=None):
     rolling element's diameter, the input named ``element`` (times the cosine of the input
     named ``angle``, where given: a tapered roller's raceways at its middle)."""
     around = (element,) + ((angle,) if angle else ())
+    extent = f"{element} cos({angle})" if angle else element
 
     def offset(named):
         return named[element] * (np.cos(named[angle]) if angle else 1.0)
@@ -132,11 +133,11 @@ def operating_constraints(element, angle=None):
                    "wall", unset=True),
         Constraint(("bore", "shaft_bore", "pitch_diameter") + around, nested_inside,
                    f"bore must lie between shaft_bore and the inner raceway's diameter "
-                   f"(pitch_diameter - {element})",
+                   f"(pitch_diameter - {extent})",
                    unset=True),
         Constraint(("outside_diameter", "housing_outside_diameter", "pitch_diameter") + around,
                    nested_outside, f"outside_diameter must lie between the outer raceway's "
-                   f"diameter (pitch_diameter + {element}) and housing_outside_diameter",
+                   f"diameter (pitch_diameter + {extent}) and housing_outside_diameter",
                    unset=True),
     )
 
