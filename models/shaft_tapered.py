@@ -84,6 +84,9 @@ class TaperedSupport:
     def largest_pressure(self, displacement, cases=None):
         """The largest Hertz line-contact pressure [Pa] on the cone, as trb_load forms it."""
         _, load, _, rows = self._rollers(displacement, cases)
+        return self._pressure(load, rows)
+
+    def _pressure(self, load, rows):
         return line_contact_pressure(load.max(axis=-1) / self.length[rows],
                                      self.curvature[rows], self.modulus[rows])
 
@@ -98,6 +101,6 @@ class TaperedSupport:
     def outside_validity(self, displacement, cases=None):
         """Where a roller's cone pressure exceeds the limit or its compression 2 % of its
         diameter (trb_load's validity)."""
-        compression, _, _, rows = self._rollers(displacement, cases)
-        return (self.largest_pressure(displacement, cases) > self.pressure_limit[rows]) | (
+        compression, load, _, rows = self._rollers(displacement, cases)
+        return (self._pressure(load, rows) > self.pressure_limit[rows]) | (
             compression.max(axis=-1) > APPROACH_LIMIT * self.diameter[rows])
