@@ -130,15 +130,30 @@ class _RollerSet:
         else:
             self.gap_shape, self.gap_count = crown_shape(slices, crown_profile), np.ones(slices)
             self.slice_position = slice_centres(slices)
-            self.floor = (self.crown[:, None, None] * self.gap_shape  # (P, Z): smallest gap
-                          - self.tilt[..., None] * self.slice_position).min(axis=-1)
+            raw = (self.crown[:, None, None] * self.gap_shape
+                   - self.tilt[..., None] * self.slice_position)
+            self.floor = raw.min(axis=-1)  # (P, Z): smallest gap
         self.slice_law, self.outer_contact = slice_law, outer_contact
         self.slices, self.crown_profile = slices, crown_profile
         # Each roller's gaps in rising order, as the compiled balance sums the touching ones
-        # (``(P, 1, m)`` without tilt, where the distinct gaps already rise).
-        self.sorted_gaps = np.ascontiguousarray(
-            self.all_gaps() if self.tilt is None else np.sort(self.all_gaps(), axis=-1))
+        # (``(P, 1, m)`` without tilt, where the distinct gaps already rise); in
+        # :meth:`gaps`' order of operations, so that both give the same bits.
+        if self.tilt is None:
+            self.sorted_gaps = np.ascontiguousarray(self.all_gaps())
+        else:
+            raw -= self.floor[..., None]
+            raw.sort(axis=-1)
+            self.sorted_gaps = raw
         self.free_outer_approach, self.free_outer_converged = self._free_outer_approach()
+
+    def tilted(self, points, tilt):
+        """The rollers of the bearings ``points``, one bearing per row, tilted by ``tilt``
+        ``(p, Z)``: each roller's gap change from the middle to the end of its contacts [m]
+        (a ring tilted by ``theta`` across a roller gives ``theta l / 4``: the roller takes
+        half)."""
+        return _RollerSet(self.cos[points], self.half_clearance[points], self.crown[points],
+                          self.constant[points], self.centrifugal[points], self.slices,
+                          self.crown_profile, self.slice_law, self.outer_contact, tilt)
 
     def gaps(self, points, rollers):
         """Gap of every slice of the rollers ``rollers`` of the bearings ``points`` [m],

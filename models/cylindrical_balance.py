@@ -379,3 +379,58 @@ def slice_sums(approach, crown, tilt, floor, shape, position, counts, by_loaded,
         sums[i, 0], sums[i, 1] = load / divisor, N * stiffness / divisor
         sums[i, 2], sums[i, 3] = deepest, slices / divisor
         sums[i, 4], sums[i, 5] = scale * life, 5.0 * scale * slope
+
+
+@njit(cache=True, error_model="numpy")
+def tilted_contact_sums(inner, reach, crown, shape, tilt, floor, position, half_length,
+                        constant, by_loaded, sums):
+    """What both contacts of every tilted roller carry at its solution, for a shaft's
+    tangent: ``inner`` and ``reach`` ``(n, Z)`` are each roller's inner and total approach
+    at its deepest slice [m] (:meth:`models.cylindrical._RollerSet.loads`' and
+    ``total_approach``'s), its slices' gaps ``crown shape - tilt position - floor``
+    (``crown``, ``half_length`` ``(n,)``; ``tilt``, ``floor`` ``(n, Z)``; ``shape``,
+    ``position`` ``(m,)``, the latter along the half length). ``sums`` ``(n, Z, 2, 6)``
+    takes per contact (inner, outer) its load ``Q`` [N], ``dQ/d approach`` [N/m], ``dQ/dm``
+    [N/rad] (each slice's penetration grows by ``x_k / 2`` per radian of the ring's tilt
+    ``m`` across the roller), the moment ``M = sum q_k x_k`` [N m], ``dM/d approach`` [N] and
+    ``dM/dm`` [N m/rad], with ``q_k = (K / k) p_k^(10/9)`` (``by_loaded``: ``k`` the loaded
+    slices, the paper's law; else all of them). An unloaded roller's outer contact is left
+    at zero: without an inner load it adds no terms."""
+    size = shape.size
+    work, roots, where = np.empty(size), np.empty(size), np.empty(size)
+    for i in range(inner.shape[0]):
+        for j in range(inner.shape[1]):
+            for contact in range(2):
+                if contact == 1 and sums[i, j, 0, 1] == 0.0:  # an unloaded roller: no terms
+                    for term in range(6):
+                        sums[i, j, 1, term] = 0.0
+                    break
+                approach = inner[i, j] if contact == 0 else reach[i, j] - inner[i, j]
+                touching = 0
+                for k in range(size):
+                    penetration = approach - (crown[i] * shape[k] - tilt[i, j] * position[k]
+                                              - floor[i, j])
+                    if penetration > 1e-300:  # normal numbers only: ninth_roots needs them
+                        work[touching] = penetration
+                        where[touching] = position[k] * half_length[i]
+                        touching += 1
+                ninth_roots(work, roots, touching)
+                load = slope = by_tilt = moment = moment_slope = moment_tilt = 0.0
+                for t in range(touching):
+                    x = where[t]
+                    stiffness = N * roots[t]
+                    slice_load = work[t] * roots[t]
+                    load += slice_load
+                    slope += stiffness
+                    by_tilt += 0.5 * stiffness * x
+                    moment += slice_load * x
+                    moment_slope += stiffness * x
+                    moment_tilt += 0.5 * stiffness * x * x
+                divisor = (touching if touching > 0 else 1) if by_loaded else size
+                scale = constant[i] / divisor
+                sums[i, j, contact, 0] = scale * load
+                sums[i, j, contact, 1] = scale * slope
+                sums[i, j, contact, 2] = scale * by_tilt
+                sums[i, j, contact, 3] = scale * moment
+                sums[i, j, contact, 4] = scale * moment_slope
+                sums[i, j, contact, 5] = scale * moment_tilt

@@ -129,15 +129,27 @@ class BallSupport:
 class RollerSupport:
     """A cylindrical roller bearing as a shaft's support, from the inputs
     :func:`models.cylindrical.crb_radial` takes (SI, each one value or one per load case of a
-    batch of ``cases``): in each radial direction the load and stiffness that model gives at
-    the inner ring's radial displacement, as a vector along it; nothing axially (the rings of
-    an NU or N bearing slide) nor against a tilt (crb_radial takes a misalignment, but gives
-    no moment for it).
+    batch of ``cases``): the loads and moments its rollers carry at a radial displacement and
+    a tilt of the inner ring, and their tangent stiffness; nothing axially (the rings of an NU
+    or N bearing slide).
 
-    The radial law ``F(delta)`` is the bearing's along the displacement ``d`` of length
-    ``delta``, the rollers placed from its direction as crb_radial places them from its
-    load's: the force ``F(delta) d / delta`` derives from a potential, and its tangent
-    ``F' n n^T + (F / delta)(I - n n^T)`` is symmetric (``n = d / delta``).
+    The rollers are placed from the displacement's direction as crb_radial places them from
+    its load's (a roller on that line). The shaft's tilt ``theta = (theta_y, theta_z)`` tilts
+    the inner ring across roller ``j`` at azimuth ``psi_j`` by ``m_j = theta_z cos(psi_j) -
+    theta_y sin(psi_j)``; each roller takes half of it, as crb_radial's ``misalignment`` has
+    it, so both its contacts see a gap falling by ``m_j x / 2`` along it. Roller ``j``'s
+    inner contact then carries ``Q_j`` at a moment ``M_j = sum_k q_jk x_k`` of its slices'
+    loads, and the bearing the loads ``sum_j Q_j (cos psi_j, sin psi_j)`` and the moments
+    ``sum_j M_j (-sin psi_j, cos psi_j)`` about y and z. Its tangent is analytic: each
+    roller's two contacts in series (its force balance differentiated), and the rollers'
+    turn with the displacement's direction.
+
+    Without a tilt the law is crb_radial's along the displacement ``d`` of length ``delta``:
+    the force ``F(delta) d / delta`` derives from a potential, and its tangent ``F' n n^T +
+    (F / delta)(I - n n^T)`` is symmetric (``n = d / delta``). With a tilt the rollers'
+    turning with ``d`` leaves the tangent unsymmetric. At rest both contacts of a roller
+    are alike and carry equal moments; spinning, the roller's own moment balance is not
+    solved (as in crb_radial).
     """
 
     #: Below this radial displacement [m] the direction is taken as y and F / delta as F'.
@@ -159,12 +171,14 @@ class RollerSupport:
                                   slice_law, outer_contact, speed, roller_density,
                                   contact_constant)
         self.count = self.rollers.crown.size
+        self.azimuth = 2.0 * np.pi * np.arange(int(roller_count)) / int(roller_count)
         # What crb_radial's pressure and validity take.
         self.length, self.modulus = effective_length, modulus
         self.diameter, self.pitch = roller_diameter, pitch_diameter
         self.curvatures = (2.0 / roller_diameter + 2.0 / (pitch_diameter - roller_diameter),
                            2.0 / roller_diameter - 2.0 / (pitch_diameter + roller_diameter))
         self.approach_limit = APPROACH_LIMIT * roller_diameter
+        self._last = None  # the last displacements placed, and what :meth:`_placed` gave
 
     def _rows(self, count, cases):
         if self.count == 1:
@@ -173,8 +187,9 @@ class RollerSupport:
 
     def radial(self, displacement, cases=None):
         """The radial load [N] and stiffness [N/m] at each radial ``displacement`` [m] of
-        the load ``cases``, where every roller's balance converged, and each roller's inner
-        approach (``(count, Z)``, the rows of those cases filled)."""
+        the load ``cases``, with the inner ring aligned, where every roller's balance
+        converged, and each roller's inner approach (``(count, Z)``, the rows of those cases
+        filled)."""
         rows = self._rows(len(displacement), cases)
         shape = self.rollers.cos.shape
         split = np.full(shape + (3,), np.nan)
@@ -184,58 +199,82 @@ class RollerSupport:
             roller_load, deflection)
         return force, slope, converged, deflection
 
-    def _contacts(self, displacement, cases):
-        """Each contact's approaches at the radial displacements of the load ``cases``, as
-        crb_radial forms its pressure and validity from them (one case at a time where the
-        bearing has one set of values for several)."""
+    def _placed(self, displacement, cases):
+        """The rollers of each row of ``displacement`` ``(n, 5)`` as it moves and tilts
+        their inner ring, solved: the roller set (one bearing per row), the rows' cases,
+        the radial displacement ``(n,)``, the rollers' azimuths ``psi`` and the ring's tilt
+        across them ``m`` ``(n, Z)``, whether every roller converged ``(n,)`` and their
+        inner approaches ``(n, Z)`` as :meth:`models.cylindrical._RollerSet.loads` gives
+        them."""
+        rows = self._rows(len(displacement), cases)
+        # A solution's pressure, life and validity are asked at the same displacements.
+        key = (displacement.tobytes(), rows.tobytes())
+        if self._last is not None and self._last[0] == key:
+            return self._last[1]
         delta = np.hypot(displacement[:, 1], displacement[:, 2])
-        if self.count == 1 and len(delta) > 1:
-            parts = [self._contacts(row[None], None) for row in displacement]
-            return tuple(np.concatenate(part) for part in zip(*parts))
-        rows = self._rows(len(delta), cases)
-        every = np.zeros(self.count)
-        every[rows] = delta
-        deflection = self.radial(every, np.arange(self.count))[3]
-        inner, outer = self.rollers.approaches(every, deflection)
-        return inner[rows], outer[rows], rows
+        direction = np.where(delta < self._CENTRED, 0.0,
+                             np.arctan2(displacement[:, 2], displacement[:, 1]))
+        psi = direction[:, None] + self.azimuth
+        across = displacement[:, 4, None] * np.cos(psi) - displacement[:, 3, None] * np.sin(psi)
+        rollers = self.rollers.tilted(rows, 0.25 * self.length[rows, None] * across)
+        split = np.full(psi.shape + (3,), np.nan)
+        roller_load, deflection = np.zeros(psi.shape), np.zeros(psi.shape)
+        converged = rollers.loads(np.where(delta < self._CENTRED, 0.0, delta),
+                                  np.arange(len(rows)), split, roller_load, deflection)[2]
+        placed = rollers, rows, delta, psi, across, converged, deflection
+        self._last = key, placed
+        return placed
+
+    def _pressures(self, rollers, inner, outer, rows):
+        """The largest Hertz line-contact pressure [Pa] of each roller's most loaded slices
+        ``(n, Z)``, as :func:`models.cylindrical.crb_radial` forms it."""
+        loads = rollers.largest_line_loads(inner, outer, self.length[rows])
+        return np.maximum(*(line_contact_pressure(load, curvature[rows, None],
+                                                  self.modulus[rows, None])
+                            for load, curvature in zip(loads, self.curvatures)))
 
     def largest_pressure(self, displacement, cases=None):
         """The largest Hertz line-contact pressure [Pa] of the rollers' most loaded slices at
         each ``displacement`` ``(n, 5)``, as :func:`models.cylindrical.crb_radial` forms it."""
         displacement = np.atleast_2d(np.asarray(displacement, dtype=float))
-        inner, outer, rows = self._contacts(displacement, cases)
-        every = tuple(np.zeros((self.count,) + inner.shape[1:]) for _ in range(2))
-        every[0][rows], every[1][rows] = inner, outer
-        loads = self.rollers.largest_line_loads(*every, self.length)
-        return np.maximum(*(line_contact_pressure(load[rows], curvature[rows, None],
-                                                  self.modulus[rows, None]).max(axis=-1)
-                            for load, curvature in zip(loads, self.curvatures)))
+        rollers, rows, delta, *_, deflection = self._placed(displacement, cases)
+        inner, outer = rollers.approaches(delta, deflection)
+        return self._pressures(rollers, inner, outer, rows).max(axis=-1)
 
     def reference_life(self, displacement, rating, cases=None):
         """ISO/TS 16281's reference rating life L10r [10^6 revolutions] of the inner ring
         rotating under the rollers' lamina loads at ``displacement`` ``(n, 5)``, with the
         dynamic load ``rating`` [N], as :func:`models.cylindrical.crb_radial` forms it."""
         displacement = np.atleast_2d(np.asarray(displacement, dtype=float))
-        inner, outer, rows = self._contacts(displacement, cases)
-        laminae = self.rollers.lamina_loads(inner, outer, rows)
+        rollers, rows, delta, *_, deflection = self._placed(displacement, cases)
+        inner, outer = rollers.approaches(delta, deflection)
+        laminae = rollers.lamina_loads(inner, outer, np.arange(len(rows)))
         with np.errstate(divide="ignore", invalid="ignore"):
             return roller_bearing_reference_life(
                 laminae[0], rating, self.diameter[rows], self.pitch[rows],
-                outer_lamina_loads=laminae[1], lamina_weights=self.rollers.gap_count)
+                outer_lamina_loads=laminae[1], lamina_weights=rollers.gap_count)
 
     def outside_validity(self, displacement, cases=None):
         """Where ``displacement`` ``(n, 5)`` lies outside crb_radial's validity: a contact's
-        pressure above the limit, or a roller's approach above APPROACH_LIMIT of its
-        diameter."""
+        pressure above the limit, a roller's approach above APPROACH_LIMIT of its diameter,
+        or slices too few to resolve the rollers' crown and tilt."""
+        from .cylindrical import SLICING_ERROR_LIMIT
+
         displacement = np.atleast_2d(np.asarray(displacement, dtype=float))
-        inner, outer, rows = self._contacts(displacement, cases)
-        return ((self.largest_pressure(displacement, cases) > self.pressure_limit[rows])
-                | ((inner + outer).max(axis=-1) > self.approach_limit[rows]))
+        rollers, rows, delta, *_, deflection = self._placed(displacement, cases)
+        inner, outer = rollers.approaches(delta, deflection)
+        beyond = ((self._pressures(rollers, inner, outer, rows).max(axis=-1)
+                   > self.pressure_limit[rows])
+                  | ((inner + outer).max(axis=-1) > self.approach_limit[rows]))
+        return beyond | (rollers.slicing_error(inner, outer, *(c[rows] for c in self.curvatures),
+                                               ~beyond) > SLICING_ERROR_LIMIT)
 
     def loads(self, displacement, cases=None):
         """Loads ``(n, 5)`` [N, N m] at the inner ring's ``displacement`` ``(n, 5)``, and
-        their stiffness ``(n, 5, 5)``: radial terms only."""
+        their stiffness ``(n, 5, 5)``: radial forces and tilt moments."""
         displacement = np.atleast_2d(np.asarray(displacement, dtype=float))
+        if np.any(displacement[:, 3:5] != 0.0):
+            return self._tilted_loads(displacement, cases)
         radial = displacement[:, 1:3]
         delta = np.hypot(radial[:, 0], radial[:, 1])
         centred = delta < self._CENTRED
@@ -251,6 +290,69 @@ class RollerSupport:
                                   + secant[:, None, None] * (np.eye(2) - along))
         load[~converged], stiffness[~converged] = np.nan, np.nan
         return load, stiffness
+
+    def _tilted_loads(self, displacement, cases):
+        """:meth:`loads` with the inner ring tilted."""
+        rollers, rows, delta, psi, across, converged, approach = self._placed(displacement,
+                                                                              cases)
+        from .cylindrical_balance import tilted_contact_sums  # numba: only when solving
+
+        if rollers.tilt is None:  # tilts too small to move any slice's gap
+            return self.loads(displacement * [1.0, 1.0, 1.0, 0.0, 0.0], cases)
+        if rollers.outer_contact != "crowned":
+            raise ValueError("a tilted cylindrical roller bearing needs outer_contact "
+                             "'crowned' (the paper's straight outer contact has no tilt)")
+        reach = rollers.total_approach(np.where(delta < self._CENTRED, 0.0, delta),
+                                       np.arange(len(rows)))
+        sums = np.empty(psi.shape + (2, 6))
+        tilted_contact_sums(approach, reach, rollers.crown, rollers.gap_shape, rollers.tilt,
+                            rollers.floor, rollers.slice_position, 0.5 * self.length[rows],
+                            rollers.constant, rollers.slice_law == "paper", sums)
+        (load, inner_slope, inner_tilt, moment, moment_slope, moment_tilt) = np.moveaxis(
+            sums[:, :, 0], -1, 0)
+        outer_slope, outer_tilt = sums[:, :, 1, 1], sums[:, :, 1, 2]
+        # Each roller's force balance Qo(t - a, m) = Qi(a, m) + Fc differentiated along its
+        # total approach t and the tilt m across it.
+        both = inner_slope + outer_slope
+        with np.errstate(divide="ignore", invalid="ignore"):
+            share = np.where(both > 0.0, outer_slope / both, 0.0)  # da/dt
+            moved = np.where(both > 0.0, (outer_tilt - inner_tilt) / both, 0.0)  # da/dm
+        load_by_total, load_by_tilt = inner_slope * share, inner_slope * moved + inner_tilt
+        moment_by_total = moment_slope * share
+        moment_by_tilt = moment_slope * moved + moment_tilt
+        cos, sin = np.cos(psi), np.sin(psi)
+        zero = np.zeros_like(cos)
+        total_gradient = np.stack([zero, cos, sin, zero, zero], axis=-1)  # dt/dq
+        tilt_gradient = np.stack([zero, zero, zero, -sin, cos], axis=-1)  # dm/dq
+        loads = (np.einsum("nz,nzi->ni", load, total_gradient)
+                 + np.einsum("nz,nzi->ni", moment, tilt_gradient))
+        stiffness = (np.einsum("nzi,nzj->nij", total_gradient,
+                               load_by_total[..., None] * total_gradient
+                               + load_by_tilt[..., None] * tilt_gradient)
+                     + np.einsum("nzi,nzj->nij", tilt_gradient,
+                                 moment_by_total[..., None] * total_gradient
+                                 + moment_by_tilt[..., None] * tilt_gradient))
+        # The rollers turn with the displacement's direction (by dpsi = dalpha).
+        y, z, theta_y, theta_z = (displacement[:, i, None] for i in range(1, 5))
+        total_turn = -y * sin + z * cos
+        tilt_turn = -theta_z * sin - theta_y * cos
+        turned = (np.einsum("nz,nzi->ni", load_by_total * total_turn + load_by_tilt * tilt_turn,
+                            total_gradient)
+                  + np.einsum("nz,nzi->ni", load, np.stack([zero, -sin, cos, zero, zero], -1))
+                  + np.einsum("nz,nzi->ni",
+                              moment_by_total * total_turn + moment_by_tilt * tilt_turn,
+                              tilt_gradient)
+                  + np.einsum("nz,nzi->ni", moment, np.stack([zero, zero, zero, -cos, -sin],
+                                                             -1)))
+        off_centre = delta >= self._CENTRED
+        with np.errstate(divide="ignore", invalid="ignore"):
+            turn = np.where(off_centre[:, None], np.stack(
+                [np.zeros_like(delta), -displacement[:, 2], displacement[:, 1],
+                 np.zeros_like(delta), np.zeros_like(delta)], axis=-1) / delta[:, None] ** 2, 0.0)
+        stiffness += np.einsum("ni,nj->nij", turned, turn)
+        failed = ~converged | ~np.isfinite(loads).all(axis=-1)
+        loads[failed], stiffness[failed] = np.nan, np.nan
+        return loads, stiffness
 
 
 def solve_shaft_on_bearings(section_lengths, outside_diameters, bores, youngs_modulus,

@@ -236,13 +236,14 @@ _VALIDITY = ("a bearing's solution outside its own model's validity (for ball_5d
              "or speed; for a bearing, " + SPEED_VALIDITY + ". Not modelled: the shaft's "
              "torsion, the "
              "housings' compliance (give a spring for it), centrifugal and gyroscopic ball "
-             "loads; a cylindrical roller bearing's moment against a tilt (crb_radial gives "
-             "none) and its axial load (its rings slide), and the direction of its rollers "
-             "against a radial displacement: it answers one in any direction as crb_radial "
-             "answers one along its load line; a tapered roller bearing's rollers tilted by "
+             "loads; a cylindrical roller bearing's axial load (its rings slide), its "
+             "rollers' own moment balance (each takes half the shaft's tilt, as crb_radial's "
+             "misalignment has it), and the direction of its rollers against a radial "
+             "displacement: it answers one in any direction as crb_radial answers one along "
+             "its load line; a tapered roller bearing's rollers tilted by "
              "the shaft's slope (their load moves, its spread along them does not: trb_load "
              "has no crown).")
-_VERSION = "3"
+_VERSION = "4"
 
 
 def assemble(sections, supports, loads) -> Model:
@@ -320,9 +321,18 @@ def assemble(sections, supports, loads) -> Model:
                        "give one support the stiffness of both"),
         ) + tuple(constraint for name, kind in supports.items() if kind in _BEARINGS
                   for constraint in support_constraints(sections, name, _OWN_MODELS[kind],
-                                                        SUPPORT_INPUTS[kind])),
+                                                        SUPPORT_INPUTS[kind]))
+        + tuple(Constraint((f"supports_{name}_outer_contact",), _crowned_outer,
+                           f"support {name}: outer_contact 'paper' (a straight outer contact) "
+                           "takes no tilt, and the shaft tilts its bearings; use 'crowned'")
+                for name, kind in supports.items() if kind == "crb_radial"),
         seconds_per_point=2e-4, points_per_call=1000, validity=_VALIDITY,
         cycle_combinations={"system_reference_life": system_over_cycle})
+
+
+def _crowned_outer(**given):
+    (outer_contact,) = given.values()
+    return np.asarray(outer_contact) != "paper"
 
 
 #: The longest label of an axis (its netCDF ``long_name``) a figure shows whole.

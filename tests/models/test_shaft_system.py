@@ -5,7 +5,9 @@ import pytest
 
 from bearing_sweep.models.ball import ball_5dof
 from bearing_sweep.models.cylindrical import crb_radial
+from bearing_sweep.models.profiles import crown_shape, slice_centres
 from bearing_sweep.models.registry import CONVERGED, OUT_OF_VALIDITY, outcome
+from bearing_sweep.models.shaft_bearings import RollerSupport
 from bearing_sweep.definition.values import default_value
 from bearing_sweep.models.shaft_mounting import SUPPORT_OPERATING_INPUTS
 from bearing_sweep.models.shaft_system import assemble
@@ -297,42 +299,104 @@ ROLLERS = {"roller_count": 14, "pitch_diameter": 65e-3, "roller_diameter": 10e-3
 
 @pytest.mark.parametrize("speed", [0.0, 2 * np.pi * 12000 / 60])
 def test_a_roller_bearing_on_the_shaft_is_the_one_crb_radial_solves_under_its_load(speed):
-    # Spinning, the rollers' centrifugal force loads the outer contacts more than the inner.
+    # Loads in one plane: the shaft moves along y and tilts about z at the roller bearing,
+    # which is crb_radial's bearing under its load with that misalignment. Spinning, the
+    # rollers' centrifugal force loads the outer contacts more than the inner.
     rollers = ROLLERS
     result = solve([(0.3, 0.045, 0.0)],
                    {"front": ball(0.03), "rear": {"kind": "crb_radial", "position": 0.27,
                                                   **rollers}},
-                   {"gear": {"position": 0.2, "force_x": 300.0, "force_y": 4e3,
-                             "force_z": 1.5e3}}, speed=speed)
+                   {"gear": {"position": 0.2, "force_x": 300.0, "force_y": 4e3}}, speed=speed)
     assert outcome(result["status"]) == CONVERGED
-    on_rear = result["support_load"][1]
-    assert on_rear[[0, 3, 4]] == pytest.approx(0.0, abs=1e-9)  # no thrust, no moment
-    radial = float(np.hypot(on_rear[1], on_rear[2]))
-    alone = crb_radial(radial_load=radial, speed=speed, **{
-        k: v for k, v in rollers.items() if k != "pressure_limit"})
-    moved = result["support_displacement"][1]
-    assert np.hypot(moved[1], moved[2]) == pytest.approx(
-        np.ravel(alone["radial_displacement"])[0], rel=1e-7)
-    # the load along the displacement, as the law's symmetry has it
-    across = on_rear[1] * moved[2] - on_rear[2] * moved[1]
-    assert across == pytest.approx(0.0, abs=1e-9 * radial * np.abs(moved).max())
+    on_rear, moved = result["support_load"][1], result["support_displacement"][1]
+    assert moved[[2, 3]] == pytest.approx(0.0, abs=1e-15)  # in the plane
+    assert on_rear[[0, 2, 3]] == pytest.approx(0.0, abs=1e-9)  # no thrust, nothing across
+    assert abs(on_rear[4]) > 1e-3 * on_rear[1] * ROLLERS["effective_length"]  # a moment
+    alone = crb_radial(radial_load=abs(on_rear[1]), speed=speed,
+                       misalignment=moved[4] * np.sign(moved[1]), **{
+                           k: v for k, v in rollers.items() if k != "pressure_limit"})
+    assert np.ravel(alone["status"])[0] == CONVERGED
+    assert abs(moved[1]) == pytest.approx(np.ravel(alone["radial_displacement"])[0], rel=1e-7)
     assert result["largest_contact_pressure"][1] == pytest.approx(
         np.ravel(alone["largest_contact_pressure"])[0], rel=1e-6)
     assert result["reference_rating_life"][1] == pytest.approx(
         np.ravel(alone["reference_rating_life"])[0], rel=1e-6)
-    # Its stiffness: crb_radial's along the displacement, the secant F / delta across it.
-    stiffness = result["support_stiffness"][1][1:3, 1:3]
-    along = moved[1:3] / np.hypot(moved[1], moved[2])
-    normal = np.array([-along[1], along[0]])
-    assert along @ stiffness @ along == pytest.approx(
-        np.ravel(alone["radial_stiffness"])[0], rel=1e-6)
-    assert normal @ stiffness @ normal == pytest.approx(
-        radial / np.hypot(moved[1], moved[2]), rel=1e-6)
-    assert along @ stiffness @ normal == pytest.approx(0.0, abs=1e-9 * np.abs(stiffness).max())
     # a ball and a roller bearing: sum (L / L_i)^e_i = 1 with their own slopes
     lives, slopes = result["reference_rating_life"], np.array([10 / 9, 9 / 8])
     assert np.sum((result["system_reference_life"] / lives) ** slopes) == pytest.approx(
         1.0, rel=1e-12)
+
+
+@pytest.mark.parametrize("speed", [0.0, 2 * np.pi * 12000 / 60])
+def test_an_aligned_roller_bearing_is_crb_radials_law_along_the_displacement(speed):
+    # Its stiffness: crb_radial's along the displacement, the secant F / delta across it.
+    support = RollerSupport(speed=speed, **ROLLER_SUPPORT)
+    moved = np.array([0.0, 12e-6, -7e-6, 0.0, 0.0])
+    load, stiffness = (value[0] for value in support.loads(moved))
+    delta = np.hypot(moved[1], moved[2])
+    alone = crb_radial(radial_load=np.hypot(load[1], load[2]), speed=speed, **{
+        k: v for k, v in ROLLERS.items() if k != "pressure_limit"})
+    assert delta == pytest.approx(np.ravel(alone["radial_displacement"])[0], rel=1e-7)
+    assert load[[0, 3, 4]] == pytest.approx(0.0, abs=0.0)
+    along = moved[1:3] / delta
+    normal = np.array([-along[1], along[0]])
+    assert load[1:3] @ normal == pytest.approx(0.0, abs=1e-12 * np.abs(load).max())
+    plane = stiffness[1:3, 1:3]
+    assert along @ plane @ along == pytest.approx(np.ravel(alone["radial_stiffness"])[0],
+                                                  rel=1e-6)
+    assert normal @ plane @ normal == pytest.approx(load[1:3] @ along / delta, rel=1e-9)
+    assert along @ plane @ normal == pytest.approx(0.0, abs=1e-9 * np.abs(plane).max())
+
+
+#: RollerSupport's inputs: ROLLERS without what only crb_radial takes.
+ROLLER_SUPPORT = {k: v for k, v in ROLLERS.items() if k != "dynamic_load_rating"}
+
+
+@pytest.mark.parametrize("speed", [0.0, 2 * np.pi * 12000 / 60])
+@pytest.mark.parametrize("moved", [[0.0, 12e-6, 5e-6, 2e-4, -3e-4],
+                                   [0.0, -3e-6, 9e-6, -1e-3, 4e-4],
+                                   [0.0, 0.0, 0.0, 5e-4, 5e-4]])
+def test_a_tilted_roller_bearing_s_stiffness_is_the_derivative_of_its_loads(speed, moved):
+    # Central differences of the loads; the last displacement is centred, where the rollers
+    # stay where they are. A ring tilted in a bearing with clearance may touch no roller.
+    support = RollerSupport(speed=speed, **(ROLLER_SUPPORT | {"clearance": -5e-6}))
+    moved = np.array(moved)
+    load, stiffness = (value[0] for value in support.loads(moved))
+    assert np.all(np.isfinite(load)) and np.abs(load[3:]).max() > 0.0
+    steps = [0.0, 1e-9, 1e-9, 1e-7, 1e-7]
+    difference = np.zeros((5, 5))
+    for column in range(1, 5):
+        step = np.eye(5)[column] * steps[column]
+        if moved[1] == moved[2] == 0.0 and column in (1, 2):
+            continue  # the rollers turn with a displacement from the centre
+        difference[:, column] = (support.loads(moved + step)[0][0]
+                                 - support.loads(moved - step)[0][0]) / (2 * steps[column])
+    checked = [0, 3, 4] if moved[1] == moved[2] == 0.0 else range(5)
+    assert stiffness[:, checked] == pytest.approx(difference[:, checked], rel=1e-5,
+                                                  abs=1e-6 * np.abs(stiffness).max())
+
+
+def test_a_tilted_roller_bearing_at_rest_carries_what_its_slices_carry_in_closed_form():
+    # At rest both contacts of a roller are alike and share the total approach at each slice
+    # equally: p_k = (t_j + m_j x_k) / 2 - crown_k, with t_j the ring's radial approach at the
+    # roller's middle and m_j its tilt across the roller. Each contact carries
+    # q_k = (K / k) p_k^(10/9) (paper 000, eq. 9 with the uniform law), the ring the sum.
+    constant, length, crown, slices = 2.0e9, ROLLERS["effective_length"], 6e-6, 40
+    support = RollerSupport(**(ROLLER_SUPPORT | {"contact_constant": constant, "crown": crown,
+                                                 "slices": slices, "clearance": 4e-6}))
+    moved = np.array([0.0, 9e-6, -4e-6, 3e-4, 6e-4])
+    load = support.loads(moved)[0][0]
+    psi = np.arctan2(moved[2], moved[1]) + 2 * np.pi * np.arange(14) / 14
+    total = moved[1] * np.cos(psi) + moved[2] * np.sin(psi) - 2e-6
+    tilt = moved[4] * np.cos(psi) - moved[3] * np.sin(psi)
+    x = slice_centres(slices) * length / 2
+    depth = np.maximum((total[:, None] + tilt[:, None] * x) / 2
+                       - crown * crown_shape(slices, "logarithmic"), 0.0)
+    slice_load = constant / slices * depth ** (10 / 9)
+    roller, moment = slice_load.sum(axis=1), (slice_load * x).sum(axis=1)
+    expected = [0.0, roller @ np.cos(psi), roller @ np.sin(psi), -moment @ np.sin(psi),
+                moment @ np.cos(psi)]
+    assert load == pytest.approx(expected, rel=1e-9, abs=1e-9 * np.abs(expected).max())
 
 
 @pytest.mark.parametrize("speed_rpm, force", [(20000, 200.0), (35000, 200.0), (35000, 4e3)])
@@ -347,9 +411,12 @@ def test_a_roller_bearing_whose_rollers_fly_out_at_speed_still_finds_its_load(sp
                     "B": spring(0.18, 1e9, axial=1e8)},
                    {"gear": {"position": 0.1, "force_y": force}}, speed=speed)
     assert outcome(result["status"]) == CONVERGED
-    radial = float(np.hypot(*result["support_load"][0][1:3]))
-    assert radial == pytest.approx(force * 80 / 160, rel=1e-9)  # statics: B at 180 mm
-    alone = crb_radial(radial_load=radial, speed=speed, **{
-        k: v for k, v in ROLLERS.items() if k != "pressure_limit"})
-    assert np.hypot(*result["support_displacement"][0][1:3]) == pytest.approx(
-        np.ravel(alone["radial_displacement"])[0], rel=1e-7)
+    on_a, on_b = result["support_load"][:, 1]
+    moment = result["support_load"][0][4]
+    assert on_a + on_b == pytest.approx(force, rel=1e-9)  # statics, B at 180 mm, free to tilt
+    assert on_a * 0.16 - moment == pytest.approx(force * 0.08, rel=1e-9)  # about B
+    moved = result["support_displacement"][0]
+    alone = crb_radial(radial_load=abs(on_a), speed=speed,
+                       misalignment=moved[4] * np.sign(moved[1]), **{
+                           k: v for k, v in ROLLERS.items() if k != "pressure_limit"})
+    assert abs(moved[1]) == pytest.approx(np.ravel(alone["radial_displacement"])[0], rel=1e-7)
