@@ -10,7 +10,7 @@ with gravity; the cage's mass centre lies ``cage_eccentricity`` from its geometr
 from __future__ import annotations
 
 import numpy as np
-from scipy.integrate import solve_ivp
+from scipy.integrate import odeint
 
 from . import cage_dynamics_rhs as rhs
 from .cage_slip import MODELS as STEADY_MODELS
@@ -27,6 +27,8 @@ _SETTLED = 0.5  # the settled part: the last half of the run
 # Relative tolerance of the integration: the settled mean slip hardly moves against a
 # hundredfold tighter one, at a fraction of the cost (benchmarks/RESULTS.md).
 _RELATIVE_TOLERANCE = 1e-4
+#: Steps the solver may take between two samples before it gives up.
+_MAX_STEPS = 100_000
 
 
 def cage_dynamics(radial_load, speed, roller_count, inner_raceway_diameter, roller_diameter,
@@ -163,12 +165,15 @@ def _run(one, count, t, traction, point, cage_density, eccentricity, ring_mass, 
     times = np.arange(int(np.floor(duration / interval + 1e-9)) + 1) * interval
     atol = _tolerances(count)
     scale = 1e3 * atol  # typical magnitudes, for the difference steps of the Jacobian
-    solution = solve_ivp(rhs.derivatives, (0.0, times[-1]), state, method="LSODA",
-                         t_eval=times, args=(p, count), rtol=_RELATIVE_TOLERANCE, atol=atol,
-                         jac=lambda time, y, p, count: rhs.jacobian(time, y, p, count, scale))
-    if not solution.success:
+    # odeint runs LSODA to the end in compiled code, calling back only for the right-hand
+    # side and the Jacobian (solve_ivp returns to Python at every step).
+    y, report = odeint(rhs.derivatives, state, times, args=(p, count),
+                       Dfun=lambda time, y, p, count: rhs.jacobian(time, y, p, count, scale),
+                       rtol=_RELATIVE_TOLERANCE, atol=atol, tfirst=True, full_output=True,
+                       mxstep=_MAX_STEPS)
+    if report["message"] != "Integration successful.":
         return NOT_CONVERGED | validity, None
-    y = solution.y
+    y = y.T
     cage = 4 + 3 * count
     settled = times >= _SETTLED * times[-1]
     slip = 1 - y[cage + 5] / t["omega_kin"]
@@ -261,7 +266,7 @@ MODELS = [Model(
     summary="Cylindrical roller bearing, planar transient: cage whirl, pocket contact, cage and "
             "roller slip in time, from the steady state.",
     reference="Paper 002, eq. 27-28 and section 3",
-    version="4",
+    version="5",
     inputs=tuple(i for i in STEADY_MODELS[0].inputs if i.name not in ("orbit_points", "branch"))
     + (
         Input("cage_density", "kg/m^3", "cage density (brass: 8600; cages: 900 for polymers "

@@ -39,75 +39,114 @@ def roller_loads(approach, centrifugal, constant):
     free = (centrifugal / constant) ** (1.0 / EXPONENT)  # outer approach from F_c alone
     if approach <= free:
         return 0.0, centrifugal
-    low, high = 0.0, approach - free  # inner approach: K(s - d)^n - K d^n - F_c = 0
+    # Inner approach d: K((s - d)^n - d^n) - F_c = 0, falling in d, by Newton's steps kept
+    # in the bracket (bisection where one leaves it); at rest d = s / 2.
+    low, high = 0.0, approach - free
+    inner = min(0.5 * approach, 0.5 * (low + high))
     for _ in range(60):
-        middle = 0.5 * (low + high)
-        if constant * ((approach - middle) ** EXPONENT - middle ** EXPONENT) > centrifugal:
-            low = middle
+        outer = approach - inner
+        outer_root, inner_root = outer ** (EXPONENT - 1.0), inner ** (EXPONENT - 1.0)
+        residual = constant * (outer * outer_root - inner * inner_root) - centrifugal
+        if residual > 0.0:
+            low = inner
         else:
-            high = middle
-        if high - low < 1e-15:
+            high = inner
+        slope = -constant * EXPONENT * (outer_root + inner_root)
+        step = inner - residual / slope
+        if not (low < step < high):
+            step = 0.5 * (low + high)
+        if abs(step - inner) < 1e-15 or residual == 0.0:
+            inner = step
             break
-    inner = constant * (0.5 * (low + high)) ** EXPONENT
-    return inner, inner + centrifugal
+        inner = step
+    return constant * inner ** EXPONENT, constant * inner ** EXPONENT + centrifugal
+
+
+@njit(cache=True)
+def roller_terms(state, j, p, count, geometric, rates):
+    """Roller ``j``'s own rates (its orbit angle, orbit speed and spin, into ``rates``) and
+    what it puts on the ring and the cage: the inner contact's load components, the pocket's
+    push on the roller and the cage's torques from it (the push's lever and the pocket's
+    film and friction couple). ``geometric``: the cage's geometric centre and its velocity."""
+    k = 4 + 3 * j
+    x, y = state[0], state[1]
+    cage = 4 + 3 * count
+    cx, cy, phi, dphi = state[cage], state[cage + 1], state[cage + 4], state[cage + 5]
+    geometric_x, geometric_y, geometric_vx, geometric_vy = (geometric[0], geometric[1],
+                                                            geometric[2], geometric[3])
+    theta, dtheta, spin = state[k], state[k + 1], state[k + 2]
+    c, s = np.cos(theta), np.sin(theta)
+    approach = x * c + y * s - p[HALF_PLAY]
+    centrifugal = p[M_ROLLER] * p[R_PITCH] * dtheta * dtheta
+    q_inner, q_outer = roller_loads(approach, centrifugal, p[CONTACT])
+    f_inner = traction((p[OMEGA_I] - dtheta) * p[R_INNER] - spin * p[R_ROLLER], p) * q_inner
+    f_outer = traction(spin * p[R_ROLLER] - dtheta * p[R_OUTER], p) * q_outer
+    # Pocket j: a circle of radius R + c_p/2 around its centre on the cage.
+    angle = phi + 2.0 * np.pi * j / count
+    pocket_x = geometric_x + p[R_PITCH] * np.cos(angle)
+    pocket_y = geometric_y + p[R_PITCH] * np.sin(angle)
+    dx, dy = p[R_PITCH] * c - pocket_x, p[R_PITCH] * s - pocket_y
+    distance = np.sqrt(dx * dx + dy * dy)
+    push_x = push_y = pocket_force = lever = 0.0
+    if distance > p[HALF_POCKET]:
+        nx, ny = dx / distance, dy / distance
+        roller_vx, roller_vy = -p[R_PITCH] * dtheta * s, p[R_PITCH] * dtheta * c
+        pocket_vx = geometric_vx - p[R_PITCH] * dphi * np.sin(angle)
+        pocket_vy = geometric_vy + p[R_PITCH] * dphi * np.cos(angle)
+        closing = (roller_vx - pocket_vx) * nx + (roller_vy - pocket_vy) * ny
+        normal = p[K_POCKET] * (distance - p[HALF_POCKET]) + p[C_POCKET] * closing
+        if normal > 0.0:
+            pocket_force = normal
+            push_x, push_y = -normal * nx, -normal * ny  # on the roller
+            lever = (pocket_x - cx) * push_y - (pocket_y - cy) * push_x
+    tangential = -push_x * s + push_y * c
+    drag = p[WINDAGE] * dtheta * abs(dtheta)
+    rates[0] = dtheta
+    rates[1] = (f_inner + f_outer - drag + tangential) / (p[M_ROLLER] * p[R_PITCH])
+    # The pocket's film and friction couple on the roller, in its spin's sense; the cage
+    # receives the same number counted with the orbit, the opposite sense: the reaction
+    # (see models.cage_slip._CageBalance.orbit for the friction force's lever).
+    pocket_couple = -p[POCKET_FILM] * spin \
+        - p[MU_POCKET] * pocket_force * p[R_ROLLER] * np.sign(spin)
+    rates[2] = (p[R_ROLLER] * (f_inner - f_outer) + pocket_couple
+                - p[END_FILM] * spin) / p[J_ROLLER]
+    return q_inner * c, q_inner * s, push_x, push_y, lever, pocket_couple
+
+
+@njit(cache=True)
+def _geometric(state, p, count):
+    """The cage's geometric centre and its velocity, from its mass centre's state."""
+    cage = 4 + 3 * count
+    cvx, cvy, phi, dphi = state[cage + 2], state[cage + 3], state[cage + 4], state[cage + 5]
+    geometric = np.empty(4)
+    geometric[0] = state[cage] - p[ECCENTRICITY] * np.cos(phi)
+    geometric[1] = state[cage + 1] - p[ECCENTRICITY] * np.sin(phi)
+    geometric[2] = cvx + p[ECCENTRICITY] * dphi * np.sin(phi)
+    geometric[3] = cvy - p[ECCENTRICITY] * dphi * np.cos(phi)
+    return geometric
 
 
 @njit(cache=True)
 def derivatives(t, state, p, count):
     out = np.zeros_like(state)
-    x, y, vx, vy = state[0], state[1], state[2], state[3]
+    vx, vy = state[2], state[3]
     cage = 4 + 3 * count
-    cx, cy, cvx, cvy, phi, dphi = (state[cage], state[cage + 1], state[cage + 2],
-                                   state[cage + 3], state[cage + 4], state[cage + 5])
+    cvx, cvy, dphi = state[cage + 2], state[cage + 3], state[cage + 5]
     ring_fx, ring_fy = 0.0, -p[RADIAL_LOAD] - p[M_RING] * p[GRAVITY]
     cage_fx, cage_fy, cage_torque = 0.0, -p[M_CAGE] * p[GRAVITY], 0.0
-    geometric_x = cx - p[ECCENTRICITY] * np.cos(phi)
-    geometric_y = cy - p[ECCENTRICITY] * np.sin(phi)
-    geometric_vx = cvx + p[ECCENTRICITY] * dphi * np.sin(phi)
-    geometric_vy = cvy - p[ECCENTRICITY] * dphi * np.cos(phi)
+    geometric = _geometric(state, p, count)
+    rates = np.empty(3)
     for j in range(count):
+        load_x, load_y, push_x, push_y, lever, couple = roller_terms(state, j, p, count,
+                                                                     geometric, rates)
+        ring_fx -= load_x
+        ring_fy -= load_y
+        cage_fx -= push_x
+        cage_fy -= push_y
+        cage_torque -= lever
+        cage_torque += couple
         k = 4 + 3 * j
-        theta, dtheta, spin = state[k], state[k + 1], state[k + 2]
-        c, s = np.cos(theta), np.sin(theta)
-        approach = x * c + y * s - p[HALF_PLAY]
-        centrifugal = p[M_ROLLER] * p[R_PITCH] * dtheta * dtheta
-        q_inner, q_outer = roller_loads(approach, centrifugal, p[CONTACT])
-        ring_fx -= q_inner * c
-        ring_fy -= q_inner * s
-        f_inner = traction((p[OMEGA_I] - dtheta) * p[R_INNER] - spin * p[R_ROLLER], p) * q_inner
-        f_outer = traction(spin * p[R_ROLLER] - dtheta * p[R_OUTER], p) * q_outer
-        # Pocket j: a circle of radius R + c_p/2 around its centre on the cage.
-        angle = phi + 2.0 * np.pi * j / count
-        pocket_x = geometric_x + p[R_PITCH] * np.cos(angle)
-        pocket_y = geometric_y + p[R_PITCH] * np.sin(angle)
-        dx, dy = p[R_PITCH] * c - pocket_x, p[R_PITCH] * s - pocket_y
-        distance = np.sqrt(dx * dx + dy * dy)
-        push_x = push_y = pocket_force = 0.0
-        if distance > p[HALF_POCKET]:
-            nx, ny = dx / distance, dy / distance
-            roller_vx, roller_vy = -p[R_PITCH] * dtheta * s, p[R_PITCH] * dtheta * c
-            pocket_vx = geometric_vx - p[R_PITCH] * dphi * np.sin(angle)
-            pocket_vy = geometric_vy + p[R_PITCH] * dphi * np.cos(angle)
-            closing = (roller_vx - pocket_vx) * nx + (roller_vy - pocket_vy) * ny
-            normal = p[K_POCKET] * (distance - p[HALF_POCKET]) + p[C_POCKET] * closing
-            if normal > 0.0:
-                pocket_force = normal
-                push_x, push_y = -normal * nx, -normal * ny  # on the roller
-                cage_fx -= push_x
-                cage_fy -= push_y
-                cage_torque -= (pocket_x - cx) * push_y - (pocket_y - cy) * push_x
-        tangential = -push_x * s + push_y * c
-        drag = p[WINDAGE] * dtheta * abs(dtheta)
-        out[k] = dtheta
-        out[k + 1] = (f_inner + f_outer - drag + tangential) / (p[M_ROLLER] * p[R_PITCH])
-        # The pocket's film and friction couple on the roller, in its spin's sense; the cage
-        # receives the same number counted with the orbit, the opposite sense: the reaction
-        # (see models.cage_slip._CageBalance.orbit for the friction force's lever).
-        pocket_couple = -p[POCKET_FILM] * spin \
-            - p[MU_POCKET] * pocket_force * p[R_ROLLER] * np.sign(spin)
-        cage_torque += pocket_couple
-        out[k + 2] = (p[R_ROLLER] * (f_inner - f_outer) + pocket_couple
-                      - p[END_FILM] * spin) / p[J_ROLLER]
+        out[k], out[k + 1], out[k + 2] = rates[0], rates[1], rates[2]
     out[0], out[1] = vx, vy
     out[2] = (ring_fx - p[C_RING] * vx) / p[M_RING]
     out[3] = (ring_fy - p[C_RING] * vy) / p[M_RING]
@@ -120,17 +159,38 @@ def derivatives(t, state, p, count):
 
 @njit(cache=True)
 def jacobian(t, state, p, count, scale):
-    """Forward-difference Jacobian of :func:`derivatives`, compiled: the stiff solver needs
-    it often, and one compiled call costs less than the solver's own difference loop."""
+    """Forward-difference Jacobian of :func:`derivatives`, compiled. A roller's own state
+    moves only its own rates and what it puts on the ring and the cage, so its columns
+    difference that roller's terms alone; the ring's and the cage's columns difference the
+    whole right-hand side."""
     size = state.size
+    cage = 4 + 3 * count
     base = derivatives(t, state, p, count)
-    matrix = np.empty((size, size))
+    matrix = np.zeros((size, size))
     shifted = state.copy()
-    for i in range(size):
+    for i in list(range(4)) + list(range(cage, size)):
         step = 1.5e-8 * max(abs(state[i]), scale[i])
         shifted[i] = state[i] + step
         column = derivatives(t, shifted, p, count)
         for row in range(size):  # element by element: array arithmetic compiles slower
             matrix[row, i] = (column[row] - base[row]) / step
         shifted[i] = state[i]
+    geometric = _geometric(state, p, count)
+    own, moved = np.empty(3), np.empty(3)
+    for j in range(count):
+        k = 4 + 3 * j
+        terms = roller_terms(state, j, p, count, geometric, own)
+        for i in range(k, k + 3):
+            step = 1.5e-8 * max(abs(state[i]), scale[i])
+            shifted[i] = state[i] + step
+            changed = roller_terms(shifted, j, p, count, geometric, moved)
+            shifted[i] = state[i]
+            for row in range(3):
+                matrix[k + row, i] = (moved[row] - own[row]) / step
+            matrix[2, i] = -(changed[0] - terms[0]) / step / p[M_RING]
+            matrix[3, i] = -(changed[1] - terms[1]) / step / p[M_RING]
+            matrix[cage + 2, i] = -(changed[2] - terms[2]) / step / p[M_CAGE]
+            matrix[cage + 3, i] = -(changed[3] - terms[3]) / step / p[M_CAGE]
+            matrix[cage + 5, i] = (-(changed[4] - terms[4]) + (changed[5] - terms[5])) \
+                / step / p[J_CAGE]
     return matrix
