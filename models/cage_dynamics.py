@@ -3,14 +3,13 @@ whirl, pocket contact, cage slip in time (paper 002, section 3).
 
 Started from the steady state of :func:`models.cage_slip.cage_slip` (cage speed, each roller's
 spin at its orbit position) and the quasi-static ring position of :func:`crb_radial`, the
-equations of :mod:`models.cage_dynamics_rhs` are integrated with an adaptive solver that
-switches to a stiff method where the contacts make it stiff (LSODA). The load acts along -y
+equations of :mod:`models.cage_dynamics_rhs` are integrated by the adaptive Dormand-Prince
+5(4) method of :mod:`models.dormand_prince`, compiled whole. The load acts along -y
 with gravity; the cage's mass centre lies ``cage_eccentricity`` from its geometric centre.
 """
 from __future__ import annotations
 
 import numpy as np
-from scipy.integrate import odeint
 
 from . import cage_dynamics_rhs as rhs
 from .cage_slip import MODELS as STEADY_MODELS
@@ -24,11 +23,11 @@ from .registry import (CONVERGED, NOT_CONVERGED, Constraint, DimCoordinate, Inpu
 
 GRAVITY = 9.81
 _SETTLED = 0.5  # the settled part: the last half of the run
-# Relative tolerance of the integration: the settled mean slip hardly moves against a
-# hundredfold tighter one, at a fraction of the cost (benchmarks/RESULTS.md).
+# Relative tolerance of the integration (with _tolerances' absolute ones): the settled mean
+# slips hardly move against every tolerance far tighter (benchmarks/RESULTS.md).
 _RELATIVE_TOLERANCE = 1e-4
-#: Steps the solver may take between two samples before it gives up.
-_MAX_STEPS = 100_000
+#: Steps the integration may take before it gives up.
+_MAX_STEPS = 10_000_000
 
 
 def cage_dynamics(radial_load, speed, roller_count, inner_raceway_diameter, roller_diameter,
@@ -163,17 +162,11 @@ def _run(one, count, t, traction, point, cage_density, eccentricity, ring_mass, 
     state = _start(count, steady, np.ravel(ring["radial_displacement"])[0], omega_c, eccentricity,
                    t["spin_kin"])
     times = np.arange(int(np.floor(duration / interval + 1e-9)) + 1) * interval
-    atol = _tolerances(count)
-    scale = 1e3 * atol  # typical magnitudes, for the difference steps of the Jacobian
-    # odeint runs LSODA to the end in compiled code, calling back only for the right-hand
-    # side and the Jacobian (solve_ivp returns to Python at every step).
-    y, report = odeint(rhs.derivatives, state, times, args=(p, count),
-                       Dfun=lambda time, y, p, count: rhs.jacobian(time, y, p, count, scale),
-                       rtol=_RELATIVE_TOLERANCE, atol=atol, tfirst=True, full_output=True,
-                       mxstep=_MAX_STEPS)
-    if report["message"] != "Integration successful.":
+    samples, reached = rhs.integrate(state, times, p, count, _RELATIVE_TOLERANCE,
+                                     _tolerances(count), _MAX_STEPS)
+    if not reached:
         return NOT_CONVERGED | validity, None
-    y = y.T
+    y = samples.T
     cage = 4 + 3 * count
     settled = times >= _SETTLED * times[-1]
     slip = 1 - y[cage + 5] / t["omega_kin"]
@@ -266,7 +259,7 @@ MODELS = [Model(
     summary="Cylindrical roller bearing, planar transient: cage whirl, pocket contact, cage and "
             "roller slip in time, from the steady state.",
     reference="Paper 002, eq. 27-28 and section 3",
-    version="5",
+    version="6",
     inputs=tuple(i for i in STEADY_MODELS[0].inputs if i.name not in ("orbit_points", "branch"))
     + (
         Input("cage_density", "kg/m^3", "cage density (brass: 8600; cages: 900 for polymers "
@@ -323,7 +316,7 @@ MODELS = [Model(
         Constraint(("duration", "output_interval"), _samples_fit,
                    "output_interval must not exceed duration, and at most 1e5 samples"),
     ),
-    seconds_per_point=2.0,
+    seconds_per_point=0.07,  # at its default bearing time (benchmarks/declared_costs.py)
     points_per_call=1,
     validity="cage_slip's, for the steady state it starts from: " + STEADY_VALIDITY,
 )]

@@ -29,6 +29,8 @@ from numba import njit
 
 from .contact_laws import (damped_spring, palmgren_slice, regularised_direction,
                            short_bearing_pressure, traction_coefficient)
+from .dormand_prince import (FIRST_STEP, SMALLEST_STEP, arrival, error_norm, next_step,
+                             stage_argument)
 
 (OMEGA_I, LOAD, R_INNER, R_OUTER, RADIUS, LENGTH, PITCH, M_ROLLER, J_AXIAL, J_TRANSVERSE,
  K_SLICE, HUNT, BED_POCKET, BED_RIB, MU_DRY, VISCOSITY, FILM_FLOOR, POCKET_RADIUS,
@@ -378,19 +380,6 @@ def _symmetric_top(omega, axis, moment, j_axial, j_transverse):
 
 
 # Dormand-Prince 5(4) tableau
-_C = np.array([0.0, 1 / 5, 3 / 10, 4 / 5, 8 / 9, 1.0, 1.0])
-_A = np.array([
-    [0.0, 0.0, 0.0, 0.0, 0.0, 0.0],
-    [1 / 5, 0.0, 0.0, 0.0, 0.0, 0.0],
-    [3 / 40, 9 / 40, 0.0, 0.0, 0.0, 0.0],
-    [44 / 45, -56 / 15, 32 / 9, 0.0, 0.0, 0.0],
-    [19372 / 6561, -25360 / 2187, 64448 / 6561, -212 / 729, 0.0, 0.0],
-    [9017 / 3168, -355 / 33, 46732 / 5247, 49 / 176, -5103 / 18656, 0.0],
-    [35 / 384, 0.0, 500 / 1113, 125 / 192, -2187 / 6784, 11 / 84]])
-_ERROR = np.array([71 / 57600, 0.0, -71 / 16695, 71 / 1920, -17253 / 339200, 22 / 525,
-                   -1 / 40])
-
-
 @njit(cache=True)
 def _normalise(state, count):
     """Project the roller axes and the cage's quaternion back to unit length."""
@@ -457,11 +446,9 @@ def _accumulators(times, state, record):
 
 @njit(cache=True)
 def integrate(state, times, p, count, geometry, record, settled_from, rtol, atol, max_steps):
-    """Dormand-Prince 5(4) with a PI step-size controller, each sample time hit by a step.
-
-    The controller (``h ~ err^-0.17 err_last^0.04``, as Hairer's DOPRI5) keeps steps near the
-    stability limit that the stiff pocket films set without the rejections a plain one
-    makes there.
+    """Dormand-Prince 5(4) with a PI step-size controller (:mod:`models.dormand_prince`),
+    each sample time hit by a step; the controller keeps steps near the stability limit
+    that the stiff pocket films set.
 
     Returns the samples ``(times, state)``, the settled samples' element extremes (see
     :func:`_observe`), the contact events, the steps taken and whether it reached the end.
@@ -473,47 +460,27 @@ def integrate(state, times, p, count, geometry, record, settled_from, rtol, atol
     stages = np.empty((7, y.size))
     _copy(derivatives(y, p, count, slice_z, arc_theta, arc_z, face_r, face_phi, face_area,
                       arc_force, end_gap, rib_gap, dry, 0.0), stages[0])
-    t, h, steps, last_norm = times[0], 1e-7, 0, 1e-4
+    t, h, steps, last_norm = times[0], FIRST_STEP, 0, 1e-4
     _copy(y, samples[0])
     _observe(y, p, count, geometry, record, t >= settled_from, arc_max, end_min, rib_min,
              last, events)
     for index in range(1, times.size):
         while t < times[index]:
-            if steps >= max_steps or h < 1e-15:
+            if steps >= max_steps or h < SMALLEST_STEP:
                 return samples, arc_max, end_min, rib_min, events, steps, False
             step = min(h, times[index] - t)
             for s in range(1, 7):
-                trial = y.copy()
-                for r in range(s):
-                    if _A[s, r] != 0.0:
-                        weight = step * _A[s, r]
-                        for i in range(y.size):
-                            trial[i] += weight * stages[r, i]
+                trial = stage_argument(y, stages, s, step)
                 _copy(derivatives(trial, p, count, slice_z, arc_theta, arc_z, face_r, face_phi,
                                   face_area, arc_force, end_gap, rib_gap, dry, 0.0), stages[s])
-            # the 6th stage's argument is the 5th-order solution (first same as last)
-            squares = 0.0
-            for i in range(y.size):
-                error = 0.0
-                for s in range(7):
-                    error += step * _ERROR[s] * stages[s, i]
-                scaled = error / (atol[i] + rtol * np.maximum(abs(y[i]), abs(trial[i])))
-                squares += scaled * scaled
-            norm = np.sqrt(squares / y.size)
             steps += 1
-            if not np.isfinite(norm):
-                h = 0.1 * step
-                continue
-            if norm <= 1.0:
-                t = t + step if step < times[index] - t else times[index]
+            accepted, h, last_norm = next_step(
+                step, error_norm(y, trial, stages, step, rtol, atol), last_norm)
+            if accepted:
+                t = arrival(t, step, times[index])
                 y = trial
                 _normalise(y, count)
                 _copy(stages[6], stages[0])
-                norm = max(norm, 1e-4)
-                h = step * min(5.0, max(0.2, 0.9 * norm ** -0.17 * last_norm ** 0.04))
-                last_norm = norm
-            else:
-                h = step * max(0.2, 0.9 * norm ** -0.17)
         _copy(y, samples[index])
         _observe(y, p, count, geometry, record, t >= settled_from, arc_max, end_min,
                  rib_min, last, events)

@@ -17,6 +17,8 @@ import numpy as np
 from numba import njit
 
 from .contact_laws import traction_coefficient
+from .dormand_prince import (FIRST_STEP, SMALLEST_STEP, arrival, error_norm, next_step,
+                             stage_argument)
 
 (OMEGA_I, RADIAL_LOAD, R_INNER, R_OUTER, R_ROLLER, R_PITCH, CONTACT, HALF_PLAY, M_ROLLER,
  J_ROLLER, POCKET_FILM, END_FILM, WINDAGE, MU_POCKET, M_RING, C_RING, M_CAGE, J_CAGE,
@@ -158,39 +160,30 @@ def derivatives(t, state, p, count):
 
 
 @njit(cache=True)
-def jacobian(t, state, p, count, scale):
-    """Forward-difference Jacobian of :func:`derivatives`, compiled. A roller's own state
-    moves only its own rates and what it puts on the ring and the cage, so its columns
-    difference that roller's terms alone; the ring's and the cage's columns difference the
-    whole right-hand side."""
-    size = state.size
-    cage = 4 + 3 * count
-    base = derivatives(t, state, p, count)
-    matrix = np.zeros((size, size))
-    shifted = state.copy()
-    for i in list(range(4)) + list(range(cage, size)):
-        step = 1.5e-8 * max(abs(state[i]), scale[i])
-        shifted[i] = state[i] + step
-        column = derivatives(t, shifted, p, count)
-        for row in range(size):  # element by element: array arithmetic compiles slower
-            matrix[row, i] = (column[row] - base[row]) / step
-        shifted[i] = state[i]
-    geometric = _geometric(state, p, count)
-    own, moved = np.empty(3), np.empty(3)
-    for j in range(count):
-        k = 4 + 3 * j
-        terms = roller_terms(state, j, p, count, geometric, own)
-        for i in range(k, k + 3):
-            step = 1.5e-8 * max(abs(state[i]), scale[i])
-            shifted[i] = state[i] + step
-            changed = roller_terms(shifted, j, p, count, geometric, moved)
-            shifted[i] = state[i]
-            for row in range(3):
-                matrix[k + row, i] = (moved[row] - own[row]) / step
-            matrix[2, i] = -(changed[0] - terms[0]) / step / p[M_RING]
-            matrix[3, i] = -(changed[1] - terms[1]) / step / p[M_RING]
-            matrix[cage + 2, i] = -(changed[2] - terms[2]) / step / p[M_CAGE]
-            matrix[cage + 3, i] = -(changed[3] - terms[3]) / step / p[M_CAGE]
-            matrix[cage + 5, i] = (-(changed[4] - terms[4]) + (changed[5] - terms[5])) \
-                / step / p[J_CAGE]
-    return matrix
+def integrate(state, times, p, count, rtol, atol, max_steps):
+    """Dormand-Prince 5(4) with a PI step-size controller (:mod:`models.dormand_prince`),
+    each sample time hit by a step. Returns the samples ``(times, state)`` and whether the
+    integration reached the end within ``max_steps`` steps."""
+    samples = np.full((times.size, state.size), np.nan)
+    y = state.copy()
+    stages = np.empty((7, y.size))
+    stages[0] = derivatives(times[0], y, p, count)
+    t, h, steps, last_norm = times[0], FIRST_STEP, 0, 1e-4
+    samples[0] = y
+    for index in range(1, times.size):
+        while t < times[index]:
+            if steps >= max_steps or h < SMALLEST_STEP:
+                return samples, False
+            step = min(h, times[index] - t)
+            for s in range(1, 7):
+                trial = stage_argument(y, stages, s, step)
+                stages[s] = derivatives(t, trial, p, count)
+            steps += 1
+            accepted, h, last_norm = next_step(
+                step, error_norm(y, trial, stages, step, rtol, atol), last_norm)
+            if accepted:
+                t = arrival(t, step, times[index])
+                y = trial
+                stages[0] = stages[6]
+        samples[index] = y
+    return samples, True

@@ -37,6 +37,9 @@ from .solvers import solve_increasing
 AIR_DENSITY = 1.2  # [kg/m^3]
 _POSITIONS_PER_PITCH = 20  # cage positions computed per roller pitch: the orbit's resolution
 _ORBITS = 2  # orbits integrated per trial cage speed; the load zone resets the spin each time
+#: The bearing's terms a roller's spin around the orbit takes, in orbit_spins' order.
+_ORBIT_TERMS = ("omega_i", "inertia", "mu_pocket", "pocket_film", "end_film", "radius", "r_i",
+                "r_o", "windage")
 # The cage-speed range searched, as shares of the kinematic cage speed: from 98 % slip to just
 # above the kinematic speed (where the traction turns and the balance is sure to be positive).
 _LOWEST_CAGE_SPEED, _HIGHEST_CAGE_SPEED = 0.02, 1.001
@@ -268,32 +271,18 @@ class _CageBalance:
         """Spin around the orbit ``(n, steps)``, the rollers' mean forward push on the cage
         [N] and the mean couple the cage receives from a roller's pocket [N m], at cage speeds
         ``omega_c`` for the points ``index`` (which may repeat)."""
+        from .cage_slip_orbit import orbit_spins  # numba: only when solving
+
         t = self.terms
         q_i, q_o = self.inner_load[index], self.outer_load[index]
-        inertia, mu_p = t["inertia"][index], t["mu_pocket"][index]
-        pocket_film, end_film = t["pocket_film"][index], t["end_film"][index]
-        rr, ri, ro = t["radius"][index], t["r_i"][index], t["r_o"][index]
-        drag = t["windage"][index] * omega_c**2
-        steps = q_i.shape[1]
-        h = 2.0 * np.pi / steps / omega_c / inertia
-        spin = omega_c * ro / rr  # pure rolling at the outer raceway to start
-        history = np.empty((index.size, steps))
-        pushing = np.empty((index.size, steps))
-        pocket = np.empty((index.size, steps))
-        for step in range(_ORBITS * steps):
-            k = step % steps
-            mu_i, slope_i = t["traction"](
-                (t["omega_i"][index] - omega_c) * ri - spin * rr, index)
-            mu_o, slope_o = t["traction"](spin * rr - omega_c * ro, index)
-            forward = mu_i * q_i[:, k] + mu_o * q_o[:, k] - drag
-            # The couple of the pocket's film and friction on the roller, in its spin's sense.
-            pocket_couple = -pocket_film * spin - mu_p * np.abs(forward) * rr * np.sign(spin)
-            torque = rr * (mu_i * q_i[:, k] - mu_o * q_o[:, k]) + pocket_couple \
-                - end_film * spin
-            stiffness = rr**2 * (slope_i * q_i[:, k] + slope_o * q_o[:, k]) \
-                + pocket_film + end_film
-            spin = spin + h * torque / (1.0 + h * stiffness)  # linearly implicit Euler
-            history[:, k], pushing[:, k], pocket[:, k] = spin, forward, pocket_couple
+        history, pushing, pocket = (np.empty(q_i.shape) for _ in range(3))
+        curve = t["traction"]
+        omega_c, index = np.broadcast_arrays(np.asarray(omega_c, dtype=float), index)
+        orbit_spins(np.ascontiguousarray(q_i), np.ascontiguousarray(q_o),
+                    np.ascontiguousarray(omega_c), *(np.ascontiguousarray(t[name][index])
+                                                     for name in _ORBIT_TERMS),
+                    np.stack([curve.a[index], curve.b[index], curve.c[index],
+                              curve.d[index]], axis=-1), _ORBITS, history, pushing, pocket)
         # Reaction: the cage receives minus the roller's pocket couple about the axis. The
         # roller's couple is counted positive opposite to the orbit, the cage's with it: the
         # same number, so a film braking a roller's (positive) spin brakes the cage too. The
@@ -663,7 +652,7 @@ MODELS = [Model(
                    "sin(180 deg / roller_count) away"),
         VISCOSITY_ORDER,
     ),
-    seconds_per_point=4.5e-3,  # measured by benchmarks/declared_costs.py
+    seconds_per_point=1.3e-3,  # measured by benchmarks/declared_costs.py
     points_per_call=64,
     validity=VALIDITY,
 )]
