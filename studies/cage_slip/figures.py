@@ -33,6 +33,11 @@ FIGURES = {
                        "(the spread of which is eq. 28's deviation ratio).",
     "fig19_20_histories.png": "Figs. 19-20: cage slip and the slip of roller 1 against time, "
                               "same runs.",
+    "pocket_play.png": "The steady and the planar model at their common case (2 kN, 6000 "
+                       "r/min, no eccentricity) against the pocket clearance: the steady "
+                       "model holds each roller at the cage's orbit speed, the planar one "
+                       "lets it move across its pocket's play; as the play closes, so does "
+                       "the gap between them.",
 }
 
 
@@ -90,6 +95,30 @@ def draw(results: Path, figures: Path):
                            "axis; steady model, high-slip branch"), fontsize=9)
     save(figure, figures, "sensitivity.png")
     _transient(results, figures)
+    _pocket_play(results, figures)
+
+
+def _pocket_play(results: Path, figures: Path):
+    steady = result(results, "pocket_play_steady")
+    planar = result(results, "pocket_play_planar")
+    clearance = steady.pocket_clearance
+    ratio = planar.mean_cage_slip.values / steady.cage_slip.values
+    figure, (slips, gap) = subplots(1, 2, figsize=(10, 3.9))
+    slips.plot(clearance, steady.cage_slip, "-", color="C0", label="steady model")
+    slips.plot(planar.pocket_clearance, planar.mean_cage_slip, "o", color="C1",
+               label="planar transient, settled mean")
+    slips.set(xlabel=label(clearance, long=True), ylabel=label(steady.cage_slip, long=True),
+              xscale="log")
+    slips.legend(fontsize=7)
+    gap.plot(clearance, ratio, "o-", color="C1")
+    gap.axhline(1.0, color="k", lw=1, ls=":")
+    gap.set(xlabel=label(clearance, long=True),
+            ylabel="cage slip, planar over steady [-]", xscale="log")
+    for axis in (slips, gap):
+        axis.grid(alpha=0.3)
+    figure.suptitle(_title(steady, "radial_load", "speed", note="no eccentricity"),
+                    fontsize=9)
+    save(figure, figures, "pocket_play.png")
 
 
 def _fig17(results: Path, figures: Path):

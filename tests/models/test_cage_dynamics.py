@@ -36,6 +36,26 @@ def test_a_whirling_cage_slips_somewhat_more_than_the_steady_estimate():
     assert transient["roller_slip"].shape == (1, 201, 13)
 
 
+def test_the_gap_between_the_planar_and_the_steady_slip_is_the_rollers_play_in_the_pockets():
+    # The symmetric case (paper002-test's bearing, 2 kN, 6000 r/min, no eccentricity, the
+    # real cage, films and pocket friction): the steady model holds every roller at the
+    # cage's orbit speed, the planar one lets it move across its pocket clearance. Closing
+    # the clearance closes the gap between them, and nothing else is needed.
+    bearing = dict(TEST, pocket_friction=0.1, roller_density=7820.0, poisson_ratio=0.28,
+                   end_film_thickness=0.015 * MM)
+    gaps = []
+    for clearance in (0.1, 0.03, 0.01, 0.003):
+        tight = dict(bearing, pocket_clearance=clearance * MM)
+        steady = cage_slip(2000.0, 6000 * RPM, **tight)["cage_slip"][0]
+        planar = cage_dynamics(2000.0, 6000 * RPM, **tight, duration=0.1,
+                               output_interval=2e-4)
+        assert planar["status"][0] == 0
+        gaps.append(planar["mean_cage_slip"][0] / steady - 1.0)
+    assert gaps[0] > 0.5  # at the preset's 0.1 mm: the rollers' play nearly doubles it
+    assert all(later < earlier for earlier, later in zip(gaps, gaps[1:]))
+    assert abs(gaps[-1]) < 0.02
+
+
 def test_radial_eccentricity_steadies_the_whirl():
     # Paper 002, section 3 (Fig. 18): 2 mm radial eccentricity of the cage's mass makes the
     # whirl regular, its centre's speed nearly constant.
