@@ -29,8 +29,7 @@ from numba import njit
 
 from .contact_laws import (damped_spring, palmgren_slice, regularised_direction,
                            short_bearing_pressure, traction_coefficient)
-from .dormand_prince import (FIRST_STEP, SMALLEST_STEP, arrival, error_norm, next_step,
-                             stage_argument)
+from .dormand_prince import FIRST_STEP, SMALLEST_STEP, conclude, stage_argument
 
 (OMEGA_I, LOAD, R_INNER, R_OUTER, RADIUS, LENGTH, PITCH, M_ROLLER, J_AXIAL, J_TRANSVERSE,
  K_SLICE, HUNT, BED_POCKET, BED_RIB, MU_DRY, VISCOSITY, FILM_FLOOR, POCKET_RADIUS,
@@ -474,10 +473,9 @@ def integrate(state, times, p, count, geometry, record, settled_from, rtol, atol
                 _copy(derivatives(trial, p, count, slice_z, arc_theta, arc_z, face_r, face_phi,
                                   face_area, arc_force, end_gap, rib_gap, dry, 0.0), stages[s])
             steps += 1
-            accepted, h, last_norm = next_step(
-                step, error_norm(y, trial, stages, step, rtol, atol), last_norm)
+            accepted, h, last_norm, t = conclude(y, trial, stages, step, rtol, atol, last_norm,
+                                                 t, times[index])
             if accepted:
-                t = arrival(t, step, times[index])
                 y = trial
                 _normalise(y, count)
                 _copy(stages[6], stages[0])

@@ -17,8 +17,7 @@ import numpy as np
 from numba import njit
 
 from .contact_laws import traction_coefficient
-from .dormand_prince import (FIRST_STEP, SMALLEST_STEP, arrival, error_norm, next_step,
-                             stage_argument)
+from .dormand_prince import FIRST_STEP, SMALLEST_STEP, conclude, stage_argument
 
 (OMEGA_I, RADIAL_LOAD, R_INNER, R_OUTER, R_ROLLER, R_PITCH, CONTACT, HALF_PLAY, M_ROLLER,
  J_ROLLER, POCKET_FILM, END_FILM, WINDAGE, MU_POCKET, M_RING, C_RING, M_CAGE, J_CAGE,
@@ -179,10 +178,9 @@ def integrate(state, times, p, count, rtol, atol, max_steps):
                 trial = stage_argument(y, stages, s, step)
                 stages[s] = derivatives(t, trial, p, count)
             steps += 1
-            accepted, h, last_norm = next_step(
-                step, error_norm(y, trial, stages, step, rtol, atol), last_norm)
+            accepted, h, last_norm, t = conclude(y, trial, stages, step, rtol, atol, last_norm,
+                                                 t, times[index])
             if accepted:
-                t = arrival(t, step, times[index])
                 y = trial
                 stages[0] = stages[6]
         samples[index] = y

@@ -78,7 +78,12 @@ def next_step(step, norm, last_norm):
 
 
 @njit(cache=True)
-def arrival(t, step, target):
-    """The time after an accepted step ``step`` from ``t``: ``target`` itself where the step
-    was cut to reach it."""
-    return t + step if step < target - t else target
+def conclude(y, trial, stages, step, rtol, atol, last_norm, t, target):
+    """The end of a step ``step`` from ``y`` at ``t`` to ``trial``, its stages evaluated:
+    whether it is accepted, the next step's size, the controller's kept error and the time
+    reached (``target`` itself where the step was cut to reach it; ``t`` if rejected)."""
+    accepted, h, last_norm = next_step(step, error_norm(y, trial, stages, step, rtol, atol),
+                                       last_norm)
+    if accepted:
+        t = t + step if step < target - t else target
+    return accepted, h, last_norm, t
