@@ -115,12 +115,13 @@ class _RollerSet:
     """The rollers of ``P`` bearings (one per grid point): geometry and contact laws."""
 
     def __init__(self, cos_azimuth, half_clearance, crown, constant, centrifugal,
-                 slices, crown_profile, slice_law, outer_contact, tilt=None):
+                 slices, crown_profile, slice_law, outer_contact, tilt=None, sliced=False):
         self.cos = cos_azimuth  # (P, Z)
         self.half_clearance, self.crown = half_clearance, crown  # (P,)
         self.constant, self.centrifugal = constant, centrifugal  # (P,)
-        # tilt: (P, Z) gap change from the middle to the end of each roller's contacts.
-        self.tilt = tilt if tilt is not None and np.any(tilt != 0.0) else None
+        # tilt: (P, Z) gap change from the middle to the end of each roller's contacts; kept
+        # ``sliced`` (every slice its own, where they lie) even where it is zero.
+        self.tilt = tilt if tilt is not None and (sliced or np.any(tilt != 0.0)) else None
         # Approaches are counted at each roller's slice with the smallest gap, so that every
         # gap is >= 0 and a roller touches when its approach does; a tilted roller's deepest
         # slice lies towards an end, 2 * floor nearer the raceways than its middle.
@@ -146,14 +147,16 @@ class _RollerSet:
             self.sorted_gaps = raw
         self.free_outer_approach, self.free_outer_converged = self._free_outer_approach()
 
-    def tilted(self, points, tilt):
+    def tilted(self, points, tilt, sliced=False):
         """The rollers of the bearings ``points``, one bearing per row, tilted by ``tilt``
         ``(p, Z)``: each roller's gap change from the middle to the end of its contacts [m]
         (a ring tilted by ``theta`` across a roller gives ``theta l / 4``: the roller takes
-        half)."""
+        half). ``sliced``: every slice kept where it lies, even without a tilt (what a
+        moment against the tilt sums)."""
         return _RollerSet(self.cos[points], self.half_clearance[points], self.crown[points],
                           self.constant[points], self.centrifugal[points], self.slices,
-                          self.crown_profile, self.slice_law, self.outer_contact, tilt)
+                          self.crown_profile, self.slice_law, self.outer_contact, tilt,
+                          sliced)
 
     def gaps(self, points, rollers):
         """Gap of every slice of the rollers ``rollers`` of the bearings ``points`` [m],

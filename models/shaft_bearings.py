@@ -146,8 +146,9 @@ class RollerSupport:
 
     Without a tilt the law is crb_radial's along the displacement ``d`` of length ``delta``:
     the force ``F(delta) d / delta`` derives from a potential, and its tangent ``F' n n^T +
-    (F / delta)(I - n n^T)`` is symmetric (``n = d / delta``). With a tilt the rollers'
-    turning with ``d`` leaves the tangent unsymmetric. At rest both contacts of a roller
+    (F / delta)(I - n n^T)`` is symmetric (``n = d / delta``); the tangent's tilt terms
+    are there too, the rollers' resistance to a tilt. With a tilt the rollers' turning with
+    ``d`` leaves the tangent unsymmetric. At rest both contacts of a roller
     are alike and carry equal moments; spinning, the roller's own moment balance is not
     solved (as in crb_radial).
     """
@@ -185,30 +186,17 @@ class RollerSupport:
             return np.zeros(count, dtype=np.int64)
         return np.arange(count) if cases is None else np.asarray(cases, dtype=np.int64)
 
-    def radial(self, displacement, cases=None):
-        """The radial load [N] and stiffness [N/m] at each radial ``displacement`` [m] of
-        the load ``cases``, with the inner ring aligned, where every roller's balance
-        converged, and each roller's inner approach (``(count, Z)``, the rows of those cases
-        filled)."""
-        rows = self._rows(len(displacement), cases)
-        shape = self.rollers.cos.shape
-        split = np.full(shape + (3,), np.nan)
-        roller_load, deflection = np.zeros(shape), np.zeros(shape)
-        force, slope, converged = self.rollers.loads(
-            np.ascontiguousarray(displacement, dtype=float), np.ascontiguousarray(rows), split,
-            roller_load, deflection)
-        return force, slope, converged, deflection
-
-    def _placed(self, displacement, cases):
+    def _placed(self, displacement, cases, sliced=False):
         """The rollers of each row of ``displacement`` ``(n, 5)`` as it moves and tilts
-        their inner ring, solved: the roller set (one bearing per row), the rows' cases,
+        their inner ring, solved (``sliced``: every slice kept where it lies, as a moment
+        sums them): the roller set (one bearing per row), the rows' cases,
         the radial displacement ``(n,)``, the rollers' azimuths ``psi`` and the ring's tilt
         across them ``m`` ``(n, Z)``, whether every roller converged ``(n,)`` and their
         inner approaches ``(n, Z)`` as :meth:`models.cylindrical._RollerSet.loads` gives
         them."""
         rows = self._rows(len(displacement), cases)
         # A solution's pressure, life and validity are asked at the same displacements.
-        key = (displacement.tobytes(), rows.tobytes())
+        key = (displacement.tobytes(), rows.tobytes(), sliced)
         if self._last is not None and self._last[0] == key:
             return self._last[1]
         delta = np.hypot(displacement[:, 1], displacement[:, 2])
@@ -216,7 +204,7 @@ class RollerSupport:
                              np.arctan2(displacement[:, 2], displacement[:, 1]))
         psi = direction[:, None] + self.azimuth
         across = displacement[:, 4, None] * np.cos(psi) - displacement[:, 3, None] * np.sin(psi)
-        rollers = self.rollers.tilted(rows, 0.25 * self.length[rows, None] * across)
+        rollers = self.rollers.tilted(rows, 0.25 * self.length[rows, None] * across, sliced)
         split = np.full(psi.shape + (3,), np.nan)
         roller_load, deflection = np.zeros(psi.shape), np.zeros(psi.shape)
         converged = rollers.loads(np.where(delta < self._CENTRED, 0.0, delta),
@@ -271,36 +259,15 @@ class RollerSupport:
 
     def loads(self, displacement, cases=None):
         """Loads ``(n, 5)`` [N, N m] at the inner ring's ``displacement`` ``(n, 5)``, and
-        their stiffness ``(n, 5, 5)``: radial forces and tilt moments."""
-        displacement = np.atleast_2d(np.asarray(displacement, dtype=float))
-        if np.any(displacement[:, 3:5] != 0.0):
-            return self._tilted_loads(displacement, cases)
-        radial = displacement[:, 1:3]
-        delta = np.hypot(radial[:, 0], radial[:, 1])
-        centred = delta < self._CENTRED
-        direction = np.where(centred[:, None], [1.0, 0.0],
-                             radial / np.where(centred, 1.0, delta)[:, None])
-        force, slope, converged, _ = self.radial(np.where(centred, 0.0, delta), cases)
-        secant = np.where(centred, slope, force / np.where(centred, 1.0, delta))
-        along = np.einsum("ni,nj->nij", direction, direction)
-        load = np.zeros_like(displacement)
-        stiffness = np.zeros(displacement.shape + (5,))
-        load[:, 1:3] = force[:, None] * direction
-        stiffness[:, 1:3, 1:3] = (slope[:, None, None] * along
-                                  + secant[:, None, None] * (np.eye(2) - along))
-        load[~converged], stiffness[~converged] = np.nan, np.nan
-        return load, stiffness
-
-    def _tilted_loads(self, displacement, cases):
-        """:meth:`loads` with the inner ring tilted."""
-        rollers, rows, delta, psi, across, converged, approach = self._placed(displacement,
-                                                                              cases)
+        their stiffness ``(n, 5, 5)``: radial forces and tilt moments, and their tangent
+        (its tilt terms too where the ring is aligned)."""
         from .cylindrical_balance import tilted_contact_sums  # numba: only when solving
 
-        if rollers.tilt is None:  # tilts too small to move any slice's gap
-            return self.loads(displacement * [1.0, 1.0, 1.0, 0.0, 0.0], cases)
+        displacement = np.atleast_2d(np.asarray(displacement, dtype=float))
+        rollers, rows, delta, psi, across, converged, approach = self._placed(
+            displacement, cases, sliced=True)
         if rollers.outer_contact != "crowned":
-            raise ValueError("a tilted cylindrical roller bearing needs outer_contact "
+            raise ValueError("a cylindrical roller bearing on a shaft needs outer_contact "
                              "'crowned' (the paper's straight outer contact has no tilt)")
         reach = rollers.total_approach(np.where(delta < self._CENTRED, 0.0, delta),
                                        np.arange(len(rows)))

@@ -243,7 +243,7 @@ _VALIDITY = ("a bearing's solution outside its own model's validity (for ball_5d
              "its load line; a tapered roller bearing's rollers tilted by "
              "the shaft's slope (their load moves, its spread along them does not: trb_load "
              "has no crown).")
-_VERSION = "4"
+_VERSION = "5"
 
 
 def assemble(sections, supports, loads) -> Model:
