@@ -148,12 +148,13 @@ class RollerSupport:
     the force ``F(delta) d / delta`` derives from a potential, and its tangent ``F' n n^T +
     (F / delta)(I - n n^T)`` is symmetric (``n = d / delta``); the tangent's tilt terms
     are there too, the rollers' resistance to a tilt. With a tilt the rollers' turning with
-    ``d`` leaves the tangent unsymmetric. At rest both contacts of a roller
-    are alike and carry equal moments; spinning, the roller's own moment balance is not
-    solved (as in crb_radial).
+    ``d`` leaves the tangent unsymmetric. At rest both contacts of a roller are alike and
+    carry equal moments; spinning, the roller's own moment balance is not solved (as in
+    crb_radial).
     """
 
-    #: Below this radial displacement [m] the direction is taken as y and F / delta as F'.
+    #: Below this radial displacement [m] the direction is taken as y, and the rollers do not
+    #: turn with it.
     _CENTRED = 1e-15
 
     def __init__(self, roller_count, pitch_diameter, roller_diameter, effective_length,
