@@ -206,14 +206,30 @@ def test_a_ctrl_c_raised_as_another_error_is_one_line(monkeypatch, capsys):
 
 @pytest.mark.slow
 def test_ctrl_c_while_the_program_starts_is_one_line(tmp_path):
-    # From the moment Python runs the program's own code (the first few hundredths of a second
-    # are the interpreter's start-up, where a Ctrl-C is Python's to report) to the end.
+    # From the moment the program's own code runs (before it, a Ctrl-C lands in the
+    # interpreter's start-up or in the import of the package's first lines, and is Python's to
+    # report) to the end. That moment is told by an audit hook, installed in the real
+    # command's interpreter by a sitecustomize, when the program imports its first module.
+    import os
     import signal
     import time
 
-    for delay in (0.05, 0.1, 0.15, 0.2, 0.3, 0.4, 0.6):
+    (tmp_path / "sitecustomize.py").write_text(textwrap.dedent("""
+        import sys
+
+        def started(event, args):
+            if event == "import" and args[0] == "bearing_sweep.interrupts":
+                sys.stderr.write("started\\n")
+                sys.stderr.flush()
+
+        sys.addaudithook(started)
+    """))
+    environment = dict(os.environ, PYTHONPATH=str(tmp_path))
+    for delay in (0.0, 0.02, 0.05, 0.1, 0.15, 0.2, 0.3, 0.4, 0.6):
         started = subprocess.Popen([BIN / "bearing-sweep", "describe", "crb_radial"], cwd=tmp_path,
-                                   stdout=subprocess.DEVNULL, stderr=subprocess.PIPE, text=True)
+                                   env=environment, stdout=subprocess.DEVNULL,
+                                   stderr=subprocess.PIPE, text=True)
+        assert started.stderr.readline() == "started\n"
         time.sleep(delay)
         started.send_signal(signal.SIGINT)
         error = started.communicate(timeout=60)[1]
