@@ -5,13 +5,15 @@ eccentricity and ring misalignment (paper 002, sections 1 and 3).
 Started from the steady state of :func:`models.cage_slip.cage_slip` and the quasi-static ring
 position of :func:`models.cylindrical.crb_radial`, the equations of
 :mod:`models.cage_dynamics_6dof_rhs` are integrated by an adaptive Dormand-Prince 5(4) method
-(``integrator="adaptive"``) or by the paper's fixed-step fourth-order Runge-Kutta method
-(``integrator="rk4"``, ``rk4_step`` 1e-7 s).
+(``integrator="adaptive"``), by a linearly implicit Rosenbrock-W method for stiff films
+(``integrator="rosenbrock"``, :mod:`models.cage_dynamics_6dof_implicit`) or by the paper's
+fixed-step fourth-order Runge-Kutta method (``integrator="rk4"``, ``rk4_step`` 1e-7 s).
 """
 from __future__ import annotations
 
 import numpy as np
 
+from . import cage_dynamics_6dof_implicit as implicit
 from . import cage_dynamics_6dof_rhs as rhs
 from .cage_dynamics import CAGE_MASS_CENTRE, GRAVITY, _samples, _samples_fit
 from .cage_dynamics_rhs import roller_loads
@@ -27,7 +29,9 @@ from .registry import (CONVERGED, NOT_CONVERGED, VALIDITY_MASK, Constraint, DimC
                        Input, Model, Output, outcome)
 
 _SETTLED = 0.5  # the settled part: the last half of the run
-INTEGRATORS = ("adaptive", "rk4")
+INTEGRATORS = ("adaptive", "rosenbrock", "rk4")
+#: The end-face and rib films: the paper's shear only (eq. 7), or with the film's pressure.
+END_FILMS = ("shear", "reynolds")
 _MAX_STEPS = 50_000_000
 _SLIP_SMOOTHING = 1e-3  # [m/s] Coulomb friction ramps up over this sliding speed
 # The steady start's end film covers a quarter of the end faces (cage_slip's default).
@@ -50,7 +54,8 @@ def cage_dynamics_6dof(radial_load, speed, roller_count, inner_raceway_diameter,
                        pocket_axial_clearance=1.5e-5, rib_height=2e-3, end_chamfer=5e-4,
                        cage_density=8600.0, cage_youngs_modulus=106e9, cage_poisson_ratio=0.32,
                        winkler_depth=1e-3, restitution=0.8, impact_speed=0.1,
-                       film_breakdown=1e-6, cage_eccentricity=0.0, cage_axial_eccentricity=0.0,
+                       film_breakdown=1e-6, end_film="shear", cage_eccentricity=0.0,
+                       cage_axial_eccentricity=0.0,
                        misalignment_x=0.0, misalignment_y=0.0, inner_ring_mass=0.1,
                        damping_ratio=0.1, duration=0.05, output_interval=1e-4, slices=10,
                        arc_axial_points=6, arc_angle_points=8, face_rings=5, face_angles=12,
@@ -87,6 +92,16 @@ def cage_dynamics_6dof(radial_load, speed, roller_count, inner_raceway_diameter,
     film_breakdown : array_like
         Smallest film the short-bearing and shear films use [m]: below it the surfaces'
         roughness carries the load (the dry state begins at contact, eq. 9).
+    end_film : {"shear", "reynolds"}
+        The oil film between a roller end and its pocket's end face or the rib. ``"shear"``
+        is the paper's (eq. 7): the film drags but carries no load. ``"reynolds"`` adds the
+        film's pressure from Reynolds' equation across the band where the faces meet
+        (:func:`models.cage_dynamics_6dof_rhs._face_pressure`): the squeeze of a closing film
+        and the wedge of a leaning one. With shear alone, the aligned bearing's plane is not
+        stable: a roller's skew and tilt feed each other through the shear of its spinning
+        end faces, and a small skew grows. The pressure damps them and a skew decays. Its
+        films are stiff (their damping rate far above the pocket films'): integrate them with
+        ``integrator="rosenbrock"``.
     cage_eccentricity, cage_axial_eccentricity : array_like
         Radial ``e_r`` (along ``x_b``, through pocket 1) and axial ``e_a`` offsets of the
         cage's mass centre from its geometric centre [m] (section 1.5.2).
@@ -107,9 +122,14 @@ def cage_dynamics_6dof(radial_load, speed, roller_count, inner_raceway_diameter,
         12000 r/min lies 1 % from its value at 1e-7 (converged: 5e-8 gives the same to 5
         digits), at 80 % of the cost; the steps are mostly held by the stability of the stiff
         pocket films, not by the tolerance.
-    integrator : {"adaptive", "rk4"}
-        Dormand-Prince 5(4) with step control, or the paper's fixed-step fourth-order
-        Runge-Kutta method at ``rk4_step``.
+    integrator : {"adaptive", "rosenbrock", "rk4"}
+        Dormand-Prince 5(4) with step control; the linearly implicit Rosenbrock-W method
+        RA34PW2 with step control and the Jacobian fresh at every step
+        (:mod:`models.cage_dynamics_6dof_implicit`), whose steps the stiff films do not
+        hold (with ``end_film="reynolds"`` it takes a hundredth of the adaptive method's
+        steps; of third order, it wants a tolerance ten times tighter for the same
+        accuracy); or the paper's fixed-step fourth-order Runge-Kutta method at
+        ``rk4_step``.
     rk4_step : float
         The fixed step of ``integrator="rk4"`` [s].
 
@@ -139,13 +159,15 @@ def cage_dynamics_6dof(radial_load, speed, roller_count, inner_raceway_diameter,
     given = dict(locals())
     integer = ("roller_count", "slices", "arc_axial_points", "arc_angle_points", "face_rings",
                "face_angles")
-    text = ("integrator", "branch")
+    text = ("integrator", "branch", "end_film")
     numeric = [k for k in given if k not in integer + text]
     for k, v in zip(numeric, np.broadcast_arrays(*(np.atleast_1d(np.asarray(
             given[k], dtype=float)) for k in numeric))):
         given[k] = v
     if integrator not in INTEGRATORS:
         raise ValueError(f"integrator must be one of {INTEGRATORS}, not {integrator!r}")
+    if end_film not in END_FILMS:
+        raise ValueError(f"end_film must be one of {END_FILMS}, not {end_film!r}")
     points = given["radial_load"].size
     samples = int(np.floor(np.max(given["duration"] / given["output_interval"]) + 1e-9)) + 1
     sizes = {"roller": roller_count, "axial": arc_axial_points, "angle": 2 * arc_angle_points,
@@ -252,6 +274,8 @@ def parameters(one, terms, arc_area, start_cage_speed, ring_stiffness, cage_mass
     p[rhs.RACEWAYS] = p[rhs.POCKETS] = p[rhs.ENDS] = p[rhs.DRAG] = 1.0
     p[rhs.SLIP_SMOOTHING], p[rhs.ARC_AREA] = _SLIP_SMOOTHING, arc_area
     p[rhs.FILM_FILL] = one["pocket_film_fill"]
+    p[rhs.END_PRESSURE] = 1.0 if one["end_film"] == "reynolds" else 0.0
+    p[rhs.FACE_RADIUS] = terms["radius"] - one["end_chamfer"]
     return p
 
 
@@ -351,17 +375,16 @@ def integrate(run, one):
     steps and success."""
     count, times = run["count"], run["times"]
     elements = tuple(np.ascontiguousarray(e, dtype=float) for e in run["elements"])
-    rings, angles = elements[3].size, elements[4].size
-    record = (np.zeros((count, elements[1].size, elements[2].size)),
-              np.zeros((count, 2, rings, angles)), np.zeros((count, 2, rings, angles)),
-              np.zeros((count, 3)))
+    record = rhs.scratch(count, elements)
     settled_from = _SETTLED * times[-1]
     if one["integrator"] == "rk4":
         return rhs.integrate_fixed(run["state"], times, run["p"], count, elements, record,
                                    settled_from, float(one["rk4_step"]))
     tolerance = float(one["relative_tolerance"])
-    return rhs.integrate(run["state"], times, run["p"], count, elements, record, settled_from,
-                         tolerance, _absolute_tolerances(count, tolerance), _MAX_STEPS)
+    atol = _absolute_tolerances(count, tolerance)
+    method = implicit.integrate if one["integrator"] == "rosenbrock" else rhs.integrate
+    return method(run["state"], times, run["p"], count, elements, record, settled_from,
+                  tolerance, atol, _MAX_STEPS)
 
 
 def _run(one):
@@ -458,7 +481,7 @@ MODELS = [Model(
             "cage with six degrees of freedom, Winkler pocket, end-face and rib contacts, cage "
             "mass eccentricity and ring misalignment (paper 002's own model).",
     reference="Paper 002, sections 1.3-1.5 (eqs. 1-26), eqs. 27-28, section 3",
-    version="4",
+    version="5",
     inputs=tuple(_PLANAR[name] for name in STEADY_INPUTS if name != "branch") + (
         _PLANAR["pocket_film_fill"],
         Input("end_film_thickness", "mm", "axial play of a roller between the ribs (Table 2: "
@@ -490,6 +513,9 @@ MODELS = [Model(
               "not stated)", default=0.1, minimum=0.0, exclusive_minimum=True),
         Input("film_breakdown", "um", "smallest film the pocket and end films use",
               default=1.0, minimum=0.0, exclusive_minimum=True),
+        Input("end_film", "1", "roller end and rib films: shear only (the paper's eq. 7) or "
+              "reynolds (with the film's squeeze and wedge pressure)", default="shear",
+              kind="choice", choices=END_FILMS, label="end-face film"),
         Input("cage_eccentricity", "mm", "radial distance e_r of the cage's mass centre from "
               "its geometric centre", default=0.0, minimum=0.0,
               label="radial cage mass eccentricity"),
@@ -521,8 +547,9 @@ MODELS = [Model(
               kind="count", minimum=3, maximum=360),
         Input("relative_tolerance", "1", "relative tolerance of the adaptive integrator",
               default=1e-5, minimum=1e-12, maximum=1e-2),
-        Input("integrator", "1", "adaptive (Dormand-Prince 5(4)) or rk4 (the paper's fixed "
-              "step)", default="adaptive", kind="choice", choices=INTEGRATORS),
+        Input("integrator", "1", "adaptive (Dormand-Prince 5(4)), rosenbrock (linearly "
+              "implicit Rosenbrock-W, for stiff films) or rk4 (the paper's fixed step)",
+              default="adaptive", kind="choice", choices=INTEGRATORS),
         Input("rk4_step", "s", "step of the rk4 integrator (the paper: 1e-7 s)", default=1e-7,
               minimum=0.0, exclusive_minimum=True),
         _PLANAR["branch"],

@@ -36,8 +36,8 @@ from .dormand_prince import FIRST_STEP, SMALLEST_STEP, conclude, stage_argument
  POCKET_PLAY, RIB_PLAY, RIB_RADIUS, CAGE_IN, CAGE_OUT, WINDAGE, CAGE_DRAG, M_RING, C_RING,
  M_CAGE, J_CAGE_X, J_CAGE_Z, ECC_RADIAL, ECC_AXIAL, GRAVITY, MISALIGN_X, MISALIGN_Y,
  TRACTION_A, TRACTION_B, TRACTION_C, TRACTION_D, RACEWAYS, POCKETS, ENDS, DRAG,
- SLIP_SMOOTHING, ARC_AREA, FILM_FILL) = range(46)
-PARAMETERS = 46
+ SLIP_SMOOTHING, ARC_AREA, FILM_FILL, END_PRESSURE, FACE_RADIUS) = range(48)
+PARAMETERS = 48
 RING, ROLLER_SIZE, CAGE_SIZE = 4, 12, 13
 
 
@@ -104,11 +104,15 @@ def ring_axis(p):
 
 @njit(cache=True)
 def derivatives(state, p, count, slice_z, arc_theta, arc_z, face_r, face_phi, face_area,
-                arc_force, end_gap, rib_gap, dry, observe):
-    """Time derivative of ``state``. With ``observe`` nonzero the element values of this
-    state are written to ``arc_force`` (dry force per pocket-arc element) [N], ``end_gap`` and
-    ``rib_gap`` (gap per end-face element, NaN where the face has no counterpart) [m] and
-    ``dry`` (roller x {arc, pocket end, rib}: 1 where in dry contact). ``observe`` is a
+                arc_force, end_gap, rib_gap, dry, shares, observe):
+    """Time derivative of ``state``. Each roller's share of the forces on the other bodies
+    is written to ``shares`` (roller x {force on the cage [N], its moment about the cage's
+    mass centre [N m], force on the inner ring in X and Y [N]}, 8 columns): the implicit
+    integrator's Jacobian takes the rollers apart by them. With ``observe`` nonzero the
+    element values of this state are written to ``arc_force`` (dry force per pocket-arc
+    element) [N], ``end_gap`` and ``rib_gap`` (gap per end-face element, NaN where the face
+    has no counterpart) [m] and ``dry`` (roller x {arc, pocket end, rib}: 1 where in dry
+    contact). ``observe`` is a
     number, 0.0 or 1.0: numba compiles a literal True or False as a type of its own, which
     would compile this large function three times instead of once."""
     out = np.zeros_like(state)
@@ -143,6 +147,8 @@ def derivatives(state, p, count, slice_z, arc_theta, arc_z, face_r, face_phi, fa
     rim_low, rim_high = p[CAGE_IN] ** 2, p[CAGE_OUT] ** 2  # squared radii of the faces
     rib_low, rib_high = p[R_INNER] ** 2, p[RIB_RADIUS] ** 2
     for j in range(count):
+        cage_force_before, cage_moment_before = cage_force, cage_moment
+        ring_force_before = ring_force
         k = RING + ROLLER_SIZE * j
         centre = _vector(state, k)
         velocity = _vector(state, k + 3)
@@ -283,8 +289,10 @@ def derivatives(state, p, count, slice_z, arc_theta, arc_z, face_r, face_phi, fa
                                 _sub(element, pocket), z_b)
                             lever = _sub(element, mass_centre)
                             other = _add(cage_velocity, _cross(cage_rate, lever))
+                            band = _band(np.sqrt(reach2), p[CAGE_IN], p[CAGE_OUT],
+                                         face_r[r] * face_cos[s], face_r[r] * face_sin[s], p)
                             on_roller = _face_force(h, _mul(-sign, z_b), _sub(material, other),
-                                                    area, p[BED_POCKET], p)
+                                                    area, p[BED_POCKET], p, band, axis)
                             force = _add(force, on_roller)
                             moment = _add(moment, _cross(arm, on_roller))
                             cage_force = _sub(cage_force, on_roller)
@@ -299,8 +307,11 @@ def derivatives(state, p, count, slice_z, arc_theta, arc_z, face_r, face_phi, fa
                         if rib_low <= reach2 <= rib_high:
                             h = 0.5 * (length + p[RIB_PLAY]) - sign * _dot(from_ring, z_ring)
                             other = _add(ring_velocity, _cross(ring_spin, from_ring))
+                            band = _band(np.sqrt(reach2), p[R_INNER], p[RIB_RADIUS],
+                                         face_r[r] * face_cos[s], face_r[r] * face_sin[s], p)
                             on_roller = _face_force(h, _mul(-sign, z_ring),
-                                                    _sub(material, other), area, p[BED_RIB], p)
+                                                    _sub(material, other), area, p[BED_RIB], p,
+                                                    band, axis)
                             force = _add(force, on_roller)
                             moment = _add(moment, _cross(arm, on_roller))
                             ring_force = _sub(ring_force, on_roller)
@@ -314,6 +325,11 @@ def derivatives(state, p, count, slice_z, arc_theta, arc_z, face_r, face_phi, fa
             orbit_rate = (centre[0] * velocity[1] - centre[1] * velocity[0]) / rho2
             drag = p[WINDAGE] * orbit_rate * abs(orbit_rate) / np.sqrt(rho2)
             force = _add(force, (drag * centre[1], -drag * centre[0], 0.0))
+        for i in range(3):
+            shares[j, i] = cage_force[i] - cage_force_before[i]
+            shares[j, 3 + i] = cage_moment[i] - cage_moment_before[i]
+        shares[j, 6] = ring_force[0] - ring_force_before[0]
+        shares[j, 7] = ring_force[1] - ring_force_before[1]
         # -- Newton-Euler for the roller, symmetric about its axis
         acceleration = _symmetric_top(omega, axis, moment, p[J_AXIAL], p[J_TRANSVERSE])
         axis_rate = _cross(omega, axis)
@@ -348,11 +364,12 @@ def derivatives(state, p, count, slice_z, arc_theta, arc_z, face_r, face_phi, fa
 
 
 @njit(cache=True)
-def _face_force(gap, normal, sliding, area, bed, p):
+def _face_force(gap, normal, sliding, area, bed, p, band, axis):
     """Force on the roller of one end-face element [N]: the Winkler bed and Coulomb friction
-    when pressed in (eqs. 1, 2), the oil's shear ``eta v A / h`` otherwise (eq. 7). ``normal``
-    points from the face into the roller; ``sliding`` is the roller's velocity less the
-    face's at the element."""
+    when pressed in (eqs. 1, 2); otherwise the oil's shear ``eta v A / h`` (eq. 7) and, unless
+    the paper's shear-only film is asked for, the film's pressure (:func:`_face_pressure`).
+    ``normal`` points from the face into the roller; ``sliding`` is the roller's velocity
+    less the face's at the element; ``band`` is :func:`_band`'s; ``axis`` the roller's."""
     tangential, speed = _tangential(sliding, normal)
     if gap < 0.0:
         push = damped_spring(bed * area, -gap, -_dot(sliding, normal), p[HUNT])
@@ -361,7 +378,52 @@ def _face_force(gap, normal, sliding, area, bed, p):
             force = _sub(force, _mul(p[MU_DRY] * push * regularised_direction(
                 speed, p[SLIP_SMOOTHING]) / speed, tangential))
         return force
-    return _mul(-p[VISCOSITY] * area / max(gap, p[FILM_FLOOR]), tangential)
+    film = max(gap, p[FILM_FLOOR])
+    force = _mul(-p[VISCOSITY] * area / film, tangential)
+    if p[END_PRESSURE] > 0.0:
+        # The film's slope along the face, dotted with the sliding: the roller's end plane
+        # leans on the flat face by the roller axis' part along the face (a roller turned
+        # across the face, in a failed trial step, has no film to speak of).
+        lean = _dot(axis, normal)
+        wedge = -_dot(tangential, axis) / lean if abs(lean) > 0.5 else 0.0
+        pressure = _face_pressure(p[VISCOSITY], -_dot(sliding, normal), wedge, film, band)
+        force = _add(force, _mul(pressure * area, normal))
+    return force
+
+
+@njit(cache=True)
+def _face_pressure(viscosity, closing, wedge, film, band):
+    """Film pressure between a roller end and a flat face, from Reynolds' equation across the
+    narrow band where they face each other (no pressure flow along it), cavitated below
+    ambient (Guembel) [Pa]:
+
+    ``p = 6 eta (dh/dt_closing + u . grad h / 2) (s - s_1) (s_2 - s) / h^3``
+
+    with ``u`` the roller's sliding over the face and ``s_1 < s < s_2`` the band's edges
+    across it (``band`` = ``(s - s_1)(s_2 - s)`` [m^2]): the squeeze of a closing film and the
+    wedge of a leaning one, as a short bearing's (:func:`contact_laws.short_bearing_pressure`).
+
+    References
+    ----------
+    .. [1] B. J. Hamrock, S. R. Schmid, B. O. Jacobson, Fundamentals of Fluid Film
+       Lubrication, 2nd ed., Marcel Dekker (2004), ch. 7 (Reynolds' equation), ch. 8-9
+       (squeeze and wedge films), doi:10.1201/9780203021187.
+    """
+    return max(0.0, 6.0 * viscosity * (closing + 0.5 * wedge) * band / film**3)
+
+
+@njit(cache=True)
+def _band(reach, low, high, across, along, p):
+    """``(s - s_1)(s_2 - s)`` [m^2] of an end-face element at distance ``s = reach`` from
+    the face's axis, ``across`` and ``along`` its coordinates on the roller's end disc (radial
+    and tangential): the band across which the film's pressure falls to ambient is the
+    face's annulus ``low`` to ``high`` (the cage rim, the rib), cut where the disc's radial
+    chord through the element leaves the disc."""
+    chord = np.sqrt(max(p[FACE_RADIUS] ** 2 - along * along, 0.0))
+    centre = np.sqrt(max(reach * reach - along * along, 0.0)) - across  # of the chord
+    first = max(low, np.sqrt((centre - chord) ** 2 + along * along))
+    last = min(high, np.sqrt((centre + chord) ** 2 + along * along))
+    return max(0.0, (reach - first) * (last - reach))
 
 
 @njit(cache=True)
@@ -405,10 +467,10 @@ def _observe(state, p, count, geometry, record, settled, arc_max, end_min, rib_m
     """Element values of one sample: the largest arc force, the smallest end and rib gaps
     over the settled samples, and the dry contacts that began since the last sample."""
     slice_z, arc_theta, arc_z, face_r, face_phi, face_area = geometry
-    arc_force, end_gap, rib_gap, dry = record
+    arc_force, end_gap, rib_gap, dry, shares = record
     dry[:, :] = 0.0
     derivatives(state, p, count, slice_z, arc_theta, arc_z, face_r, face_phi, face_area,
-                arc_force, end_gap, rib_gap, dry, 1.0)
+                arc_force, end_gap, rib_gap, dry, shares, 1.0)
     if not settled:
         _copy(dry, last)
         return
@@ -434,10 +496,19 @@ def _copy(source, target):
         target[index] = source[index]
 
 
+def scratch(count, geometry):
+    """The arrays :func:`derivatives` writes into (after ``dry``, ``shares``), for
+    ``count`` rollers and the elements ``geometry``."""
+    _, arc_theta, arc_z, face_r, face_phi, _ = geometry
+    face = (count, 2, face_r.size, face_phi.size)
+    return (np.zeros((count, arc_theta.size, arc_z.size)), np.zeros(face), np.zeros(face),
+            np.zeros((count, 3)), np.zeros((count, 8)))
+
+
 @njit(cache=True)
 def _accumulators(times, state, record):
     """The samples and the element extremes of a run, before its first sample."""
-    arc_force, end_gap, rib_gap, dry = record
+    arc_force, end_gap, rib_gap, dry, _ = record
     return (np.full((times.size, state.size), np.nan), np.zeros_like(arc_force),
             np.full(end_gap.shape, np.nan), np.full(rib_gap.shape, np.nan),
             np.zeros_like(dry), np.zeros(3))
@@ -452,13 +523,10 @@ def integrate(state, times, p, count, geometry, record, settled_from, rtol, atol
     Returns the samples ``(times, state)``, the settled samples' element extremes (see
     :func:`_observe`), the contact events, the steps taken and whether it reached the end.
     """
-    slice_z, arc_theta, arc_z, face_r, face_phi, face_area = geometry
-    arc_force, end_gap, rib_gap, dry = record
     samples, arc_max, end_min, rib_min, last, events = _accumulators(times, state, record)
     y = state.copy()
     stages = np.empty((7, y.size))
-    _copy(derivatives(y, p, count, slice_z, arc_theta, arc_z, face_r, face_phi, face_area,
-                      arc_force, end_gap, rib_gap, dry, 0.0), stages[0])
+    _copy(derivatives(y, p, count, *geometry, *record, 0.0), stages[0])
     t, h, steps, last_norm = times[0], FIRST_STEP, 0, 1e-4
     _copy(y, samples[0])
     _observe(y, p, count, geometry, record, t >= settled_from, arc_max, end_min, rib_min,
@@ -470,8 +538,7 @@ def integrate(state, times, p, count, geometry, record, settled_from, rtol, atol
             step = min(h, times[index] - t)
             for s in range(1, 7):
                 trial = stage_argument(y, stages, s, step)
-                _copy(derivatives(trial, p, count, slice_z, arc_theta, arc_z, face_r, face_phi,
-                                  face_area, arc_force, end_gap, rib_gap, dry, 0.0), stages[s])
+                _copy(derivatives(trial, p, count, *geometry, *record, 0.0), stages[s])
             steps += 1
             accepted, h, last_norm, t = conclude(y, trial, stages, step, rtol, atol, last_norm,
                                                  t, times[index])
@@ -504,10 +571,10 @@ def integrate_fixed(state, times, p, count, geometry, record, settled_from, step
             k3 = derivatives(y + 0.5 * h * k2, p, count, *geometry, *record, 0.0)
             k4 = derivatives(y + h * k3, p, count, *geometry, *record, 0.0)
             y = y + h / 6.0 * (k1 + 2.0 * k2 + 2.0 * k3 + k4)
-            _normalise(y, count)
             steps += 1
-        if not np.all(np.isfinite(y)):
-            return samples, arc_max, end_min, rib_min, events, steps, False
+            if not np.all(np.isfinite(y)):  # unstable at this step: stop before it overflows
+                return samples, arc_max, end_min, rib_min, events, steps, False
+            _normalise(y, count)
         _copy(y, samples[index])
         _observe(y, p, count, geometry, record, times[index] >= settled_from, arc_max,
                  end_min, rib_min, last, events)
