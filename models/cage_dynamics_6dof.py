@@ -54,7 +54,8 @@ def cage_dynamics_6dof(radial_load, speed, roller_count, inner_raceway_diameter,
                        pocket_axial_clearance=1.5e-5, rib_height=2e-3, end_chamfer=5e-4,
                        cage_density=8600.0, cage_youngs_modulus=106e9, cage_poisson_ratio=0.32,
                        winkler_depth=1e-3, restitution=0.8, impact_speed=0.1,
-                       film_breakdown=1e-6, end_film="shear", cage_eccentricity=0.0,
+                       film_breakdown=1e-6, end_film="shear", initial_skew=0.0,
+                       cage_eccentricity=0.0,
                        cage_axial_eccentricity=0.0,
                        misalignment_x=0.0, misalignment_y=0.0, inner_ring_mass=0.1,
                        damping_ratio=0.1, duration=0.05, output_interval=1e-4, slices=10,
@@ -97,11 +98,17 @@ def cage_dynamics_6dof(radial_load, speed, roller_count, inner_raceway_diameter,
         is the paper's (eq. 7): the film drags but carries no load. ``"reynolds"`` adds the
         film's pressure from Reynolds' equation across the band where the faces meet
         (:func:`models.cage_dynamics_6dof_rhs._face_pressure`): the squeeze of a closing film
-        and the wedge of a leaning one. With shear alone, the aligned bearing's plane is not
-        stable: a roller's skew and tilt feed each other through the shear of its spinning
-        end faces, and a small skew grows. The pressure damps them and a skew decays. Its
-        films are stiff (their damping rate far above the pocket films'): integrate them with
-        ``integrator="rosenbrock"``.
+        and the wedge of a leaning one. With shear alone, the aligned bearing's plane is
+        unstable: a roller's skew and tilt feed each other through the shear of its spinning
+        end faces, and a small skew grows fast (+293 /s at 2 kN, 6000 r/min). The squeeze
+        damps them; the wedge pushes across the lean, as a journal bearing's film across
+        the journal's displacement, and a skew falls, then grows ten times slower (+24 /s).
+        The films are stiff (their damping rate far above the pocket films'): integrate them
+        with ``integrator="rosenbrock"``.
+    initial_skew : array_like
+        Every roller's skew at the start [rad], its axis turned about its radial direction
+        towards the direction of rotation: a disturbance whose growth or decay says whether
+        the rollers' running is stable.
     cage_eccentricity, cage_axial_eccentricity : array_like
         Radial ``e_r`` (along ``x_b``, through pocket 1) and axial ``e_a`` offsets of the
         cage's mass centre from its geometric centre [m] (section 1.5.2).
@@ -117,19 +124,22 @@ def cage_dynamics_6dof(radial_load, speed, roller_count, inner_raceway_diameter,
         angles). The defaults give the mean slip within 1.5 % of 8 x 24 end-face elements
         (the end faces converge slowest; 4 x 12 lies 5 % off).
     relative_tolerance : float
-        Of the adaptive integrator (the absolute ones follow from it: see
-        :func:`_absolute_tolerances`). At the default 1e-5 the mean slip over 10 ms at 800 N,
-        12000 r/min lies 1 % from its value at 1e-7 (converged: 5e-8 gives the same to 5
-        digits), at 80 % of the cost; the steps are mostly held by the stability of the stiff
-        pocket films, not by the tolerance.
+        Of the adaptive integrators (the absolute ones follow from it: see
+        :func:`_absolute_tolerances`). At the default 1e-5 Dormand-Prince's mean slip over
+        10 ms at 800 N, 12000 r/min lies 1 % from its value at 1e-7 (converged: 5e-8 gives
+        the same to 5 digits), at 80 % of the cost; its steps are mostly held by the
+        stability of the stiff pocket films, not by the tolerance. The Rosenbrock-W method
+        works to a tenth of it: of third order, with a second-order estimate of its error,
+        it needs that to be as accurate (at 2 kN, 6000 r/min over 5 ms, its mean cage slip at
+        1e-5 itself lies 17 % from the converged one, at 1e-6 0.5 %).
     integrator : {"adaptive", "rosenbrock", "rk4"}
         Dormand-Prince 5(4) with step control; the linearly implicit Rosenbrock-W method
         RA34PW2 with step control and the Jacobian fresh at every step
         (:mod:`models.cage_dynamics_6dof_implicit`), whose steps the stiff films do not
         hold (with ``end_film="reynolds"`` it takes a hundredth of the adaptive method's
-        steps; of third order, it wants a tolerance ten times tighter for the same
-        accuracy); or the paper's fixed-step fourth-order Runge-Kutta method at
-        ``rk4_step``.
+        steps; where the pockets touch dry, as under a thin pocket film, its steps shrink at
+        every contact and the adaptive method is faster); or the paper's fixed-step
+        fourth-order Runge-Kutta method at ``rk4_step``.
     rk4_step : float
         The fixed step of ``integrator="rk4"`` [s].
 
@@ -312,7 +322,8 @@ def setup(one):
     p = parameters(one, terms, arc_area, omega_c, np.ravel(ring["radial_stiffness"])[0],
                    cage_mass)
     state = start(count, p, palmgren_constant(terms["contact_length"]), steady,
-                  np.ravel(ring["radial_displacement"])[0], omega_c, terms["spin_kin"])
+                  np.ravel(ring["radial_displacement"])[0], omega_c, terms["spin_kin"],
+                  one["initial_skew"])
     times = np.arange(int(np.floor(one["duration"] / one["output_interval"] + 1e-9)) + 1) \
         * one["output_interval"]
     return CONVERGED, dict(p=p, elements=elements, state=state, times=times, count=count,
@@ -320,12 +331,12 @@ def setup(one):
                            validity=steady["status"][0] & VALIDITY_MASK)
 
 
-def start(count, p, whole, steady, drop, omega_c, kinematic_spin):
+def start(count, p, whole, steady, drop, omega_c, kinematic_spin, skew=0.0):
     """The steady state in space: ring dropped along the load, each roller at its orbit
     position (roller 1 on the load line, at -90 deg) pressed by its quasi-static contact
     loads (``whole``: the roller's Palmgren constant), spinning as the steady model says, axes
-    parallel; the cage centred, turning at the
-    steady cage speed, pocket 1 at roller 1."""
+    parallel but for a ``skew`` [rad] about the radial direction; the cage centred, turning
+    at the steady cage speed, pocket 1 at roller 1."""
     state = np.zeros(rhs.state_size(count))
     state[1] = -drop
     orbit = steady["orbit_angle"][0]
@@ -341,7 +352,8 @@ def start(count, p, whole, steady, drop, omega_c, kinematic_spin):
         k = rhs.RING + rhs.ROLLER_SIZE * j
         state[k:k + 3] = rho * np.cos(angle), rho * np.sin(angle), 0.0
         state[k + 3:k + 6] = -rho * omega_c * np.sin(angle), rho * omega_c * np.cos(angle), 0.0
-        state[k + 6:k + 9] = 0.0, 0.0, 1.0
+        state[k + 6:k + 9] = (-np.sin(skew) * np.sin(angle), np.sin(skew) * np.cos(angle),
+                              np.cos(skew))
         state[k + 11] = omega_c - np.interp(position, orbit, spin, period=2 * np.pi)
     c = rhs.RING + rhs.ROLLER_SIZE * count
     phi = -np.pi / 2
@@ -381,8 +393,10 @@ def integrate(run, one):
         return rhs.integrate_fixed(run["state"], times, run["p"], count, elements, record,
                                    settled_from, float(one["rk4_step"]))
     tolerance = float(one["relative_tolerance"])
+    method = rhs.integrate
+    if one["integrator"] == "rosenbrock":
+        method, tolerance = implicit.integrate, 0.1 * tolerance  # see relative_tolerance
     atol = _absolute_tolerances(count, tolerance)
-    method = implicit.integrate if one["integrator"] == "rosenbrock" else rhs.integrate
     return method(run["state"], times, run["p"], count, elements, record, settled_from,
                   tolerance, atol, _MAX_STEPS)
 
@@ -516,6 +530,9 @@ MODELS = [Model(
         Input("end_film", "1", "roller end and rib films: shear only (the paper's eq. 7) or "
               "reynolds (with the film's squeeze and wedge pressure)", default="shear",
               kind="choice", choices=END_FILMS, label="end-face film"),
+        Input("initial_skew", "deg", "every roller's skew at the start, a disturbance to "
+              "see whether the running is stable", default=0.0, minimum=-1.0, maximum=1.0,
+              label="initial roller skew"),
         Input("cage_eccentricity", "mm", "radial distance e_r of the cage's mass centre from "
               "its geometric centre", default=0.0, minimum=0.0,
               label="radial cage mass eccentricity"),

@@ -1,6 +1,6 @@
 """Linearly implicit integration of the spatial cage model
-(:mod:`models.cage_dynamics_6dof_rhs`): the Rosenbrock-W method of :mod:`models.rosenbrock` with the right-hand side's Jacobian from
-finite differences, fresh at every step.
+(:mod:`models.cage_dynamics_6dof_rhs`): the Rosenbrock-W method of :mod:`models.rosenbrock`
+with the right-hand side's Jacobian from finite differences, fresh at every step.
 
 The films between a roller and its pocket, its ribs and its pocket's end faces damp the
 roller's motion relative to the cage and the inner ring at rates far above those the motion

@@ -1,10 +1,13 @@
 """cage_dynamics_6dof: the spatial model against the laws it must keep (in-plane motion of a
 perfect bearing, conservation of energy and momentum, the third law, mirror symmetry), a
 closed-form Winkler integral, the planar model, its integrator's tolerance and the engine's
-chunking (issue 13, section 3).
+chunking; the end films' pressure against a long squeeze strip's and a skew's growth with
+and without it; the implicit integrator's Jacobian, its block solution and its agreement with
+the explicit one.
 
-Runs are short and share fixtures: the file's cost is the model's first compile in a fresh
-clone and about 18 ms of bearing time.
+Runs are short and share fixtures: the file's cost is the model's first compile (both
+integrators) in a fresh clone and about 22 ms of bearing time; the skew's growth (80 ms) is
+a slow test.
 """
 import inspect
 
@@ -498,7 +501,7 @@ def test_the_summary_counts_skew_above_0_05_deg_from_the_stored_degrees():
                                                                              True, True]
 
 
-# -- 5. The end films' pressure (end_film="reynolds")
+# -- 7. The end films' pressure (end_film="reynolds")
 
 @pytest.mark.parametrize("speed", [1e-3, -1e-3])
 def test_a_closing_end_film_on_a_thin_cage_rim_pushes_as_a_long_squeeze_strip(start, speed):
@@ -539,45 +542,46 @@ def test_a_closing_end_film_on_a_thin_cage_rim_pushes_as_a_long_squeeze_strip(st
     np.testing.assert_allclose(on_cage, -on_roller, rtol=0, atol=1e-12 * strip)
 
 
-def seeded_skew_growth(end_film, integrator, seed=1e-6, duration=0.02):
+def seeded_skew_growth(end_film, integrator, duration, fitted_from, seed=1e-6):
     """The aligned test bearing at 2 kN, 6000 r/min, centred cage, every roller started
-    with ``seed`` [rad] of skew: the rollers' rms skew at the start and at the end, and its
-    growth rate over the second half [1/s] (a straight line fitted to its logarithm)."""
+    with ``seed`` [rad] of skew: the rollers' rms skew over time, and its growth rate from
+    ``fitted_from`` [s] on [1/s] (a straight line fitted to its logarithm)."""
     one = point(radial_load=2000.0, speed=6000 * RPM, duration=duration,
                 output_interval=5e-4, end_film=end_film, integrator=integrator,
-                relative_tolerance=1e-6)
+                relative_tolerance=1e-6 if integrator == "adaptive" else 1e-5,
+                initial_skew=seed)
     status, run = model.setup(one)
     assert status == 0
-    state = run["state"]
-    for j in range(COUNT):
-        k = rhs.RING + rhs.ROLLER_SIZE * j
-        x, y = state[k:k + 2] / np.hypot(*state[k:k + 2])
-        state[k + 6:k + 9] = -np.sin(seed) * y, np.sin(seed) * x, np.cos(seed)
     samples, *_, reached = model.integrate(run, one)
     assert reached
     skew = model.results(samples, run)["roller_skew"]
     rms = np.sqrt(np.mean(skew**2, axis=1))
     times = run["times"]
-    second = times > duration / 2
-    return rms[0], rms[-1], np.polyfit(times[second], np.log(rms[second]), 1)[0]
+    late = times >= fitted_from
+    return rms, np.polyfit(times[late], np.log(rms[late]), 1)[0]
 
 
 @pytest.mark.slow
-def test_a_seeded_skew_grows_with_the_shear_film_and_decays_with_its_pressure():
+def test_a_seeded_skew_grows_ten_times_slower_with_the_end_films_pressure():
     # The paper's end films (shear only) feed a skew: a roller's skew and tilt lean its end
     # faces on the rib and pocket faces, and the shear of its spinning end there turns it
-    # further. The film's pressure (squeeze and wedge) resists the leaning faces' motion.
-    # Measured over 20 ms from 1e-6 rad, tolerance 1e-6: shear only 3.1e-5 rad at the end,
-    # +293/s over the second half (Rosenbrock-W: 2.2e-5, +284/s); with the pressure
-    # 3.5e-7 rad, -31/s (the same to two digits at 1e-7 and 1e-8).
-    start, end, growth = seeded_skew_growth("shear", "adaptive")
-    assert start == pytest.approx(1e-6, rel=1e-9)
-    assert end > 10 * start and 150 < growth < 450  # [1/s]
-    start, end, growth = seeded_skew_growth("reynolds", "rosenbrock")
-    assert end < 0.5 * start and -100 < growth < -10  # [1/s]
+    # further. The film's squeeze resists the leaning faces' motion; its wedge, the spinning
+    # face's drag of oil into the leaning film, pushes across the lean, as a journal
+    # bearing's film pushes across the journal's displacement, and keeps a slow growth.
+    # Measured from 1e-6 rad, Dormand-Prince at 1e-6: shear only 3.1e-5 rad at 20 ms,
+    # +293/s over 10-20 ms. With the pressure (Rosenbrock-W at 1e-5, which works to 1e-6,
+    # the same to two digits working to 1e-7 and 1e-8): down to 3.5e-7 rad at 20-25 ms,
+    # then up again, 7.7e-7 at 60 ms, +24/s over 30-60 ms. The squeeze alone (the wedge
+    # taken out of the code): 3 to 4e-8 rad from 20 ms on, +4/s.
+    rms, growth = seeded_skew_growth("shear", "adaptive", 0.02, 0.01)
+    assert rms[0] == pytest.approx(1e-6, rel=1e-9)  # every roller's, as given
+    assert rms[-1] > 10 * rms[0] and 150 < growth < 450  # [1/s]
+    rms, slow = seeded_skew_growth("reynolds", "rosenbrock", 0.06, 0.03)
+    assert rms[40] < 0.5 * rms[0]  # at 20 ms
+    assert 5 < slow < 60 and slow < 0.2 * growth  # [1/s]
 
 
-# -- 6. The implicit integrator's Jacobian and its linear systems
+# -- 8. The implicit integrator: its Jacobian, its linear systems, its solution
 
 @pytest.fixture(scope="module")
 def jacobian_at(start):
@@ -658,12 +662,12 @@ def test_the_implicit_integrators_block_solution_is_the_dense_one(jacobian_at):
 
 def test_the_implicit_and_the_explicit_integrators_agree():
     # The same equations (the paper's shear-only end films, 800 N, 12000 r/min) over 2 ms by
-    # both adaptive methods at a tolerance of 1e-7. Measured: mean cage slip 2.05850 % and
-    # 2.05830 %; the samples' largest differences 2.6e-6 in the cage slip, 6.8e-6 in the
-    # rollers' (fractions, not percent).
+    # both adaptive methods at a tolerance of 1e-7 (the Rosenbrock-W method working to a
+    # tenth of it). Measured: mean cage slip 2.058504 % and 2.058500 %; the samples' largest
+    # differences 9.7e-7 in the cage slip, 8.3e-7 in the rollers' (fractions, not percent).
     runs = {name: simulate(duration=2e-3, output_interval=1e-4, relative_tolerance=1e-7,
                            integrator=name)[0] for name in ("adaptive", "rosenbrock")}
     explicit, implicit_ = runs["adaptive"], runs["rosenbrock"]
-    assert implicit_["mean_cage_slip"] == pytest.approx(explicit["mean_cage_slip"], rel=1e-3)
-    assert np.abs(explicit["cage_slip"] - implicit_["cage_slip"]).max() < 2e-5
-    assert np.abs(explicit["roller_slip"] - implicit_["roller_slip"]).max() < 5e-5
+    assert implicit_["mean_cage_slip"] == pytest.approx(explicit["mean_cage_slip"], rel=1e-4)
+    assert np.abs(explicit["cage_slip"] - implicit_["cage_slip"]).max() < 1e-5
+    assert np.abs(explicit["roller_slip"] - implicit_["roller_slip"]).max() < 1e-5
