@@ -63,5 +63,7 @@ reproduce: $(STAMP)
 bench: $(STAMP)
 	$(PYTHON) benchmarks/run_all.py
 
+# numba's compiled code too (docs/contributing.md: a caller in another module keeps its own).
 clean:
 	rm -rf results figures .pytest_cache docs/_build docs/generated
+	find . -path ./.venv -prune -o -name '*.nb[ci]' -type f -exec rm -f {} +
