@@ -54,7 +54,8 @@ def cage_dynamics_6dof(radial_load, speed, roller_count, inner_raceway_diameter,
                        pocket_axial_clearance=1.5e-5, rib_height=2e-3, end_chamfer=5e-4,
                        cage_density=8600.0, cage_youngs_modulus=106e9, cage_poisson_ratio=0.32,
                        winkler_depth=1e-3, restitution=0.8, impact_speed=0.1,
-                       film_breakdown=1e-6, end_film="shear", initial_skew=0.0,
+                       film_breakdown=1e-6, end_film="shear", end_film_fill=1.0,
+                       initial_skew=0.0,
                        cage_eccentricity=0.0,
                        cage_axial_eccentricity=0.0,
                        misalignment_x=0.0, misalignment_y=0.0, inner_ring_mass=0.1,
@@ -105,6 +106,10 @@ def cage_dynamics_6dof(radial_load, speed, roller_count, inner_raceway_diameter,
         the journal's displacement, and a skew falls, then grows ten times slower (+24 /s).
         The films are stiff (their damping rate far above the pocket films'): integrate them
         with ``integrator="rosenbrock"``.
+    end_film_fill : array_like
+        Share of the end faces' films under oil [-] (flooded: 1): scales their shear and
+        pressure. :func:`models.cage_slip.cage_slip`'s ``end_film_fill`` (0.25 there) is the
+        same share, of a film the whole roller end wide against the ribs only.
     initial_skew : array_like
         Every roller's skew at the start [rad], its axis turned about its radial direction
         towards the direction of rotation: a disturbance whose growth or decay says whether
@@ -285,6 +290,7 @@ def parameters(one, terms, arc_area, start_cage_speed, ring_stiffness, cage_mass
     p[rhs.SLIP_SMOOTHING], p[rhs.ARC_AREA] = _SLIP_SMOOTHING, arc_area
     p[rhs.FILM_FILL] = one["pocket_film_fill"]
     p[rhs.END_PRESSURE] = 1.0 if one["end_film"] == "reynolds" else 0.0
+    p[rhs.END_FILL] = one["end_film_fill"]
     p[rhs.FACE_RADIUS] = terms["radius"] - one["end_chamfer"]
     return p
 
@@ -530,6 +536,8 @@ MODELS = [Model(
         Input("end_film", "1", "roller end and rib films: shear only (the paper's eq. 7) or "
               "reynolds (with the film's squeeze and wedge pressure)", default="shear",
               kind="choice", choices=END_FILMS, label="end-face film"),
+        Input("end_film_fill", "1", "share of the end faces' films under oil (flooded: 1)",
+              default=1.0, minimum=0.0, maximum=1.0, label="end film fill"),
         Input("initial_skew", "deg", "every roller's skew at the start, a disturbance to "
               "see whether the running is stable", default=0.0, minimum=-1.0, maximum=1.0,
               label="initial roller skew"),

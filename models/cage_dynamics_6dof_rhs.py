@@ -36,8 +36,8 @@ from .dormand_prince import FIRST_STEP, SMALLEST_STEP, conclude, stage_argument
  POCKET_PLAY, RIB_PLAY, RIB_RADIUS, CAGE_IN, CAGE_OUT, WINDAGE, CAGE_DRAG, M_RING, C_RING,
  M_CAGE, J_CAGE_X, J_CAGE_Z, ECC_RADIAL, ECC_AXIAL, GRAVITY, MISALIGN_X, MISALIGN_Y,
  TRACTION_A, TRACTION_B, TRACTION_C, TRACTION_D, RACEWAYS, POCKETS, ENDS, DRAG,
- SLIP_SMOOTHING, ARC_AREA, FILM_FILL, END_PRESSURE, FACE_RADIUS) = range(48)
-PARAMETERS = 48
+ SLIP_SMOOTHING, ARC_AREA, FILM_FILL, END_PRESSURE, FACE_RADIUS, END_FILL) = range(49)
+PARAMETERS = 49
 RING, ROLLER_SIZE, CAGE_SIZE = 4, 12, 13
 
 
@@ -290,7 +290,8 @@ def derivatives(state, p, count, slice_z, arc_theta, arc_z, face_r, face_phi, fa
                             lever = _sub(element, mass_centre)
                             other = _add(cage_velocity, _cross(cage_rate, lever))
                             band = _band(np.sqrt(reach2), p[CAGE_IN], p[CAGE_OUT],
-                                         face_r[r] * face_cos[s], face_r[r] * face_sin[s], p)
+                                         face_r[r] * face_cos[s], face_r[r] * face_sin[s],
+                                         p) if p[END_PRESSURE] > 0.0 and h >= 0.0 else 0.0
                             on_roller = _face_force(h, _mul(-sign, z_b), _sub(material, other),
                                                     area, p[BED_POCKET], p, band, axis)
                             force = _add(force, on_roller)
@@ -308,7 +309,8 @@ def derivatives(state, p, count, slice_z, arc_theta, arc_z, face_r, face_phi, fa
                             h = 0.5 * (length + p[RIB_PLAY]) - sign * _dot(from_ring, z_ring)
                             other = _add(ring_velocity, _cross(ring_spin, from_ring))
                             band = _band(np.sqrt(reach2), p[R_INNER], p[RIB_RADIUS],
-                                         face_r[r] * face_cos[s], face_r[r] * face_sin[s], p)
+                                         face_r[r] * face_cos[s], face_r[r] * face_sin[s],
+                                         p) if p[END_PRESSURE] > 0.0 and h >= 0.0 else 0.0
                             on_roller = _face_force(h, _mul(-sign, z_ring),
                                                     _sub(material, other), area, p[BED_RIB], p,
                                                     band, axis)
@@ -367,7 +369,8 @@ def derivatives(state, p, count, slice_z, arc_theta, arc_z, face_r, face_phi, fa
 def _face_force(gap, normal, sliding, area, bed, p, band, axis):
     """Force on the roller of one end-face element [N]: the Winkler bed and Coulomb friction
     when pressed in (eqs. 1, 2); otherwise the oil's shear ``eta v A / h`` (eq. 7) and, unless
-    the paper's shear-only film is asked for, the film's pressure (:func:`_face_pressure`).
+    the paper's shear-only film is asked for, the film's pressure (:func:`_face_pressure`),
+    both over the share of the face under oil.
     ``normal`` points from the face into the roller; ``sliding`` is the roller's velocity
     less the face's at the element; ``band`` is :func:`_band`'s; ``axis`` the roller's."""
     tangential, speed = _tangential(sliding, normal)
@@ -379,6 +382,7 @@ def _face_force(gap, normal, sliding, area, bed, p, band, axis):
                 speed, p[SLIP_SMOOTHING]) / speed, tangential))
         return force
     film = max(gap, p[FILM_FLOOR])
+    area = area * p[END_FILL]  # the share of the face under oil
     force = _mul(-p[VISCOSITY] * area / film, tangential)
     if p[END_PRESSURE] > 0.0:
         # The film's slope along the face, dotted with the sliding: the roller's end plane

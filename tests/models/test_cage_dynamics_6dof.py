@@ -540,6 +540,9 @@ def test_a_closing_end_film_on_a_thin_cage_rim_pushes_as_a_long_squeeze_strip(st
     assert -np.sign(speed) * on_roller[2] == pytest.approx(strip, rel=3e-3)
     assert np.abs(on_roller[:2]).max() < 1e-3 * strip
     np.testing.assert_allclose(on_cage, -on_roller, rtol=0, atol=1e-12 * strip)
+    p[rhs.END_FILL] = 0.25  # a quarter of the face under oil: a quarter of the force
+    quarter = p[rhs.M_ROLLER] * rate(state, p, 1, tuple(geometry))[k + 3:k + 6]
+    np.testing.assert_allclose(quarter, 0.25 * on_roller, rtol=1e-12, atol=0)
 
 
 def seeded_skew_growth(end_film, integrator, duration, fitted_from, seed=1e-6):
