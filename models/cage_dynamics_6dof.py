@@ -55,9 +55,7 @@ def cage_dynamics_6dof(radial_load, speed, roller_count, inner_raceway_diameter,
                        cage_density=8600.0, cage_youngs_modulus=106e9, cage_poisson_ratio=0.32,
                        winkler_depth=1e-3, restitution=0.8, impact_speed=0.1,
                        film_breakdown=1e-6, end_film="shear", end_film_fill=1.0,
-                       initial_skew=0.0,
-                       cage_eccentricity=0.0,
-                       cage_axial_eccentricity=0.0,
+                       initial_skew=0.0, cage_eccentricity=0.0, cage_axial_eccentricity=0.0,
                        misalignment_x=0.0, misalignment_y=0.0, inner_ring_mass=0.1,
                        damping_ratio=0.1, duration=0.05, output_interval=1e-4, slices=10,
                        arc_axial_points=6, arc_angle_points=8, face_rings=5, face_angles=12,
@@ -337,7 +335,7 @@ def setup(one):
                            validity=steady["status"][0] & VALIDITY_MASK)
 
 
-def start(count, p, whole, steady, drop, omega_c, kinematic_spin, skew=0.0):
+def start(count, p, whole, steady, drop, omega_c, kinematic_spin, skew):
     """The steady state in space: ring dropped along the load, each roller at its orbit
     position (roller 1 on the load line, at -90 deg) pressed by its quasi-static contact
     loads (``whole``: the roller's Palmgren constant), spinning as the steady model says, axes
