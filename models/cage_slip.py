@@ -589,8 +589,9 @@ MODELS = [Model(
               default=1.0, minimum=0.0, maximum=DRAG_COEFFICIENT_LIMIT),
         Input("pocket_clearance", "mm", "pocket clearance c_p", default=0.1, minimum=0.0,
               exclusive_minimum=True),
-        Input("pocket_wrap_angle", "rad", "pocket arc wrapped around the roller theta_w",
-              default=1.0, minimum=0.0, maximum=np.pi,
+        Input("pocket_wrap_angle", "rad", "pocket arc wrapped around the roller theta_w "
+              "(a pocket closed around it: 2 pi)",
+              default=1.0, minimum=0.0, maximum=2 * np.pi,
               label="pocket wrap angle"),
         Input("pocket_film_fill", "1", "share of the pocket arc under oil phi_p (flooded: 1)",
               default=1.0, minimum=0.0, maximum=1.0),

@@ -38,6 +38,11 @@ FIGURES = {
                        "model holds each roller at the cage's orbit speed, the planar one "
                        "lets it move across its pocket's play; as the play closes, so does "
                        "the gap between them.",
+    "three_models.png": "The steady, planar and spatial models at their common case (2 kN, "
+                        "6000 r/min, no eccentricity, no misalignment), each step one named "
+                        "term of model form: the pocket film over the paper's 1 rad or over "
+                        "the spatial pockets' arcs, the rollers' free play in the planar "
+                        "pockets, the share of the end faces under oil.",
 }
 
 
@@ -96,6 +101,57 @@ def draw(results: Path, figures: Path):
     save(figure, figures, "sensitivity.png")
     _transient(results, figures)
     _pocket_play(results, figures)
+    _three_models(results, figures)
+
+
+def settled_roller_slip(run):
+    """The planar model's roller slip over its rollers and the settled second half."""
+    half = run.sample_time >= 0.5 * run.sample_time.max()
+    return run.roller_slip.where(half).mean(("elapsed_time", "roller"))
+
+
+def three_models(results: Path) -> list[tuple[str, float, float, str]]:
+    """Cage slip and mean roller slip [%] of the three models at their common case, with the
+    terms that set each apart: (name, cage slip, roller slip, colour)."""
+    steady = result(results, "three_models_steady")
+    planar = result(results, "three_models_planar")
+    spatial = result(results, "three_models_spatial")
+    rows = []
+    for film, text in (("1 rad", "paper's pocket film (1 rad)"),
+                       ("4.375 rad", "film over the spatial arcs")):
+        point = at(steady, pocket_wrap_angle=film)
+        rows.append((f"steady, {text}", float(point.cage_slip),
+                     float(point.roller_slip.mean("orbit")), "C0"))
+        point = at(planar, pocket_wrap_angle=film)
+        rows.append((f"planar, {text}", float(point.mean_cage_slip),
+                     float(settled_roller_slip(point)), "C1"))
+    for fill, text in ((0.25, "end films on 0.25 of the faces"),
+                       (1.0, "end films on the whole faces")):
+        point = spatial.sel(end_film_fill=fill)
+        rows.append((f"spatial, {text}", float(point.mean_cage_slip),
+                     float(point.mean_roller_slip), "C2"))
+    return rows
+
+
+def _three_models(results: Path, figures: Path):
+    rows = three_models(results)
+    spatial = result(results, "three_models_spatial")
+    figure, axes = subplots(1, 2, figsize=(11, 3.9), sharey=True)
+    places = np.arange(len(rows))[::-1]
+    for axis, column, quantity in ((axes[0], 1, spatial.mean_cage_slip),
+                                   (axes[1], 2, spatial.mean_roller_slip)):
+        values = [row[column] for row in rows]
+        axis.barh(places, values, color=[row[3] for row in rows], height=0.6)
+        for place, value in zip(places, values):
+            axis.text(value, place, f" {value:.3g}", va="center", fontsize=7)
+        axis.set(xlabel=label(quantity, long=True))
+        axis.set_xlim(0, 1.2 * max(values))
+        axis.grid(alpha=0.3, axis="x")
+    axes[0].set_yticks(places, [row[0] for row in rows], fontsize=8)
+    axes[0].set_ylabel("model and the terms it takes")
+    figure.suptitle(_title(spatial, "radial_load", "speed", note="no eccentricity, no "
+                           "misalignment; transients: settled mean"), fontsize=9)
+    save(figure, figures, "three_models.png")
 
 
 def _pocket_play(results: Path, figures: Path):

@@ -56,6 +56,7 @@ REDUCED = {
     "cage_slip/fig17_transient.toml": [('duration = "0.03 s"', 'duration = "0.004 s"'),
                                        ('step = "200 N"', 'step = "600 N"')],
     "cage_slip/fig18_20_eccentricity.toml": [('duration = "0.06 s"', 'duration = "0.006 s"')],
+    "cage_slip/three_models_spatial.toml": [('duration = "0.05 s"', 'duration = "0.004 s"')],
     # runout: a quarter of the rotation steps (of a revolution, in which the rollers' orders
     # of roundness pass), fewer random draws
     "runout/fig07_table3.toml": [("steps_per_revolution = 720", "steps_per_revolution = 180")],
