@@ -7,13 +7,20 @@ roller's motion relative to the cage and the inner ring at rates far above those
 itself has (a 7.5 um end film's squeeze near 1e8 /s): an explicit method's steps are held by
 them, an implicit one's by the accuracy asked for.
 
-The Jacobian's structure makes it cheap. A roller's derivatives depend on its own state and
-on the "hub", the inner ring and the cage, not on the other rollers; the hub's depend on
+The Jacobian's structure makes it cheap. A roller's derivatives depend only on its own state
+and on the "hub", the inner ring and the cage, not on the other rollers; the hub's depend on
 everything. Perturbing one component of every roller at once gives each roller's own block
 (12 x 12) from its rows and, by the rollers' shares of the hub's forces that
 :func:`derivatives` reports, each roller's block of the hub's rows; perturbing each of the
 hub's 17 components gives its columns. 29 evaluations in all, against 173 column by column.
-The linear systems
+Each evaluates only the terms its component enters: the inner ring's columns the raceway
+contacts (and the ribs), the cage's the pockets and the drag (and the cage's end faces).
+
+The Jacobian holds the stiff terms: the raceway contacts, the pocket films and contacts, and
+the end films where their pressure is asked for (``END_PRESSURE``). The end films' shear
+alone is left out: it is not stiff (the steps are the same with it and without it, at half
+the Jacobian's cost), and a W-method keeps its order whatever matrix it is given
+(:mod:`models.rosenbrock`). The linear systems
 ``(I / (h gamma) - J) u = r`` are then solved by blocks: each roller's block inverted, the
 hub's 17 unknowns from the Schur complement.
 """
@@ -22,9 +29,10 @@ from __future__ import annotations
 import numpy as np
 from numba import njit
 
-from .cage_dynamics_6dof_rhs import (CAGE_SIZE, J_CAGE_X, J_CAGE_Z, M_CAGE, M_RING,
-                                     RING, ROLLER_SIZE, _accumulators, _copy, _normalise,
-                                     _observe, derivatives, rotation)
+from .cage_dynamics_6dof_rhs import (CAGE_SIZE, DRAG, END_PRESSURE, ENDS, J_CAGE_X,
+                                     J_CAGE_Z, M_CAGE, M_RING, POCKETS, RACEWAYS, RING,
+                                     ROLLER_SIZE, _accumulators, _copy, _normalise, _observe,
+                                     derivatives, rotation)
 from .dormand_prince import FIRST_STEP, SMALLEST_STEP
 from .rosenbrock import (GAMMA, STAGES, next_step, solution_and_error, stage_argument,
                          stage_right_side)
@@ -46,26 +54,42 @@ def hub_indices(count):
 
 
 @njit(cache=True)
-def jacobian(y, derivative, shares, p, count, geometry, record, scale, own, to_hub,
-             from_hub, hub):
-    """The Jacobian of :func:`derivatives` at ``y`` (its value there ``derivative``, the
-    rollers' shares ``shares``), by forward differences of steps ``sqrt(eps) max(|y|,
-    scale)``, into the blocks ``own`` ``(count, 12, 12)`` (a roller's rows, its columns),
-    ``to_hub`` ``(count, 12, 17)`` (a roller's rows, the hub's columns), ``from_hub``
-    ``(count, 17, 12)`` (the hub's rows, a roller's columns) and ``hub`` ``(17, 17)``."""
+def switched(p, raceways, pockets, ends, drag):
+    """``p`` with its terms switched: each switch 1.0 (on) or 0.0 (off)."""
+    q = p.copy()
+    q[RACEWAYS], q[POCKETS], q[ENDS], q[DRAG] = raceways, pockets, ends, drag
+    return q
+
+
+@njit(cache=True)
+def jacobian(y, p, count, geometry, record, scale, own, to_hub, from_hub, hub):
+    """The Jacobian of :func:`derivatives`' stiff terms at ``y``, by forward differences of
+    steps ``sqrt(eps) max(|y|, scale)``, into the blocks ``own`` ``(count, 12, 12)`` (a
+    roller's rows, its columns), ``to_hub`` ``(count, 12, 17)`` (a roller's rows, the hub's
+    columns), ``from_hub`` ``(count, 17, 12)`` (the hub's rows, a roller's columns) and
+    ``hub`` ``(17, 17)``."""
+    ends = p[ENDS] if p[END_PRESSURE] > 0.0 else 0.0
+    stiff = switched(p, p[RACEWAYS], p[POCKETS], ends, p[DRAG])
+    ring = switched(p, p[RACEWAYS], 0.0, ends, 0.0)
+    cage = switched(p, 0.0, p[POCKETS], ends, p[DRAG])
+    ring_base = derivatives(y, ring, count, *geometry, *record, 0.0)
+    cage_base = derivatives(y, cage, count, *geometry, *record, 0.0)
     indices = hub_indices(count)
     for column in range(HUB):
+        terms, base = (ring, ring_base) if column < RING else (cage, cage_base)
         i = indices[column]
         step = _RELATIVE_STEP * max(abs(y[i]), scale[i])
         moved = y.copy()
         moved[i] += step
-        change = (derivatives(moved, p, count, *geometry, *record, 0.0) - derivative) / step
+        change = (derivatives(moved, terms, count, *geometry, *record, 0.0) - base) / step
         for j in range(count):
             k = RING + ROLLER_SIZE * j
             for r in range(ROLLER_SIZE):
                 to_hub[j, r, column] = change[k + r]
         for r in range(HUB):
             hub[r, column] = change[indices[r]]
+    derivative = derivatives(y, stiff, count, *geometry, *record, 0.0)
+    shares = record[4].copy()
     turn = rotation(y[RING + ROLLER_SIZE * count + 6:RING + ROLLER_SIZE * count + 10])
     steps = np.empty(count)
     for column in range(ROLLER_SIZE):
@@ -74,7 +98,7 @@ def jacobian(y, derivative, shares, p, count, geometry, record, scale, own, to_h
             i = RING + ROLLER_SIZE * j + column
             steps[j] = _RELATIVE_STEP * max(abs(y[i]), scale[i])
             moved[i] += steps[j]
-        change = derivatives(moved, p, count, *geometry, *record, 0.0) - derivative
+        change = derivatives(moved, stiff, count, *geometry, *record, 0.0) - derivative
         moved_shares = record[4]
         for j in range(count):
             k = RING + ROLLER_SIZE * j
@@ -157,8 +181,7 @@ def integrate(state, times, p, count, geometry, record, settled_from, rtol, atol
     _observe(y, p, count, geometry, record, t >= settled_from, arc_max, end_min, rib_min,
              last, events)
     derivative = derivatives(y, p, count, *geometry, *record, 0.0)
-    jacobian(y, derivative, record[4].copy(), p, count, geometry, record, scale, own, to_hub,
-             from_hub, hub)
+    jacobian(y, p, count, geometry, record, scale, own, to_hub, from_hub, hub)
     for index in range(1, times.size):
         while t < times[index]:
             if steps >= max_steps or h < SMALLEST_STEP:
@@ -178,8 +201,7 @@ def integrate(state, times, p, count, geometry, record, settled_from, rtol, atol
                 y = trial
                 _normalise(y, count)
                 derivative = derivatives(y, p, count, *geometry, *record, 0.0)
-                jacobian(y, derivative, record[4].copy(), p, count, geometry, record, scale,
-                         own, to_hub, from_hub, hub)
+                jacobian(y, p, count, geometry, record, scale, own, to_hub, from_hub, hub)
         _copy(y, samples[index])
         _observe(y, p, count, geometry, record, t >= settled_from, arc_max, end_min,
                  rib_min, last, events)
