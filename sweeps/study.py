@@ -2,9 +2,11 @@
 
 A study is a folder ``studies/<name>/`` holding ``*.toml`` sweep definitions, ``figures.py``
 (``FIGURES``: file name -> caption; ``draw(results, figures)``; ``ours(results)``: our value
-of each stated number, from the netCDF files only), ``claims.toml`` (the paper's numbers) and
-``about.md`` (what the study shows and assumes). The figure script is loaded from its file:
-studies are data for the engine (installed with it as package data).
+of each stated number, from the netCDF files only; optionally ``tables(results)``: Markdown
+the report shows after ``about.md``, the runs' numbers as these results have them),
+``claims.toml`` (the paper's numbers) and ``about.md`` (what the study shows and assumes).
+The figure script is loaded from its file: studies are data for the engine (installed with
+it as package data).
 """
 from __future__ import annotations
 
@@ -195,9 +197,13 @@ def write_report(studies: list[Study], results: Path, figures: Path,
                                  if study.beyond_the_papers else
                                  ("stated numbers", "The paper's numbers beside ours", "paper"))
         rows, agreeing, comparable = _claim_rows(study.claims(), ours, column)
-        page = [study.about().rstrip(), "", f"## {heading}", "",
-                f"| {kind[:-1]} | source | {column} | ours | agreement | assumptions |",
-                "|---|---|---|---|---|---|", *rows, "", "## Figures", ""]
+        tables = getattr(module, "tables", None)
+        page = [study.about().rstrip(), ""]
+        if tables is not None:
+            page += [tables(results / study.name).rstrip(), ""]
+        page += [f"## {heading}", "",
+                 f"| {kind[:-1]} | source | {column} | ours | agreement | assumptions |",
+                 "|---|---|---|---|---|---|", *rows, "", "## Figures", ""]
         for file, caption in module.FIGURES.items():
             if (folder / file).exists():
                 page += [f"![{caption}]({file})", "", f"*{caption}*", ""]

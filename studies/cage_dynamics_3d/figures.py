@@ -78,6 +78,13 @@ FIGURES = {
                                      "oil): largest dry force of each pocket-arc element over "
                                      "the settled half, in the pocket with the largest force, "
                                      "for the four eccentricities (elements as in Fig. 23).",
+    "fig21_skew_film_pressure.png": "Fig. 21 with the end films' pressure: the rollers' root "
+                                    "mean square skew against time with the paper's end "
+                                    "films (shear only, eq. 7; left), under which the "
+                                    "centred cage's skew grows from round-off to the "
+                                    "eccentric cases' after 45-50 ms, and with the films' "
+                                    "squeeze and wedge pressure (right), under which only "
+                                    "the axial eccentricity skews the rollers.",
     "skew_stability.png": "The aligned bearing at 2 kN, 6000 r/min, every roller started "
                           "with 1e-6 rad of skew: the rollers' root mean square skew against "
                           "time with the paper's end films (shear only, eq. 7), under which it "
@@ -160,6 +167,8 @@ def draw(results: Path, figures: Path):
     _arc_maps(thin, thin_data, figures, "fig23_arc_force_thin_film.png")
     _film_summary(runs, thin, thin_data, figures, "thin_film_summary.png")
     _skew_stability(result(results, "skew_stability"), figures, "skew_stability.png")
+    _skew_film_pressure(runs, result(results, "eccentricity_film_pressure"), figures,
+                        "fig21_skew_film_pressure.png")
 
 
 #: The end films of the stability runs, as the legend names them.
@@ -172,14 +181,41 @@ def _skew_stability(data, figures: Path, file: str):
     figure, axis = subplots(figsize=(8.6, 3.9))
     for name, legend in FILMS.items():
         run = data.sel(films=name)
-        skew = in_unit(run.roller_skew, "urad")
-        rms = np.sqrt((skew**2).mean("roller"))
-        axis.semilogy(in_unit(run.elapsed_time, "ms"), rms, label=legend)
+        axis.semilogy(in_unit(run.elapsed_time, "ms"), _rms_skew(run), label=legend)
     axis.set(xlabel=f"{_TIME} [ms]", ylabel="rollers' rms skew [µrad]")
     axis.legend(fontsize=7, title="end films", title_fontsize=7)
     axis.grid(alpha=0.3, which="both")
     axis.set_title(_title(data, "every roller started with 1 µrad of skew, aligned, centred "
                                 "cage", figure), fontsize=9)
+    save(figure, figures, file)
+
+
+def _rms_skew(run):
+    """The rollers' root mean square skew [urad] at each sample."""
+    skew = in_unit(run.roller_skew, "urad")
+    return np.sqrt((skew**2).mean("roller"))
+
+
+def _skew_film_pressure(paper: dict, pressure, figures: Path, file: str):
+    """Fig. 21 as the rollers' rms skew on a log scale: the paper's end films (the four
+    eccentricities) beside the films with their pressure (centred and axially eccentric)."""
+    figure, axes = subplots(1, 2, figsize=(11, 4.1), sharey=True)
+    colours = {case: f"C{index}" for index, case in enumerate(CASES)}
+    for case, run in paper.items():
+        axes[0].semilogy(in_unit(run.elapsed_time, "ms"), _rms_skew(run), lw=0.7,
+                         color=colours[case], label=_name(case))
+    for case in (("0 mm", "0 mm"), ("0 mm", "2 mm")):
+        run = at(pressure, cage_axial_eccentricity=case[1])
+        axes[1].semilogy(in_unit(run.elapsed_time, "ms"), _rms_skew(run), lw=0.7,
+                         color=colours[case], label=_name(case))
+    for axis, what in zip(axes, ("end films: shear only (the paper's, eq. 7)",
+                                 "end films with their squeeze and wedge pressure")):
+        axis.set(xlabel=f"{_TIME} [ms]", title=what)
+        axis.title.set_fontsize(9)
+        axis.grid(alpha=0.3, which="both")
+        axis.legend(fontsize=7, title="cage mass eccentricity", title_fontsize=7)
+    axes[0].set_ylabel("rollers' rms skew [µrad]")
+    figure.suptitle(_title(pressure, "Fig. 21 as the rollers' rms skew"), fontsize=9)
     save(figure, figures, file)
 
 
@@ -431,6 +467,50 @@ def _ratio(top, bottom) -> float | None:
     return top / bottom
 
 
+def _row(name: str, run) -> str:
+    """One run's line of :func:`tables`."""
+    def gaps(variable):
+        gap = in_unit(run[variable], "um")
+        return " / ".join(f"{float(gap.sel(end=end).min()):.2f}" for end in ("left", "right"))
+
+    force = float(in_unit(run.pocket_arc_force, "N").max()) if np.isfinite(
+        run.pocket_arc_force).any() else 0.0
+    events = " / ".join(f"{_value(run, v, '1'):.0f}" for v in (
+        "pocket_arc_events", "pocket_end_events", "rib_events"))
+    return (f"| {name} | {_value(run, 'mean_cage_slip', '%'):.3g} | "
+            f"{_value(run, 'mean_roller_slip', '%'):.3g} | "
+            f"{_value(run, 'whirl_deviation_ratio', '1'):.2g} / "
+            f"{_value(run, 'centre_whirl_deviation_ratio', '1'):.3g} | "
+            f"{_value(run, 'rms_roller_skew', 'deg'):.3g} | "
+            f"{_value(run, 'rms_roller_tilt', 'deg'):.2g} | {events} | {force:.3g} | "
+            f"{gaps('pocket_end_clearance')} | {gaps('rib_clearance')} |")
+
+
+def tables(results: Path) -> str:
+    """The runs' settled statistics, as the report shows them after about.md."""
+    results = Path(results)
+    runs, _ = _eccentricity(results)
+    thin, _ = _eccentricity(results, "eccentricity_thin_film")
+    turned = _misalignment(results)
+    pressure = result(results, "eccentricity_film_pressure")
+    lines = ["## The runs' numbers", "",
+             "Settled half; slips are means over the rollers; gaps the smallest over all "
+             "rollers, elements and settled samples; contacts: dry contacts begun between "
+             "settled samples. Thin film: 5 % of the pocket arcs under oil; films' pressure: "
+             "the end films' squeeze and wedge (60 ms, settled from 30 ms).", "",
+             "| case | cage slip [%] | roller slip [%] | sigma_b, mass / geometric centre | "
+             "rms skew [deg] | rms tilt [deg] | dry contacts begun (arc / pocket end / rib) | "
+             "largest dry arc force [N] | smallest pocket-end gap, left / right [um] | "
+             "smallest rib gap, left / right [um] |", "|---|---|---|---|---|---|---|---|---|---|"]
+    plain = {case: f"e_r, e_a = {case[0]}, {case[1]}" for case in CASES}
+    lines += [_row(plain[case], run) for case, run in runs.items()]
+    lines += [_row(MISALIGNED[name], turned[name]) for name in MISALIGNED]
+    lines += [_row(f"thin film, {plain[case]}", run) for case, run in thin.items()]
+    lines += [_row(f"films' pressure, e_r, e_a = 0 mm, {axial}",
+                   at(pressure, cage_axial_eccentricity=axial)) for axial in ("0 mm", "2 mm")]
+    return "\n".join(lines)
+
+
 def _value(run, name: str, unit: str) -> float:
     return float(in_unit(run[name], unit))
 
@@ -486,6 +566,10 @@ def ours(results: Path) -> dict:
         values[f"{name}_edge_x"] = _edge_share(gap)
         values[f"{name}_alike_x"] = _alike(gap)
     values.update(_thin_film(results))
+    pressure = result(results, "eccentricity_film_pressure")
+    values["rms_roller_skew_axial_film_pressure"] = _change(
+        at(pressure, cage_axial_eccentricity="2 mm"),
+        at(pressure, cage_axial_eccentricity="0 mm"), "rms_roller_skew")
     return {key: v for key, v in values.items() if v is not None}
 
 

@@ -269,6 +269,11 @@ def test_the_3d_study_draws_every_figure_and_computes_every_claim(short_3d_resul
     module = study.figures_module()
     module.draw(short_3d_results, tmp_path)
     assert sorted(p.name for p in tmp_path.iterdir()) == sorted(module.FIGURES)
+    table = module.tables(short_3d_results).splitlines()
+    runs = 4 + 2 + 4 + 2  # eccentricities, misalignments, thin film, the films' pressure
+    assert len([line for line in table if line.startswith("| ") and "---" not in line]) \
+        == runs + 1  # and the header
+    assert "nan" not in "\n".join(table)
     ours = module.ours(short_3d_results)
     # Only a claim that says when it is "not computed" may be missing (a share of dry
     # elements where none is dry, as in 1 ms).

@@ -83,6 +83,9 @@ def test_study_runs_what_is_stale_draws_and_reports(tmp_path, four_points, run_c
             plt.savefig(figures / "stiffness.png")
         def ours(results):
             return {"points": xr.open_dataset(results / "loads.nc").status.size}
+        def tables(results):
+            count = xr.open_dataset(results / "loads.nc").status.size
+            return f"## The runs' numbers\\n\\n{count} points computed"
         """))
     first = run_cli("study", "tiny", cwd=tmp_path)
     assert first.returncode == 0, first.stderr
@@ -98,6 +101,9 @@ def test_study_runs_what_is_stale_draws_and_reports(tmp_path, four_points, run_c
     page = (tmp_path / "figures" / "tiny" / "README.md").read_text()
     assert "| four points |  | 4  | 4  | agrees (within 0 ) |  |" in page
     assert "![stiffness against load](stiffness.png)" in page
+    # the study's own tables, from its results, between its page and the stated numbers
+    assert (page.index("# Tiny study") < page.index("## The runs' numbers\n\n4 points computed")
+            < page.index("## The paper's numbers beside ours"))
     index = (tmp_path / "figures" / "README.md").read_text()
     assert "[tiny](tiny/README.md): 1 of 1 comparable stated numbers agree" in index
     missing = run_cli("study", "nothing", cwd=tmp_path)
