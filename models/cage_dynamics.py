@@ -249,6 +249,12 @@ CAGE_MASS_CENTRE = Constraint(
     "diameter has its mass centre no farther from its axis")
 
 
+def point_seconds(values) -> np.ndarray:
+    """Each point's rough cost on one core [s]: 1.4 s per second of bearing time
+    (benchmarks/declared_costs.py), the model's ``seconds_per_point``."""
+    return 1.4 * np.ravel(np.asarray(values.get("duration", 0.05), dtype=float))
+
+
 def _samples_fit(duration, output_interval):
     return (output_interval <= duration) & (duration / output_interval <= 1e5)
 
@@ -316,7 +322,7 @@ MODELS = [Model(
         Constraint(("duration", "output_interval"), _samples_fit,
                    "output_interval must not exceed duration, and at most 1e5 samples"),
     ),
-    seconds_per_point=0.07,  # at its default bearing time (benchmarks/declared_costs.py)
+    seconds_per_point=point_seconds,
     points_per_call=1,
     validity="cage_slip's, for the steady state it starts from: " + STEADY_VALIDITY,
 )]

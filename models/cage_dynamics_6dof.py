@@ -492,6 +492,27 @@ def _skewed(rms_roller_skew):
 
 
 _PLANAR = {i.name: i for i in STEADY_MODELS[0].inputs}
+#: Rough cost of a millisecond of bearing time on one core [s], by end film and adaptive
+#: integrator (benchmarks/RESULTS.md, cage dynamics: 0.1 s at 800 N, 12000 r/min), and of
+#: the paper's RK4 at its 1e-7 s step.
+_SECONDS_PER_MS = {("shear", "adaptive"): 0.45, ("shear", "rosenbrock"): 0.8,
+                   ("reynolds", "adaptive"): 26.0, ("reynolds", "rosenbrock"): 0.9}
+_RK4_SECONDS_PER_MS = 3.0
+
+
+def point_seconds(values) -> np.ndarray:
+    """Each point's rough cost on one core [s], from its bearing time, end film and
+    integrator (the model's ``seconds_per_point``)."""
+    defaults = {"end_film": "shear", "integrator": "adaptive", "rk4_step": 1e-7}
+    duration_ms, film, integrator, step = np.broadcast_arrays(
+        1e3 * np.asarray(values.get("duration", 0.05), dtype=float),
+        *(np.asarray(values.get(k, v)) for k, v in defaults.items()))
+    rate = np.array([_RK4_SECONDS_PER_MS * 1e-7 / float(s) if i == "rk4"
+                     else _SECONDS_PER_MS.get((f, i), 1.0)
+                     for f, i, s in zip(film.ravel(), integrator.ravel(), step.ravel())])
+    return duration_ms.ravel() * rate
+
+
 MODELS = [Model(
     name="cage_dynamics_6dof",
     function=cage_dynamics_6dof,
@@ -647,7 +668,7 @@ MODELS = [Model(
         Constraint(("duration", "rk4_step"), _rk4_steps_fit,
                    "duration / rk4_step must not exceed 1e9 steps"),
     ),
-    seconds_per_point=30.0,  # at the default 0.05 s of bearing time (benchmarks/RESULTS.md)
+    seconds_per_point=point_seconds,
     points_per_call=1,
     validity="cage_slip's, for the steady state it starts from: " + STEADY_VALIDITY,
 )]

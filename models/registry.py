@@ -286,8 +286,10 @@ class Model:
     dim_sizes: dict = field(default_factory=dict)
     constraints: tuple[Constraint, ...] = ()
     #: Rough cost of one grid point on one core [s], to choose chunk sizes and whether a
-    #: cluster is worth starting.
-    seconds_per_point: float = 1e-3
+    #: cluster is worth starting, and to tell a run's length; or a function of the points'
+    #: inputs (``{input: its SI value, or its values at some of the grid's points}``) giving
+    #: each point's cost.
+    seconds_per_point: float | Callable[[dict], np.ndarray] = 1e-3
     #: Points per call of the function: a chunk is computed in blocks of this size, so that a
     #: model's temporaries stay small enough for the caches that workers share (crb_radial:
     #: two workers slowed each other's tasks by 40 % with 2500-point calls, 15 % with 500).

@@ -125,7 +125,7 @@ def _per_point(value, count: int, own_dims: int) -> np.ndarray:
 def largest_chunk(grid: Grid) -> int:
     """The most points a chunk holds by default: ``CHUNK_SECONDS`` of work on one core, by
     the model's declared cost."""
-    return max(1, int(CHUNK_SECONDS / grid.model.seconds_per_point))
+    return max(1, int(CHUNK_SECONDS / grid.seconds_per_point))
 
 
 def choose_chunk_size(grid: Grid, workers: int) -> int:

@@ -155,7 +155,7 @@ class Executor:
             return True
         if self.workers is not None:  # asked for: 0 in-process, N a local cluster of N
             return self.workers > 0
-        cost = grid.size * grid.model.seconds_per_point
+        cost = grid.size * grid.seconds_per_point
         return cost > IN_PROCESS_SECONDS
 
     def worker_count(self) -> int:
@@ -179,7 +179,7 @@ class Executor:
         chunks = math.prod(math.ceil(n / b) for n, b in zip(grid.shape, block))  # as Grid.chunks
         count = max(1, min(asked, cores, chunks))
         if self.workers and self.workers > cores:
-            work = grid.size * grid.model.seconds_per_point
+            work = grid.size * grid.seconds_per_point
             fewer = "" if chunks >= cores else (
                 f" and {chunks} chunk{'s' * (chunks != 1)} of {chunk_size} "
                 f"point{'s' * (chunk_size != 1)}"

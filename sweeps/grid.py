@@ -16,6 +16,10 @@ from .models.registry import Model
 from .spec import Sweep
 
 
+#: Points of a grid at most on which a model's cost function is evaluated.
+COST_SAMPLE = 1000
+
+
 @dataclass
 class Grid:
     """Everything a worker needs to build the model inputs of a chunk (small and picklable)."""
@@ -78,10 +82,28 @@ class Grid:
         Returns the inputs that vary on the grid as arrays with the points first, and the
         axis index of each point on every axis (to group points by structural inputs).
         """
-        index = np.unravel_index(np.arange(start, stop), self.shape) if self.shape else ()
+        return self._at(np.arange(start, stop))
+
+    def _at(self, points: np.ndarray) -> tuple[dict, dict]:
+        index = np.unravel_index(points, self.shape) if self.shape else ()
         varying = {name: values[index[position]]
                    for name, (position, values) in self.axis_values.items()}
         return varying, dict(zip(self.dims, index))
+
+    @property
+    def seconds_per_point(self) -> float:
+        """Rough cost of one point on one core [s]: the model's constant, or, where the model
+        gives it as a function of the points' inputs, its mean over the grid (over every
+        point, or ``COST_SAMPLE`` of them drawn at random: a regular stride would alias with
+        the fastest axes)."""
+        cost = self.model.seconds_per_point
+        if not callable(cost):
+            return cost
+        points = np.arange(self.size) if self.size <= COST_SAMPLE else np.sort(
+            np.random.default_rng(0).choice(self.size, COST_SAMPLE, replace=False))
+        varying, _ = self._at(points)
+        values = {name: value for name, value in self.fixed.items() if value is not None}
+        return float(np.mean(cost(values | varying)))
 
 
 def block_shape(shape: tuple, size: int) -> tuple:

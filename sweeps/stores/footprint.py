@@ -9,7 +9,8 @@ computing that size is an upper bound; once chunks are stored, the bytes they to
 give an estimate of the rest (:meth:`Footprint.check`). A netCDF result needs its size twice
 until it is complete: the finished chunks are kept as parts beside the file being written (so
 that an interrupted run resumes). The time is the model's declared cost per point on one core
-(``Model.seconds_per_point``, which also sizes the chunks) over the workers.
+(``Grid.seconds_per_point``: the model's ``seconds_per_point``, a constant or a function of
+the points' inputs; it also sizes the chunks) over the workers.
 """
 from __future__ import annotations
 
@@ -96,7 +97,7 @@ class Footprint:
         free, folder = free_bytes(output)
         return cls(str(output), points, grid.size, result_bytes(sweep, grid), 2 if netcdf else 1,
                    sweep.storage.compression != "none",
-                   points * grid.model.seconds_per_point / max(1, workers), free, folder)
+                   points * grid.seconds_per_point / max(1, workers), free, folder)
 
     @property
     def needed(self) -> int:
