@@ -285,6 +285,7 @@ def parameters(one, terms, arc_area, start_cage_speed, ring_stiffness, cage_mass
     curve = terms["traction"]
     p[rhs.TRACTION_A:rhs.TRACTION_D + 1] = (curve.a[0], curve.b[0], curve.c[0], curve.d[0])
     p[rhs.RACEWAYS] = p[rhs.POCKETS] = p[rhs.ENDS] = p[rhs.DRAG] = 1.0
+    p[rhs.END_FACES] = p[rhs.END_RIBS] = 1.0
     p[rhs.SLIP_SMOOTHING], p[rhs.ARC_AREA] = _SLIP_SMOOTHING, arc_area
     p[rhs.FILM_FILL] = one["pocket_film_fill"]
     p[rhs.END_PRESSURE] = 1.0 if one["end_film"] == "reynolds" else 0.0
@@ -496,7 +497,7 @@ _PLANAR = {i.name: i for i in STEADY_MODELS[0].inputs}
 #: integrator (benchmarks/RESULTS.md, cage dynamics: 0.1 s at 800 N, 12000 r/min), and of
 #: the paper's RK4 at its 1e-7 s step.
 _SECONDS_PER_MS = {("shear", "adaptive"): 0.45, ("shear", "rosenbrock"): 0.8,
-                   ("reynolds", "adaptive"): 26.0, ("reynolds", "rosenbrock"): 0.9}
+                   ("reynolds", "adaptive"): 26.0, ("reynolds", "rosenbrock"): 0.7}
 _RK4_SECONDS_PER_MS = 3.0
 
 

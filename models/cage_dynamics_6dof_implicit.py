@@ -11,10 +11,14 @@ The Jacobian's structure makes it cheap. A roller's derivatives depend only on i
 and on the "hub", the inner ring and the cage, not on the other rollers; the hub's depend on
 everything. Perturbing one component of every roller at once gives each roller's own block
 (12 x 12) from its rows and, by the rollers' shares of the hub's forces that
-:func:`derivatives` reports, each roller's block of the hub's rows; perturbing each of the
-hub's 17 components gives its columns. 29 evaluations in all, against 173 column by column.
-Each evaluates only the terms its component enters: the inner ring's columns the raceway
-contacts (and the ribs), the cage's the pockets and the drag (and the cage's end faces).
+:func:`derivatives` reports, each roller's block of the hub's rows. The terms between a roller
+and the cage (its pocket's arcs and end faces) depend on their positions and velocities only
+through their differences: differenced apart from the roller's other terms, the roller's
+columns give the cage's position and velocity columns too. The cage's attitude and rate and
+the inner ring's state are perturbed one by one, each with only the terms it enters: the
+ring's columns with the raceway contacts (and the ribs), the cage's with the pockets and the
+drag (and the pocket end faces). 11 perturbed columns of the hub, against 173 column by
+column.
 
 The Jacobian holds the stiff terms: the raceway contacts, the pocket films and contacts, and
 the end films where their pressure is asked for (``END_PRESSURE``). The end films' shear
@@ -29,10 +33,10 @@ from __future__ import annotations
 import numpy as np
 from numba import njit
 
-from .cage_dynamics_6dof_rhs import (CAGE_SIZE, DRAG, END_PRESSURE, ENDS, J_CAGE_X,
-                                     J_CAGE_Z, M_CAGE, M_RING, POCKETS, RACEWAYS, RING,
-                                     ROLLER_SIZE, _accumulators, _copy, _normalise, _observe,
-                                     derivatives, rotation)
+from .cage_dynamics_6dof_rhs import (CAGE_SIZE, DRAG, END_FACES, END_PRESSURE, END_RIBS,
+                                     ENDS, J_CAGE_X, J_CAGE_Z, M_CAGE, M_RING, POCKETS,
+                                     RACEWAYS, RING, ROLLER_SIZE, _accumulators, _copy,
+                                     _normalise, _observe, derivatives, rotation)
 from .dormand_prince import FIRST_STEP, SMALLEST_STEP
 from .rosenbrock import (GAMMA, STAGES, next_step, solution_and_error, stage_argument,
                          stage_right_side)
@@ -54,11 +58,47 @@ def hub_indices(count):
 
 
 @njit(cache=True)
-def switched(p, raceways, pockets, ends, drag):
-    """``p`` with its terms switched: each switch 1.0 (on) or 0.0 (off)."""
+def switched(p, raceways, pockets, faces, ribs, drag):
+    """``p`` with its terms switched, each 1.0 (on) or 0.0 (off): the raceway contacts, the
+    pockets' arcs, the end terms against the pocket end faces and against the ribs, the
+    windage."""
     q = p.copy()
-    q[RACEWAYS], q[POCKETS], q[ENDS], q[DRAG] = raceways, pockets, ends, drag
+    q[RACEWAYS], q[POCKETS], q[DRAG] = raceways, pockets, drag
+    q[END_FACES], q[END_RIBS] = faces, ribs
+    q[ENDS] = 1.0 if faces > 0.0 or ribs > 0.0 else 0.0
     return q
+
+
+@njit(cache=True)
+def _roller_columns(y, base, shares, p, count, geometry, record, scale, column):
+    """Forward differences of :func:`derivatives` (with ``p``; ``base`` and ``shares`` its
+    value and the rollers' shares at ``y``) for one component ``column`` of every roller at
+    once: the changes per unit step, each roller's by its own step."""
+    moved = y.copy()
+    steps = np.empty(count)
+    for j in range(count):
+        i = RING + ROLLER_SIZE * j + column
+        steps[j] = _RELATIVE_STEP * max(abs(y[i]), scale[i])
+        moved[i] += steps[j]
+    change = derivatives(moved, p, count, *geometry, *record, 0.0) - base
+    share_change = record[4] - shares
+    for j in range(count):
+        k = RING + ROLLER_SIZE * j
+        change[k:k + ROLLER_SIZE] /= steps[j]
+        share_change[j] /= steps[j]
+    return change, share_change
+
+
+@njit(cache=True)
+def _hub_rows(share, turn, p, rows):
+    """The hub's rows of a roller's column from its share of the hub's forces: the ring's and
+    the cage's accelerations, and the cage's Euler equations in its body frame."""
+    rows[:] = 0.0
+    rows[2], rows[3] = share[6] / p[M_RING], share[7] / p[M_RING]
+    for a in range(3):
+        rows[RING + 3 + a] = share[a] / p[M_CAGE]
+        body = turn[0, a] * share[3] + turn[1, a] * share[4] + turn[2, a] * share[5]
+        rows[RING + 10 + a] = body / (p[J_CAGE_Z] if a == 2 else p[J_CAGE_X])
 
 
 @njit(cache=True)
@@ -67,15 +107,54 @@ def jacobian(y, p, count, geometry, record, scale, own, to_hub, from_hub, hub):
     steps ``sqrt(eps) max(|y|, scale)``, into the blocks ``own`` ``(count, 12, 12)`` (a
     roller's rows, its columns), ``to_hub`` ``(count, 12, 17)`` (a roller's rows, the hub's
     columns), ``from_hub`` ``(count, 17, 12)`` (the hub's rows, a roller's columns) and
-    ``hub`` ``(17, 17)``."""
-    ends = p[ENDS] if p[END_PRESSURE] > 0.0 else 0.0
-    stiff = switched(p, p[RACEWAYS], p[POCKETS], ends, p[DRAG])
-    ring = switched(p, p[RACEWAYS], 0.0, ends, 0.0)
-    cage = switched(p, 0.0, p[POCKETS], ends, p[DRAG])
+    ``hub`` ``(17, 17)``.
+
+    A roller's columns difference its terms with the cage (the pocket arcs and end faces)
+    apart from the others (raceways, ribs, windage): the terms with the cage depend on the
+    roller's and the cage's positions and velocities only through their differences, so the
+    cage's columns of position and velocity follow from the roller's. The cage's attitude and
+    rate, and the ring's columns, are differenced with the terms they enter."""
+    ends = 1.0 if p[END_PRESSURE] > 0.0 and p[ENDS] > 0.0 else 0.0
+    with_cage = switched(p, 0.0, p[POCKETS], ends * p[END_FACES], 0.0, 0.0)
+    others = switched(p, p[RACEWAYS], 0.0, 0.0, ends * p[END_RIBS], p[DRAG])
+    bare = switched(p, 0.0, 0.0, 0.0, 0.0, 0.0)
+    ring = switched(p, p[RACEWAYS], 0.0, 0.0, ends * p[END_RIBS], 0.0)
+    cage = switched(p, 0.0, p[POCKETS], ends * p[END_FACES], 0.0, p[DRAG])
+    indices = hub_indices(count)
+    hub[:, :] = 0.0
+    turn = rotation(y[RING + ROLLER_SIZE * count + 6:RING + ROLLER_SIZE * count + 10])
+    rows, cage_rows = np.empty(HUB), np.empty(HUB)
+    bases = []
+    for terms in (with_cage, others, bare):
+        bases.append((derivatives(y, terms, count, *geometry, *record, 0.0),
+                      record[4].copy()))
+    for column in range(ROLLER_SIZE):
+        change, share = _roller_columns(y, *bases[0], with_cage, count, geometry, record,
+                                        scale, column)
+        other_change, other_share = _roller_columns(y, *bases[1], others, count, geometry,
+                                                    record, scale, column)
+        # The kinematics and the rollers' gyroscopic terms are in every evaluation.
+        bare_change, _ = _roller_columns(y, *bases[2], bare, count, geometry, record, scale,
+                                         column)
+        translation = column < 6  # a roller's centre or velocity: the cage's likewise
+        for j in range(count):
+            k = RING + ROLLER_SIZE * j
+            _hub_rows(share[j] + other_share[j], turn, p, rows)
+            from_hub[j, :, column] = rows
+            for r in range(ROLLER_SIZE):
+                own[j, r, column] = change[k + r] + other_change[k + r] - bare_change[k + r]
+                if translation:
+                    to_hub[j, r, RING + column] = -(change[k + r] - bare_change[k + r])
+            if translation:
+                _hub_rows(share[j], turn, p, cage_rows)
+                hub[:, RING + column] -= cage_rows
+    for a in range(3):  # the cage's position moves at its velocity
+        hub[RING + a, RING + 3 + a] = 1.0
     ring_base = derivatives(y, ring, count, *geometry, *record, 0.0)
     cage_base = derivatives(y, cage, count, *geometry, *record, 0.0)
-    indices = hub_indices(count)
     for column in range(HUB):
+        if RING <= column < RING + 6:
+            continue  # from the rollers' columns, above
         terms, base = (ring, ring_base) if column < RING else (cage, cage_base)
         i = indices[column]
         step = _RELATIVE_STEP * max(abs(y[i]), scale[i])
@@ -88,34 +167,6 @@ def jacobian(y, p, count, geometry, record, scale, own, to_hub, from_hub, hub):
                 to_hub[j, r, column] = change[k + r]
         for r in range(HUB):
             hub[r, column] = change[indices[r]]
-    derivative = derivatives(y, stiff, count, *geometry, *record, 0.0)
-    shares = record[4].copy()
-    turn = rotation(y[RING + ROLLER_SIZE * count + 6:RING + ROLLER_SIZE * count + 10])
-    steps = np.empty(count)
-    for column in range(ROLLER_SIZE):
-        moved = y.copy()
-        for j in range(count):
-            i = RING + ROLLER_SIZE * j + column
-            steps[j] = _RELATIVE_STEP * max(abs(y[i]), scale[i])
-            moved[i] += steps[j]
-        change = derivatives(moved, stiff, count, *geometry, *record, 0.0) - derivative
-        moved_shares = record[4]
-        for j in range(count):
-            k = RING + ROLLER_SIZE * j
-            for r in range(ROLLER_SIZE):
-                own[j, r, column] = change[k + r] / steps[j]
-            # The hub's rows, through the roller's share of its forces: the ring's and the
-            # cage's accelerations, and the cage's Euler equations in its body frame.
-            share = (moved_shares[j] - shares[j]) / steps[j]
-            for r in range(HUB):
-                from_hub[j, r, column] = 0.0
-            from_hub[j, 2, column] = share[6] / p[M_RING]
-            from_hub[j, 3, column] = share[7] / p[M_RING]
-            for a in range(3):
-                from_hub[j, RING + 3 + a, column] = share[a] / p[M_CAGE]
-                body = turn[0, a] * share[3] + turn[1, a] * share[4] + turn[2, a] * share[5]
-                inertia = p[J_CAGE_Z] if a == 2 else p[J_CAGE_X]
-                from_hub[j, RING + 10 + a, column] = body / inertia
 
 
 @njit(cache=True)

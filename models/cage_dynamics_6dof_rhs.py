@@ -36,8 +36,11 @@ from .dormand_prince import FIRST_STEP, SMALLEST_STEP, conclude, stage_argument
  POCKET_PLAY, RIB_PLAY, RIB_RADIUS, CAGE_IN, CAGE_OUT, WINDAGE, CAGE_DRAG, M_RING, C_RING,
  M_CAGE, J_CAGE_X, J_CAGE_Z, ECC_RADIAL, ECC_AXIAL, GRAVITY, MISALIGN_X, MISALIGN_Y,
  TRACTION_A, TRACTION_B, TRACTION_C, TRACTION_D, RACEWAYS, POCKETS, ENDS, DRAG,
- SLIP_SMOOTHING, ARC_AREA, FILM_FILL, END_PRESSURE, FACE_RADIUS, END_FILL) = range(49)
-PARAMETERS = 49
+ SLIP_SMOOTHING, ARC_AREA, FILM_FILL, END_PRESSURE, FACE_RADIUS, END_FILL, END_FACES,
+ END_RIBS) = range(51)
+PARAMETERS = 51
+#: RACEWAYS, POCKETS, ENDS and DRAG switch their terms on (1.0) or off (0.0); END_FACES and
+#: END_RIBS the two parts of the end terms (the pocket end faces, the ribs).
 RING, ROLLER_SIZE, CAGE_SIZE = 4, 12, 13
 
 
@@ -284,7 +287,7 @@ def derivatives(state, p, count, slice_z, arc_theta, arc_z, face_r, face_phi, fa
                         # pocket end face: the cage rim between its bore and outside diameter
                         from_cage = _sub(element, cage_centre)
                         reach2 = _dot(from_cage, from_cage) - _dot(from_cage, z_b) ** 2
-                        if rim_low <= reach2 <= rim_high:
+                        if p[END_FACES] > 0.0 and rim_low <= reach2 <= rim_high:
                             h = 0.5 * (length + p[POCKET_PLAY]) - sign * _dot(
                                 _sub(element, pocket), z_b)
                             lever = _sub(element, mass_centre)
@@ -305,7 +308,7 @@ def derivatives(state, p, count, slice_z, arc_theta, arc_z, face_r, face_phi, fa
                         # rib: the inner ring's face between its raceway and the rib's rim
                         from_ring = _sub(element, ring_centre)
                         reach2 = _dot(from_ring, from_ring) - _dot(from_ring, z_ring) ** 2
-                        if rib_low <= reach2 <= rib_high:
+                        if p[END_RIBS] > 0.0 and rib_low <= reach2 <= rib_high:
                             h = 0.5 * (length + p[RIB_PLAY]) - sign * _dot(from_ring, z_ring)
                             other = _add(ring_velocity, _cross(ring_spin, from_ring))
                             band = _band(np.sqrt(reach2), p[R_INNER], p[RIB_RADIUS],

@@ -677,27 +677,30 @@ def assert_blocks_are(blocks, full, count, tolerance):
 
 def test_the_implicit_integrators_jacobian_blocks_are_the_full_jacobians(jacobian_at):
     # The blocks perturb every roller at once, take the hub's rows from the rollers' shares of
-    # its forces, and evaluate for the hub's columns only the terms each enters, whose
-    # differences have less round-off than those of every term. Measured: within 4.4e-9 of
-    # the largest entry.
+    # its forces, evaluate for the ring's and the cage's attitude columns only the terms each
+    # enters, and take the cage's position and velocity columns from the rollers' (the terms
+    # between a roller and the cage depend on their relative motion). That holds up to the
+    # forward differences' truncation at a roller's larger step, and to the end-face elements,
+    # laid out from the roller's own radial direction, which a roller's move turns and a
+    # cage's does not. Measured: within 1.9e-4 of the largest entry (4.4e-9 with the cage's
+    # columns differenced themselves).
     blocks, full, count = jacobian_at
-    assert_blocks_are(blocks, full, count, 1e-8)
+    assert_blocks_are(blocks, full, count, 1e-3)
 
 
 def test_the_jacobian_leaves_out_the_end_films_shear_alone(start):
     # Without their pressure, the end films only shear: not stiff, and left out. The blocks
-    # are then the full Jacobian of the other terms (measured: within 1.2e-7 of the largest
-    # entry; the cage's columns difference the pockets alone, the full Jacobian the raceway
-    # contacts' large forces too, whose round-off is that size), and not that of every term
-    # (measured: entries off by as much as the largest).
+    # are then the full Jacobian of the other terms (measured: within 2.0e-5 of the largest
+    # entry: the cage's position and velocity columns from the rollers', at their step), and
+    # not that of every term (measured: entries off by as much as the largest).
     blocks, p, state, scale = jacobian_blocks(start, 0.0)
     count, geometry = start["count"], elements(start)
     without_ends = p.copy()
     without_ends[rhs.ENDS] = 0.0
     assert_blocks_are(blocks, full_jacobian(state, without_ends, count, geometry, scale), count,
-                      1e-6)
+                      1e-4)
     with pytest.raises(AssertionError):
-        assert_blocks_are(blocks, full_jacobian(state, p, count, geometry, scale), count, 1e-6)
+        assert_blocks_are(blocks, full_jacobian(state, p, count, geometry, scale), count, 1e-4)
 
 
 def test_the_implicit_integrators_block_solution_is_the_dense_one(jacobian_at):
