@@ -252,7 +252,7 @@ CAGE_MASS_CENTRE = Constraint(
 def point_seconds(values) -> np.ndarray:
     """Each point's rough cost on one core [s]: 1.4 s per second of bearing time
     (benchmarks/declared_costs.py), the model's ``seconds_per_point``."""
-    return 1.4 * np.ravel(np.asarray(values.get("duration", 0.05), dtype=float))
+    return 1.4 * np.ravel(np.asarray(values["duration"], dtype=float))
 
 
 def _samples_fit(duration, output_interval):

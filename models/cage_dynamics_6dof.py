@@ -504,10 +504,9 @@ _RK4_SECONDS_PER_MS = 3.0
 def point_seconds(values) -> np.ndarray:
     """Each point's rough cost on one core [s], from its bearing time, end film and
     integrator (the model's ``seconds_per_point``)."""
-    defaults = {"end_film": "shear", "integrator": "adaptive", "rk4_step": 1e-7}
     duration_ms, film, integrator, step = np.broadcast_arrays(
-        1e3 * np.asarray(values.get("duration", 0.05), dtype=float),
-        *(np.asarray(values.get(k, v)) for k, v in defaults.items()))
+        1e3 * np.asarray(values["duration"], dtype=float),
+        *(np.asarray(values[name]) for name in ("end_film", "integrator", "rk4_step")))
     rate = np.array([_RK4_SECONDS_PER_MS * 1e-7 / float(s) if i == "rk4"
                      else _SECONDS_PER_MS.get((f, i), 1.0)
                      for f, i, s in zip(film.ravel(), integrator.ravel(), step.ravel())])

@@ -287,8 +287,8 @@ class Model:
     constraints: tuple[Constraint, ...] = ()
     #: Rough cost of one grid point on one core [s], to choose chunk sizes and whether a
     #: cluster is worth starting, and to tell a run's length; or a function of the points'
-    #: inputs (``{input: its SI value, or its values at some of the grid's points}``) giving
-    #: each point's cost.
+    #: inputs (``{input: its SI value, or its values at some of the grid's points}``, every
+    #: input, defaults included) giving each point's cost.
     seconds_per_point: float | Callable[[dict], np.ndarray] = 1e-3
     #: Points per call of the function: a chunk is computed in blocks of this size, so that a
     #: model's temporaries stay small enough for the caches that workers share (crb_radial:

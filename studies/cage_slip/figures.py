@@ -104,13 +104,13 @@ def draw(results: Path, figures: Path):
     _three_models(results, figures)
 
 
-def settled_roller_slip(run):
+def _settled_roller_slip(run):
     """The planar model's roller slip over its rollers and the settled second half."""
     half = run.sample_time >= 0.5 * run.sample_time.max()
     return run.roller_slip.where(half).mean(("elapsed_time", "roller"))
 
 
-def three_models(results: Path) -> list[tuple[str, float, float, str]]:
+def _three_model_rows(results: Path) -> list[tuple[str, float, float, str]]:
     """Cage slip and mean roller slip [%] of the three models at their common case, with the
     terms that set each apart: (name, cage slip, roller slip, colour)."""
     steady = result(results, "three_models_steady")
@@ -124,7 +124,7 @@ def three_models(results: Path) -> list[tuple[str, float, float, str]]:
                      float(point.roller_slip.mean("orbit")), "C0"))
         point = at(planar, pocket_wrap_angle=film)
         rows.append((f"planar, {text}", float(point.mean_cage_slip),
-                     float(settled_roller_slip(point)), "C1"))
+                     float(_settled_roller_slip(point)), "C1"))
     for fill, text in ((0.25, "end films on 0.25 of the faces"),
                        (1.0, "end films on the whole faces")):
         point = spatial.sel(end_film_fill=fill)
@@ -135,7 +135,7 @@ def three_models(results: Path) -> list[tuple[str, float, float, str]]:
 
 def tables(results: Path) -> str:
     """The three models' slips at their common case, as the report shows them."""
-    rows = three_models(Path(results))
+    rows = _three_model_rows(Path(results))
     return "\n".join(["## The three cage models' numbers", "",
                       "Paper 002's test bearing, 2 kN, 6000 r/min, no eccentricity, no "
                       "misalignment; the transients' settled means.", "",
@@ -146,7 +146,7 @@ def tables(results: Path) -> str:
 
 
 def _three_models(results: Path, figures: Path):
-    rows = three_models(results)
+    rows = _three_model_rows(results)
     spatial = result(results, "three_models_spatial")
     figure, axes = subplots(1, 2, figsize=(11, 3.9), sharey=True)
     places = np.arange(len(rows))[::-1]
