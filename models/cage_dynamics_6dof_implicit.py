@@ -58,6 +58,32 @@ def hub_indices(count):
 
 
 @njit(cache=True)
+def blocks(count):
+    """The Jacobian's blocks for ``count`` rollers (see :func:`jacobian`) and the factors
+    :func:`factor` writes, zeroed."""
+    own = np.zeros((count, ROLLER_SIZE, ROLLER_SIZE))
+    to_hub = np.zeros((count, ROLLER_SIZE, HUB))
+    from_hub = np.zeros((count, HUB, ROLLER_SIZE))
+    hub = np.zeros((HUB, HUB))
+    return (own, to_hub, from_hub, hub, np.zeros_like(own), np.zeros_like(to_hub),
+            np.zeros_like(hub))
+
+
+def dense(own, to_hub, from_hub, hub):
+    """The matrix the blocks stand for, dense: the state's size square."""
+    count = own.shape[0]
+    hub_rows = hub_indices(count)
+    matrix = np.zeros((RING + ROLLER_SIZE * count + CAGE_SIZE,) * 2)
+    matrix[np.ix_(hub_rows, hub_rows)] = hub
+    for j in range(count):
+        rows = np.arange(RING + ROLLER_SIZE * j, RING + ROLLER_SIZE * (j + 1))
+        matrix[np.ix_(rows, rows)] = own[j]
+        matrix[np.ix_(rows, hub_rows)] = to_hub[j]
+        matrix[np.ix_(hub_rows, rows)] = from_hub[j]
+    return matrix
+
+
+@njit(cache=True)
 def switched(p, raceways, pockets, faces, ribs, drag):
     """``p`` with its terms switched, each 1.0 (on) or 0.0 (off): the raceway contacts, the
     pockets' arcs, the end terms against the pocket end faces and against the ribs, the
@@ -170,11 +196,10 @@ def jacobian(y, p, count, geometry, record, scale, own, to_hub, from_hub, hub):
 
 
 @njit(cache=True)
-def factor(step, own, to_hub, from_hub, hub, own_inverse, own_to_hub, schur_inverse):
-    """The blocks of ``(I / (h gamma) - J)^-1`` the stages' solutions need: each roller's
-    block inverted, its product with the roller's hub columns, the Schur complement's
-    inverse."""
-    diagonal = 1.0 / (step * GAMMA)
+def factor(diagonal, own, to_hub, from_hub, hub, own_inverse, own_to_hub, schur_inverse):
+    """The blocks of ``(diagonal I - J)^-1`` the stages' solutions need (``diagonal`` =
+    ``1 / (h gamma)``): each roller's block inverted, its product with the roller's hub
+    columns, the Schur complement's inverse."""
     schur = -hub.copy()
     for r in range(HUB):
         schur[r, r] += diagonal
@@ -190,7 +215,7 @@ def factor(step, own, to_hub, from_hub, hub, own_inverse, own_to_hub, schur_inve
 
 @njit(cache=True)
 def solve(right, count, from_hub, own_inverse, own_to_hub, schur_inverse):
-    """``u`` of ``(I / (h gamma) - J) u = right`` from :func:`factor`'s blocks."""
+    """``u`` of ``(diagonal I - J) u = right`` from :func:`factor`'s blocks."""
     indices = hub_indices(count)
     solution = np.empty_like(right)
     hub_right = np.empty(HUB)
@@ -219,13 +244,7 @@ def integrate(state, times, p, count, geometry, record, settled_from, rtol, atol
     y = state.copy()
     n = y.size
     scale = atol / rtol
-    own = np.zeros((count, ROLLER_SIZE, ROLLER_SIZE))
-    to_hub = np.zeros((count, ROLLER_SIZE, HUB))
-    from_hub = np.zeros((count, HUB, ROLLER_SIZE))
-    hub = np.zeros((HUB, HUB))
-    own_inverse = np.zeros_like(own)
-    own_to_hub = np.zeros_like(to_hub)
-    schur_inverse = np.zeros_like(hub)
+    own, to_hub, from_hub, hub, own_inverse, own_to_hub, schur_inverse = blocks(count)
     stages = np.empty((STAGES, n))
     t, h, steps = times[0], FIRST_STEP, 0
     _copy(y, samples[0])
@@ -238,7 +257,8 @@ def integrate(state, times, p, count, geometry, record, settled_from, rtol, atol
             if steps >= max_steps or h < SMALLEST_STEP:
                 return samples, arc_max, end_min, rib_min, events, steps, False
             step = min(h, times[index] - t)
-            factor(step, own, to_hub, from_hub, hub, own_inverse, own_to_hub, schur_inverse)
+            factor(1.0 / (step * GAMMA), own, to_hub, from_hub, hub, own_inverse, own_to_hub,
+                   schur_inverse)
             for s in range(STAGES):
                 value = derivative if s == 0 else derivatives(
                     stage_argument(y, stages, s), p, count, *geometry, *record, 0.0)

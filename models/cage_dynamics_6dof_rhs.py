@@ -196,26 +196,10 @@ def derivatives(state, p, count, slice_z, arc_theta, arc_z, face_r, face_phi, fa
                     if inner:
                         ring_force = _sub(ring_force, on_roller)
         # -- pocket j
-        angle = 2.0 * np.pi * j / count
-        x_c = _add(_mul(np.cos(angle), x_b), _mul(np.sin(angle), y_b))
-        y_c = _add(_mul(-np.sin(angle), x_b), _mul(np.cos(angle), y_b))
-        pocket = _add(cage_centre, _mul(p[PITCH], x_c))
+        x_c, y_c, pocket = pocket_frame(j, count, x_b, y_b, cage_centre, p)
         if p[POCKETS] > 0.0:
-            pressed = False
-            to_pocket = _sub(pocket, centre)
-            for m in range(n_arc):
-                wall = _add(to_pocket, _mul(p[POCKET_RADIUS], _add(_mul(arc_cos[m], x_c),
-                                                                   _mul(arc_sin[m], y_c))))
-                for n in range(n_axial):
-                    arm = _add(wall, _mul(arc_z[n], z_b))  # roller centre to the element
-                    along = _dot(arm, axis)
-                    alongs[m, n] = along
-                    if abs(along) > 0.5 * length:
-                        gaps[m, n] = np.inf  # beyond the roller's end
-                        continue
-                    gaps[m, n] = np.sqrt(_dot(arm, arm) - along * along) - radius
-                    if gaps[m, n] < 0.0:
-                        pressed = True
+            pressed = pocket_gaps(centre, axis, pocket, x_c, y_c, z_b, arc_cos, arc_sin, arc_z,
+                                  p, gaps, alongs)
             spin = _dot(_sub(omega, cage_rate), z_b)  # roller relative to the cage
             for m in range(n_arc):
                 cos_m, sin_m = arc_cos[m], arc_sin[m]
@@ -227,15 +211,10 @@ def derivatives(state, p, count, slice_z, arc_theta, arc_z, face_r, face_phi, fa
                     h = gaps[m, n]
                     if h == np.inf or (pressed and h >= 0.0):
                         continue
-                    element = _add(pocket, _add(_mul(p[POCKET_RADIUS], u),
-                                                _mul(arc_z[n], z_b)))
                     along = alongs[m, n]
-                    foot = _add(centre, _mul(along, axis))
-                    normal = _mul(1.0 / (h + radius), _sub(element, foot))  # axis to wall
-                    roller_at_foot = _add(velocity, _cross(omega, _sub(foot, centre)))
-                    cage_at_element = _add(cage_velocity, _cross(
-                        cage_rate, _sub(element, mass_centre)))
-                    closing = _dot(_sub(roller_at_foot, cage_at_element), normal)
+                    element, foot, normal, cage_at_element, closing = arc_element(
+                        pocket, u, arc_z[n], z_b, along, h, centre, axis, velocity, omega,
+                        cage_velocity, cage_rate, mass_centre, p)
                     if pressed:
                         push = damped_spring(p[BED_POCKET] * p[ARC_AREA], -h, closing,
                                              p[HUNT])
@@ -251,8 +230,7 @@ def derivatives(state, p, count, slice_z, arc_theta, arc_z, face_r, face_phi, fa
                             arc_force[j, m, n] = push
                     else:
                         film = max(h, p[FILM_FLOOR])
-                        offset = _sub(foot, pocket)
-                        slope = _dot(offset, x_c) * sin_m - _dot(offset, y_c) * cos_m
+                        slope = arc_slope(foot, pocket, x_c, y_c, cos_m, sin_m)
                         pressure = short_bearing_pressure(p[VISCOSITY], spin * slope, -closing,
                                                           film, along, length)
                         shear = p[VISCOSITY] * spin * radius / film
@@ -366,6 +344,63 @@ def derivatives(state, p, count, slice_z, arc_theta, arc_z, face_r, face_phi, fa
     out[c0 + 11] = (body_moment[1] - (jx - jz) * a * c) / jx
     out[c0 + 12] = body_moment[2] / jz
     return out
+
+
+@njit(cache=True)
+def pocket_frame(j, count, x_b, y_b, cage_centre, p):
+    """Pocket ``j``'s radial and tangential unit vectors and its centre [m]."""
+    angle = 2.0 * np.pi * j / count
+    x_c = _add(_mul(np.cos(angle), x_b), _mul(np.sin(angle), y_b))
+    y_c = _add(_mul(-np.sin(angle), x_b), _mul(np.cos(angle), y_b))
+    return x_c, y_c, _add(cage_centre, _mul(p[PITCH], x_c))
+
+
+@njit(cache=True)
+def pocket_gaps(centre, axis, pocket, x_c, y_c, z_b, arc_cos, arc_sin, arc_z, p, gaps,
+                alongs):
+    """Each pocket-arc element's gap to the roller [m] (``inf`` beyond the roller's ends)
+    and its position along the roller's axis [m], into ``gaps`` and ``alongs``; whether any
+    element is pressed in."""
+    pressed = False
+    to_pocket = _sub(pocket, centre)
+    for m in range(arc_cos.size):
+        wall = _add(to_pocket, _mul(p[POCKET_RADIUS], _add(_mul(arc_cos[m], x_c),
+                                                           _mul(arc_sin[m], y_c))))
+        for n in range(arc_z.size):
+            arm = _add(wall, _mul(arc_z[n], z_b))  # roller centre to the element
+            along = _dot(arm, axis)
+            alongs[m, n] = along
+            if abs(along) > 0.5 * p[LENGTH]:
+                gaps[m, n] = np.inf  # beyond the roller's end
+                continue
+            gaps[m, n] = np.sqrt(_dot(arm, arm) - along * along) - p[RADIUS]
+            if gaps[m, n] < 0.0:
+                pressed = True
+    return pressed
+
+
+@njit(cache=True)
+def arc_element(pocket, u, z, z_b, along, h, centre, axis, velocity, omega, cage_velocity,
+                cage_rate, mass_centre, p):
+    """A pocket-arc element at ``u`` round the arc and ``z`` along the pocket, facing the
+    roller across the gap ``h``: its position, the foot on the roller's axis, the unit normal
+    from the axis to the wall, the cage's velocity there and the roller's speed of approach
+    to it [m/s]."""
+    element = _add(pocket, _add(_mul(p[POCKET_RADIUS], u), _mul(z, z_b)))
+    foot = _add(centre, _mul(along, axis))
+    normal = _mul(1.0 / (h + p[RADIUS]), _sub(element, foot))  # axis to wall
+    roller_at_foot = _add(velocity, _cross(omega, _sub(foot, centre)))
+    cage_at_element = _add(cage_velocity, _cross(cage_rate, _sub(element, mass_centre)))
+    return element, foot, normal, cage_at_element, _dot(_sub(roller_at_foot,
+                                                              cage_at_element), normal)
+
+
+@njit(cache=True)
+def arc_slope(foot, pocket, x_c, y_c, cos_m, sin_m):
+    """The pocket film's slope round the arc, ``dh/dtheta`` [m], at the element at
+    ``(cos_m, sin_m)``: the roller's offset from the pocket's centre across it."""
+    offset = _sub(foot, pocket)
+    return _dot(offset, x_c) * sin_m - _dot(offset, y_c) * cos_m
 
 
 @njit(cache=True)

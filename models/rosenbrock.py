@@ -92,12 +92,13 @@ def solution_and_error(y, stages, rtol, atol):
 
 
 @njit(cache=True)
-def next_step(step, norm):
+def next_step(step, norm, order=3):
     """Whether a step ``step`` of error ``norm`` is accepted, and the next step's size
-    (``h err^-1/3``, the embedded solution being of second order); a step whose error is
-    not finite is retried at a tenth of its size."""
+    (``h err^(-1/order)``, ``order`` that of the embedded solution's error: 3 here, its
+    embedded solution being of second order); a step whose error is not finite is retried at
+    a tenth of its size."""
     if not np.isfinite(norm):
         return False, 0.1 * step
     if norm <= 1.0:
-        return True, step * min(5.0, max(0.2, 0.9 * max(norm, 1e-4) ** (-1.0 / 3.0)))
-    return False, step * max(0.2, 0.9 * norm ** (-1.0 / 3.0))
+        return True, step * min(5.0, max(0.2, 0.9 * max(norm, 1e-4) ** (-1.0 / order)))
+    return False, step * max(0.2, 0.9 * norm ** (-1.0 / order))

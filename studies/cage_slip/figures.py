@@ -25,7 +25,8 @@ FIGURES = {
     "sensitivity.png": "Beyond the paper: cage slip at 12000 r/min against the inputs the paper "
                        "does not state: oil temperature, traction peak speed, cavity oil "
                        "fraction.",
-    "fig17_transient.png": "Fig. 17 again: settled mean cage slip of the transient model (dots) "
+    "fig17_transient.png": "Fig. 17 again: settled mean cage slip of the planar transient "
+                           "model (dots) and of the spatial one, the paper's own (squares), "
                            "beside the steady model (lines, high-slip branch).",
     "fig18_whirl.png": "Fig. 18: the cage's whirl over the settled half, 800 N, 12000 r/min, "
                        "without and with 2 mm radial cage eccentricity: the path of its "
@@ -215,21 +216,47 @@ def _fig17(results: Path, figures: Path):
     save(figure, figures, "fig17_load_speed.png")
 
 
+def _drifting(cage_slip) -> np.ndarray:
+    """Whether each run's cage slip still drifts: its means over the last two quarters of the
+    run differ by more than 5 % of their mean."""
+    time = cage_slip.dims[-1]
+    quarter = cage_slip.sizes[time] // 4
+    third = cage_slip.isel({time: slice(-2 * quarter, -quarter)}).mean(time)
+    last = cage_slip.isel({time: slice(-quarter, None)}).mean(time)
+    return (abs(last - third) > 0.05 * 0.5 * (last + third)).values
+
+
+def _duration(data) -> str:
+    """A transient result's bearing time, as its file states it."""
+    return conditions(data, "duration", width=None, preset=False).removeprefix("duration = ")
+
+
 def _transient(results: Path, figures: Path):
     steady = at(result(results, "fig17_load_speed"), branch="high_slip")
     data = result(results, "fig17_transient")
-    figure, axis = subplots(figsize=(5.5, 3.8))
+    spatial = result(results, "fig17_transient_spatial")
+    figure, axis = subplots(figsize=(6.5, 4.2))
     for index, speed in enumerate(data.speed.values):
         text = f"{speed:g} {data.speed.attrs['units']}"
         axis.plot(steady.radial_load, at(steady, speed=text).cage_slip, color=f"C{index}",
                   label=f"{text}, steady")
         axis.plot(data.radial_load, at(data, speed=text).mean_cage_slip, "o",
-                  color=f"C{index}", label=f"{text}, transient")
+                  color=f"C{index}", label=f"{text}, planar transient")
+        run = at(spatial, speed=text)
+        axis.plot(spatial.radial_load, run.mean_cage_slip, "s", mfc="none",
+                  color=f"C{index}", label=f"{text}, spatial transient")
+        drifting = _drifting(run.cage_slip)
+        axis.plot(spatial.radial_load[drifting], run.mean_cage_slip[drifting], "x", ms=4,
+                  color=f"C{index}")
+    axis.plot([], [], "kx", ms=4, label="spatial, still drifting (> 5 % between\n"
+                                       "the last two quarters of the run)")
     axis.set(xlabel=label(data.radial_load, long=True),
              ylabel=label(data.mean_cage_slip, long=True), yscale="log",
-             title=_title(data, "duration", note="transient: settled mean"))
+             title=f"{data.attrs['bearing']}; transients: mean over the second half of "
+                   f"{_duration(data)} (planar), {_duration(spatial)} (spatial)")
     axis.title.set_fontsize(9)
-    axis.legend(fontsize=7)
+    axis.legend(fontsize=7, ncol=3, loc="upper center", bbox_to_anchor=(0.5, -0.16))
+    axis.title.set_fontsize(8)
     axis.grid(alpha=0.3)
     save(figure, figures, "fig17_transient.png")
 
@@ -297,6 +324,12 @@ def ours(results: Path) -> dict:
     transient = result(results, "fig17_transient").mean_cage_slip
     values["transient_slip_800_12000"] = float(at(transient, speed="12000 rpm",
                                                   radial_load="800 N"))
+    spatial = result(results, "fig17_transient_spatial").mean_cage_slip
+    values["spatial_transient_slip_800_12000"] = float(at(spatial, speed="12000 rpm",
+                                                          radial_load="800 N"))
+    values["spatial_transient_falls_with_load"] = float((spatial.diff("radial_load") < 0)
+                                                        .mean())
+    values["spatial_transient_rises_with_speed"] = float((spatial.diff("speed") > 0).mean())
     spin = result(results, "nu2330_spin").roller_spin_ratio
     values["nu2330_spin_ratio"] = float(at(spin, oil_temperature="25 degC", method="nearest"))
     values["nu2330_spin_ratio_lowest"] = float(spin.min())

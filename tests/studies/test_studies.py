@@ -55,6 +55,9 @@ REDUCED = {
     # the transient's loads 200 and 800 N: the claims read 800 N
     "cage_slip/fig17_transient.toml": [('duration = "0.03 s"', 'duration = "0.004 s"'),
                                        ('step = "200 N"', 'step = "600 N"')],
+    # the spatial transient's loads 200 and 800 N, as the planar one's
+    "cage_slip/fig17_transient_spatial.toml": [('duration = "0.05 s"', 'duration = "0.004 s"'),
+                                               ('step = "200 N"', 'step = "600 N"')],
     "cage_slip/fig18_20_eccentricity.toml": [('duration = "0.06 s"', 'duration = "0.006 s"')],
     "cage_slip/three_models_spatial.toml": [('duration = "0.05 s"', 'duration = "0.004 s"')],
     # runout: a quarter of the rotation steps (of a revolution, in which the rollers' orders

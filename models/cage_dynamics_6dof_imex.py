@@ -1,0 +1,368 @@
+"""Implicit-explicit integration of the spatial cage model
+(:mod:`models.cage_dynamics_6dof_rhs`): the additive Runge-Kutta method of
+:mod:`models.additive_runge_kutta`, its implicit part the pocket films' and pocket contacts'
+Jacobian, in closed form, fresh at every step.
+
+The films between a roller and its pocket damp the roller's motion relative to the cage at
+rates far above those of the motion itself: an explicit method's steps are held near 1 us by
+them (about 900 steps per ms of bearing time at 800 N, 12000 r/min; about 220 with the pocket
+arcs switched off). The additive method takes the pocket terms' linearisation ``D``
+implicitly and everything else explicitly; the splitting ``f = (f - D y) + D y`` is exact, so
+its order holds whatever ``D`` is, and ``D`` need only hold the rates that matter.
+
+``D`` is the pocket terms' Jacobian by hand, element by element (:func:`pocket_jacobian`):
+each element's push on the roller, ``-A p n`` in its film (eq. 3's role; the short bearing's
+pressure ``p``) or ``-k delta (1 + C_n delta') n`` when pressed in (eqs. 1, 2), depends on
+the roller's speed of approach to the wall, its spin relative to the cage, the gap and the
+film's slope round the arc; their gradients over the roller's and the cage's positions,
+attitudes and velocities, summed over the elements, give the forces' and moments'
+derivatives. The cage's attitude columns follow from the terms' covariance: turning the cage
+is turning the roller back about the cage's mass centre. Left out, as not stiff (the
+right-hand side keeps them all; the explicit part takes them): the films' shear and the
+cavitated elements, the dry contacts' friction, the turning of the force's direction with the
+normal and the elements' shift along the roller, the rollers' gyroscopic terms.
+"""
+from __future__ import annotations
+
+import numpy as np
+from numba import njit
+
+from .additive_runge_kutta import ERROR, EXPLICIT, GAMMA, IMPLICIT, STAGES, WEIGHTS
+from .cage_dynamics_6dof_implicit import HUB, blocks, factor, solve
+from .cage_dynamics_6dof_rhs import (ARC_AREA, BED_POCKET, ECC_AXIAL, ECC_RADIAL, FILM_FILL,
+                                     FILM_FLOOR, HUNT, J_AXIAL, J_CAGE_X, J_CAGE_Z,
+                                     J_TRANSVERSE, LENGTH, M_CAGE, M_ROLLER, POCKETS, RADIUS,
+                                     RING, ROLLER_SIZE, VISCOSITY, _accumulators, _add, _copy,
+                                     _cross, _dot, _mul, _normalise, _observe, _sub, _vector,
+                                     arc_element, arc_slope, derivatives, pocket_frame,
+                                     pocket_gaps, rotation)
+from .dormand_prince import FIRST_STEP, SMALLEST_STEP
+from .rosenbrock import next_step
+
+# The columns of an element's gradients: the roller's centre, velocity, attitude (a small
+# rotation) and angular velocity, the cage's mass centre, velocity and angular velocity (in
+# the inertial frame), three each.
+_C, _V, _THETA, _OMEGA, _S, _W, _CAGE_OMEGA = 0, 3, 6, 9, 12, 15, 18
+_COLUMNS = 21
+
+
+@njit(cache=True)
+def _put(vector, into, start, scale):
+    for a in range(3):
+        into[start + a] = scale * vector[a]
+
+
+@njit(cache=True)
+def _cross_matrix(v):
+    """``[v x]``: the matrix of ``w -> v x w``."""
+    return np.array([[0.0, -v[2], v[1]], [v[2], 0.0, -v[0]], [-v[1], v[0], 0.0]])
+
+
+@njit(cache=True)
+def _roller_wrench_gradient(y, p, j, count, geometry, frame, gaps, alongs, wrench, gradient,
+                            d_closing, d_spin, d_gap, d_slope):
+    """The pushes of pocket ``j``'s elements on its roller (``wrench``: force [N], moment
+    about its centre [N m]) and their gradient over :data:`_COLUMNS` (``gradient``, 6 x 21);
+    the other arguments are work arrays. Returns the roller's centre, velocity, axis and
+    angular velocity."""
+    _, arc_theta, arc_z, _, _, _ = geometry
+    mass_centre, cage_velocity, cage_rate, x_b, y_b, z_b, cage_centre = frame
+    k = RING + ROLLER_SIZE * j
+    centre, velocity = _vector(y, k), _vector(y, k + 3)
+    axis = _vector(y, k + 6)
+    axis = _mul(1.0 / np.sqrt(_dot(axis, axis)), axis)
+    omega = _vector(y, k + 9)
+    wrench[:] = 0.0
+    gradient[:, :] = 0.0
+    if p[POCKETS] <= 0.0:
+        return centre, velocity, axis, omega
+    x_c, y_c, pocket = pocket_frame(j, count, x_b, y_b, cage_centre, p)
+    pressed = pocket_gaps(centre, axis, pocket, x_c, y_c, z_b, np.cos(arc_theta),
+                          np.sin(arc_theta), arc_z, p, gaps, alongs)
+    spin = _dot(_sub(omega, cage_rate), z_b)
+    radius, viscosity, area = p[RADIUS], p[VISCOSITY], p[ARC_AREA] * p[FILM_FILL]
+    d_spin[:] = 0.0
+    _put(z_b, d_spin, _OMEGA, 1.0)
+    _put(z_b, d_spin, _CAGE_OMEGA, -1.0)
+    for m in range(arc_theta.size):
+        cos_m, sin_m = np.cos(arc_theta[m]), np.sin(arc_theta[m])
+        u = _add(_mul(cos_m, x_c), _mul(sin_m, y_c))
+        u_prime = _sub(_mul(cos_m, y_c), _mul(sin_m, x_c))
+        for n in range(arc_z.size):
+            h = gaps[m, n]
+            if h == np.inf or (pressed and h >= 0.0):
+                continue
+            along = alongs[m, n]
+            element, foot, normal, cage_at_element, closing = arc_element(
+                pocket, u, arc_z[n], z_b, along, h, centre, axis, velocity, omega,
+                cage_velocity, cage_rate, mass_centre, p)
+            # the push on the roller, -push n, and its weights on the closing speed, the
+            # spin, the gap and the slope
+            if pressed:
+                stiffness = p[BED_POCKET] * p[ARC_AREA]
+                push = stiffness * (-h) * (1.0 + p[HUNT] * closing)
+                if push <= 0.0:
+                    continue
+                on_closing, on_spin = stiffness * (-h) * p[HUNT], 0.0
+                on_gap, on_slope = -stiffness * (1.0 + p[HUNT] * closing), 0.0
+            else:
+                film = max(h, p[FILM_FLOOR])
+                slope = arc_slope(foot, pocket, x_c, y_c, cos_m, sin_m)
+                reach = (along * along - 0.25 * p[LENGTH] ** 2) / (2.0 * film ** 3)
+                pressure = (6.0 * viscosity * spin * slope - 12.0 * viscosity * closing) * reach
+                if pressure <= 0.0:
+                    continue  # cavitated
+                push = area * pressure
+                on_closing = -12.0 * viscosity * reach * area
+                on_spin = 6.0 * viscosity * slope * reach * area
+                on_slope = 6.0 * viscosity * spin * reach * area
+                # below the floor the film does not thin
+                on_gap = -3.0 * push / film if h > p[FILM_FLOOR] else 0.0
+            lever = _sub(foot, centre)
+            relative = _sub(_add(velocity, _cross(omega, lever)), cage_at_element)
+            across = _sub(relative, _mul(_dot(relative, normal), normal))
+            turn = 1.0 / (h + radius)  # the normal turns as the roller moves across it
+            lever_normal = _cross(lever, normal)
+            _put(across, d_closing, _C, -turn)
+            _put(normal, d_closing, _V, 1.0)
+            _put(_cross(lever, across), d_closing, _THETA, -turn)
+            _put(lever_normal, d_closing, _OMEGA, 1.0)
+            _put(across, d_closing, _S, turn)
+            _put(normal, d_closing, _W, -1.0)
+            _put(_cross(_sub(element, mass_centre), normal), d_closing, _CAGE_OMEGA, -1.0)
+            _put(normal, d_gap, _C, -1.0)
+            _put(lever_normal, d_gap, _THETA, -1.0)
+            _put(normal, d_gap, _S, 1.0)
+            _put(u_prime, d_slope, _C, -1.0)
+            _put(_cross(lever, u_prime), d_slope, _THETA, -1.0)
+            _put(u_prime, d_slope, _S, 1.0)
+            moment_normal = _cross(_sub(element, centre), normal)
+            for a in range(3):
+                wrench[a] -= push * normal[a]
+                wrench[3 + a] -= push * moment_normal[a]
+            for c in range(_COLUMNS):
+                change = -(on_closing * d_closing[c] + on_spin * d_spin[c]
+                           + on_gap * d_gap[c] + on_slope * d_slope[c])
+                for a in range(3):
+                    gradient[a, c] += normal[a] * change
+                    gradient[3 + a, c] += moment_normal[a] * change
+    return centre, velocity, axis, omega
+
+
+@njit(cache=True)
+def pocket_jacobian(y, p, count, geometry, gaps, alongs, own, to_hub, from_hub, hub):
+    """The Jacobian of :func:`derivatives`' pocket terms at ``y`` in closed form, with the
+    kinematics that couple positions to velocities, into the blocks of
+    :func:`models.cage_dynamics_6dof_implicit.jacobian` (``own``, ``to_hub``, ``from_hub``,
+    ``hub``); ``gaps`` and ``alongs`` are work arrays of the pocket arcs' shape."""
+    own[:, :, :] = 0.0
+    to_hub[:, :, :] = 0.0
+    from_hub[:, :, :] = 0.0
+    hub[:, :] = 0.0
+    c0 = RING + ROLLER_SIZE * count
+    mass_centre, cage_velocity = _vector(y, c0), _vector(y, c0 + 3)
+    turn = rotation(y[c0 + 6:c0 + 10])
+    body_rate = _vector(y, c0 + 10)
+    x_b = (turn[0, 0], turn[1, 0], turn[2, 0])
+    y_b = (turn[0, 1], turn[1, 1], turn[2, 1])
+    z_b = (turn[0, 2], turn[1, 2], turn[2, 2])
+    cage_rate = _add(_add(_mul(body_rate[0], x_b), _mul(body_rate[1], y_b)),
+                     _mul(body_rate[2], z_b))
+    cage_centre = _sub(mass_centre, _add(_mul(p[ECC_RADIAL], x_b), _mul(p[ECC_AXIAL], z_b)))
+    frame = (mass_centre, cage_velocity, cage_rate, x_b, y_b, z_b, cage_centre)
+    # a small turn of the cage (rotation vector) as quaternion columns: phi = 2 vec(dq q*)
+    q = y[c0 + 6:c0 + 10] / np.sqrt(np.sum(y[c0 + 6:c0 + 10] ** 2))
+    to_quaternion = np.zeros((3, 4))
+    vector_part = _cross_matrix((q[1], q[2], q[3]))
+    for a in range(3):
+        to_quaternion[a, 0] = -2.0 * q[1 + a]
+        for b in range(3):
+            to_quaternion[a, 1 + b] = 2.0 * ((q[0] if a == b else 0.0) + vector_part[a, b])
+    body_inertia = (p[J_CAGE_X], p[J_CAGE_X], p[J_CAGE_Z])
+    wrench, gradient = np.empty(6), np.empty((6, _COLUMNS))
+    # every element writes all of d_closing and the same blocks of d_gap and d_slope
+    d_closing, d_spin = np.empty(_COLUMNS), np.empty(_COLUMNS)
+    d_gap, d_slope = np.zeros(_COLUMNS), np.zeros(_COLUMNS)
+    rows, forces = np.empty((12, _COLUMNS)), np.empty(12)
+    turned, by_state = np.empty((12, 3)), np.empty((12, ROLLER_SIZE + HUB))
+    inverse = np.empty((3, 3))
+    for j in range(count):
+        centre, velocity, axis, omega = _roller_wrench_gradient(
+            y, p, j, count, geometry, frame, gaps, alongs, wrench, gradient, d_closing,
+            d_spin, d_gap, d_slope)
+        _outputs(gradient, wrench, _sub(centre, mass_centre), rows, forces)
+        _cage_turned(rows, forces, centre, velocity, omega, mass_centre, cage_velocity,
+                     turned)
+        _by_state(rows, turned, axis, turn, to_quaternion, by_state)
+        # rows: the roller's acceleration F / m and angular acceleration (J^-1 M, symmetric
+        # about the axis), the cage's acceleration and its Euler equations' body moment
+        for a in range(3):
+            for b in range(3):
+                inverse[a, b] = ((1.0 if a == b else 0.0) - axis[a] * axis[b]) \
+                    / p[J_TRANSVERSE] + axis[a] * axis[b] / p[J_AXIAL]
+        for column in range(ROLLER_SIZE + HUB):
+            hub_column = column - ROLLER_SIZE
+            for a in range(3):
+                accelerations = (by_state[a, column] / p[M_ROLLER],
+                                 inverse[a, 0] * by_state[3, column]
+                                 + inverse[a, 1] * by_state[4, column]
+                                 + inverse[a, 2] * by_state[5, column],
+                                 by_state[6 + a, column] / p[M_CAGE],
+                                 (turn[0, a] * by_state[9, column]
+                                  + turn[1, a] * by_state[10, column]
+                                  + turn[2, a] * by_state[11, column]) / body_inertia[a])
+                if hub_column < 0:
+                    own[j, 3 + a, column] += accelerations[0]
+                    own[j, 9 + a, column] += accelerations[1]
+                    from_hub[j, RING + 3 + a, column] += accelerations[2]
+                    from_hub[j, RING + 10 + a, column] += accelerations[3]
+                else:
+                    to_hub[j, 3 + a, hub_column] += accelerations[0]
+                    to_hub[j, 9 + a, hub_column] += accelerations[1]
+                    hub[RING + 3 + a, hub_column] += accelerations[2]
+                    hub[RING + 10 + a, hub_column] += accelerations[3]
+        # the roller's centre moves at its velocity, its axis with omega: d(w x a)/dw = -[a x]
+        own[j, 0, 3] = own[j, 1, 4] = own[j, 2, 5] = 1.0
+        own[j, 6, 10], own[j, 6, 11] = axis[2], -axis[1]
+        own[j, 7, 9], own[j, 7, 11] = -axis[2], axis[0]
+        own[j, 8, 9], own[j, 8, 10] = axis[1], -axis[0]
+    hub[0, 2] = hub[1, 3] = 1.0  # the ring's and the cage's centres move at their velocities
+    for a in range(3):
+        hub[RING + a, RING + 3 + a] = 1.0
+    w, x, yq, z = y[c0 + 6], y[c0 + 7], y[c0 + 8], y[c0 + 9]
+    hub[RING + 6:RING + 10, RING + 10:RING + 13] = 0.5 * np.array(
+        [[-x, -yq, -z], [w, -z, yq], [z, w, -x], [-yq, x, w]])
+
+
+@njit(cache=True)
+def _outputs(gradient, wrench, offset, rows, forces):
+    """The force and moment on the roller and on the cage (about its mass centre: ``-F``,
+    ``-(M + offset x F)``, ``offset`` the roller's centre from it), and their gradients."""
+    for c in range(_COLUMNS + 1):
+        column = gradient[:, c] if c < _COLUMNS else wrench
+        force = (column[0], column[1], column[2])
+        arm = _cross(offset, force)
+        values = rows[:, c] if c < _COLUMNS else forces
+        for a in range(3):
+            values[a], values[3 + a] = column[a], column[3 + a]
+            values[6 + a], values[9 + a] = -column[a], -(column[3 + a] + arm[a])
+
+
+@njit(cache=True)
+def _cage_turned(rows, forces, centre, velocity, omega, mass_centre, cage_velocity, turned):
+    """The outputs' derivatives over a small turn of the cage about its mass centre
+    (``turned``, 12 x 3): the same as turning the roller back, the outputs turning with the
+    cage; the cage's Euler equations, in its body frame, see their moment turned back."""
+    turned[:, :] = 0.0
+    for k in range(3):
+        e = (1.0 if k == 0 else 0.0, 1.0 if k == 1 else 0.0, 1.0 if k == 2 else 0.0)
+        for block in range(3):  # the roller's force and moment and the cage's force turn
+            ex = _cross(e, (forces[3 * block], forces[3 * block + 1], forces[3 * block + 2]))
+            for a in range(3):
+                turned[3 * block + a, k] += ex[a]
+        moved = (_cross(e, _sub(centre, mass_centre)), _cross(e, velocity), e,
+                 _cross(e, omega), (0.0, 0.0, 0.0), _cross(e, cage_velocity),
+                 (0.0, 0.0, 0.0))
+        for block in range(7):
+            for r in range(12):
+                turned[r, k] -= (rows[r, 3 * block] * moved[block][0]
+                                 + rows[r, 3 * block + 1] * moved[block][1]
+                                 + rows[r, 3 * block + 2] * moved[block][2])
+
+
+@njit(cache=True)
+def _by_state(rows, turned, axis, turn, to_quaternion, by_state):
+    """The outputs' derivatives over the state's entries (``by_state``, 12 x 29): the
+    roller's 12 (its axis' components from a small turn, ``d theta = a x d a``), then the
+    hub's 17 (the cage's quaternion from a small turn, its body rate from the inertial)."""
+    by_state[:, :] = 0.0
+    axis_turn = _cross_matrix(axis)
+    for r in range(12):
+        for b in range(3):
+            by_state[r, b] = rows[r, _C + b]
+            by_state[r, 3 + b] = rows[r, _V + b]
+            by_state[r, 9 + b] = rows[r, _OMEGA + b]
+            by_state[r, ROLLER_SIZE + RING + b] = rows[r, _S + b]
+            by_state[r, ROLLER_SIZE + RING + 3 + b] = rows[r, _W + b]
+            by_axis, by_rate = 0.0, 0.0
+            for a in range(3):
+                by_axis += rows[r, _THETA + a] * axis_turn[a, b]
+                by_rate += rows[r, _CAGE_OMEGA + a] * turn[a, b]
+            by_state[r, 6 + b] = by_axis
+            by_state[r, ROLLER_SIZE + RING + 10 + b] = by_rate
+        for b in range(4):
+            by_state[r, ROLLER_SIZE + RING + 6 + b] = (turned[r, 0] * to_quaternion[0, b]
+                                                       + turned[r, 1] * to_quaternion[1, b]
+                                                       + turned[r, 2] * to_quaternion[2, b])
+
+
+@njit(cache=True)
+def integrate(state, times, p, count, geometry, record, settled_from, rtol, atol, max_steps):
+    """The additive Runge-Kutta method, the pocket terms' Jacobian fresh at every step, each
+    sample time hit by a step; the same samples, extremes, events, steps and success as
+    :func:`models.cage_dynamics_6dof_rhs.integrate`."""
+    samples, arc_max, end_min, rib_min, last, events = _accumulators(times, state, record)
+    y = state.copy()
+    n = y.size
+    _, arc_theta, arc_z, _, _, _ = geometry
+    gaps, alongs = np.empty((arc_theta.size, arc_z.size)), np.empty((arc_theta.size,
+                                                                     arc_z.size))
+    own, to_hub, from_hub, hub, own_inverse, own_to_hub, schur_inverse = blocks(count)
+    rates = np.empty((STAGES, n))  # f at each stage
+    implicit_rates = np.empty((STAGES, n))  # D z at each stage
+    right = np.empty(n)
+    t, h, steps = times[0], FIRST_STEP, 0
+    _copy(y, samples[0])
+    _observe(y, p, count, geometry, record, t >= settled_from, arc_max, end_min, rib_min,
+             last, events)
+    _copy(derivatives(y, p, count, *geometry, *record, 0.0), rates[0])
+    implicit_rates[0, :] = 0.0
+    for index in range(1, times.size):
+        while t < times[index]:
+            if steps >= max_steps or h < SMALLEST_STEP:
+                return samples, arc_max, end_min, rib_min, events, steps, False
+            step = min(h, times[index] - t)
+            pocket_jacobian(y, p, count, geometry, gaps, alongs, own, to_hub, from_hub, hub)
+            shift = 1.0 / (step * GAMMA)
+            factor(shift, own, to_hub, from_hub, hub, own_inverse, own_to_hub, schur_inverse)
+            for s in range(1, STAGES):
+                right[:] = 0.0
+                for k in range(s):
+                    explicit, implicit = step * EXPLICIT[s, k], step * IMPLICIT[s, k]
+                    for i in range(n):
+                        right[i] += (explicit * (rates[k, i] - implicit_rates[k, i])
+                                     + implicit * implicit_rates[k, i])
+                # (I - h gamma D) z = right, as (I / (h gamma) - D) z = right / (h gamma)
+                z = solve(right * shift, count, from_hub, own_inverse, own_to_hub,
+                          schur_inverse)
+                for i in range(n):
+                    implicit_rates[s, i] = (z[i] - right[i]) * shift
+                _copy(derivatives(y + z, p, count, *geometry, *record, 0.0), rates[s])
+            steps += 1
+            trial, norm = _solution_and_error(y, rates, step, rtol, atol)
+            accepted, h = next_step(step, norm, 4)
+            if accepted:
+                t = t + step if step < times[index] - t else times[index]
+                y = trial
+                _normalise(y, count)
+                _copy(derivatives(y, p, count, *geometry, *record, 0.0), rates[0])
+        _copy(y, samples[index])
+        _observe(y, p, count, geometry, record, t >= settled_from, arc_max, end_min,
+                 rib_min, last, events)
+    return samples, arc_max, end_min, rib_min, events, steps, True
+
+
+@njit(cache=True)
+def _solution_and_error(y, rates, step, rtol, atol):
+    """The step's fourth-order solution and the root-mean-square of its difference from the
+    third-order one against ``atol + rtol max(|y|, |solution|)``: at most 1 accepts it."""
+    solution = y.copy()
+    squares = 0.0
+    for i in range(y.size):
+        error = 0.0
+        for s in range(STAGES):
+            solution[i] += step * WEIGHTS[s] * rates[s, i]
+            error += step * ERROR[s] * rates[s, i]
+        scaled = error / (atol[i] + rtol * max(abs(y[i]), abs(solution[i])))
+        squares += scaled * scaled
+    return solution, np.sqrt(squares / y.size)
