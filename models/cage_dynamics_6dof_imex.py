@@ -29,13 +29,13 @@ from numba import njit
 
 from .additive_runge_kutta import ERROR, EXPLICIT, GAMMA, IMPLICIT, STAGES, WEIGHTS
 from .cage_dynamics_6dof_implicit import HUB, blocks, factor, solve
-from .cage_dynamics_6dof_rhs import (ARC_AREA, BED_POCKET, ECC_AXIAL, ECC_RADIAL, FILM_FILL,
-                                     FILM_FLOOR, HUNT, J_AXIAL, J_CAGE_X, J_CAGE_Z,
-                                     J_TRANSVERSE, LENGTH, M_CAGE, M_ROLLER, POCKETS, RADIUS,
-                                     RING, ROLLER_SIZE, VISCOSITY, _accumulators, _add, _copy,
-                                     _cross, _dot, _mul, _normalise, _observe, _sub, _vector,
-                                     arc_element, arc_slope, derivatives, pocket_frame,
-                                     pocket_gaps, rotation)
+from .cage_dynamics_6dof_rhs import (ARC_AREA, BED_POCKET, FILM_FILL, FILM_FLOOR, HUNT,
+                                     J_AXIAL, J_CAGE_X, J_CAGE_Z, J_TRANSVERSE, LENGTH,
+                                     M_CAGE, M_ROLLER, POCKETS, RADIUS, RING, ROLLER_SIZE,
+                                     VISCOSITY, _accumulators, _add, _copy, _cross, _dot, _mul,
+                                     _normalise, _observe, _sub, _vector, arc_element,
+                                     arc_slope, cage_frame, derivatives, pocket_frame,
+                                     pocket_gaps)
 from .dormand_prince import FIRST_STEP, SMALLEST_STEP
 from .rosenbrock import next_step
 
@@ -160,16 +160,8 @@ def pocket_jacobian(y, p, count, geometry, gaps, alongs, own, to_hub, from_hub, 
     from_hub[:, :, :] = 0.0
     hub[:, :] = 0.0
     c0 = RING + ROLLER_SIZE * count
-    mass_centre, cage_velocity = _vector(y, c0), _vector(y, c0 + 3)
-    turn = rotation(y[c0 + 6:c0 + 10])
-    body_rate = _vector(y, c0 + 10)
-    x_b = (turn[0, 0], turn[1, 0], turn[2, 0])
-    y_b = (turn[0, 1], turn[1, 1], turn[2, 1])
-    z_b = (turn[0, 2], turn[1, 2], turn[2, 2])
-    cage_rate = _add(_add(_mul(body_rate[0], x_b), _mul(body_rate[1], y_b)),
-                     _mul(body_rate[2], z_b))
-    cage_centre = _sub(mass_centre, _add(_mul(p[ECC_RADIAL], x_b), _mul(p[ECC_AXIAL], z_b)))
-    frame = (mass_centre, cage_velocity, cage_rate, x_b, y_b, z_b, cage_centre)
+    turn, _, frame = cage_frame(y, count, p)
+    mass_centre, cage_velocity = frame[0], frame[1]
     # a small turn of the cage (rotation vector) as quaternion columns: phi = 2 vec(dq q*)
     q = y[c0 + 6:c0 + 10] / np.sqrt(np.sum(y[c0 + 6:c0 + 10] ** 2))
     to_quaternion = np.zeros((3, 4))

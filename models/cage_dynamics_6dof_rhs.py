@@ -106,6 +106,26 @@ def ring_axis(p):
 
 
 @njit(cache=True)
+def cage_frame(state, count, p):
+    """The cage's rotation matrix (body to inertial), its angular velocity in the body frame,
+    and its frame: mass centre [m], velocity [m/s], inertial angular velocity [rad/s], body
+    axes ``x_b, y_b, z_b`` and geometric centre [m]."""
+    c0 = RING + ROLLER_SIZE * count
+    mass_centre = _vector(state, c0)
+    cage_velocity = _vector(state, c0 + 3)
+    turn = rotation(state[c0 + 6:c0 + 10])
+    body_rate = _vector(state, c0 + 10)
+    x_b = (turn[0, 0], turn[1, 0], turn[2, 0])
+    y_b = (turn[0, 1], turn[1, 1], turn[2, 1])
+    z_b = (turn[0, 2], turn[1, 2], turn[2, 2])
+    cage_rate = _add(_add(_mul(body_rate[0], x_b), _mul(body_rate[1], y_b)),
+                     _mul(body_rate[2], z_b))  # inertial angular velocity
+    cage_centre = _sub(mass_centre, _add(_mul(p[ECC_RADIAL], x_b), _mul(p[ECC_AXIAL], z_b)))
+    return turn, body_rate, (mass_centre, cage_velocity, cage_rate, x_b, y_b, z_b,
+                             cage_centre)
+
+
+@njit(cache=True)
 def derivatives(state, p, count, slice_z, arc_theta, arc_z, face_r, face_phi, face_area,
                 arc_force, end_gap, rib_gap, dry, shares, observe):
     """Time derivative of ``state``. Each roller's share of the forces on the other bodies
@@ -130,16 +150,8 @@ def derivatives(state, p, count, slice_z, arc_theta, arc_z, face_r, face_phi, fa
     ring_force = (0.0, -p[LOAD] * p[RACEWAYS] - p[M_RING] * g, 0.0)
     # Cage
     c0 = RING + ROLLER_SIZE * count
-    mass_centre = _vector(state, c0)
-    cage_velocity = _vector(state, c0 + 3)
-    turn = rotation(state[c0 + 6:c0 + 10])
-    body_rate = _vector(state, c0 + 10)
-    x_b = (turn[0, 0], turn[1, 0], turn[2, 0])
-    y_b = (turn[0, 1], turn[1, 1], turn[2, 1])
-    z_b = (turn[0, 2], turn[1, 2], turn[2, 2])
-    cage_rate = _add(_add(_mul(body_rate[0], x_b), _mul(body_rate[1], y_b)),
-                     _mul(body_rate[2], z_b))  # inertial angular velocity
-    cage_centre = _sub(mass_centre, _add(_mul(p[ECC_RADIAL], x_b), _mul(p[ECC_AXIAL], z_b)))
+    turn, body_rate, frame = cage_frame(state, count, p)
+    mass_centre, cage_velocity, cage_rate, x_b, y_b, z_b, cage_centre = frame
     cage_force = (0.0, -p[M_CAGE] * g, 0.0)
     cage_moment = zero  # about the mass centre, inertial frame
     n_arc, n_axial = arc_theta.size, arc_z.size
