@@ -1,26 +1,36 @@
 """Implicit-explicit integration of the spatial cage model
 (:mod:`models.cage_dynamics_6dof_rhs`): the additive Runge-Kutta method of
-:mod:`models.additive_runge_kutta`, its implicit part the pocket films' and pocket contacts'
-Jacobian, in closed form, fresh at every step.
+:mod:`models.additive_runge_kutta`, its implicit part the Jacobian of the pocket films and
+contacts and of the raceway contacts, in closed form, fresh at every step.
 
 The films between a roller and its pocket damp the roller's motion relative to the cage at
 rates far above those of the motion itself: an explicit method's steps are held near 1 us by
 them (about 900 steps per ms of bearing time at 800 N, 12000 r/min; about 220 with the pocket
-arcs switched off). The additive method takes the pocket terms' linearisation ``D``
-implicitly and everything else explicitly; the splitting ``f = (f - D y) + D y`` is exact, so
-its order holds whatever ``D`` is, and ``D`` need only hold the rates that matter.
+arcs switched off, held then by the raceway contacts). The additive method takes these
+terms' linearisation ``D`` implicitly and everything else explicitly; the splitting
+``f = (f - D y) + D y`` is exact, so its order holds whatever ``D`` is, and ``D`` need only
+hold the rates that matter. What then holds its steps is accuracy: the rollers outside the
+load zone, pressed on the outer raceway by their centrifugal force alone, ring on that contact
+near 28 kHz, lightly damped (Hunt-Crossley damping at a light load), and the rollers' mean
+slip depends on it being resolved.
 
-``D`` is the pocket terms' Jacobian by hand, element by element (:func:`pocket_jacobian`):
-each element's push on the roller, ``-A p n`` in its film (eq. 3's role; the short bearing's
-pressure ``p``) or ``-k delta (1 + C_n delta') n`` when pressed in (eqs. 1, 2), depends on
-the roller's speed of approach to the wall, its spin relative to the cage, the gap and the
-film's slope round the arc; their gradients over the roller's and the cage's positions,
-attitudes and velocities, summed over the elements, give the forces' and moments'
-derivatives. The cage's attitude columns follow from the terms' covariance: turning the cage
-is turning the roller back about the cage's mass centre. Left out, as not stiff (the
-right-hand side keeps them all; the explicit part takes them): the films' shear and the
-cavitated elements, the dry contacts' friction, the turning of the force's direction with the
-normal and the elements' shift along the roller, the rollers' gyroscopic terms.
+``D`` is built by hand, element by element and slice by slice (:func:`pocket_jacobian`):
+
+- each pocket element's push on the roller, ``-A p n`` in its film (eq. 3's role; the short
+  bearing's pressure ``p``) or ``-k delta (1 + C_n delta') n`` when pressed in (eqs. 1, 2),
+  depends on the roller's speed of approach to the wall, its spin relative to the cage, the
+  gap and the film's slope round the arc; their gradients over the roller's and the cage's
+  positions, attitudes and velocities, summed over the elements, give the forces' and
+  moments' derivatives. The cage's attitude columns follow from the terms' covariance:
+  turning the cage is turning the roller back about the cage's mass centre;
+- each raceway slice's push ``K delta^(10/9) (1 + C_n delta')`` and traction (eqs. 18-21)
+  by the approach, the approach speed and the sliding (:func:`_raceway_gradient`), over the
+  roller's state and the inner ring's.
+
+Left out, as not stiff (the right-hand side keeps them all; the explicit part takes them):
+the pocket films' shear and their cavitated elements, the dry contacts' friction, the turning
+of a force's direction with the normal and the pocket elements' shift along the roller, the
+end faces and ribs, the rollers' gyroscopic terms.
 """
 from __future__ import annotations
 
@@ -30,12 +40,18 @@ from numba import njit
 from .additive_runge_kutta import ERROR, EXPLICIT, GAMMA, IMPLICIT, STAGES, WEIGHTS
 from .cage_dynamics_6dof_implicit import HUB, blocks, factor, solve
 from .cage_dynamics_6dof_rhs import (ARC_AREA, BED_POCKET, FILM_FILL, FILM_FLOOR, HUNT,
-                                     J_AXIAL, J_CAGE_X, J_CAGE_Z, J_TRANSVERSE, LENGTH,
-                                     M_CAGE, M_ROLLER, POCKETS, RADIUS, RING, ROLLER_SIZE,
+                                     J_AXIAL, J_CAGE_X, J_CAGE_Z, J_TRANSVERSE, K_SLICE,
+                                     LENGTH, M_CAGE, M_RING, M_ROLLER, OMEGA_I, POCKETS,
+                                     RACEWAYS, RADIUS, RING, ROLLER_SIZE,
+                                     TRACTION_A, TRACTION_B, TRACTION_C, TRACTION_D,
                                      VISCOSITY, _accumulators, _add, _copy, _cross, _dot, _mul,
-                                     _normalise, _observe, _sub, _vector, arc_element,
-                                     arc_slope, cage_frame, derivatives, pocket_frame,
-                                     pocket_gaps)
+                                     _normalise, _observe, _sub, _tangential, _vector,
+                                     arc_element, arc_slope, cage_frame, derivatives,
+                                     arc_wall, pocket_frame, pocket_gaps, pocket_motion,
+                                     raceway_slice,
+                                     ring_axis)
+from .contact_laws import (PALMGREN_EXPONENT, palmgren_slice, traction_coefficient,
+                           traction_slope)
 from .dormand_prince import FIRST_STEP, SMALLEST_STEP
 from .rosenbrock import next_step
 
@@ -55,7 +71,17 @@ def _put(vector, into, start, scale):
 @njit(cache=True)
 def _cross_matrix(v):
     """``[v x]``: the matrix of ``w -> v x w``."""
-    return np.array([[0.0, -v[2], v[1]], [v[2], 0.0, -v[0]], [-v[1], v[0], 0.0]])
+    matrix = np.empty((3, 3))
+    _fill_cross_matrix(v, matrix)
+    return matrix
+
+
+@njit(cache=True)
+def _fill_cross_matrix(v, matrix):
+    """``[v x]`` into ``matrix``."""
+    matrix[0, 0], matrix[0, 1], matrix[0, 2] = 0.0, -v[2], v[1]
+    matrix[1, 0], matrix[1, 1], matrix[1, 2] = v[2], 0.0, -v[0]
+    matrix[2, 0], matrix[2, 1], matrix[2, 2] = -v[1], v[0], 0.0
 
 
 @njit(cache=True)
@@ -84,18 +110,20 @@ def _roller_wrench_gradient(y, p, j, count, geometry, frame, gaps, alongs, wrenc
     d_spin[:] = 0.0
     _put(z_b, d_spin, _OMEGA, 1.0)
     _put(z_b, d_spin, _CAGE_OMEGA, -1.0)
+    motion = pocket_motion(centre, velocity, axis, omega, pocket, x_c, y_c, z_b,
+                           cage_velocity, cage_rate, mass_centre)
     for m in range(arc_theta.size):
         cos_m, sin_m = np.cos(arc_theta[m]), np.sin(arc_theta[m])
         u = _add(_mul(cos_m, x_c), _mul(sin_m, y_c))
         u_prime = _sub(_mul(cos_m, y_c), _mul(sin_m, x_c))
+        wall, base = arc_wall(u, motion, cage_rate, p)
         for n in range(arc_z.size):
             h = gaps[m, n]
             if h == np.inf or (pressed and h >= 0.0):
                 continue
             along = alongs[m, n]
-            element, foot, normal, cage_at_element, closing = arc_element(
-                pocket, u, arc_z[n], z_b, along, h, centre, axis, velocity, omega,
-                cage_velocity, cage_rate, mass_centre, p)
+            arm, normal, relative, closing = arc_element(wall, base, arc_z[n], z_b, along, h,
+                                                         axis, motion, p)
             # the push on the roller, -push n, and its weights on the closing speed, the
             # spin, the gap and the slope
             if pressed:
@@ -107,7 +135,7 @@ def _roller_wrench_gradient(y, p, j, count, geometry, frame, gaps, alongs, wrenc
                 on_gap, on_slope = -stiffness * (1.0 + p[HUNT] * closing), 0.0
             else:
                 film = max(h, p[FILM_FLOOR])
-                slope = arc_slope(foot, pocket, x_c, y_c, cos_m, sin_m)
+                slope = arc_slope(along, motion, cos_m, sin_m)
                 reach = (along * along - 0.25 * p[LENGTH] ** 2) / (2.0 * film ** 3)
                 pressure = (6.0 * viscosity * spin * slope - 12.0 * viscosity * closing) * reach
                 if pressure <= 0.0:
@@ -118,8 +146,7 @@ def _roller_wrench_gradient(y, p, j, count, geometry, frame, gaps, alongs, wrenc
                 on_slope = 6.0 * viscosity * spin * reach * area
                 # below the floor the film does not thin
                 on_gap = -3.0 * push / film if h > p[FILM_FLOOR] else 0.0
-            lever = _sub(foot, centre)
-            relative = _sub(_add(velocity, _cross(omega, lever)), cage_at_element)
+            lever = _mul(along, axis)  # the foot from the roller's centre
             across = _sub(relative, _mul(_dot(relative, normal), normal))
             turn = 1.0 / (h + radius)  # the normal turns as the roller moves across it
             lever_normal = _cross(lever, normal)
@@ -129,14 +156,15 @@ def _roller_wrench_gradient(y, p, j, count, geometry, frame, gaps, alongs, wrenc
             _put(lever_normal, d_closing, _OMEGA, 1.0)
             _put(across, d_closing, _S, turn)
             _put(normal, d_closing, _W, -1.0)
-            _put(_cross(_sub(element, mass_centre), normal), d_closing, _CAGE_OMEGA, -1.0)
+            _put(_cross(_add(_sub(centre, mass_centre), arm), normal), d_closing, _CAGE_OMEGA,
+                 -1.0)
             _put(normal, d_gap, _C, -1.0)
             _put(lever_normal, d_gap, _THETA, -1.0)
             _put(normal, d_gap, _S, 1.0)
             _put(u_prime, d_slope, _C, -1.0)
             _put(_cross(lever, u_prime), d_slope, _THETA, -1.0)
             _put(u_prime, d_slope, _S, 1.0)
-            moment_normal = _cross(_sub(element, centre), normal)
+            moment_normal = _cross(arm, normal)
             for a in range(3):
                 wrench[a] -= push * normal[a]
                 wrench[3 + a] -= push * moment_normal[a]
@@ -147,6 +175,96 @@ def _roller_wrench_gradient(y, p, j, count, geometry, frame, gaps, alongs, wrenc
                     gradient[a, c] += normal[a] * change
                     gradient[3 + a, c] += moment_normal[a] * change
     return centre, velocity, axis, omega
+
+
+@njit(cache=True)
+def _raceway_gradient(p, slice_z, centre, velocity, axis, omega, ring_centre, ring_velocity,
+                      z_ring, ring_spin, gradient, ring_gradient):
+    """The gradient of a roller's raceway contacts (eqs. 18-21): of the force on it and their
+    moment about its centre (``gradient``, 6 x 18), and of the force of the inner contacts on
+    the ring (``ring_gradient``, 3 x 18), over the roller's centre, velocity, attitude (a
+    small rotation) and angular velocity and the ring's centre and velocity (the columns
+    :data:`_C` to :data:`_W`, the ring in the cage's places). Each slice's push
+    ``K delta^(10/9) (1 + C_n delta')`` by its approach and approach speed, and its traction
+    ``-mu(s) push s / |s|`` by its push and its sliding ``s``, and the moment's arm turning
+    with the roller; left out, as not stiff: the turning of the normal with a move, the ring's
+    spin carried with it."""
+    gradient[:, :] = 0.0
+    ring_gradient[:, :] = 0.0
+    force = np.empty((3, _W + 3))  # a slice's force on the roller over the columns
+    traction, arm_matrix = np.empty((3, 3)), np.empty((3, 3))
+    for z in slice_z:
+        middle = _add(centre, _mul(z, axis))
+        for inner in (True, False):
+            approach, normal, point, relative = raceway_slice(
+                middle, inner, centre, velocity, omega, ring_centre, ring_velocity, z_ring,
+                ring_spin, p)
+            if approach <= 0.0:
+                continue
+            arm = _sub(point, centre)
+            rate = -_dot(relative, normal)
+            load = palmgren_slice(p[K_SLICE], approach)
+            push = load * (1.0 + p[HUNT] * rate)
+            if push <= 0.0:
+                continue
+            on_approach = PALMGREN_EXPONENT * push / approach
+            on_rate = load * p[HUNT]
+            sliding, speed = _tangential(relative, normal)
+            if speed > 0.0:
+                mu = traction_coefficient(speed, p[TRACTION_A], p[TRACTION_B], p[TRACTION_C],
+                                          p[TRACTION_D])
+                ratio = mu / speed
+                bend = traction_slope(speed, p[TRACTION_A], p[TRACTION_B], p[TRACTION_C],
+                                      p[TRACTION_D]) - ratio
+            else:
+                mu, ratio, bend = 0.0, 0.0, 0.0
+            direction = _mul(1.0 / speed, sliding) if speed > 0.0 else (0.0, 0.0, 0.0)
+            per_push = _sub(normal, _mul(mu, direction))  # the force per unit push
+            # the traction's gradient over the relative velocity, push T (T on the tangent
+            # plane: the ratio mu/s across the sliding, the slope along it)
+            for r in range(3):
+                for c in range(3):
+                    across = (1.0 if r == c else 0.0) - normal[r] * normal[c]
+                    traction[r, c] = push * (ratio * across + bend * direction[r]
+                                             * direction[c])
+            lever_normal = _cross(_mul(z, axis), normal)  # the approach's turn by a tilt
+            _fill_cross_matrix(arm, arm_matrix)  # the relative velocity by omega: -[arm x]
+            for r in range(3):
+                for c in range(3):
+                    spin = 0.0
+                    for k in range(3):
+                        spin += traction[r, k] * arm_matrix[k, c]
+                    force[r, _C + c] = -on_approach * per_push[r] * normal[c]
+                    force[r, _THETA + c] = -on_approach * per_push[r] * lever_normal[c]
+                    force[r, _V + c] = -on_rate * per_push[r] * normal[c] - traction[r, c]
+                    force[r, _OMEGA + c] = -on_rate * per_push[r] * lever_normal[c] + spin
+                    if inner:
+                        force[r, _S + c] = -force[r, _C + c]
+                        force[r, _W + c] = on_rate * per_push[r] * normal[c] + traction[r, c]
+            # A tilt moves the contact point (z t x a) under the roller's spin and, at the
+            # inner ring, the ring's: the relative velocity changes by -z [(w - W) x][a x] t.
+            carried = _sub(omega, ring_spin) if inner else omega
+            for c in range(3):
+                moved = _mul(-z, _cross(carried, _cross(axis, (
+                    1.0 if c == 0 else 0.0, 1.0 if c == 1 else 0.0, 1.0 if c == 2 else 0.0))))
+                by_rate = -on_rate * _dot(normal, moved)
+                for r in range(3):
+                    force[r, _THETA + c] += by_rate * per_push[r] - (
+                        traction[r, 0] * moved[0] + traction[r, 1] * moved[1]
+                        + traction[r, 2] * moved[2])
+            for c in range(_W + 3 if inner else _S):
+                column = (force[0, c], force[1, c], force[2, c])
+                turning = _cross(arm, column)
+                if _THETA <= c < _THETA + 3:  # the arm turns with the roller: z (t x a) x F
+                    unit = (1.0 if c == _THETA else 0.0, 1.0 if c == _THETA + 1 else 0.0,
+                            1.0 if c == _THETA + 2 else 0.0)
+                    turning = _add(turning, _mul(z, _cross(_cross(unit, axis), _mul(
+                        push, per_push))))
+                for r in range(3):
+                    gradient[r, c] += column[r]
+                    gradient[3 + r, c] += turning[r]
+                    if inner:
+                        ring_gradient[r, c] += column[r]
 
 
 @njit(cache=True)
@@ -178,6 +296,10 @@ def pocket_jacobian(y, p, count, geometry, gaps, alongs, own, to_hub, from_hub, 
     rows, forces = np.empty((12, _COLUMNS)), np.empty(12)
     turned, by_state = np.empty((12, 3)), np.empty((12, ROLLER_SIZE + HUB))
     inverse = np.empty((3, 3))
+    race, ring_race = np.empty((6, _W + 3)), np.empty((3, _W + 3))
+    ring_centre, ring_velocity = (y[0], y[1], 0.0), (y[2], y[3], 0.0)
+    z_ring = ring_axis(p)
+    ring_spin = _mul(p[OMEGA_I], z_ring)
     for j in range(count):
         centre, velocity, axis, omega = _roller_wrench_gradient(
             y, p, j, count, geometry, frame, gaps, alongs, wrench, gradient, d_closing,
@@ -213,6 +335,10 @@ def pocket_jacobian(y, p, count, geometry, gaps, alongs, own, to_hub, from_hub, 
                     to_hub[j, 9 + a, hub_column] += accelerations[1]
                     hub[RING + 3 + a, hub_column] += accelerations[2]
                     hub[RING + 10 + a, hub_column] += accelerations[3]
+        if p[RACEWAYS] > 0.0:
+            _raceway_gradient(p, geometry[0], centre, velocity, axis, omega, ring_centre,
+                              ring_velocity, z_ring, ring_spin, race, ring_race)
+            _add_raceways(j, race, ring_race, axis, inverse, p, own, to_hub, from_hub, hub)
         # the roller's centre moves at its velocity, its axis with omega: d(w x a)/dw = -[a x]
         own[j, 0, 3] = own[j, 1, 4] = own[j, 2, 5] = 1.0
         own[j, 6, 10], own[j, 6, 11] = axis[2], -axis[1]
@@ -224,6 +350,45 @@ def pocket_jacobian(y, p, count, geometry, gaps, alongs, own, to_hub, from_hub, 
     w, x, yq, z = y[c0 + 6], y[c0 + 7], y[c0 + 8], y[c0 + 9]
     hub[RING + 6:RING + 10, RING + 10:RING + 13] = 0.5 * np.array(
         [[-x, -yq, -z], [w, -z, yq], [z, w, -x], [-yq, x, w]])
+
+
+@njit(cache=True)
+def _add_raceways(j, gradient, ring_gradient, axis, inverse, p, own, to_hub, from_hub, hub):
+    """:func:`_raceway_gradient`'s into the blocks: the roller's accelerations (``inverse``
+    its inertia's inverse) and the ring's, over the roller's state and the ring's x, y and
+    their velocities."""
+    outputs = np.empty((9, _W + 3))  # the roller's force and moment, the ring's force
+    outputs[:6] = gradient
+    outputs[6:] = -ring_gradient
+    axis_turn = _cross_matrix(axis)  # d theta = a x d a
+    by_state = np.empty(9)
+    for column in range(ROLLER_SIZE + RING):
+        for r in range(9):
+            if _THETA <= column < _THETA + 3:
+                b = column - _THETA
+                by_state[r] = (outputs[r, _THETA] * axis_turn[0, b]
+                               + outputs[r, _THETA + 1] * axis_turn[1, b]
+                               + outputs[r, _THETA + 2] * axis_turn[2, b])
+            elif column < ROLLER_SIZE:
+                by_state[r] = outputs[r, column]
+            else:
+                ring_column = column - ROLLER_SIZE
+                by_state[r] = outputs[r, (_S if ring_column < 2 else _W) + ring_column % 2]
+        for a in range(3):
+            linear = by_state[a] / p[M_ROLLER]
+            angular = (inverse[a, 0] * by_state[3] + inverse[a, 1] * by_state[4]
+                       + inverse[a, 2] * by_state[5])
+            if column < ROLLER_SIZE:
+                own[j, 3 + a, column] += linear
+                own[j, 9 + a, column] += angular
+            else:
+                to_hub[j, 3 + a, column - ROLLER_SIZE] += linear
+                to_hub[j, 9 + a, column - ROLLER_SIZE] += angular
+        for r in range(2):
+            if column < ROLLER_SIZE:
+                from_hub[j, 2 + r, column] += by_state[6 + r] / p[M_RING]
+            else:
+                hub[2 + r, column - ROLLER_SIZE] += by_state[6 + r] / p[M_RING]
 
 
 @njit(cache=True)

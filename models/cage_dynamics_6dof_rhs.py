@@ -177,23 +177,11 @@ def derivatives(state, p, count, slice_z, arc_theta, arc_z, face_r, face_phi, fa
             for z in slice_z:
                 middle = _add(centre, _mul(z, axis))
                 for inner in (True, False):
-                    if inner:
-                        d = _sub(middle, ring_centre)
-                        radial = _sub(d, _mul(_dot(d, z_ring), z_ring))
-                        rho = np.sqrt(_dot(radial, radial))
-                        normal = _mul(1.0 / rho, radial)  # from the ring's axis to the roller
-                        approach = p[R_INNER] + radius - rho
-                    else:
-                        rho = np.sqrt(middle[0] ** 2 + middle[1] ** 2)
-                        normal = (-middle[0] / rho, -middle[1] / rho, 0.0)  # towards the axis
-                        approach = rho + radius - p[R_OUTER]
+                    approach, normal, point, relative = raceway_slice(
+                        middle, inner, centre, velocity, omega, ring_centre, ring_velocity,
+                        z_ring, ring_spin, p)
                     if approach <= 0.0:
                         continue
-                    point = _sub(middle, _mul(radius, normal))
-                    relative = _add(velocity, _cross(omega, _sub(point, centre)))
-                    if inner:
-                        relative = _sub(relative, _add(ring_velocity, _cross(
-                            ring_spin, _sub(point, ring_centre))))
                     rate = -_dot(relative, normal)  # approach speed
                     load = palmgren_slice(p[K_SLICE], approach)
                     push = damped_spring(load / approach, approach, rate, p[HUNT])
@@ -213,10 +201,14 @@ def derivatives(state, p, count, slice_z, arc_theta, arc_z, face_r, face_phi, fa
             pressed = pocket_gaps(centre, axis, pocket, x_c, y_c, z_b, arc_cos, arc_sin, arc_z,
                                   p, gaps, alongs)
             spin = _dot(_sub(omega, cage_rate), z_b)  # roller relative to the cage
+            pocket_force, pocket_moment = zero, zero
+            motion = pocket_motion(centre, velocity, axis, omega, pocket, x_c, y_c, z_b,
+                                   cage_velocity, cage_rate, mass_centre)
             for m in range(n_arc):
                 cos_m, sin_m = arc_cos[m], arc_sin[m]
                 u = _add(_mul(cos_m, x_c), _mul(sin_m, y_c))
                 u_prime = _sub(_mul(cos_m, y_c), _mul(sin_m, x_c))
+                wall, base = arc_wall(u, motion, cage_rate, p)
                 for n in range(n_axial):
                     if observe != 0.0:
                         arc_force[j, m, n] = 0.0
@@ -224,15 +216,14 @@ def derivatives(state, p, count, slice_z, arc_theta, arc_z, face_r, face_phi, fa
                     if h == np.inf or (pressed and h >= 0.0):
                         continue
                     along = alongs[m, n]
-                    element, foot, normal, cage_at_element, closing = arc_element(
-                        pocket, u, arc_z[n], z_b, along, h, centre, axis, velocity, omega,
-                        cage_velocity, cage_rate, mass_centre, p)
+                    arm, normal, relative, closing = arc_element(
+                        wall, base, arc_z[n], z_b, along, h, axis, motion, p)
                     if pressed:
                         push = damped_spring(p[BED_POCKET] * p[ARC_AREA], -h, closing,
                                              p[HUNT])
-                        surface = _add(velocity, _cross(omega, _sub(_add(
-                            foot, _mul(radius, normal)), centre)))
-                        sliding, speed = _tangential(_sub(surface, cage_at_element), normal)
+                        # the roller's surface at the element less the cage there
+                        sliding, speed = _tangential(_add(relative, _cross(
+                            omega, _mul(radius, normal))), normal)
                         on_roller = _mul(-push, normal)
                         if speed > 0.0:
                             on_roller = _sub(on_roller, _mul(
@@ -242,17 +233,19 @@ def derivatives(state, p, count, slice_z, arc_theta, arc_z, face_r, face_phi, fa
                             arc_force[j, m, n] = push
                     else:
                         film = max(h, p[FILM_FLOOR])
-                        slope = arc_slope(foot, pocket, x_c, y_c, cos_m, sin_m)
+                        slope = arc_slope(along, motion, cos_m, sin_m)
                         pressure = short_bearing_pressure(p[VISCOSITY], spin * slope, -closing,
                                                           film, along, length)
                         shear = p[VISCOSITY] * spin * radius / film
                         on_roller = _mul(-p[ARC_AREA] * p[FILM_FILL], _add(_mul(pressure, normal),
                                                             _mul(shear, u_prime)))
-                    force = _add(force, on_roller)
-                    moment = _add(moment, _cross(_sub(element, centre), on_roller))
-                    cage_force = _sub(cage_force, on_roller)
-                    cage_moment = _sub(cage_moment, _cross(_sub(element, mass_centre),
-                                                           on_roller))
+                    pocket_force = _add(pocket_force, on_roller)
+                    pocket_moment = _add(pocket_moment, _cross(arm, on_roller))
+            force = _add(force, pocket_force)
+            moment = _add(moment, pocket_moment)
+            cage_force = _sub(cage_force, pocket_force)  # its moment about the mass centre:
+            cage_moment = _sub(cage_moment, _add(pocket_moment, _cross(
+                _sub(centre, mass_centre), pocket_force)))
             if observe != 0.0:
                 dry[j, 0] = 1.0 if pressed else 0.0
         # -- roller ends: pocket end faces and ribs (eqs. 10-17)
@@ -264,56 +257,31 @@ def derivatives(state, p, count, slice_z, arc_theta, arc_z, face_r, face_phi, fa
             for side in range(2):
                 sign = -1.0 if side == 0 else 1.0
                 end = _add(centre, _mul(sign * 0.5 * length, axis))
-                for r in range(face_r.size):
-                    for s in range(face_phi.size):
-                        element = _add(end, _mul(face_r[r], _add(
-                            _mul(face_cos[s], first), _mul(face_sin[s], second))))
-                        arm = _sub(element, centre)
-                        material = _add(velocity, _cross(omega, arm))
-                        area = face_area[r]
-                        if observe != 0.0:
-                            end_gap[j, side, r, s] = np.nan
-                            rib_gap[j, side, r, s] = np.nan
-                        # pocket end face: the cage rim between its bore and outside diameter
-                        from_cage = _sub(element, cage_centre)
-                        reach2 = _dot(from_cage, from_cage) - _dot(from_cage, z_b) ** 2
-                        if p[END_FACES] > 0.0 and rim_low <= reach2 <= rim_high:
-                            h = 0.5 * (length + p[POCKET_PLAY]) - sign * _dot(
-                                _sub(element, pocket), z_b)
-                            lever = _sub(element, mass_centre)
-                            other = _add(cage_velocity, _cross(cage_rate, lever))
-                            band = _band(np.sqrt(reach2), p[CAGE_IN], p[CAGE_OUT],
-                                         face_r[r] * face_cos[s], face_r[r] * face_sin[s],
-                                         p) if p[END_PRESSURE] > 0.0 and h >= 0.0 else 0.0
-                            on_roller = _face_force(h, _mul(-sign, z_b), _sub(material, other),
-                                                    area, p[BED_POCKET], p, band, axis)
-                            force = _add(force, on_roller)
-                            moment = _add(moment, _cross(arm, on_roller))
-                            cage_force = _sub(cage_force, on_roller)
-                            cage_moment = _sub(cage_moment, _cross(lever, on_roller))
-                            if observe != 0.0:
-                                end_gap[j, side, r, s] = h
-                                if h < 0.0:
-                                    dry[j, 1] = 1.0
-                        # rib: the inner ring's face between its raceway and the rib's rim
-                        from_ring = _sub(element, ring_centre)
-                        reach2 = _dot(from_ring, from_ring) - _dot(from_ring, z_ring) ** 2
-                        if p[END_RIBS] > 0.0 and rib_low <= reach2 <= rib_high:
-                            h = 0.5 * (length + p[RIB_PLAY]) - sign * _dot(from_ring, z_ring)
-                            other = _add(ring_velocity, _cross(ring_spin, from_ring))
-                            band = _band(np.sqrt(reach2), p[R_INNER], p[RIB_RADIUS],
-                                         face_r[r] * face_cos[s], face_r[r] * face_sin[s],
-                                         p) if p[END_PRESSURE] > 0.0 and h >= 0.0 else 0.0
-                            on_roller = _face_force(h, _mul(-sign, z_ring),
-                                                    _sub(material, other), area, p[BED_RIB], p,
-                                                    band, axis)
-                            force = _add(force, on_roller)
-                            moment = _add(moment, _cross(arm, on_roller))
-                            ring_force = _sub(ring_force, on_roller)
-                            if observe != 0.0:
-                                rib_gap[j, side, r, s] = h
-                                if h < 0.0:
-                                    dry[j, 2] = 1.0
+                roller = (centre, velocity, omega, axis, first, second, end, sign)
+                if p[END_FACES] > 0.0:
+                    on_roller, turning = _end_face(
+                        roller, (cage_centre, z_b, p[POCKET_PLAY], rim_low, rim_high,
+                                 p[CAGE_IN], p[CAGE_OUT], p[BED_POCKET]),
+                        (mass_centre, cage_velocity, cage_rate), face_r, face_cos, face_sin,
+                        face_area, p, end_gap[j, side], dry[j], 1, observe)
+                    force = _add(force, on_roller)
+                    moment = _add(moment, turning)
+                    cage_force = _sub(cage_force, on_roller)
+                    cage_moment = _sub(cage_moment, _add(turning, _cross(
+                        _sub(centre, mass_centre), on_roller)))
+                elif observe != 0.0:
+                    end_gap[j, side] = np.nan
+                if p[END_RIBS] > 0.0:
+                    on_roller, turning = _end_face(
+                        roller, (ring_centre, z_ring, p[RIB_PLAY], rib_low, rib_high,
+                                 p[R_INNER], p[RIB_RADIUS], p[BED_RIB]),
+                        (ring_centre, ring_velocity, ring_spin), face_r, face_cos, face_sin,
+                        face_area, p, rib_gap[j, side], dry[j], 2, observe)
+                    force = _add(force, on_roller)
+                    moment = _add(moment, turning)
+                    ring_force = _sub(ring_force, on_roller)
+                elif observe != 0.0:
+                    rib_gap[j, side] = np.nan
         # -- windage on the roller's orbit (eq. 22)
         if p[DRAG] > 0.0:
             rho2 = centre[0] ** 2 + centre[1] ** 2
@@ -359,6 +327,35 @@ def derivatives(state, p, count, slice_z, arc_theta, arc_z, face_r, face_phi, fa
 
 
 @njit(cache=True)
+def raceway_slice(middle, inner, centre, velocity, omega, ring_centre, ring_velocity, z_ring,
+                  ring_spin, p):
+    """A raceway slice of a roller at its axis point ``middle`` against the inner (``inner``
+    true) or the outer raceway (eqs. 18-21): its approach [m] (not in contact where not
+    positive: then the rest is not computed), its unit normal (from the ring's axis to the
+    roller at the inner raceway, towards the axis at the outer), its contact point on the
+    roller [m] and the roller's velocity there relative to the raceway [m/s]."""
+    radius = p[RADIUS]
+    if inner:
+        d = _sub(middle, ring_centre)
+        radial = _sub(d, _mul(_dot(d, z_ring), z_ring))
+        rho = np.sqrt(_dot(radial, radial))
+        normal = _mul(1.0 / rho, radial)
+        approach = p[R_INNER] + radius - rho
+    else:
+        rho = np.sqrt(middle[0] ** 2 + middle[1] ** 2)
+        normal = (-middle[0] / rho, -middle[1] / rho, 0.0)
+        approach = rho + radius - p[R_OUTER]
+    if approach <= 0.0:
+        return approach, normal, middle, normal
+    point = _sub(middle, _mul(radius, normal))
+    relative = _add(velocity, _cross(omega, _sub(point, centre)))
+    if inner:
+        relative = _sub(relative, _add(ring_velocity, _cross(ring_spin,
+                                                             _sub(point, ring_centre))))
+    return approach, normal, point, relative
+
+
+@njit(cache=True)
 def pocket_frame(j, count, x_b, y_b, cage_centre, p):
     """Pocket ``j``'s radial and tangential unit vectors and its centre [m]."""
     angle = 2.0 * np.pi * j / count
@@ -392,27 +389,128 @@ def pocket_gaps(centre, axis, pocket, x_c, y_c, z_b, arc_cos, arc_sin, arc_z, p,
 
 
 @njit(cache=True)
-def arc_element(pocket, u, z, z_b, along, h, centre, axis, velocity, omega, cage_velocity,
-                cage_rate, mass_centre, p):
-    """A pocket-arc element at ``u`` round the arc and ``z`` along the pocket, facing the
-    roller across the gap ``h``: its position, the foot on the roller's axis, the unit normal
-    from the axis to the wall, the cage's velocity there and the roller's speed of approach
-    to it [m/s]."""
-    element = _add(pocket, _add(_mul(p[POCKET_RADIUS], u), _mul(z, z_b)))
-    foot = _add(centre, _mul(along, axis))
-    normal = _mul(1.0 / (h + p[RADIUS]), _sub(element, foot))  # axis to wall
-    roller_at_foot = _add(velocity, _cross(omega, _sub(foot, centre)))
-    cage_at_element = _add(cage_velocity, _cross(cage_rate, _sub(element, mass_centre)))
-    return element, foot, normal, cage_at_element, _dot(_sub(roller_at_foot,
-                                                              cage_at_element), normal)
+def pocket_motion(centre, velocity, axis, omega, pocket, x_c, y_c, z_b, cage_velocity,
+                  cage_rate, mass_centre):
+    """What a roller's pocket-arc elements share: the pocket's centre from the roller's
+    [m], the roller's velocity less the cage's at the roller's centre [m/s], the roller's
+    ``omega x a`` and the cage's ``Omega x z_b`` [rad/s], the roller's axis and the pocket's
+    centre in the pocket's radial and tangential directions (``a . x_c``, ``a . y_c``
+    [-], ``(pocket - centre) . x_c``, ``. y_c`` [m])."""
+    to_pocket = _sub(pocket, centre)
+    shift = _sub(_sub(velocity, cage_velocity), _cross(cage_rate, _sub(centre, mass_centre)))
+    return (to_pocket, shift, _cross(omega, axis), _cross(cage_rate, z_b), _dot(axis, x_c),
+            _dot(axis, y_c), _dot(to_pocket, x_c), _dot(to_pocket, y_c))
 
 
 @njit(cache=True)
-def arc_slope(foot, pocket, x_c, y_c, cos_m, sin_m):
+def arc_wall(u, motion, cage_rate, p):
+    """The pocket wall's line at ``u`` round the arc: its point on the pocket's mid-plane
+    from the roller's centre [m], and the roller's velocity less the cage's there [m/s]
+    (:func:`pocket_motion`'s ``motion``)."""
+    wall = _add(motion[0], _mul(p[POCKET_RADIUS], u))
+    return wall, _sub(motion[1], _cross(cage_rate, wall))
+
+
+@njit(cache=True)
+def arc_element(wall, base, z, z_b, along, h, axis, motion, p):
+    """A pocket-arc element on the wall line ``wall`` (:func:`arc_wall`, with ``base``) at
+    ``z`` along the pocket, facing the roller across the gap ``h``, ``along`` the roller's
+    axis from its centre: its position from the roller's centre [m], the unit normal from
+    the roller's axis to the wall, the roller's velocity at the foot on its axis less the
+    cage's at the element, and its normal part, the speed of approach [m/s]."""
+    arm = _add(wall, _mul(z, z_b))
+    normal = _mul(1.0 / (h + p[RADIUS]), _sub(arm, _mul(along, axis)))  # axis to wall
+    relative = _add(base, _sub(_mul(along, motion[2]), _mul(z, motion[3])))
+    return arm, normal, relative, _dot(relative, normal)
+
+
+@njit(cache=True)
+def arc_slope(along, motion, cos_m, sin_m):
     """The pocket film's slope round the arc, ``dh/dtheta`` [m], at the element at
-    ``(cos_m, sin_m)``: the roller's offset from the pocket's centre across it."""
-    offset = _sub(foot, pocket)
-    return _dot(offset, x_c) * sin_m - _dot(offset, y_c) * cos_m
+    ``(cos_m, sin_m)``, ``along`` the roller's axis: the roller's offset from the pocket's
+    centre across it (:func:`pocket_motion`'s ``motion``)."""
+    return ((along * motion[4] - motion[6]) * sin_m
+            - (along * motion[5] - motion[7]) * cos_m)
+
+
+@njit(cache=True)
+def _end_face(roller, face, body, face_r, face_cos, face_sin, face_area, p, gaps, dry, kind,
+              observe):
+    """Force [N] and moment about the roller's centre [N m] on a roller of one flat face at
+    its end (the pocket's end face, the inner ring's rib): :func:`_face_force` for each
+    end-face element facing the face's annulus.
+
+    ``roller`` is (centre, velocity, angular velocity, axis, end-face axes ``first`` and
+    ``second``, end-face centre, side's sign), ``face`` (a point on the face's axis, that
+    axis, the axial play, the annulus' squared radii and radii, the Winkler modulus) and
+    ``body`` (the face body's reference point, its velocity there, its angular velocity).
+    With ``observe`` nonzero the gaps go to ``gaps`` (NaN off the annulus) and a dry
+    element sets ``dry[kind]``.
+
+    An element's offset on the end face is ``alpha first + beta second``; its gap, and its
+    sliding over the face, are affine in ``(alpha, beta)``. The oil's shear on the elements
+    in their film, ``-eta A / h`` times the sliding, is summed by its weights' moments over
+    ``(alpha, beta)``, to order two for the moment; dry elements and the film's pressure,
+    elementwise."""
+    centre, velocity, omega, axis, first, second, end, sign = roller
+    axis_point, face_axis, play, low2, high2, low, high, bed = face
+    body_point, body_velocity, body_rate = body
+    offset = _sub(end, axis_point)
+    along_first, along_second = _dot(offset, first), _dot(offset, second)
+    offset_axial, offset_square = _dot(offset, face_axis), _dot(offset, offset)
+    first_axial, second_axial = _dot(first, face_axis), _dot(second, face_axis)
+    half = 0.5 * (p[LENGTH] + play)
+    normal = _mul(-sign, face_axis)  # from the face into the roller
+    arm0 = _mul(sign * 0.5 * p[LENGTH], axis)
+    relative_rate = _sub(omega, body_rate)
+    # the sliding: constant + alpha slide1 + beta slide2, and its part along the face
+    slide0 = _sub(_add(velocity, _cross(omega, arm0)), _add(body_velocity, _cross(
+        body_rate, _sub(end, body_point))))
+    slide1, slide2 = _cross(relative_rate, first), _cross(relative_rate, second)
+    flat0 = _tangential(slide0, normal)[0]
+    flat1, flat2 = _tangential(slide1, normal)[0], _tangential(slide2, normal)[0]
+    shear = -p[VISCOSITY] * p[END_FILL]
+    w, wa, wb, waa, wab, wbb = 0.0, 0.0, 0.0, 0.0, 0.0, 0.0
+    force, moment = (0.0, 0.0, 0.0), (0.0, 0.0, 0.0)
+    for r in range(face_r.size):
+        for s in range(face_cos.size):
+            alpha, beta = face_r[r] * face_cos[s], face_r[r] * face_sin[s]
+            axial = offset_axial + alpha * first_axial + beta * second_axial
+            reach2 = (offset_square + 2.0 * (alpha * along_first + beta * along_second)
+                      + face_r[r] ** 2 - axial * axial)
+            if not low2 <= reach2 <= high2:
+                if observe != 0.0:
+                    gaps[r, s] = np.nan
+                continue
+            h = half - sign * axial
+            if observe != 0.0:
+                gaps[r, s] = h
+                if h < 0.0:
+                    dry[kind] = 1.0
+            if h >= 0.0 and p[END_PRESSURE] <= 0.0:
+                weight = shear * face_area[r] / max(h, p[FILM_FLOOR])
+                w += weight
+                wa += weight * alpha
+                wb += weight * beta
+                waa += weight * alpha * alpha
+                wab += weight * alpha * beta
+                wbb += weight * beta * beta
+                continue
+            arm = _add(arm0, _add(_mul(alpha, first), _mul(beta, second)))
+            sliding = _add(slide0, _add(_mul(alpha, slide1), _mul(beta, slide2)))
+            band = _band(np.sqrt(reach2), low, high, alpha, beta, p) if h >= 0.0 else 0.0
+            on_roller = _face_force(h, normal, sliding, face_area[r], bed, p, band, axis)
+            force = _add(force, on_roller)
+            moment = _add(moment, _cross(arm, on_roller))
+    force = _add(force, _add(_mul(w, flat0), _add(_mul(wa, flat1), _mul(wb, flat2))))
+    moment = _add(moment, _add(
+        _add(_mul(w, _cross(arm0, flat0)),
+             _mul(wa, _add(_cross(arm0, flat1), _cross(first, flat0)))),
+        _add(_add(_mul(wb, _add(_cross(arm0, flat2), _cross(second, flat0))),
+                  _mul(waa, _cross(first, flat1))),
+             _add(_mul(wab, _add(_cross(first, flat2), _cross(second, flat1))),
+                  _mul(wbb, _cross(second, flat2))))))
+    return force, moment
 
 
 @njit(cache=True)

@@ -24,6 +24,14 @@ def traction_coefficient(sliding, a, b, c, d):
     return value if sliding >= 0.0 else -value
 
 
+@njit(cache=True)
+def traction_slope(sliding, a, b, c, d):
+    """The slope ``d mu / d u`` [s/m] of :func:`traction_coefficient` at the sliding speed
+    ``u`` [m/s], even in ``u``."""
+    speed = abs(sliding)
+    return (b - c * (a + b * speed)) * np.exp(-c * speed)
+
+
 def qin_damping_coefficient(restitution, impact_speed):
     """Qin's hysteresis damping coefficient ``C_n = 3 (1 - e^2) exp(2 (1 - e)) / (4 v-)``
     [s/m] of a contact force ``N = k delta (1 + C_n delta')`` (paper 002, eq. 1).

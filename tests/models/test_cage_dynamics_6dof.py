@@ -138,7 +138,7 @@ def perfect():
 def test_a_perfect_bearing_stays_in_its_plane(perfect):
     # Without eccentricity or misalignment every force is symmetric about z = 0: skew, tilt
     # and axial motion start at zero and only rounding can move them. Measured (the default
-    # additive method): the largest skew 6.4e-16 rad at 4 ms, 3.2e-14 at 12 ms (tilt, roller
+    # additive method): the largest skew 2.2e-16 rad at 4 ms, 3.6e-16 at 12 ms (tilt, roller
     # z and cage z smaller). The plane is not stable: by Dormand-Prince the skew grows by
     # about e every 2 ms, to 3e-12 rad at 20 ms and 5e-4 rad at 50 ms, where the rollers
     # walk into their axial play (7 um) and the slip jumps from 2.6 % to 3.0 %; 12 ms stays
@@ -162,7 +162,7 @@ def test_a_perfect_bearing_slips_as_the_planar_model_does(perfect):
     #   12 ms    2.44 %    2.58 %   (-5.2 %, 4 x 12)
     #   20 ms    2.54 %    2.61 %   (-2.5 %, 4 x 12)
     #   12 ms    2.32 %    2.56 %   (-9.2 %, the default 5 x 12, within 1.5 % of 8 x 24)
-    #   12 ms    2.31 %    2.56 %   (-9.8 %, 5 x 12, the additive method; the rest
+    #   12 ms    2.34 %    2.56 %   (-8.4 %, 5 x 12, the additive method; the rest
     #                               Dormand-Prince)
     # The planar cage jumps to its level within 0.2 ms; the spatial one climbs to its own
     # with a time constant of about 5 ms, so at 12 ms its mean is still below. The rest is
@@ -452,8 +452,8 @@ def test_misalignment_about_x_and_its_opposite_run_as_mirror_images(misaligned):
     # The same through the integration: cage slip and roller slip equal, roller skew, tilt
     # and the cage's axial position opposite, the cage's x and y equal. Exact for the exact
     # solutions; the integrator's error parts them. Measured (0.5 ms at 1e-9, the additive
-    # method) against each quantity's largest value: cage slip 4.5e-6, roller slip 5.8e-5,
-    # skew 5.3e-5, tilt 1.7e-4, cage x, y, z 7.4e-6, 2.7e-5, 1.2e-4 (Dormand-Prince: up to
+    # method) against each quantity's largest value: cage slip 5.9e-6, roller slip 1.9e-5,
+    # skew 8.4e-5, tilt 2.7e-4, cage x, y, z 6.7e-6, 5.8e-5, 2.4e-4 (Dormand-Prince: up to
     # 8.8e-4); a wrong sign shows as 2 (skew reaches 1.2e-3 rad, cage z 4.6 um).
     (plus, _), (minus, _) = misaligned[1], misaligned[-1]
     for name, sign, tolerance in (("cage_slip", 1, 1e-3), ("roller_slip", 1, 1e-3),
@@ -747,8 +747,8 @@ def test_the_implicit_and_the_explicit_integrators_agree(method):
     # The same equations (the paper's shear-only end films, 800 N, 12000 r/min) over 2 ms by
     # the adaptive methods at a tolerance of 1e-7 (the Rosenbrock-W method working to a
     # tenth of it). Measured: mean cage slip 2.058504 % (Dormand-Prince), 2.058501 %
-    # (Rosenbrock-W), 2.058460 % (additive); the samples' largest differences from
-    # Dormand-Prince's 9.8e-7 and 1.0e-6 in the cage slip, 8.3e-7 and 3.0e-7 in the rollers'
+    # (Rosenbrock-W), 2.058490 % (additive); the samples' largest differences from
+    # Dormand-Prince's 9.7e-7 and 8.9e-7 in the cage slip, 7.6e-7 and 2.2e-7 in the rollers'
     # (fractions, not percent).
     runs = {name: simulate(duration=2e-3, output_interval=1e-4, relative_tolerance=1e-7,
                            integrator=name)[0] for name in ("adaptive", method)}
@@ -756,6 +756,26 @@ def test_the_implicit_and_the_explicit_integrators_agree(method):
     assert implicit_["mean_cage_slip"] == pytest.approx(explicit["mean_cage_slip"], rel=1e-4)
     assert np.abs(explicit["cage_slip"] - implicit_["cage_slip"]).max() < 1e-5
     assert np.abs(explicit["roller_slip"] - implicit_["roller_slip"]).max() < 1e-5
+
+
+def closed_form_and_differenced(start, kept):
+    """Near the steady start, with only the terms ``kept`` (a switch) on: the additive
+    method's closed-form Jacobian, dense, and forward differences of the right-hand side
+    less its kinematics and gyroscopic terms (those with every term off), which the closed
+    form leaves to the explicit part; and the roller count."""
+    _, p, state, scale = jacobian_blocks(start, 0.0)
+    count, geometry = start["count"], elements(start)
+    terms = p.copy()
+    for switch in (rhs.RACEWAYS, rhs.POCKETS, rhs.ENDS, rhs.DRAG):
+        terms[switch] = 1.0 if switch == kept else 0.0
+    bare = terms.copy()
+    bare[kept] = 0.0
+    expected = (full_jacobian(state, terms, count, geometry, scale)
+                - full_jacobian(state, bare, count, geometry, scale))
+    blocks = implicit.blocks(count)[:4]
+    gaps = np.empty((geometry[1].size, geometry[2].size))
+    imex.pocket_jacobian(state, terms, count, geometry, gaps, gaps.copy(), *blocks)
+    return implicit.dense(*blocks), expected, count
 
 
 def test_the_imex_pocket_jacobian_is_the_pocket_terms_jacobian(start):
@@ -768,19 +788,7 @@ def test_the_imex_pocket_jacobian_is_the_pocket_terms_jacobian(start):
     # force's direction and the elements' shift along the roller (the position and attitude
     # columns of the forces' rows within 1.1e-2, of the cage's within 7.8e-3; the rollers'
     # moments by a roller's tilt, not asserted, 31 %).
-    _, p, state, scale = jacobian_blocks(start, 0.0)
-    count, geometry = start["count"], elements(start)
-    pockets = p.copy()
-    for switch in (rhs.RACEWAYS, rhs.ENDS, rhs.DRAG):
-        pockets[switch] = 0.0
-    bare = pockets.copy()
-    bare[rhs.POCKETS] = 0.0
-    expected = (full_jacobian(state, pockets, count, geometry, scale)
-                - full_jacobian(state, bare, count, geometry, scale))
-    blocks = implicit.blocks(count)[:4]
-    gaps = np.empty((geometry[1].size, geometry[2].size))
-    imex.pocket_jacobian(state, pockets, count, geometry, gaps, gaps.copy(), *blocks)
-    found = implicit.dense(*blocks)
+    found, expected, count = closed_form_and_differenced(start, rhs.POCKETS)
     rollers = rhs.RING + 12 * np.arange(count)[:, None]
     forces, moments = (rollers + np.arange(3, 6)).ravel(), (rollers + np.arange(9, 12)).ravel()
     cage = (CAGE + np.r_[3:6, 10:13])
@@ -793,3 +801,102 @@ def test_the_imex_pocket_jacobian_is_the_pocket_terms_jacobian(start):
         np.testing.assert_allclose(found[np.ix_(rows, columns)], reference, rtol=0,
                                    atol=tolerance * np.abs(reference).max())
 
+
+
+def test_the_imex_raceway_jacobian_is_the_raceway_terms_jacobian(start):
+    # The closed-form Jacobian of the raceway slices (eqs. 18-21) against forward differences
+    # of the right-hand side with the raceways alone, less the kinematics and gyroscopic
+    # terms, in the rows the contact forces enter: the rollers' and the inner ring's
+    # accelerations. Each slice's push by its approach and approach speed, its traction by its
+    # sliding, and the contact point's move with a tilt are held; the turning of the normal
+    # with a move is left out. Measured: the columns of the rollers' and the ring's
+    # velocities within 2.2e-7 of the largest entry, the angular velocities' within 5.3e-7,
+    # the positions' within 2.9e-3, the moments by the attitudes within 8.1e-3.
+    found, expected, count = closed_form_and_differenced(start, rhs.RACEWAYS)
+    rollers = rhs.RING + 12 * np.arange(count)[:, None]
+    forces, moments = (rollers + np.arange(3, 6)).ravel(), (rollers + np.arange(9, 12)).ravel()
+    rows = np.r_[forces, moments, 2, 3]  # the ring's accelerations last
+    for chosen, columns, tolerance in (
+            (rows, np.r_[(rollers + np.arange(3, 6)).ravel(), 2, 3], 1e-5),
+            (rows, (rollers + np.arange(9, 12)).ravel(), 1e-5),
+            (rows, np.r_[(rollers + np.arange(3)).ravel(), 0, 1], 1e-2),
+            (moments, (rollers + np.arange(6, 9)).ravel(), 3e-2)):
+        reference = expected[np.ix_(chosen, columns)]
+        np.testing.assert_allclose(found[np.ix_(chosen, columns)], reference, rtol=0,
+                                   atol=tolerance * np.abs(reference).max())
+
+
+def elementwise_end_face(state, p, count, geometry, j, side):
+    """Force and moment about the roller's centre of roller ``j``'s end ``side`` on its
+    pocket's end face, element by element: the elements laid out, their gaps and sliding
+    found, and each element's force from the law of :func:`rhs._face_force`."""
+    _, _, _, face_r, face_phi, face_area = geometry
+    k = rhs.RING + rhs.ROLLER_SIZE * j
+    centre, velocity, omega = state[k:k + 3], state[k + 3:k + 6], state[k + 9:k + 12]
+    axis = unit(state[k + 6:k + 9])
+    _, _, frame = rhs.cage_frame(state, count, p)
+    mass_centre, cage_velocity, cage_rate, x_b, y_b, z_b, cage_centre = map(np.array, frame)
+    pocket = np.array(rhs.pocket_frame(j, count, tuple(x_b), tuple(y_b), tuple(cage_centre),
+                                       p)[2])
+    radial = np.array([centre[0], centre[1], 0.0])
+    first = unit(radial - radial @ axis * axis)
+    second = np.cross(axis, first)
+    sign = -1.0 if side == 0 else 1.0
+    end = centre + sign * 0.5 * p[rhs.LENGTH] * axis
+    force, moment = np.zeros(3), np.zeros(3)
+    for r, area in zip(face_r, face_area):
+        for phi in face_phi:
+            element = end + r * (np.cos(phi) * first + np.sin(phi) * second)
+            from_cage = element - cage_centre
+            reach2 = from_cage @ from_cage - (from_cage @ z_b) ** 2
+            if not p[rhs.CAGE_IN] ** 2 <= reach2 <= p[rhs.CAGE_OUT] ** 2:
+                continue
+            gap = 0.5 * (p[rhs.LENGTH] + p[rhs.POCKET_PLAY]) - sign * (element - pocket) @ z_b
+            sliding = (velocity + np.cross(omega, element - centre)
+                       - cage_velocity - np.cross(cage_rate, element - mass_centre))
+            band = rhs._band(np.sqrt(reach2), p[rhs.CAGE_IN], p[rhs.CAGE_OUT],
+                             r * np.cos(phi), r * np.sin(phi), p) if gap >= 0.0 else 0.0
+            on_roller = np.array(rhs._face_force(gap, tuple(-sign * z_b), tuple(sliding), area,
+                                                 p[rhs.BED_POCKET], p, band, tuple(axis)))
+            force += on_roller
+            moment += np.cross(element - centre, on_roller)
+    return force, moment
+
+
+@pytest.mark.parametrize("end_pressure", [0.0, 1.0])
+def test_the_end_faces_summed_by_moments_are_the_elements_sum(start, end_pressure):
+    # The right-hand side sums the end films' shear by the moments of the elements' weights
+    # over their offsets on the end face (to order two for the moment), each dry element and
+    # the films' pressure element by element: against every element's force summed one by
+    # one, with ends shifted into their faces (dry elements among them).
+    _, p, state, _ = jacobian_blocks(start, end_pressure)
+    count, geometry = start["count"], elements(start)
+    rng = np.random.default_rng(11)
+    for j in range(count):
+        state[rhs.RING + rhs.ROLLER_SIZE * j + 2] += rng.uniform(-4e-5, 4e-5)  # [m]
+    dry, observed = 0, np.zeros(3)
+    for j in range(count):
+        k = rhs.RING + rhs.ROLLER_SIZE * j
+        centre, velocity, omega = (tuple(state[k + i:k + i + 3]) for i in (0, 3, 9))
+        axis = tuple(unit(state[k + 6:k + 9]))
+        radial = np.array([centre[0], centre[1], 0.0])
+        first = unit(radial - radial @ np.array(axis) * np.array(axis))
+        second = tuple(np.cross(axis, first))
+        _, _, frame = rhs.cage_frame(state, count, p)
+        mass_centre, cage_velocity, cage_rate, _, _, z_b, cage_centre = frame
+        for side in range(2):
+            sign = -1.0 if side == 0 else 1.0
+            end = tuple(np.array(centre) + sign * 0.5 * p[rhs.LENGTH] * np.array(axis))
+            gaps = np.empty((geometry[3].size, geometry[4].size))
+            found = rhs._end_face(
+                (centre, velocity, omega, axis, tuple(first), second, end, sign),
+                (cage_centre, z_b, p[rhs.POCKET_PLAY], p[rhs.CAGE_IN] ** 2,
+                 p[rhs.CAGE_OUT] ** 2, p[rhs.CAGE_IN], p[rhs.CAGE_OUT], p[rhs.BED_POCKET]),
+                (mass_centre, cage_velocity, cage_rate), geometry[3], np.cos(geometry[4]),
+                np.sin(geometry[4]), geometry[5], p, gaps, observed, 1, 1.0)
+            expected = elementwise_end_face(state, p, count, geometry, j, side)
+            dry += np.sum(gaps < 0.0)
+            for value, reference in zip(found, expected):
+                np.testing.assert_allclose(value, reference, rtol=1e-9,
+                                           atol=1e-12 * np.abs(reference).max())
+    assert dry > 0 and observed[1] == 1.0
