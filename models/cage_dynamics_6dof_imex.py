@@ -169,11 +169,19 @@ def _roller_wrench_gradient(y, p, j, count, geometry, frame, gaps, alongs, wrenc
                 wrench[a] -= push * normal[a]
                 wrench[3 + a] -= push * moment_normal[a]
             for c in range(_COLUMNS):
+                if _S <= c < _CAGE_OMEGA:
+                    continue  # the cage's centre and velocity: below
                 change = -(on_closing * d_closing[c] + on_spin * d_spin[c]
                            + on_gap * d_gap[c] + on_slope * d_slope[c])
                 for a in range(3):
                     gradient[a, c] += normal[a] * change
                     gradient[3 + a, c] += moment_normal[a] * change
+    # The pocket terms see the roller's and the cage's centres and velocities only through
+    # their differences: the cage's columns are the roller's, negated.
+    for a in range(6):
+        for b in range(3):
+            gradient[a, _S + b] = -gradient[a, _C + b]
+            gradient[a, _W + b] = -gradient[a, _V + b]
     return centre, velocity, axis, omega
 
 

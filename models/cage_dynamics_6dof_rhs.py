@@ -472,7 +472,16 @@ def _end_face(roller, face, body, face_r, face_cos, face_sin, face_area, p, gaps
     shear = -p[VISCOSITY] * p[END_FILL]
     w, wa, wb, waa, wab, wbb = 0.0, 0.0, 0.0, 0.0, 0.0, 0.0
     force, moment = (0.0, 0.0, 0.0), (0.0, 0.0, 0.0)
+    # An element lies within its ring's radius of the end face's centre, and so does its
+    # distance from the face's axis from the centre's: rings wholly off the annulus are
+    # passed over (a margin for the rounding).
+    reach_end = np.sqrt(max(offset_square - offset_axial * offset_axial, 0.0))
     for r in range(face_r.size):
+        if (reach_end - face_r[r] > high * (1.0 + 1e-9)
+                or reach_end + face_r[r] < low * (1.0 - 1e-9)):
+            if observe != 0.0:
+                gaps[r, :] = np.nan
+            continue
         for s in range(face_cos.size):
             alpha, beta = face_r[r] * face_cos[s], face_r[r] * face_sin[s]
             axial = offset_axial + alpha * first_axial + beta * second_axial
