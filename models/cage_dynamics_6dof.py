@@ -151,13 +151,12 @@ def cage_dynamics_6dof(radial_load, speed, roller_count, inner_raceway_diameter,
         ``"auto"`` (the default) takes ``"imex"``, or ``"rosenbrock"`` with
         ``end_film="reynolds"``. The additive Runge-Kutta method ARK4(3)6L[2]SA with step
         control, the pocket films and contacts and the raceway contacts implicit, the rest
-        explicit
-        (:mod:`models.cage_dynamics_6dof_imex`): its steps are not held by the pocket films
-        (at 800 N, 12000 r/min, over 0.1 s, 28 % of Dormand-Prince's in 37 % of the time;
-        under a thin pocket film half the time),
-        but are by the end films' pressure (82 000 steps over 2 ms, against the
-        Rosenbrock-W method's 481) and, where the rollers ride their ribs (1 deg of
-        misalignment), by the end contacts, in about Dormand-Prince's time; Dormand-Prince
+        explicit (:mod:`models.cage_dynamics_6dof_imex`): its steps are not held by the
+        pocket films (at 800 N, 12000 r/min, over 0.1 s, 23 % of Dormand-Prince's steps in
+        39 % of the time; under a thin pocket film half the time), but are by the end films'
+        pressure (82 000 steps over 2 ms, against the Rosenbrock-W method's 481) and, where
+        the rollers ride their ribs (1 deg of misalignment), by the end contacts (52 000
+        steps per 0.1 s, against Dormand-Prince's 89 000-93 000); Dormand-Prince
         5(4) with step control; the linearly implicit Rosenbrock-W method
         RA34PW2 with step control and the Jacobian fresh at every step
         (:mod:`models.cage_dynamics_6dof_implicit`), whose steps the stiff films do not
