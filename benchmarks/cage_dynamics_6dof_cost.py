@@ -3,8 +3,9 @@
 The test bearing (preset paper002-test) at 800 N, 12000 r/min, from the model's steady start.
 After an untimed first call of each method (it compiles, or loads the compiled code from
 disk), 0.1 s of bearing time is integrated by the model's default method, the additive
-Runge-Kutta method with the pocket films implicit (``integrator="imex"``), at its default
-tolerance in one process; its code is compiled without threads, so it runs on one core.
+Runge-Kutta method with the pocket films and raceway contacts implicit
+(``integrator="imex"``), at its default tolerance in one process; its code is compiled
+without threads, so it runs on one core.
 Baseline: the paper's fixed-step fourth-order Runge-Kutta method at 1e-7 s, timed over the
 first 2 ms and scaled to 0.1 s (its steady start counted once, not scaled). The default method
 is run over the same 2 ms from the same start, and the two are compared sample by sample (cage
@@ -198,7 +199,7 @@ def profile(default, seen):
     settled = seen["samples"][seen["samples"].shape[0] // 2::5]
     each = rhs_microseconds(run, settled, run["p"])
     print(f"cage_dynamics_6dof, where the default run's {DURATION} s goes (six right-hand "
-          f"sides a step, and the pocket terms' Jacobian)")
+          f"sides a step, and the Jacobian of the pocket terms and raceway contacts)")
     print(f"  steps: {steps:.0f} with rejected ones, {1e6 * DURATION / steps:.2f} us of "
           f"bearing time each on average; about {calls:.0f} right-hand sides")
     print(f"  right-hand side alone: {each:.1f} us of CPU per call over {len(settled)} "

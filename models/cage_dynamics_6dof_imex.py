@@ -463,7 +463,7 @@ def _by_state(rows, turned, axis, turn, to_quaternion, by_state):
 
 @njit(cache=True)
 def integrate(state, times, p, count, geometry, record, settled_from, rtol, atol, max_steps):
-    """The additive Runge-Kutta method, the pocket terms' Jacobian fresh at every step, each
+    """The additive Runge-Kutta method, the implicit part's Jacobian fresh at every step, each
     sample time hit by a step; the same samples, extremes, events, steps and success as
     :func:`models.cage_dynamics_6dof_rhs.integrate`."""
     samples, arc_max, end_min, rib_min, last, events = _accumulators(times, state, record)
