@@ -143,7 +143,7 @@ def cage_dynamics_6dof(radial_load, speed, roller_count, inner_raceway_diameter,
         works to it as Dormand-Prince does: over 2 ms at 800 N, 12000 r/min its mean slip at
         1e-5 lies 0.08 % from its value at 1e-7. Its steps are held by the tolerance, 1.8
         times as many for each tenth of it: the rollers outside the load zone, pressed on the
-        outer raceway by their centrifugal force alone, ring there near 28 kHz, lightly
+        outer raceway by their centrifugal force alone, vibrate there near 28 kHz, lightly
         damped, and the rollers' mean slip depends on that motion being followed (at ten
         times the absolute tolerance of the speeds, 0.1 s takes 43 % fewer steps and the
         mean roller slip falls from 26 % to 18 %).

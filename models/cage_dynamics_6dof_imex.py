@@ -10,9 +10,9 @@ arcs switched off, held then by the raceway contacts). The additive method takes
 terms' linearisation ``D`` implicitly and everything else explicitly; the splitting
 ``f = (f - D y) + D y`` is exact, so its order holds whatever ``D`` is, and ``D`` need only
 hold the rates that matter. What then holds its steps is accuracy: the rollers outside the
-load zone, pressed on the outer raceway by their centrifugal force alone, ring on that contact
-near 28 kHz, lightly damped (Hunt-Crossley damping at a light load), and the rollers' mean
-slip depends on it being resolved.
+load zone, pressed on the outer raceway by their centrifugal force alone, vibrate on that
+contact near 28 kHz, lightly damped (Hunt-Crossley damping at a light load), and the rollers'
+mean slip depends on that motion being resolved.
 
 ``D`` is built by hand, element by element and slice by slice (:func:`pocket_jacobian`):
 
