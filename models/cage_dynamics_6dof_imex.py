@@ -46,10 +46,9 @@ from .cage_dynamics_6dof_rhs import (ARC_AREA, BED_POCKET, FILM_FILL, FILM_FLOOR
                                      TRACTION_A, TRACTION_B, TRACTION_C, TRACTION_D,
                                      VISCOSITY, _accumulators, _add, _copy, _cross, _dot, _mul,
                                      _normalise, _observe, _sub, _tangential, _vector,
-                                     arc_element, arc_slope, cage_frame, derivatives,
-                                     arc_wall, pocket_frame, pocket_gaps, pocket_motion,
-                                     raceway_slice,
-                                     ring_axis)
+                                     arc_element, arc_slope, arc_wall, cage_frame,
+                                     derivatives, pocket_frame, pocket_gaps, pocket_motion,
+                                     raceway_slice, ring_axis)
 from .contact_laws import (PALMGREN_EXPONENT, palmgren_slice, traction_coefficient,
                            traction_slope)
 from .dormand_prince import FIRST_STEP, SMALLEST_STEP

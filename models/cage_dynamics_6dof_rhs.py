@@ -159,8 +159,6 @@ def derivatives(state, p, count, slice_z, arc_theta, arc_z, face_r, face_phi, fa
     alongs = np.empty((n_arc, n_axial))
     arc_cos, arc_sin = np.cos(arc_theta), np.sin(arc_theta)
     face_cos, face_sin = np.cos(face_phi), np.sin(face_phi)
-    rim_low, rim_high = p[CAGE_IN] ** 2, p[CAGE_OUT] ** 2  # squared radii of the faces
-    rib_low, rib_high = p[R_INNER] ** 2, p[RIB_RADIUS] ** 2
     for j in range(count):
         cage_force_before, cage_moment_before = cage_force, cage_moment
         ring_force_before = ring_force
@@ -260,8 +258,8 @@ def derivatives(state, p, count, slice_z, arc_theta, arc_z, face_r, face_phi, fa
                 roller = (centre, velocity, omega, axis, first, second, end, sign)
                 if p[END_FACES] > 0.0:
                     on_roller, turning = _end_face(
-                        roller, (cage_centre, z_b, p[POCKET_PLAY], rim_low, rim_high,
-                                 p[CAGE_IN], p[CAGE_OUT], p[BED_POCKET]),
+                        roller, (cage_centre, z_b, p[POCKET_PLAY], p[CAGE_IN], p[CAGE_OUT],
+                                 p[BED_POCKET]),
                         (mass_centre, cage_velocity, cage_rate), face_r, face_cos, face_sin,
                         face_area, p, end_gap[j, side], dry[j], 1, observe)
                     force = _add(force, on_roller)
@@ -273,8 +271,8 @@ def derivatives(state, p, count, slice_z, arc_theta, arc_z, face_r, face_phi, fa
                     end_gap[j, side] = np.nan
                 if p[END_RIBS] > 0.0:
                     on_roller, turning = _end_face(
-                        roller, (ring_centre, z_ring, p[RIB_PLAY], rib_low, rib_high,
-                                 p[R_INNER], p[RIB_RADIUS], p[BED_RIB]),
+                        roller, (ring_centre, z_ring, p[RIB_PLAY], p[R_INNER], p[RIB_RADIUS],
+                                 p[BED_RIB]),
                         (ring_centre, ring_velocity, ring_spin), face_r, face_cos, face_sin,
                         face_area, p, rib_gap[j, side], dry[j], 2, observe)
                     force = _add(force, on_roller)
@@ -442,7 +440,7 @@ def _end_face(roller, face, body, face_r, face_cos, face_sin, face_area, p, gaps
 
     ``roller`` is (centre, velocity, angular velocity, axis, end-face axes ``first`` and
     ``second``, end-face centre, side's sign), ``face`` (a point on the face's axis, that
-    axis, the axial play, the annulus' squared radii and radii, the Winkler modulus) and
+    axis, the axial play, its annulus' inner and outer radii [m], the Winkler modulus) and
     ``body`` (the face body's reference point, its velocity there, its angular velocity).
     With ``observe`` nonzero the gaps go to ``gaps`` (NaN off the annulus) and a dry
     element sets ``dry[kind]``.
@@ -453,7 +451,8 @@ def _end_face(roller, face, body, face_r, face_cos, face_sin, face_area, p, gaps
     ``(alpha, beta)``, to order two for the moment; dry elements and the film's pressure,
     elementwise."""
     centre, velocity, omega, axis, first, second, end, sign = roller
-    axis_point, face_axis, play, low2, high2, low, high, bed = face
+    axis_point, face_axis, play, low, high, bed = face
+    low2, high2 = low ** 2, high ** 2
     body_point, body_velocity, body_rate = body
     offset = _sub(end, axis_point)
     along_first, along_second = _dot(offset, first), _dot(offset, second)

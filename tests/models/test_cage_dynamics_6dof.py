@@ -890,8 +890,8 @@ def test_the_end_faces_summed_by_moments_are_the_elements_sum(start, end_pressur
             gaps = np.empty((geometry[3].size, geometry[4].size))
             found = rhs._end_face(
                 (centre, velocity, omega, axis, tuple(first), second, end, sign),
-                (cage_centre, z_b, p[rhs.POCKET_PLAY], p[rhs.CAGE_IN] ** 2,
-                 p[rhs.CAGE_OUT] ** 2, p[rhs.CAGE_IN], p[rhs.CAGE_OUT], p[rhs.BED_POCKET]),
+                (cage_centre, z_b, p[rhs.POCKET_PLAY], p[rhs.CAGE_IN], p[rhs.CAGE_OUT],
+                 p[rhs.BED_POCKET]),
                 (mass_centre, cage_velocity, cage_rate), geometry[3], np.cos(geometry[4]),
                 np.sin(geometry[4]), geometry[5], p, gaps, observed, 1, 1.0)
             expected = elementwise_end_face(state, p, count, geometry, j, side)
