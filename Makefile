@@ -65,5 +65,5 @@ bench: $(STAMP)
 
 # numba's compiled code too (docs/contributing.md: a caller in another module keeps its own).
 clean:
-	rm -rf results figures .pytest_cache docs/_build docs/generated
+	rm -rf results figures .pytest_cache docs/_build docs/generated build/compiled
 	find . -path ./.venv -prune -o -name '*.nb[ci]' -type f -exec rm -f {} +

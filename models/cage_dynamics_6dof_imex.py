@@ -35,7 +35,6 @@ end faces and ribs, the rollers' gyroscopic terms.
 from __future__ import annotations
 
 import numpy as np
-from numba import njit
 
 from .additive_runge_kutta import ERROR, EXPLICIT, GAMMA, IMPLICIT, STAGES, WEIGHTS
 from .cage_dynamics_6dof_implicit import HUB, blocks, factor, solve
@@ -49,6 +48,7 @@ from .cage_dynamics_6dof_rhs import (ARC_AREA, BED_POCKET, FILM_FILL, FILM_FLOOR
                                      arc_element, arc_slope, arc_wall, cage_frame,
                                      derivatives, pocket_frame, pocket_gaps, pocket_motion,
                                      raceway_slice, ring_axis)
+from .compiled_cache import njit
 from .contact_laws import (PALMGREN_EXPONENT, palmgren_slice, traction_coefficient,
                            traction_slope)
 from .dormand_prince import FIRST_STEP, SMALLEST_STEP

@@ -31,12 +31,12 @@ hub's 17 unknowns from the Schur complement.
 from __future__ import annotations
 
 import numpy as np
-from numba import njit
 
 from .cage_dynamics_6dof_rhs import (CAGE_SIZE, DRAG, END_FACES, END_PRESSURE, END_RIBS,
                                      ENDS, J_CAGE_X, J_CAGE_Z, M_CAGE, M_RING, POCKETS,
                                      RACEWAYS, RING, ROLLER_SIZE, _accumulators, _copy,
                                      _normalise, _observe, derivatives, rotation)
+from .compiled_cache import njit
 from .dormand_prince import FIRST_STEP, SMALLEST_STEP
 from .rosenbrock import (GAMMA, STAGES, next_step, solution_and_error, stage_argument,
                          stage_right_side)

@@ -25,8 +25,8 @@ Contacts (each element force acts on both bodies, at one point):
 from __future__ import annotations
 
 import numpy as np
-from numba import njit
 
+from .compiled_cache import njit
 from .contact_laws import (damped_spring, palmgren_slice, regularised_direction,
                            short_bearing_pressure, traction_coefficient)
 from .dormand_prince import FIRST_STEP, SMALLEST_STEP, conclude, stage_argument

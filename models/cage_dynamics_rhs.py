@@ -14,8 +14,8 @@ the cage receives their reaction; the end films act against the rings' ribs.
 from __future__ import annotations
 
 import numpy as np
-from numba import njit
 
+from .compiled_cache import njit
 from .contact_laws import traction_coefficient
 from .dormand_prince import FIRST_STEP, SMALLEST_STEP, conclude, stage_argument
 

@@ -7,7 +7,8 @@ from __future__ import annotations
 import math
 
 import numpy as np
-from numba import njit
+
+from .compiled_cache import njit
 
 
 @njit(cache=True, error_model="numpy")

@@ -5,7 +5,8 @@ by the planar (:mod:`models.cage_dynamics_rhs`) and the spatial
 from __future__ import annotations
 
 import numpy as np
-from numba import njit
+
+from .compiled_cache import njit
 
 PALMGREN_EXPONENT = 10.0 / 9.0
 

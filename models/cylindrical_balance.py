@@ -7,15 +7,16 @@ model. It runs one roller at a time, each slice summed only while it touches (th
 gaps are sorted) and the slices' ``(delta - c)^(1/9)`` of a contact taken at once by a loop of
 plain arithmetic that the compiler vectorises. ``error_model="numpy"`` keeps division checks out of
 the loops. Imported only when a crb_radial point is solved (numba costs half a second to
-import); ``cache=True`` keeps the compiled code beside this file, so workers load it.
+import); ``cache=True`` keeps the compiled code, once per machine (:mod:`.compiled_cache`),
+so workers load it.
 """
 from __future__ import annotations
 
 import math
 
 import numpy as np
-from numba import njit
 
+from .compiled_cache import njit
 from .contact import LINE_CONTACT_EXPONENT
 
 N = LINE_CONTACT_EXPONENT

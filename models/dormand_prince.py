@@ -19,7 +19,8 @@ References
 from __future__ import annotations
 
 import numpy as np
-from numba import njit
+
+from .compiled_cache import njit
 
 #: The stages' coefficients (Butcher tableau) and the error weights, fifth minus fourth order.
 A = np.array([

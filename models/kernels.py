@@ -1,7 +1,8 @@
 """Per-point kernels compiled with numba, run uncompiled for a process's first few points.
 
 A model whose hot loop does not vectorise solves it one point at a time in a module of numba
-functions (``cache=True``: the compiled code is kept beside the module, so workers load it).
+functions (``cache=True``: the compiled code is kept once per machine, :mod:`.compiled_cache`,
+so workers load it).
 Importing numba and loading that code costs about half a second, more than a small sweep
 computes. So a process's first points run the same module's source by the interpreter: the
 module is executed a second time, under another name, with ``INTERPRETED`` set, and its
@@ -28,7 +29,7 @@ def compiler(namespace):
     module runs interpreted, a decorator of the same signature that compiles nothing."""
     if namespace.get("INTERPRETED"):
         return lambda *_, **__: (lambda function: function)
-    from numba import njit
+    from .compiled_cache import njit
     return njit
 
 

@@ -22,7 +22,8 @@ References
 from __future__ import annotations
 
 import numpy as np
-from numba import njit
+
+from .compiled_cache import njit
 
 #: RA34PW2 as published: the diagonal ``gamma``, the stages' arguments ``alpha``, the
 #: Jacobian's weights ``Gamma`` (lower triangular, ``gamma`` on its diagonal), the weights

@@ -14,6 +14,11 @@ from pathlib import Path
 import numpy as np
 import pytest
 
+#: The models' compiled code in the tests: the checkout's build folder, not the machine's cache
+#: (``models/compiled_cache.py``); set before any model is imported, for the processes the
+#: tests start too.
+os.environ["BEARING_SWEEP_CACHE"] = str(Path(__file__).parent.parent / "build" / "compiled")
+
 MM = 1e-3
 #: The tests' own definitions and files.
 DATA = Path(__file__).parent / "data"
@@ -44,8 +49,8 @@ COMPILED = [("cage_dynamics_6dof", None), ("trb_load", "tapered_equilibrium"),
 @pytest.fixture(scope="session", autouse=True)
 def kernels_compiled_once(tmp_path_factory):
     """In a fresh checkout numba compiles a model's kernels at their first call and keeps them
-    beside the code; the two processes of ``make test`` would each compile those they start
-    on at once. Each takes the models in another order, under a lock per model in the run's
+    (``BEARING_SWEEP_CACHE``, above); the two processes of ``make test`` would each compile
+    those they start on at once. Each takes the models in another order, under a lock per model in the run's
     temporary root (which its processes share): the first to take one compiles its kernels,
     the other then loads them."""
     worker = os.environ.get("PYTEST_XDIST_WORKER")

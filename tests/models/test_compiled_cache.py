@@ -1,0 +1,106 @@
+"""The models' compiled code is kept once per machine, a folder for each version of their
+source (``models/compiled_cache.py``): another checkout of the same source loads it, a changed
+source compiles afresh, and functions outside the models are cached where numba keeps them."""
+import os
+import shutil
+import subprocess
+import sys
+import time
+from pathlib import Path
+
+from bearing_sweep.models import compiled_cache
+
+MODELS = Path(compiled_cache.__file__).parent
+
+
+def checkout(folder: Path) -> Path:
+    """A copy of the models' source as the package ``models_copy`` under ``folder``."""
+    copy = folder / "models_copy"
+    shutil.copytree(MODELS, copy, ignore=shutil.ignore_patterns("__pycache__"))
+    return copy
+
+
+def first_call(package: Path, cache: str | None):
+    """Call a compiled model function in a new process importing ``package``, with
+    ``BEARING_SWEEP_CACHE`` = ``cache`` (unset for None): numba's cache folder for it, and
+    whether the call loaded it from there (else it compiled)."""
+    script = (f"import sys; sys.path.insert(0, {str(package.parent)!r})\n"
+              f"from {package.name} import contact_laws as laws\n"
+              "laws.traction_coefficient(1.0, 0.1, 0.2, 0.3, 0.4)\n"
+              "stats = laws.traction_coefficient.stats\n"
+              "print(stats.cache_path, sum(stats.cache_hits.values()),"
+              " sum(stats.cache_misses.values()))\n")
+    environment = {k: v for k, v in os.environ.items()
+                   if k not in ("BEARING_SWEEP_CACHE", "NUMBA_CACHE_DIR")}
+    if cache is not None:
+        environment["BEARING_SWEEP_CACHE"] = cache
+    environment["XDG_CACHE_HOME"] = str(package.parent / "home_cache")
+    finished = subprocess.run([sys.executable, "-c", script], env=environment,
+                              capture_output=True, text=True, check=True)
+    path, hits, misses = finished.stdout.split()
+    assert int(hits) + int(misses) == 1
+    return Path(path), int(hits) == 1
+
+
+def test_another_checkout_of_the_same_source_loads_what_one_compiled(tmp_path):
+    cache = tmp_path / "machine"
+    one, other = checkout(tmp_path / "one"), checkout(tmp_path / "other")
+    folder, loaded = first_call(one, str(cache))
+    assert folder.parent == cache / "numba" and not loaded
+    assert first_call(other, str(cache)) == (folder, True)
+    # a change to any of the models' files is another version: compiled afresh, elsewhere
+    with open(other / "runout.py", "a") as source:
+        source.write("\n# changed\n")
+    changed, loaded = first_call(other, str(cache))
+    assert changed.parent == cache / "numba" and changed != folder and not loaded
+    assert first_call(one, str(cache)) == (folder, True)
+
+
+def test_the_machine_cache_by_default_and_numbas_own_place_when_asked(tmp_path):
+    one = checkout(tmp_path / "one")
+    folder, _ = first_call(one, None)
+    assert folder.parent == tmp_path / "one" / "home_cache" / "bearing-sweep" / "numba"
+    beside, loaded = first_call(checkout(tmp_path / "two"), "")
+    assert beside == tmp_path / "two" / "models_copy" / "__pycache__" and not loaded
+
+
+def test_other_functions_are_cached_where_numba_keeps_them(tmp_path):
+    # The models' locator registered, a function of another file is numba's business.
+    (tmp_path / "elsewhere.py").write_text(
+        "from numba import njit\n\n@njit(cache=True)\ndef twice(x):\n    return 2 * x\n")
+    script = (f"import sys; sys.path.insert(0, {str(tmp_path)!r})\n"
+              "from bearing_sweep.models import contact_laws\n"
+              "import elsewhere\n"
+              "elsewhere.twice(1.0)\n"
+              "print(elsewhere.twice.stats.cache_path)\n")
+    environment = {**os.environ, "BEARING_SWEEP_CACHE": str(tmp_path / "machine")}
+    environment.pop("NUMBA_CACHE_DIR", None)
+    finished = subprocess.run([sys.executable, "-c", script], env=environment,
+                              capture_output=True, text=True, check=True)
+    assert Path(finished.stdout.strip()) == tmp_path / "__pycache__"
+
+
+def test_the_digest_is_of_the_files_names_and_contents(tmp_path):
+    for name in ("a", "b"):
+        (tmp_path / name).mkdir()
+        (tmp_path / name / "x.py").write_text("x = 1\n")
+        (tmp_path / name / "notes.txt").write_text(name)  # not source
+    assert compiled_cache.source_digest(tmp_path / "a") == compiled_cache.source_digest(
+        tmp_path / "b")
+    (tmp_path / "b" / "x.py").write_text("x = 2\n")
+    assert compiled_cache.source_digest(tmp_path / "a") != compiled_cache.source_digest(
+        tmp_path / "b")
+    (tmp_path / "b" / "x.py").rename(tmp_path / "b" / "y.py")
+    (tmp_path / "b" / "y.py").write_text("x = 1\n")
+    assert compiled_cache.source_digest(tmp_path / "a") != compiled_cache.source_digest(
+        tmp_path / "b")
+
+
+def test_the_newest_versions_are_kept(tmp_path):
+    now = time.time()
+    for age, name in enumerate("abcdef"):
+        (tmp_path / name).mkdir()
+        os.utime(tmp_path / name, (now - 100 * age, now - 100 * age))
+    compiled_cache._prune(tmp_path / "a")  # "a" is the one in use
+    kept = sorted(p.name for p in tmp_path.iterdir())
+    assert kept == ["a", "b", "c", "d"][:compiled_cache.KEPT_VERSIONS]
