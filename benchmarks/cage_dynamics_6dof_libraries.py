@@ -5,8 +5,9 @@ relative tolerance 1e-5 and the model's absolute tolerances, on the same compile
 side: scipy's BDF and Radau (``solve_ivp``) and, where scikit-sundae is installed
 (``pip install scikit-sundae``: it is not one of the project's dependencies), SUNDIALS' CVODE
 (BDF, dense linear solver). Each library is given the best Jacobian the model has for
-Newton's method: the Rosenbrock-W method's, of every stiff term
-(:func:`models.cage_dynamics_6dof_implicit.jacobian`), assembled into a dense matrix.
+Newton's method: every stiff term's, by forward differences (the Rosenbrock-W method's until
+model version 9; :func:`models.cage_dynamics_6dof_implicit.jacobian`), assembled into a dense
+matrix.
 
 Cases: the paper's films over the first 2 ms (every method) and over 0.1 s (the default, the
 additive method, against CVODE); the end films with their pressure over 2 ms (the

@@ -139,7 +139,7 @@ def cage_dynamics_6dof(radial_load, speed, roller_count, inner_raceway_diameter,
         stability of the stiff pocket films, not by the tolerance. The Rosenbrock-W method
         works to a tenth of it: of third order, with a second-order estimate of its error,
         it needs that to be as accurate (at 2 kN, 6000 r/min over 5 ms, its mean cage slip at
-        1e-5 itself lies 17 % from the converged one, at 1e-6 0.5 %). The additive method
+        1e-5 itself lies 11 % from the converged one, at 1e-6 0.2 %). The additive method
         works to it as Dormand-Prince does: over 2 ms at 800 N, 12000 r/min its mean slip at
         1e-5 lies 0.08 % from its value at 1e-7. Its steps are held by the tolerance, 1.8
         times as many for each tenth of it: the rollers outside the load zone, pressed on the
@@ -154,15 +154,17 @@ def cage_dynamics_6dof(radial_load, speed, roller_count, inner_raceway_diameter,
         explicit (:mod:`models.cage_dynamics_6dof_imex`): its steps are not held by the
         pocket films (at 800 N, 12000 r/min, over 0.1 s, 23 % of Dormand-Prince's steps in
         39 % of the time; under a thin pocket film half the time), but are by the end films'
-        pressure (82 000 steps over 2 ms, against the Rosenbrock-W method's 481) and, where
+        pressure, whose squeeze damping its implicit part cannot follow where the films
+        cavitate and refill (9 100 steps over 2 ms, against the Rosenbrock-W method's 670)
+        and, where
         the rollers ride their ribs (1 deg of misalignment), by the end contacts (52 000
         steps per 0.1 s, against Dormand-Prince's 89 000-93 000); Dormand-Prince
         5(4) with step control; the linearly implicit Rosenbrock-W method
-        RA34PW2 with step control and the Jacobian fresh at every step
-        (:mod:`models.cage_dynamics_6dof_implicit`), whose steps the stiff films do not
-        hold (with ``end_film="reynolds"`` it takes a hundredth of the adaptive method's
-        steps; where the pockets touch dry, as under a thin pocket film, its steps shrink at
-        every contact and the adaptive method is faster); or the paper's fixed-step
+        RA34PW2 with step control and the stiff terms' Jacobian in closed form after every
+        accepted step (:mod:`models.cage_dynamics_6dof_implicit`), whose steps the stiff
+        films do not hold (with ``end_film="reynolds"`` it takes a hundredth of the adaptive
+        method's steps; where the pockets touch dry, as under a thin pocket film, its steps
+        shrink at every contact and the adaptive method is faster); or the paper's fixed-step
         fourth-order Runge-Kutta method at ``rk4_step``.
     rk4_step : float
         The fixed step of ``integrator="rk4"`` [s].
@@ -529,8 +531,8 @@ _PLANAR = {i.name: i for i in STEADY_MODELS[0].inputs}
 #: integrator (benchmarks/RESULTS.md, cage dynamics: 0.1 s at 800 N, 12000 r/min), and of
 #: the paper's RK4 at its 1e-7 s step.
 _SECONDS_PER_MS = {("shear", "imex"): 0.17, ("shear", "adaptive"): 0.45,
-                   ("shear", "rosenbrock"): 0.8, ("reynolds", "imex"): 40.0,
-                   ("reynolds", "adaptive"): 26.0, ("reynolds", "rosenbrock"): 0.7}
+                   ("shear", "rosenbrock"): 0.2, ("reynolds", "imex"): 5.5,
+                   ("reynolds", "adaptive"): 26.0, ("reynolds", "rosenbrock"): 0.36}
 _RK4_SECONDS_PER_MS = 3.0
 
 
@@ -554,7 +556,7 @@ MODELS = [Model(
             "cage with six degrees of freedom, Winkler pocket, end-face and rib contacts, cage "
             "mass eccentricity and ring misalignment (paper 002's own model).",
     reference="Paper 002, sections 1.3-1.5 (eqs. 1-26), eqs. 27-28, section 3",
-    version="8",
+    version="9",
     inputs=tuple(_PLANAR[name] for name in STEADY_INPUTS if name != "branch") + (
         _PLANAR["pocket_film_fill"],
         Input("end_film_thickness", "mm", "axial play of a roller between the ribs (Table 2: "

@@ -1,15 +1,25 @@
 """Linearly implicit integration of the spatial cage model
 (:mod:`models.cage_dynamics_6dof_rhs`): the Rosenbrock-W method of :mod:`models.rosenbrock`
-with the right-hand side's Jacobian from finite differences, fresh at every step.
+with the stiff terms' Jacobian in closed form
+(:func:`models.cage_dynamics_6dof_jacobian.closed_form_jacobian`), fresh after every
+accepted step, and the block solution its structure allows.
 
 The films between a roller and its pocket, its ribs and its pocket's end faces damp the
 roller's motion relative to the cage and the inner ring at rates far above those the motion
 itself has (a 7.5 um end film's squeeze near 1e8 /s): an explicit method's steps are held by
-them, an implicit one's by the accuracy asked for.
+them, an implicit one's by the accuracy asked for. A W-method keeps its order whatever matrix
+it is given (:mod:`models.rosenbrock`): the closed form holds the stiff terms (the raceway
+contacts, the pocket films and contacts, the end films' squeeze where their pressure is
+asked for) and leaves out the rest, at a tenth of the cost of finite differences and with
+up to half as many steps again (benchmarks/RESULTS.md).
 
-The Jacobian's structure makes it cheap. A roller's derivatives depend only on its own state
-and on the "hub", the inner ring and the cage, not on the other rollers; the hub's depend on
-everything. Perturbing one component of every roller at once gives each roller's own block
+A roller's derivatives depend only on its own state and on the "hub", the inner ring and the
+cage, not on the other rollers; the hub's depend on everything. The linear systems
+``(I / (h gamma) - J) u = r`` are solved by blocks (:func:`factor`, :func:`solve`): each
+roller's block inverted, the hub's 17 unknowns from the Schur complement.
+
+:func:`jacobian` gives the whole Jacobian by forward differences, cheaply by the same
+structure: perturbing one component of every roller at once gives each roller's own block
 (12 x 12) from its rows and, by the rollers' shares of the hub's forces that
 :func:`derivatives` reports, each roller's block of the hub's rows. The terms between a roller
 and the cage (its pocket's arcs and end faces) depend on their positions and velocities only
@@ -18,30 +28,23 @@ columns give the cage's position and velocity columns too. The cage's attitude a
 the inner ring's state are perturbed one by one, each with only the terms it enters: the
 ring's columns with the raceway contacts (and the ribs), the cage's with the pockets and the
 drag (and the pocket end faces). 11 perturbed columns of the hub, against 173 column by
-column.
-
-The Jacobian holds the stiff terms: the raceway contacts, the pocket films and contacts, and
-the end films where their pressure is asked for (``END_PRESSURE``). The end films' shear
-alone is left out: it is not stiff (the steps are the same with it and without it, at half
-the Jacobian's cost), and a W-method keeps its order whatever matrix it is given
-(:mod:`models.rosenbrock`). The linear systems
-``(I / (h gamma) - J) u = r`` are then solved by blocks: each roller's block inverted, the
-hub's 17 unknowns from the Schur complement.
+column. It is the reference the closed form is tested against, and the Jacobian the
+libraries' stiff integrators are given (benchmarks/cage_dynamics_6dof_libraries.py).
 """
 from __future__ import annotations
 
 import numpy as np
 
 from .cage_dynamics_6dof_rhs import (CAGE_SIZE, DRAG, END_FACES, END_PRESSURE, END_RIBS,
-                                     ENDS, J_CAGE_X, J_CAGE_Z, M_CAGE, M_RING, POCKETS,
+                                     ENDS, HUB, J_CAGE_X, J_CAGE_Z, M_CAGE, M_RING, POCKETS,
                                      RACEWAYS, RING, ROLLER_SIZE, _accumulators, _copy,
                                      _normalise, _observe, derivatives, rotation)
+from .cage_dynamics_6dof_jacobian import closed_form_jacobian
 from .compiled_cache import njit
 from .dormand_prince import FIRST_STEP, SMALLEST_STEP
 from .rosenbrock import (GAMMA, STAGES, next_step, solution_and_error, stage_argument,
                          stage_right_side)
 
-HUB = RING + CAGE_SIZE
 _RELATIVE_STEP = 1.4901161193847656e-08  # sqrt of the double's epsilon
 
 
@@ -237,13 +240,16 @@ def solve(right, count, from_hub, own_inverse, own_to_hub, schur_inverse):
 
 @njit(cache=True)
 def integrate(state, times, p, count, geometry, record, settled_from, rtol, atol, max_steps):
-    """The Rosenbrock-W method with the Jacobian fresh at every step, each sample time hit
-    by a step; the same samples, extremes, events, steps and success as
-    :func:`models.cage_dynamics_6dof_rhs.integrate`."""
+    """The Rosenbrock-W method with the closed-form Jacobian
+    (:func:`models.cage_dynamics_6dof_jacobian.closed_form_jacobian`) after every accepted
+    step, each sample time hit by a step; the same samples, extremes, events, steps and
+    success as :func:`models.cage_dynamics_6dof_rhs.integrate`."""
     samples, arc_max, end_min, rib_min, last, events = _accumulators(times, state, record)
     y = state.copy()
     n = y.size
-    scale = atol / rtol
+    _, arc_theta, arc_z, _, _, _ = geometry
+    gaps, alongs = np.empty((arc_theta.size, arc_z.size)), np.empty((arc_theta.size,
+                                                                     arc_z.size))
     own, to_hub, from_hub, hub, own_inverse, own_to_hub, schur_inverse = blocks(count)
     stages = np.empty((STAGES, n))
     t, h, steps = times[0], FIRST_STEP, 0
@@ -251,7 +257,7 @@ def integrate(state, times, p, count, geometry, record, settled_from, rtol, atol
     _observe(y, p, count, geometry, record, t >= settled_from, arc_max, end_min, rib_min,
              last, events)
     derivative = derivatives(y, p, count, *geometry, *record, 0.0)
-    jacobian(y, p, count, geometry, record, scale, own, to_hub, from_hub, hub)
+    closed_form_jacobian(y, p, count, geometry, gaps, alongs, own, to_hub, from_hub, hub)
     for index in range(1, times.size):
         while t < times[index]:
             if steps >= max_steps or h < SMALLEST_STEP:
@@ -272,7 +278,8 @@ def integrate(state, times, p, count, geometry, record, settled_from, rtol, atol
                 y = trial
                 _normalise(y, count)
                 derivative = derivatives(y, p, count, *geometry, *record, 0.0)
-                jacobian(y, p, count, geometry, record, scale, own, to_hub, from_hub, hub)
+                closed_form_jacobian(y, p, count, geometry, gaps, alongs, own, to_hub,
+                                     from_hub, hub)
         _copy(y, samples[index])
         _observe(y, p, count, geometry, record, t >= settled_from, arc_max, end_min,
                  rib_min, last, events)

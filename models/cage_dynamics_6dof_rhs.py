@@ -42,6 +42,7 @@ PARAMETERS = 51
 #: RACEWAYS, POCKETS, ENDS and DRAG switch their terms on (1.0) or off (0.0); END_FACES and
 #: END_RIBS the two parts of the end terms (the pocket end faces, the ribs).
 RING, ROLLER_SIZE, CAGE_SIZE = 4, 12, 13
+HUB = RING + CAGE_SIZE  # the inner ring's and the cage's entries, the rollers' "hub"
 
 
 def state_size(count):
@@ -248,20 +249,14 @@ def derivatives(state, p, count, slice_z, arc_theta, arc_z, face_r, face_phi, fa
                 dry[j, 0] = 1.0 if pressed else 0.0
         # -- roller ends: pocket end faces and ribs (eqs. 10-17)
         if p[ENDS] > 0.0:
-            radial = (centre[0], centre[1], 0.0)
-            first, size = _tangential(radial, axis)
-            first = _mul(1.0 / size, first)
-            second = _cross(axis, first)
+            pocket_face, rib = end_faces(frame, ring_centre, ring_velocity, z_ring, ring_spin,
+                                         p)
             for side in range(2):
-                sign = -1.0 if side == 0 else 1.0
-                end = _add(centre, _mul(sign * 0.5 * length, axis))
-                roller = (centre, velocity, omega, axis, first, second, end, sign)
+                roller = roller_end(centre, velocity, omega, axis, side, length)
                 if p[END_FACES] > 0.0:
                     on_roller, turning = _end_face(
-                        roller, (cage_centre, z_b, p[POCKET_PLAY], p[CAGE_IN], p[CAGE_OUT],
-                                 p[BED_POCKET]),
-                        (mass_centre, cage_velocity, cage_rate), face_r, face_cos, face_sin,
-                        face_area, p, end_gap[j, side], dry[j], 1, observe)
+                        roller, *pocket_face, face_r, face_cos, face_sin, face_area, p,
+                        end_gap[j, side], dry[j], 1, observe)
                     force = _add(force, on_roller)
                     moment = _add(moment, turning)
                     cage_force = _sub(cage_force, on_roller)
@@ -271,10 +266,8 @@ def derivatives(state, p, count, slice_z, arc_theta, arc_z, face_r, face_phi, fa
                     end_gap[j, side] = np.nan
                 if p[END_RIBS] > 0.0:
                     on_roller, turning = _end_face(
-                        roller, (ring_centre, z_ring, p[RIB_PLAY], p[R_INNER], p[RIB_RADIUS],
-                                 p[BED_RIB]),
-                        (ring_centre, ring_velocity, ring_spin), face_r, face_cos, face_sin,
-                        face_area, p, rib_gap[j, side], dry[j], 2, observe)
+                        roller, *rib, face_r, face_cos, face_sin, face_area, p,
+                        rib_gap[j, side], dry[j], 2, observe)
                     force = _add(force, on_roller)
                     moment = _add(moment, turning)
                     ring_force = _sub(ring_force, on_roller)
@@ -432,8 +425,32 @@ def arc_slope(along, motion, cos_m, sin_m):
 
 
 @njit(cache=True)
+def roller_end(centre, velocity, omega, axis, side, length):
+    """A roller's end (``side`` 0 at ``-length/2`` along its axis, 1 at ``+length/2``) as
+    :func:`_end_face` takes it: (centre, velocity, angular velocity, axis, the end disc's
+    axes ``first`` (radial) and ``second``, the end's centre, the side's sign)."""
+    first, size = _tangential((centre[0], centre[1], 0.0), axis)
+    first = _mul(1.0 / size, first)
+    sign = -1.0 if side == 0 else 1.0
+    return (centre, velocity, omega, axis, first, _cross(axis, first),
+            _add(centre, _mul(sign * 0.5 * length, axis)), sign)
+
+
+@njit(cache=True)
+def end_faces(frame, ring_centre, ring_velocity, z_ring, ring_spin, p):
+    """The flat faces a roller's ends meet, each as :func:`_end_face`'s ``(face, body)``:
+    its pocket's end faces on the cage (:func:`cage_frame`'s ``frame``), the inner ring's
+    ribs."""
+    mass_centre, cage_velocity, cage_rate, _, _, z_b, cage_centre = frame
+    return (((cage_centre, z_b, p[POCKET_PLAY], p[CAGE_IN], p[CAGE_OUT], p[BED_POCKET]),
+             (mass_centre, cage_velocity, cage_rate)),
+            ((ring_centre, z_ring, p[RIB_PLAY], p[R_INNER], p[RIB_RADIUS], p[BED_RIB]),
+             (ring_centre, ring_velocity, ring_spin)))
+
+
+@njit(cache=True)
 def _end_face(roller, face, body, face_r, face_cos, face_sin, face_area, p, gaps, dry, kind,
-              observe):
+              observe, squeeze=None):
     """Force [N] and moment about the roller's centre [N m] on a roller of one flat face at
     its end (the pocket's end face, the inner ring's rib): :func:`_face_force` for each
     end-face element facing the face's annulus.
@@ -449,7 +466,14 @@ def _end_face(roller, face, body, face_r, face_cos, face_sin, face_area, p, gaps
     sliding over the face, are affine in ``(alpha, beta)``. The oil's shear on the elements
     in their film, ``-eta A / h`` times the sliding, is summed by its weights' moments over
     ``(alpha, beta)``, to order two for the moment; dry elements and the film's pressure,
-    elementwise."""
+    elementwise.
+
+    ``squeeze``, when given (10 entries), receives the film's squeeze damping by the
+    closing speed, ``c = 6 eta A (s - s_1)(s_2 - s) / h^3`` (:func:`_face_pressure`), of the
+    elements whose pressure is positive, summed: ``sum c``, ``sum c m`` and the upper
+    triangle of ``sum c m m^T`` (xx, xy, xz, yy, yz, zz), ``m = arm x n`` the element's
+    moment arm crossed with the face's normal (the implicit part's Jacobian,
+    :mod:`models.cage_dynamics_6dof_imex`)."""
     centre, velocity, omega, axis, first, second, end, sign = roller
     axis_point, face_axis, play, low, high, bed = face
     low2, high2 = low ** 2, high ** 2
@@ -508,6 +532,10 @@ def _end_face(roller, face, body, face_r, face_cos, face_sin, face_area, p, gaps
             sliding = _add(slide0, _add(_mul(alpha, slide1), _mul(beta, slide2)))
             band = _band(np.sqrt(reach2), low, high, alpha, beta, p) if h >= 0.0 else 0.0
             on_roller = _face_force(h, normal, sliding, face_area[r], bed, p, band, axis)
+            if squeeze is not None and h >= 0.0 and _dot(on_roller, normal) > 0.0:
+                damping = (6.0 * p[VISCOSITY] * band * face_area[r] * p[END_FILL]
+                           / max(h, p[FILM_FLOOR]) ** 3)
+                _add_squeeze(squeeze, damping, _cross(arm, normal))
             force = _add(force, on_roller)
             moment = _add(moment, _cross(arm, on_roller))
     force = _add(force, _add(_mul(w, flat0), _add(_mul(wa, flat1), _mul(wb, flat2))))
@@ -519,6 +547,18 @@ def _end_face(roller, face, body, face_r, face_cos, face_sin, face_area, p, gaps
              _add(_mul(wab, _add(_cross(first, flat2), _cross(second, flat1))),
                   _mul(wbb, _cross(second, flat2))))))
     return force, moment
+
+
+@njit(cache=True)
+def _add_squeeze(sums, damping, lever):
+    """Add an element's squeeze damping ``c`` with its ``m`` to :func:`_end_face`'s sums."""
+    sums[0] += damping
+    k = 4
+    for a in range(3):
+        sums[1 + a] += damping * lever[a]
+        for b in range(a, 3):
+            sums[k] += damping * lever[a] * lever[b]
+            k += 1
 
 
 @njit(cache=True)

@@ -16,7 +16,7 @@ import numpy as np
 import pytest
 
 from bearing_sweep.models import cage_dynamics_6dof as model
-from bearing_sweep.models import cage_dynamics_6dof_imex as imex
+from bearing_sweep.models import cage_dynamics_6dof_jacobian as closed_form
 from bearing_sweep.models import cage_dynamics_6dof_implicit as implicit
 from bearing_sweep.models import cage_dynamics_6dof_rhs as rhs
 from bearing_sweep.models.cage_dynamics import cage_dynamics
@@ -622,7 +622,7 @@ def test_with_the_end_films_pressure_only_axial_eccentricity_skews_the_rollers()
     # cage mass eccentricity skews them. With the paper's films the seed grows instead (to
     # 1.9e-8 rad rms over the second half of 10 ms, 5.7e-8 at its end), and both cases reach
     # about 3e-4 rad rms from 48 ms on. Measured with the pressure, over 10 ms, the second
-    # half: rms skew 1.1e-10 rad centred against 3.1e-7 rad eccentric.
+    # half: rms skew 1.1e-10 rad centred against 3.0e-7 rad eccentric.
     rms = {}
     for axial, seed in ((0.0, 1e-9), (2 * MM, 0.0)):
         outputs, _ = simulate(cage_axial_eccentricity=axial, initial_skew=seed,
@@ -746,9 +746,9 @@ def test_the_implicit_integrators_block_solution_is_the_dense_one(jacobian_at):
 def test_the_implicit_and_the_explicit_integrators_agree(method):
     # The same equations (the paper's shear-only end films, 800 N, 12000 r/min) over 2 ms by
     # the adaptive methods at a tolerance of 1e-7 (the Rosenbrock-W method working to a
-    # tenth of it). Measured: mean cage slip 2.058504 % (Dormand-Prince), 2.058501 %
+    # tenth of it). Measured: mean cage slip 2.058504 % (Dormand-Prince), 2.058339 %
     # (Rosenbrock-W), 2.058490 % (additive); the samples' largest differences from
-    # Dormand-Prince's 9.7e-7 and 8.9e-7 in the cage slip, 7.6e-7 and 2.2e-7 in the rollers'
+    # Dormand-Prince's 2.0e-6 and 8.9e-7 in the cage slip, 1.8e-6 and 2.2e-7 in the rollers'
     # (fractions, not percent).
     runs = {name: simulate(duration=2e-3, output_interval=1e-4, relative_tolerance=1e-7,
                            integrator=name)[0] for name in ("adaptive", method)}
@@ -758,23 +758,28 @@ def test_the_implicit_and_the_explicit_integrators_agree(method):
     assert np.abs(explicit["roller_slip"] - implicit_["roller_slip"]).max() < 1e-5
 
 
-def closed_form_and_differenced(start, kept):
-    """Near the steady start, with only the terms ``kept`` (a switch) on: the additive
-    method's closed-form Jacobian, dense, and forward differences of the right-hand side
-    less its kinematics and gyroscopic terms (those with every term off), which the closed
-    form leaves to the explicit part; and the roller count."""
-    _, p, state, scale = jacobian_blocks(start, 0.0)
+def closed_form_and_differenced(start, kept, end_pressure=0.0, end_part=None):
+    """Near the steady start, with only the terms ``kept`` (a switch) on (of the end terms,
+    only ``end_part`` when given): the additive method's closed-form Jacobian, dense, and
+    forward differences of the right-hand side less its kinematics and gyroscopic terms
+    (those with every term off), which the closed form leaves to the explicit part; and the
+    roller count."""
+    _, p, state, scale = jacobian_blocks(start, end_pressure)
     count, geometry = start["count"], elements(start)
     terms = p.copy()
     for switch in (rhs.RACEWAYS, rhs.POCKETS, rhs.ENDS, rhs.DRAG):
         terms[switch] = 1.0 if switch == kept else 0.0
+    if end_part is not None:
+        terms[rhs.END_FACES] = terms[rhs.END_RIBS] = 0.0
+        terms[end_part] = 1.0
     bare = terms.copy()
     bare[kept] = 0.0
     expected = (full_jacobian(state, terms, count, geometry, scale)
                 - full_jacobian(state, bare, count, geometry, scale))
     blocks = implicit.blocks(count)[:4]
     gaps = np.empty((geometry[1].size, geometry[2].size))
-    imex.pocket_jacobian(state, terms, count, geometry, gaps, gaps.copy(), *blocks)
+    closed_form.closed_form_jacobian(state, terms, count, geometry, gaps, gaps.copy(),
+                                     *blocks)
     return implicit.dense(*blocks), expected, count
 
 
@@ -824,6 +829,24 @@ def test_the_imex_raceway_jacobian_is_the_raceway_terms_jacobian(start):
         reference = expected[np.ix_(chosen, columns)]
         np.testing.assert_allclose(found[np.ix_(chosen, columns)], reference, rtol=0,
                                    atol=tolerance * np.abs(reference).max())
+
+
+@pytest.mark.parametrize("part", [rhs.END_FACES, rhs.END_RIBS], ids=["pocket_ends", "ribs"])
+def test_the_imex_end_film_jacobian_is_the_squeeze_films_jacobian(start, part):
+    # With the end films' pressure, their squeeze damping (the pressure's part in the closing
+    # speed, eqs. of _face_pressure) against forward differences of the right-hand side with
+    # the end terms alone, in the velocity columns of the rollers, the cage and the ring,
+    # rows of the rollers', the cage's and the ring's accelerations. Left out: the films'
+    # shear (not stiff), the wedge's part along the roller's lean, the gap's change with a
+    # move (the position columns, not asserted). Measured: within 7.5e-5 of the largest
+    # entry for the pocket end faces, 5.9e-5 for the ribs (the shear's part).
+    found, expected, count = closed_form_and_differenced(start, rhs.ENDS, 1.0, part)
+    rollers = rhs.RING + 12 * np.arange(count)[:, None]
+    rows = np.r_[(rollers + np.r_[3:6, 9:12]).ravel(), 2, 3, CAGE + np.r_[3:6, 10:13]]
+    reference, closed_form = expected[np.ix_(rows, rows)], found[np.ix_(rows, rows)]
+    assert np.abs(reference).max() > 1e6  # the films are stiff here: the test means something
+    np.testing.assert_allclose(closed_form, reference, rtol=0,
+                               atol=1e-4 * np.abs(reference).max())
 
 
 def elementwise_end_face(state, p, count, geometry, j, side):
