@@ -11,8 +11,8 @@ source, in any checkout, loads what was compiled once.
 
 ``<cache>`` is ``$BEARING_SWEEP_CACHE`` when set, else ``$XDG_CACHE_HOME/bearing-sweep`` or
 ``~/.cache/bearing-sweep``; an empty ``BEARING_SWEEP_CACHE``, a ``NUMBA_CACHE_DIR`` of the
-user's or a folder that cannot be written leave numba's own place. The four versions used
-last are kept.
+user's or a folder that cannot be written leave numba's own place. The four versions written
+to last are kept, and any written to within a day (another checkout may be running it).
 
 The models take ``njit`` from here, which registers the locator first; it answers for the
 models' own files only, so numba caches any other function as before.
@@ -23,14 +23,15 @@ import hashlib
 import os
 import shutil
 import sys
+import time
 from pathlib import Path
 
 import numba
 from numba import njit  # noqa: F401  (the models' njit: the locator registered below)
 from numba.core import caching
 
-#: How many versions' folders are kept.
-KEPT_VERSIONS = 4
+#: How many versions' folders are kept, and for how long at least [s].
+KEPT_VERSIONS, KEPT_SECONDS = 4, 86400.0
 _SOURCE = Path(__file__).parent
 
 
@@ -69,11 +70,14 @@ class _ModelsLocator(caching.InTreeCacheLocator):
 
 
 def _prune(folder: Path) -> None:
-    """Delete the other versions' folders beside ``folder`` but the newest few."""
+    """Delete the other versions' folders beside ``folder`` but the newest few and those
+    changed within :data:`KEPT_SECONDS`."""
     others = sorted((p for p in folder.parent.iterdir() if p.is_dir() and p != folder),
                     key=lambda p: p.stat().st_mtime, reverse=True)
+    now = time.time()
     for old in others[KEPT_VERSIONS - 1:]:
-        shutil.rmtree(old, ignore_errors=True)
+        if now - old.stat().st_mtime > KEPT_SECONDS:
+            shutil.rmtree(old, ignore_errors=True)
 
 
 def register() -> None:

@@ -96,11 +96,11 @@ def test_the_digest_is_of_the_files_names_and_contents(tmp_path):
         tmp_path / "b")
 
 
-def test_the_newest_versions_are_kept(tmp_path):
-    now = time.time()
-    for age, name in enumerate("abcdef"):
+def test_the_newest_versions_are_kept_and_those_used_within_a_day(tmp_path):
+    now, day = time.time(), compiled_cache.KEPT_SECONDS
+    for name, age in zip("abcdefg", (0, 1, 2, 3, 0.5 * day, 2 * day, 3 * day)):
         (tmp_path / name).mkdir()
-        os.utime(tmp_path / name, (now - 100 * age, now - 100 * age))
+        os.utime(tmp_path / name, (now - age, now - age))
     compiled_cache._prune(tmp_path / "a")  # "a" is the one in use
     kept = sorted(p.name for p in tmp_path.iterdir())
-    assert kept == ["a", "b", "c", "d"][:compiled_cache.KEPT_VERSIONS]
+    assert compiled_cache.KEPT_VERSIONS == 4 and kept == ["a", "b", "c", "d", "e"]
