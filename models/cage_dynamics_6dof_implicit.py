@@ -2,7 +2,8 @@
 (:mod:`models.cage_dynamics_6dof_rhs`): the Rosenbrock-W method of :mod:`models.rosenbrock`
 with the stiff terms' Jacobian in closed form
 (:func:`models.cage_dynamics_6dof_jacobian.closed_form_jacobian`), fresh after every
-accepted step, and the block solution its structure allows.
+accepted step, and the block solution its structure allows; its samples interpolated between
+steps (:func:`between`).
 
 The films between a roller and its pocket, its ribs and its pocket's end faces damp the
 roller's motion relative to the cage and the inner ring at rates far above those the motion
@@ -202,18 +203,43 @@ def jacobian(y, p, count, geometry, record, scale, own, to_hub, from_hub, hub):
 def factor(diagonal, own, to_hub, from_hub, hub, own_inverse, own_to_hub, schur_inverse):
     """The blocks of ``(diagonal I - J)^-1`` the stages' solutions need (``diagonal`` =
     ``1 / (h gamma)``): each roller's block inverted, its product with the roller's hub
-    columns, the Schur complement's inverse."""
+    columns, the Schur complement's inverse. The products pass over the rows of ``to_hub``
+    and ``from_hub`` that are zero (a roller's positions and axis, and the hub's, follow
+    from velocities alone)."""
     schur = -hub.copy()
     for r in range(HUB):
         schur[r, r] += diagonal
+    block = np.empty((ROLLER_SIZE, ROLLER_SIZE))
     for j in range(own.shape[0]):
-        block = -own[j]
         for r in range(ROLLER_SIZE):
+            for c in range(ROLLER_SIZE):
+                block[r, c] = -own[j, r, c]
             block[r, r] += diagonal
         own_inverse[j] = np.linalg.inv(block)
-        own_to_hub[j] = own_inverse[j] @ (-to_hub[j])
-        schur -= (-from_hub[j]) @ own_to_hub[j]
+        own_to_hub[j] = 0.0
+        for r in range(ROLLER_SIZE):
+            if _zero_row(to_hub[j], r):
+                continue
+            for a in range(ROLLER_SIZE):
+                weight = own_inverse[j, a, r]
+                for c in range(HUB):
+                    own_to_hub[j, a, c] -= weight * to_hub[j, r, c]
+        for r in range(HUB):
+            if _zero_row(from_hub[j], r):
+                continue
+            for a in range(ROLLER_SIZE):
+                weight = from_hub[j, r, a]
+                for c in range(HUB):
+                    schur[r, c] += weight * own_to_hub[j, a, c]
     schur_inverse[:, :] = np.linalg.inv(schur)
+
+
+@njit(cache=True)
+def _zero_row(matrix, row):
+    for c in range(matrix.shape[1]):
+        if matrix[row, c] != 0.0:
+            return False
+    return True
 
 
 @njit(cache=True)
@@ -224,17 +250,30 @@ def solve(right, count, from_hub, own_inverse, own_to_hub, schur_inverse):
     hub_right = np.empty(HUB)
     for r in range(HUB):
         hub_right[r] = right[indices[r]]
-    partial = np.empty((count, ROLLER_SIZE))
     for j in range(count):
         k = RING + ROLLER_SIZE * j
-        partial[j] = own_inverse[j] @ right[k:k + ROLLER_SIZE]
-        hub_right += from_hub[j] @ partial[j]  # minus (-from_hub)
-    hub_solution = schur_inverse @ hub_right
+        for a in range(ROLLER_SIZE):
+            total = 0.0
+            for b in range(ROLLER_SIZE):
+                total += own_inverse[j, a, b] * right[k + b]
+            solution[k + a] = total  # the roller's part before the hub's
+        for r in range(HUB):
+            total = 0.0
+            for a in range(ROLLER_SIZE):
+                total += from_hub[j, r, a] * solution[k + a]
+            hub_right[r] += total  # minus (-from_hub)
     for r in range(HUB):
-        solution[indices[r]] = hub_solution[r]
+        total = 0.0
+        for c in range(HUB):
+            total += schur_inverse[r, c] * hub_right[c]
+        solution[indices[r]] = total
     for j in range(count):
         k = RING + ROLLER_SIZE * j
-        solution[k:k + ROLLER_SIZE] = partial[j] - own_to_hub[j] @ hub_solution
+        for a in range(ROLLER_SIZE):
+            total = 0.0
+            for c in range(HUB):
+                total += own_to_hub[j, a, c] * solution[indices[c]]
+            solution[k + a] -= total
     return solution
 
 
@@ -242,8 +281,8 @@ def solve(right, count, from_hub, own_inverse, own_to_hub, schur_inverse):
 def integrate(state, times, p, count, geometry, record, settled_from, rtol, atol, max_steps):
     """The Rosenbrock-W method with the closed-form Jacobian
     (:func:`models.cage_dynamics_6dof_jacobian.closed_form_jacobian`) after every accepted
-    step, each sample time hit by a step; the same samples, extremes, events, steps and
-    success as :func:`models.cage_dynamics_6dof_rhs.integrate`."""
+    step, the samples interpolated between steps (:func:`samples_through`); the same samples,
+    extremes, events, steps and success as :func:`models.cage_dynamics_6dof_rhs.integrate`."""
     samples, arc_max, end_min, rib_min, last, events = _accumulators(times, state, record)
     y = state.copy()
     n = y.size
@@ -251,36 +290,73 @@ def integrate(state, times, p, count, geometry, record, settled_from, rtol, atol
     gaps, alongs = np.empty((arc_theta.size, arc_z.size)), np.empty((arc_theta.size,
                                                                      arc_z.size))
     own, to_hub, from_hub, hub, own_inverse, own_to_hub, schur_inverse = blocks(count)
-    stages = np.empty((STAGES, n))
-    t, h, steps = times[0], FIRST_STEP, 0
+    stages, sample = np.empty((STAGES, n)), np.empty(n)
+    t, h, steps, end, index = times[0], FIRST_STEP, 0, times[-1], 1
     _copy(y, samples[0])
     _observe(y, p, count, geometry, record, t >= settled_from, arc_max, end_min, rib_min,
              last, events)
     derivative = derivatives(y, p, count, *geometry, *record, 0.0)
-    closed_form_jacobian(y, p, count, geometry, gaps, alongs, own, to_hub, from_hub, hub)
-    for index in range(1, times.size):
-        while t < times[index]:
-            if steps >= max_steps or h < SMALLEST_STEP:
-                return samples, arc_max, end_min, rib_min, events, steps, False
-            step = min(h, times[index] - t)
-            factor(1.0 / (step * GAMMA), own, to_hub, from_hub, hub, own_inverse, own_to_hub,
-                   schur_inverse)
-            for s in range(STAGES):
-                value = derivative if s == 0 else derivatives(
-                    stage_argument(y, stages, s), p, count, *geometry, *record, 0.0)
-                stages[s] = solve(stage_right_side(value, stages, s, step), count, from_hub,
-                                  own_inverse, own_to_hub, schur_inverse)
-            steps += 1
-            trial, norm = solution_and_error(y, stages, rtol, atol)
-            accepted, h = next_step(step, norm)
-            if accepted:
-                t = t + step if step < times[index] - t else times[index]
-                y = trial
-                _normalise(y, count)
-                derivative = derivatives(y, p, count, *geometry, *record, 0.0)
-                closed_form_jacobian(y, p, count, geometry, gaps, alongs, own, to_hub,
-                                     from_hub, hub)
-        _copy(y, samples[index])
-        _observe(y, p, count, geometry, record, t >= settled_from, arc_max, end_min,
-                 rib_min, last, events)
+    fresh = True  # the Jacobian is to be evaluated at y
+    while index < times.size:
+        if steps >= max_steps or h < SMALLEST_STEP:
+            return samples, arc_max, end_min, rib_min, events, steps, False
+        step = min(h, end - t)
+        if fresh:
+            closed_form_jacobian(y, p, count, geometry, gaps, alongs, own, to_hub, from_hub,
+                                 hub)
+            fresh = False
+        factor(1.0 / (step * GAMMA), own, to_hub, from_hub, hub, own_inverse, own_to_hub,
+               schur_inverse)
+        for s in range(STAGES):
+            value = derivative if s == 0 else derivatives(
+                stage_argument(y, stages, s), p, count, *geometry, *record, 0.0)
+            stages[s] = solve(stage_right_side(value, stages, s, step), count, from_hub,
+                              own_inverse, own_to_hub, schur_inverse)
+        steps += 1
+        trial, norm = solution_and_error(y, stages, rtol, atol)
+        accepted, h = next_step(step, norm)
+        if not accepted:
+            continue
+        reached = t + step if step < end - t else end
+        _normalise(trial, count)
+        slope = derivatives(trial, p, count, *geometry, *record, 0.0)
+        index = samples_through(reached, index, (y, derivative, trial, slope, t, step), times,
+                                samples, sample, p, count, geometry, record, settled_from,
+                                (arc_max, end_min, rib_min, last, events))
+        t, y, derivative, fresh = reached, trial, slope, True
     return samples, arc_max, end_min, rib_min, events, steps, True
+
+
+@njit(cache=True)
+def samples_through(reached, index, step_ends, times, samples, sample, p, count, geometry,
+                    record, settled_from, observed):
+    """Write the samples from ``times[index]`` through ``reached`` [s], the end of a step
+    (``step_ends``: its states and derivatives at both ends, its start and size [s]), each
+    by :func:`between`, and observe them (:func:`_observe`, into ``observed``); returns the
+    next sample's index."""
+    y0, f0, y1, f1, t, step = step_ends
+    arc_max, end_min, rib_min, last, events = observed
+    while index < times.size and times[index] <= reached:
+        if times[index] == reached:
+            _copy(y1, sample)
+        else:
+            between(y0, f0, y1, f1, step, (times[index] - t) / step, sample)
+            _normalise(sample, count)
+        _copy(sample, samples[index])
+        _observe(sample, p, count, geometry, record, times[index] >= settled_from, arc_max,
+                 end_min, rib_min, last, events)
+        index += 1
+    return index
+
+
+@njit(cache=True)
+def between(y0, f0, y1, f1, step, theta, out):
+    """The state a fraction ``theta`` of the way through a step of size ``step`` [s] from
+    ``y0`` to ``y1`` (their derivatives ``f0``, ``f1``), into ``out``: the cubic Hermite
+    interpolant, of the third order, as the integrators' error estimates are ([1]_, II.6)."""
+    theta2 = theta * theta
+    theta3 = theta2 * theta
+    start, end = 2.0 * theta3 - 3.0 * theta2 + 1.0, 3.0 * theta2 - 2.0 * theta3
+    start_slope, end_slope = step * (theta3 - 2.0 * theta2 + theta), step * (theta3 - theta2)
+    for i in range(y0.size):
+        out[i] = start * y0[i] + start_slope * f0[i] + end * y1[i] + end_slope * f1[i]
