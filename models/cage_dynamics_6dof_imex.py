@@ -21,13 +21,15 @@ sign of a closing speed near zero, and what ``D`` holds of it one step is wrong 
 explicit part cannot take the difference. The Rosenbrock-W method can
 (:mod:`models.cage_dynamics_6dof_implicit`), and is the default there.
 
-Since the splitting is exact whatever ``D`` is, ``D`` need not be the Jacobian of the
-step's own start: it is evaluated afresh every :data:`REFRESH` accepted steps and after a
-rejected step, and the matrix ``I - h gamma D`` factored at every step (its ``h`` is the
-step's). The steps do not stop at the output times: a sample between two steps is the
-cubic Hermite interpolant of their ends' states and derivatives, of the third order as the
-step's error estimate is ([2]_, II.6; :func:`models.cage_dynamics_6dof_implicit.between`), so
-the output's interval does not shorten the steps.
+``D`` is evaluated at each accepted step's end (a rejected step is tried again with the
+same), and ``I - h gamma D`` factored at every step. Keeping ``D`` over several steps,
+which the exact splitting allows, saves Jacobians but costs steps where the stiff terms
+change fast (a thin pocket film touching dry, a light load: a third more steps and five
+times the rejections, benchmarks/RESULTS.md). The steps do not stop at the output times:
+a sample between two steps is the cubic Hermite interpolant of their ends' states and
+derivatives, of the third order as the step's error estimate is ([2]_, II.6;
+:func:`models.cage_dynamics_6dof_implicit.between`), so the output's interval does not
+shorten the steps.
 
 References
 ----------
@@ -50,15 +52,11 @@ from .compiled_cache import njit
 from .dormand_prince import FIRST_STEP, SMALLEST_STEP
 from .rosenbrock import next_step
 
-#: The accepted steps over which the implicit part's Jacobian is kept.
-REFRESH = 4
-
 
 @njit(cache=True)
 def integrate(state, times, p, count, geometry, record, settled_from, rtol, atol, max_steps):
-    """The additive Runge-Kutta method, the implicit part's Jacobian refreshed every
-    :data:`REFRESH` accepted steps and after a rejected one, the samples interpolated between
-    steps (:func:`models.cage_dynamics_6dof_implicit.samples_through`); the same samples,
+    """The additive Runge-Kutta method, the implicit part's Jacobian at each step's start,
+    the samples interpolated between steps (:func:`models.cage_dynamics_6dof_implicit.samples_through`); the same samples,
     extremes, events, steps and success as :func:`models.cage_dynamics_6dof_rhs.integrate`."""
     samples, arc_max, end_min, rib_min, last, events = _accumulators(times, state, record)
     y = state.copy()
@@ -70,7 +68,7 @@ def integrate(state, times, p, count, geometry, record, settled_from, rtol, atol
     rates = np.empty((STAGES, n))  # f at each stage
     implicit_rates = np.empty((STAGES, n))  # D z at each stage
     right, sample = np.empty(n), np.empty(n)
-    t, h, steps, end, index, since = times[0], FIRST_STEP, 0, times[-1], 1, REFRESH
+    t, h, steps, end, index, fresh = times[0], FIRST_STEP, 0, times[-1], 1, True
     _copy(y, samples[0])
     _observe(y, p, count, geometry, record, t >= settled_from, arc_max, end_min, rib_min,
              last, events)
@@ -80,10 +78,10 @@ def integrate(state, times, p, count, geometry, record, settled_from, rtol, atol
         if steps >= max_steps or h < SMALLEST_STEP:
             return samples, arc_max, end_min, rib_min, events, steps, False
         step = min(h, end - t)
-        if since >= REFRESH:
+        if fresh:  # the Jacobian at y
             closed_form_jacobian(y, p, count, geometry, gaps, alongs, own, to_hub, from_hub,
                                  hub)
-            since = 0
+            fresh = False
         shift = 1.0 / (step * GAMMA)
         factor(shift, own, to_hub, from_hub, hub, own_inverse, own_to_hub, schur_inverse)
         for s in range(1, STAGES):
@@ -102,8 +100,6 @@ def integrate(state, times, p, count, geometry, record, settled_from, rtol, atol
         trial, norm = _solution_and_error(y, rates, step, rtol, atol)
         accepted, h = next_step(step, norm, 4)
         if not accepted:
-            if since > 0:
-                since = REFRESH  # retried with the Jacobian of the step's start
             continue
         reached = t + step if step < end - t else end
         _normalise(trial, count)
@@ -111,7 +107,7 @@ def integrate(state, times, p, count, geometry, record, settled_from, rtol, atol
         index = samples_through(reached, index, (y, rates[0], trial, slope, t, step),
                                 times, samples, sample, p, count, geometry, record,
                                 settled_from, (arc_max, end_min, rib_min, last, events))
-        t, y, since = reached, trial, since + 1
+        t, y, fresh = reached, trial, True
         _copy(slope, rates[0])
     return samples, arc_max, end_min, rib_min, events, steps, True
 
