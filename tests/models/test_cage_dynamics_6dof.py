@@ -746,9 +746,9 @@ def test_the_implicit_integrators_block_solution_is_the_dense_one(jacobian_at):
 def test_the_implicit_and_the_explicit_integrators_agree(method):
     # The same equations (the paper's shear-only end films, 800 N, 12000 r/min) over 2 ms by
     # the adaptive methods at a tolerance of 1e-7 (the Rosenbrock-W method working to a
-    # tenth of it). Measured: mean cage slip 2.058504 % (Dormand-Prince), 2.058339 %
-    # (Rosenbrock-W), 2.058490 % (additive); the samples' largest differences from
-    # Dormand-Prince's 2.0e-6 and 8.9e-7 in the cage slip, 1.8e-6 and 2.2e-7 in the rollers'
+    # tenth of it). Measured: mean cage slip 2.058504 % (Dormand-Prince), 2.058337 %
+    # (Rosenbrock-W), 2.058491 % (additive); the samples' largest differences from
+    # Dormand-Prince's 2.0e-6 and 8.6e-7 in the cage slip, 1.9e-6 and 2.4e-7 in the rollers'
     # (fractions, not percent).
     runs = {name: simulate(duration=2e-3, output_interval=1e-4, relative_tolerance=1e-7,
                            integrator=name)[0] for name in ("adaptive", method)}
