@@ -576,8 +576,8 @@ def test_a_seeded_skew_grows_ten_times_slower_with_the_end_films_pressure():
     # further. The film's squeeze resists the leaning faces' motion; its wedge, the spinning
     # face's drag of oil into the leaning film, pushes across the lean, as a journal
     # bearing's film pushes across the journal's displacement, and keeps a slow growth.
-    # Measured from 1e-6 rad, Dormand-Prince at 1e-6: shear only 3.1e-5 rad at 20 ms,
-    # +293/s over 10-20 ms. With the pressure (Rosenbrock-W at 1e-5, which works to 1e-6,
+    # Measured from 1e-6 rad, the additive method at 1e-6: shear only 3.0e-5 rad at 20 ms,
+    # +291/s over 10-20 ms (Dormand-Prince at 1e-6: 3.1e-5 rad, +293/s). With the pressure (Rosenbrock-W at 1e-5, which works to 1e-6,
     # the same to two digits working to 1e-7 and 1e-8): down to 3.5e-7 rad at 20-25 ms,
     # then up again, 7.7e-7 at 60 ms, +24/s over 30-60 ms. The squeeze alone (the wedge
     # taken out of the code): 3 to 4e-8 rad from 20 ms on, +4/s.
@@ -747,8 +747,8 @@ def test_the_implicit_and_the_explicit_integrators_agree(method):
     # The same equations (the paper's shear-only end films, 800 N, 12000 r/min) over 2 ms by
     # the adaptive methods at a tolerance of 1e-7 (the Rosenbrock-W method working to a
     # tenth of it). Measured: mean cage slip 2.058504 % (Dormand-Prince), 2.058337 %
-    # (Rosenbrock-W), 2.058491 % (additive); the samples' largest differences from
-    # Dormand-Prince's 2.0e-6 and 8.6e-7 in the cage slip, 1.9e-6 and 2.4e-7 in the rollers'
+    # (Rosenbrock-W), 2.058490 % (additive); the samples' largest differences from
+    # Dormand-Prince's 2.0e-6 and 8.8e-7 in the cage slip, 1.9e-6 and 2.2e-7 in the rollers'
     # (fractions, not percent).
     runs = {name: simulate(duration=2e-3, output_interval=1e-4, relative_tolerance=1e-7,
                            integrator=name)[0] for name in ("adaptive", method)}
