@@ -56,8 +56,9 @@ from .rosenbrock import next_step
 @njit(cache=True)
 def integrate(state, times, p, count, geometry, record, settled_from, rtol, atol, max_steps):
     """The additive Runge-Kutta method, the implicit part's Jacobian at each step's start,
-    the samples interpolated between steps (:func:`models.cage_dynamics_6dof_implicit.samples_through`); the same samples,
-    extremes, events, steps and success as :func:`models.cage_dynamics_6dof_rhs.integrate`."""
+    the samples interpolated between steps
+    (:func:`models.cage_dynamics_6dof_implicit.samples_through`); the same samples, extremes,
+    events, steps and success as :func:`models.cage_dynamics_6dof_rhs.integrate`."""
     samples, arc_max, end_min, rib_min, last, events = _accumulators(times, state, record)
     y = state.copy()
     n = y.size

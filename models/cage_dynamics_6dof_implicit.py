@@ -353,7 +353,13 @@ def samples_through(reached, index, step_ends, times, samples, sample, p, count,
 def between(y0, f0, y1, f1, step, theta, out):
     """The state a fraction ``theta`` of the way through a step of size ``step`` [s] from
     ``y0`` to ``y1`` (their derivatives ``f0``, ``f1``), into ``out``: the cubic Hermite
-    interpolant, of the third order, as the integrators' error estimates are ([1]_, II.6)."""
+    interpolant, of the third order, as the integrators' error estimates are.
+
+    References
+    ----------
+    .. [1] E. Hairer, S. P. Norsett and G. Wanner, Solving Ordinary Differential Equations I,
+       2nd ed., Springer (1993), doi:10.1007/978-3-540-78862-1, II.6 (dense output).
+    """
     theta2 = theta * theta
     theta3 = theta2 * theta
     start, end = 2.0 * theta3 - 3.0 * theta2 + 1.0, 3.0 * theta2 - 2.0 * theta3

@@ -577,10 +577,11 @@ def test_a_seeded_skew_grows_ten_times_slower_with_the_end_films_pressure():
     # face's drag of oil into the leaning film, pushes across the lean, as a journal
     # bearing's film pushes across the journal's displacement, and keeps a slow growth.
     # Measured from 1e-6 rad, the additive method at 1e-6: shear only 3.0e-5 rad at 20 ms,
-    # +291/s over 10-20 ms (Dormand-Prince at 1e-6: 3.1e-5 rad, +293/s). With the pressure (Rosenbrock-W at 1e-5, which works to 1e-6,
-    # the same to two digits working to 1e-7 and 1e-8): down to 3.5e-7 rad at 20-25 ms,
-    # then up again, 7.7e-7 at 60 ms, +24/s over 30-60 ms. The squeeze alone (the wedge
-    # taken out of the code): 3 to 4e-8 rad from 20 ms on, +4/s.
+    # +291/s over 10-20 ms (Dormand-Prince at 1e-6: 3.1e-5 rad, +293/s). With the pressure
+    # (Rosenbrock-W at 1e-5, which works to 1e-6, the same to two digits working to 1e-7
+    # and 1e-8): down to 3.5e-7 rad at 20-25 ms, then up again, 7.7e-7 at 60 ms, +24/s over
+    # 30-60 ms. The squeeze alone (the wedge taken out of the code): 3 to 4e-8 rad from 20 ms
+    # on, +4/s.
     rms, growth = seeded_skew_growth("shear", "imex", 0.02, 0.01)
     assert rms[0] == pytest.approx(1e-6, rel=1e-9)  # every roller's, as given
     assert rms[-1] > 10 * rms[0] and 150 < growth < 450  # [1/s]
