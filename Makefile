@@ -11,7 +11,7 @@ ifneq ($(FILES),$(shell cat $(VENV)/.files 2>/dev/null))
 .PHONY: $(STAMP)
 endif
 
-.PHONY: test test-slow reproduce docs bench clean
+.PHONY: test test-slow reproduce studies-on-cluster studies-in-process docs bench clean
 
 # uv installs what pip would, in a fraction of the time (it fetches and unpacks in parallel);
 # where it cannot be had or cannot reach the index, pip does the same install.
@@ -56,9 +56,21 @@ docs: $(VENV)/.docs-installed
 	$(VENV)/bin/bearing-sweep report
 	$(PYTHON) -m sphinx -W --keep-going -q -b html docs docs/_build/html
 
+# The studies of the spatial cage model keep both cores busy with their sweeps; the others
+# compute in their own process meanwhile (--workers 0), in the time the cluster leaves.
+CLUSTER_STUDIES := cage_dynamics_3d cage_slip
+OTHER_STUDIES := $(filter-out $(CLUSTER_STUDIES),\
+	$(patsubst studies/%/figures.py,%,$(sort $(wildcard studies/*/figures.py))))
+
 reproduce: $(STAMP)
-	$(VENV)/bin/bearing-sweep study all
+	$(MAKE) --no-print-directory -j2 studies-on-cluster studies-in-process
 	$(VENV)/bin/bearing-sweep report
+
+studies-on-cluster: $(STAMP)
+	$(VENV)/bin/bearing-sweep study $(CLUSTER_STUDIES)
+
+studies-in-process: $(STAMP)
+	$(VENV)/bin/bearing-sweep study --workers 0 $(OTHER_STUDIES)
 
 bench: $(STAMP)
 	$(PYTHON) benchmarks/run_all.py

@@ -76,7 +76,8 @@ def _parser() -> argparse.ArgumentParser:
 
     run_study = commands.add_parser("study", help="run a paper's sweeps (missing or stale) and "
                                     "draw its figures")
-    run_study.add_argument("name", help="a study name, or 'all'")
+    run_study.add_argument("names", nargs="+", metavar="NAME",
+                           help="a study's name, several, or 'all'")
     run_study.add_argument("--force", action="store_true", help="rerun every sweep")
     cluster_options(run_study)
 
@@ -286,7 +287,7 @@ def main(argv=None) -> int:
             from . import study
 
             api.check_cluster_arguments(args.workers, args.scheduler or None, named=_option)
-            chosen = study.select(args.studies or study.default_studies_folder(), args.name)
+            chosen = study.select(args.studies or study.default_studies_folder(), args.names)
             study.check_folders(chosen, args.results, args.figures)
             for one in chosen:  # every result it may write, before any computing
                 for definition in one.definitions:

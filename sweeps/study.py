@@ -86,21 +86,25 @@ def find_studies(folder: Path) -> dict[str, Study]:
             for p in sorted(Path(folder).glob("*/figures.py"))}
 
 
-def select(folder: Path, name: str) -> list[Study]:
-    """The study ``name`` of ``folder`` (``"all"``: each of them); a :class:`SpecError` for
-    a folder that is none or holds no study, an unknown name, a study without sweeps."""
+def select(folder: Path, names) -> list[Study]:
+    """The studies ``names`` of ``folder`` (a name or a list of them, in their order; ``"all"``:
+    each of them); a :class:`SpecError` for a folder that is none or holds no study, an
+    unknown name, a study without sweeps."""
     folder = Path(folder)
+    names = [names] if isinstance(names, str) else list(names)
     if not folder.is_dir():
         raise SpecError(f"{folder}: {'is not a' if os.path.lexists(folder) else 'no such'} "
                         f"folder of studies (--studies: {LAYOUT})")
     studies = find_studies(folder)
     if not studies:
         raise SpecError(f"{folder}: holds no study (--studies: {LAYOUT})")
-    if name != "all" and name not in studies:
-        raise SpecError(f"study {name!r}: no such study in {folder}"
-                        + suggestion(name, studies) + " (studies: "
-                        + ", ".join(sorted(studies) + ["all"]) + ")")
-    chosen = list(studies.values()) if name == "all" else [studies[name]]
+    for name in names:
+        if name != "all" and name not in studies:
+            raise SpecError(f"study {name!r}: no such study in {folder}"
+                            + suggestion(name, studies) + " (studies: "
+                            + ", ".join(sorted(studies) + ["all"]) + ")")
+    chosen = list(studies.values()) if "all" in names else [studies[n] for n in
+                                                            dict.fromkeys(names)]
     for study in chosen:
         if not study.definitions:
             raise SpecError(f"{study.folder}: study {study.name} has no sweep definitions "

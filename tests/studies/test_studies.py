@@ -2,6 +2,7 @@
 import contextlib
 import re
 import shutil
+import subprocess
 from pathlib import Path
 
 import cf_units
@@ -14,7 +15,8 @@ from bearing_sweep import units
 from bearing_sweep.figure_checks import figure_problems
 from bearing_sweep.plotting import at, conditions, in_unit
 from bearing_sweep.stores import open_result
-from bearing_sweep.study import find_studies
+from bearing_sweep.spec import SpecError
+from bearing_sweep.study import find_studies, select
 
 STUDIES = Path(__file__).resolve().parents[2] / "studies"
 
@@ -157,6 +159,26 @@ def kept_figures(saved: bool = True):
 def _folders(folder: Path) -> list[str]:
     return ["--studies", str(folder / "studies"), "--results", str(folder / "results"),
             "--figures", str(folder / "figures")]
+
+
+def test_several_studies_are_selected_in_their_order_once_each():
+    assert [s.name for s in select(STUDIES, ["runout", "life", "runout"])] == ["runout", "life"]
+    assert [s.name for s in select(STUDIES, "all")] == sorted(find_studies(STUDIES))
+    assert [s.name for s in select(STUDIES, ["life", "all"])] == sorted(find_studies(STUDIES))
+    with pytest.raises(SpecError, match="study 'lief': no such study .*did you mean 'life'"):
+        select(STUDIES, ["runout", "lief"])
+
+
+def test_make_reproduce_runs_every_study_once():
+    # its two groups of studies run side by side: each study in one of them
+    done = subprocess.run(["make", "-n", "--no-print-directory", "studies-on-cluster",
+                           "studies-in-process"], cwd=STUDIES.parent, capture_output=True,
+                          text=True)
+    assert done.returncode == 0, done.stderr
+    commands = [line.split(" study ", 1)[1].split() for line in done.stdout.splitlines()
+                if "bearing-sweep study " in line]
+    named = [word for words in commands for word in words if word not in ("--workers", "0")]
+    assert len(commands) == 2 and sorted(named) == sorted(find_studies(STUDIES))
 
 
 def test_every_reduction_applies_to_a_study_definition():
