@@ -564,7 +564,7 @@ MODELS = [Model(
             "cage with six degrees of freedom, Winkler pocket, end-face and rib contacts, cage "
             "mass eccentricity and ring misalignment (paper 002's own model).",
     reference="Paper 002, sections 1.3-1.5 (eqs. 1-26), eqs. 27-28, section 3",
-    version="10",
+    version="11",
     inputs=tuple(_PLANAR[name] for name in STEADY_INPUTS if name != "branch") + (
         _PLANAR["pocket_film_fill"],
         Input("end_film_thickness", "mm", "axial play of a roller between the ribs (Table 2: "

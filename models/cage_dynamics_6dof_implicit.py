@@ -41,7 +41,7 @@ from .cage_dynamics_6dof_rhs import (CAGE_SIZE, DRAG, END_FACES, END_PRESSURE, E
                                      RACEWAYS, RING, ROLLER_SIZE, _accumulators, _copy,
                                      _normalise, _observe, derivatives, rotation)
 from .cage_dynamics_6dof_jacobian import closed_form_jacobian
-from .compiled_cache import njit
+from .compiled_cache import REASSOCIATED, njit
 from .dormand_prince import FIRST_STEP, SMALLEST_STEP
 from .rosenbrock import (GAMMA, STAGES, next_step, solution_and_error, stage_argument,
                          stage_right_side)
@@ -49,7 +49,7 @@ from .rosenbrock import (GAMMA, STAGES, next_step, solution_and_error, stage_arg
 _RELATIVE_STEP = 1.4901161193847656e-08  # sqrt of the double's epsilon
 
 
-@njit(cache=True)
+@njit(cache=True, fastmath=REASSOCIATED)
 def hub_indices(count):
     """The hub's entries in the state: the inner ring's 4, then the cage's 13."""
     first_cage = RING + ROLLER_SIZE * count
@@ -61,7 +61,7 @@ def hub_indices(count):
     return indices
 
 
-@njit(cache=True)
+@njit(cache=True, fastmath=REASSOCIATED)
 def blocks(count):
     """The Jacobian's blocks for ``count`` rollers (see :func:`jacobian`) and the factors
     :func:`factor` writes, zeroed."""
@@ -87,7 +87,7 @@ def dense(own, to_hub, from_hub, hub):
     return matrix
 
 
-@njit(cache=True)
+@njit(cache=True, fastmath=REASSOCIATED)
 def switched(p, raceways, pockets, faces, ribs, drag):
     """``p`` with its terms switched, each 1.0 (on) or 0.0 (off): the raceway contacts, the
     pockets' arcs, the end terms against the pocket end faces and against the ribs, the
@@ -99,7 +99,7 @@ def switched(p, raceways, pockets, faces, ribs, drag):
     return q
 
 
-@njit(cache=True)
+@njit(cache=True, fastmath=REASSOCIATED)
 def _roller_columns(y, base, shares, p, count, geometry, record, scale, column):
     """Forward differences of :func:`derivatives` (with ``p``; ``base`` and ``shares`` its
     value and the rollers' shares at ``y``) for one component ``column`` of every roller at
@@ -119,7 +119,7 @@ def _roller_columns(y, base, shares, p, count, geometry, record, scale, column):
     return change, share_change
 
 
-@njit(cache=True)
+@njit(cache=True, fastmath=REASSOCIATED)
 def _hub_rows(share, turn, p, rows):
     """The hub's rows of a roller's column from its share of the hub's forces: the ring's and
     the cage's accelerations, and the cage's Euler equations in its body frame."""
@@ -131,7 +131,7 @@ def _hub_rows(share, turn, p, rows):
         rows[RING + 10 + a] = body / (p[J_CAGE_Z] if a == 2 else p[J_CAGE_X])
 
 
-@njit(cache=True)
+@njit(cache=True, fastmath=REASSOCIATED)
 def jacobian(y, p, count, geometry, record, scale, own, to_hub, from_hub, hub):
     """The Jacobian of :func:`derivatives`' stiff terms at ``y``, by forward differences of
     steps ``sqrt(eps) max(|y|, scale)``, into the blocks ``own`` ``(count, 12, 12)`` (a
@@ -199,7 +199,7 @@ def jacobian(y, p, count, geometry, record, scale, own, to_hub, from_hub, hub):
             hub[r, column] = change[indices[r]]
 
 
-@njit(cache=True)
+@njit(cache=True, fastmath=REASSOCIATED)
 def factor(diagonal, own, to_hub, from_hub, hub, own_inverse, own_to_hub, schur_inverse):
     """The blocks of ``(diagonal I - J)^-1`` the stages' solutions need (``diagonal`` =
     ``1 / (h gamma)``): each roller's block inverted, its product with the roller's hub
@@ -215,7 +215,7 @@ def factor(diagonal, own, to_hub, from_hub, hub, own_inverse, own_to_hub, schur_
             for c in range(ROLLER_SIZE):
                 block[r, c] = -own[j, r, c]
             block[r, r] += diagonal
-        own_inverse[j] = np.linalg.inv(block)
+        _invert(block, own_inverse[j])
         own_to_hub[j] = 0.0
         for r in range(ROLLER_SIZE):
             if _zero_row(to_hub[j], r):
@@ -231,10 +231,42 @@ def factor(diagonal, own, to_hub, from_hub, hub, own_inverse, own_to_hub, schur_
                 weight = from_hub[j, r, a]
                 for c in range(HUB):
                     schur[r, c] += weight * own_to_hub[j, a, c]
-    schur_inverse[:, :] = np.linalg.inv(schur)
+    _invert(schur, schur_inverse)
 
 
-@njit(cache=True)
+@njit(cache=True, fastmath=REASSOCIATED)
+def _invert(matrix, inverse):
+    """``matrix``'s inverse into ``inverse`` by Gauss-Jordan elimination with partial
+    pivoting; ``matrix`` is overwritten. In place and without LAPACK's call, whose overhead
+    is most of the cost at these sizes (12 and 17 rows); a singular matrix gives infinities,
+    and the step they enter is rejected."""
+    n = matrix.shape[0]
+    inverse[:, :] = 0.0
+    for r in range(n):
+        inverse[r, r] = 1.0
+    for column in range(n):
+        pivot = column
+        for r in range(column + 1, n):
+            if abs(matrix[r, column]) > abs(matrix[pivot, column]):
+                pivot = r
+        if pivot != column:
+            for c in range(n):
+                matrix[column, c], matrix[pivot, c] = matrix[pivot, c], matrix[column, c]
+                inverse[column, c], inverse[pivot, c] = inverse[pivot, c], inverse[column, c]
+        scale = 1.0 / matrix[column, column]
+        for c in range(n):
+            matrix[column, c] *= scale
+            inverse[column, c] *= scale
+        for r in range(n):
+            weight = matrix[r, column]
+            if r == column or weight == 0.0:
+                continue
+            for c in range(n):
+                matrix[r, c] -= weight * matrix[column, c]
+                inverse[r, c] -= weight * inverse[column, c]
+
+
+@njit(cache=True, fastmath=REASSOCIATED)
 def _zero_row(matrix, row):
     for c in range(matrix.shape[1]):
         if matrix[row, c] != 0.0:
@@ -242,7 +274,7 @@ def _zero_row(matrix, row):
     return True
 
 
-@njit(cache=True)
+@njit(cache=True, fastmath=REASSOCIATED)
 def solve(right, count, from_hub, own_inverse, own_to_hub, schur_inverse):
     """``u`` of ``(diagonal I - J) u = right`` from :func:`factor`'s blocks."""
     indices = hub_indices(count)
@@ -277,7 +309,7 @@ def solve(right, count, from_hub, own_inverse, own_to_hub, schur_inverse):
     return solution
 
 
-@njit(cache=True)
+@njit(cache=True, fastmath=REASSOCIATED)
 def integrate(state, times, p, count, geometry, record, settled_from, rtol, atol, max_steps):
     """The Rosenbrock-W method with the closed-form Jacobian
     (:func:`models.cage_dynamics_6dof_jacobian.closed_form_jacobian`) after every accepted
@@ -327,7 +359,7 @@ def integrate(state, times, p, count, geometry, record, settled_from, rtol, atol
     return samples, arc_max, end_min, rib_min, events, steps, True
 
 
-@njit(cache=True)
+@njit(cache=True, fastmath=REASSOCIATED)
 def samples_through(reached, index, step_ends, times, samples, sample, p, count, geometry,
                     record, settled_from, observed):
     """Write the samples from ``times[index]`` through ``reached`` [s], the end of a step
@@ -349,7 +381,7 @@ def samples_through(reached, index, step_ends, times, samples, sample, p, count,
     return index
 
 
-@njit(cache=True)
+@njit(cache=True, fastmath=REASSOCIATED)
 def between(y0, f0, y1, f1, step, theta, out):
     """The state a fraction ``theta`` of the way through a step of size ``step`` [s] from
     ``y0`` to ``y1`` (their derivatives ``f0``, ``f1``), into ``out``: the cubic Hermite

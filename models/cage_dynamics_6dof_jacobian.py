@@ -39,7 +39,7 @@ from .cage_dynamics_6dof_rhs import (ARC_AREA, BED_POCKET, END_FACES, END_PRESSU
                                      _vector, arc_element, arc_slope, arc_wall, cage_frame,
                                      end_faces, pocket_frame, pocket_gaps, pocket_motion,
                                      raceway_slice, ring_axis, roller_end)
-from .compiled_cache import njit
+from .compiled_cache import REASSOCIATED, njit
 from .contact_laws import (PALMGREN_EXPONENT, palmgren_slice, traction_coefficient,
                            traction_slope)
 
@@ -50,13 +50,13 @@ _C, _V, _THETA, _OMEGA, _S, _W, _CAGE_OMEGA = 0, 3, 6, 9, 12, 15, 18
 _COLUMNS = 21
 
 
-@njit(cache=True)
+@njit(cache=True, fastmath=REASSOCIATED)
 def _put(vector, into, start, scale):
     for a in range(3):
         into[start + a] = scale * vector[a]
 
 
-@njit(cache=True)
+@njit(cache=True, fastmath=REASSOCIATED)
 def _cross_matrix(v):
     """``[v x]``: the matrix of ``w -> v x w``."""
     matrix = np.empty((3, 3))
@@ -64,7 +64,7 @@ def _cross_matrix(v):
     return matrix
 
 
-@njit(cache=True)
+@njit(cache=True, fastmath=REASSOCIATED)
 def _fill_cross_matrix(v, matrix):
     """``[v x]`` into ``matrix``."""
     matrix[0, 0], matrix[0, 1], matrix[0, 2] = 0.0, -v[2], v[1]
@@ -72,7 +72,7 @@ def _fill_cross_matrix(v, matrix):
     matrix[2, 0], matrix[2, 1], matrix[2, 2] = -v[1], v[0], 0.0
 
 
-@njit(cache=True)
+@njit(cache=True, fastmath=REASSOCIATED)
 def _roller_wrench_gradient(y, p, j, count, geometry, frame, gaps, alongs, wrench, gradient,
                             d_closing, d_spin, d_gap, d_slope):
     """The pushes of pocket ``j``'s elements on its roller (``wrench``: force [N], moment
@@ -173,7 +173,7 @@ def _roller_wrench_gradient(y, p, j, count, geometry, frame, gaps, alongs, wrenc
     return centre, velocity, axis, omega
 
 
-@njit(cache=True)
+@njit(cache=True, fastmath=REASSOCIATED)
 def _raceway_gradient(p, slice_z, centre, velocity, axis, omega, ring_centre, ring_velocity,
                       z_ring, ring_spin, gradient, ring_gradient):
     """The gradient of a roller's raceway contacts (eqs. 18-21): of the force on it and their
@@ -263,7 +263,7 @@ def _raceway_gradient(p, slice_z, centre, velocity, axis, omega, ring_centre, ri
                         ring_gradient[r, c] += column[r]
 
 
-@njit(cache=True)
+@njit(cache=True, fastmath=REASSOCIATED)
 def closed_form_jacobian(y, p, count, geometry, gaps, alongs, own, to_hub, from_hub, hub):
     """The Jacobian of the stiff terms of :func:`models.cage_dynamics_6dof_rhs.derivatives`
     at ``y`` in closed form (the module's text), with the kinematics that couple positions
@@ -366,7 +366,7 @@ def closed_form_jacobian(y, p, count, geometry, gaps, alongs, own, to_hub, from_
         [[-x, -yq, -z], [w, -z, yq], [z, w, -x], [-yq, x, w]])
 
 
-@njit(cache=True)
+@njit(cache=True, fastmath=REASSOCIATED)
 def _squeeze_gradient(roller, face, body, face_cos, face_sin, geometry, p, work, gradient,
                       ring_rows, velocity_column, rate_column):
     """Add to ``gradient`` (the force on the roller and its moment about its centre, 6 rows)
@@ -417,7 +417,7 @@ def _squeeze_gradient(roller, face, body, face_cos, face_sin, geometry, p, work,
                 ring_rows[a, velocity_column + b] += by_velocity
 
 
-@njit(cache=True)
+@njit(cache=True, fastmath=REASSOCIATED)
 def _add_raceways(j, gradient, ring_gradient, axis, inverse, p, own, to_hub, from_hub, hub):
     """:func:`_raceway_gradient`'s into the blocks: the roller's accelerations (``inverse``
     its inertia's inverse) and the ring's, over the roller's state and the ring's x, y and
@@ -456,7 +456,7 @@ def _add_raceways(j, gradient, ring_gradient, axis, inverse, p, own, to_hub, fro
                 hub[2 + r, column - ROLLER_SIZE] += by_state[6 + r] / p[M_RING]
 
 
-@njit(cache=True)
+@njit(cache=True, fastmath=REASSOCIATED)
 def _outputs(gradient, wrench, offset, rows, forces):
     """The force and moment on the roller and on the cage (about its mass centre: ``-F``,
     ``-(M + offset x F)``, ``offset`` the roller's centre from it), and their gradients."""
@@ -470,7 +470,7 @@ def _outputs(gradient, wrench, offset, rows, forces):
             values[6 + a], values[9 + a] = -column[a], -(column[3 + a] + arm[a])
 
 
-@njit(cache=True)
+@njit(cache=True, fastmath=REASSOCIATED)
 def _cage_turned(rows, forces, centre, velocity, omega, mass_centre, cage_velocity, turned):
     """The outputs' derivatives over a small turn of the cage about its mass centre
     (``turned``, 12 x 3): the same as turning the roller back, the outputs turning with the
@@ -492,7 +492,7 @@ def _cage_turned(rows, forces, centre, velocity, omega, mass_centre, cage_veloci
                                  + rows[r, 3 * block + 2] * moved[block][2])
 
 
-@njit(cache=True)
+@njit(cache=True, fastmath=REASSOCIATED)
 def _by_state(rows, turned, axis, turn, to_quaternion, by_state):
     """The outputs' derivatives over the state's entries (``by_state``, 12 x 29): the
     roller's 12 (its axis' components from a small turn, ``d theta = a x d a``), then the

@@ -30,6 +30,12 @@ import numba
 from numba import njit  # noqa: F401  (the models' njit: the locator registered below)
 from numba.core import caching
 
+#: numba's floating-point flags for the spatial cage model's code, whose sums run over
+#: hundreds of film elements: sums reassociated (and so vectorised), multiply-adds fused,
+#: divisions by a reciprocal, the sign of zero ignored; not "no NaN" nor "no infinity", as its
+#: gaps and its unconverged steps are written with them. Results move at rounding.
+REASSOCIATED = {"reassoc", "contract", "arcp", "nsz"}
+
 #: How many versions' folders are kept, and for how long at least [s].
 KEPT_VERSIONS, KEPT_SECONDS = 4, 86400.0
 _SOURCE = Path(__file__).parent
