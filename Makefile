@@ -14,10 +14,8 @@ endif
 .PHONY: test test-slow reproduce studies-on-cluster studies-in-process docs bench clean
 
 # uv installs what pip would, in a fraction of the time (it fetches and unpacks in parallel);
-# where it cannot be had or cannot reach the index, pip does the same install. It leaves the
-# bytecode to Python, which writes a module's on its first import: the modules a run uses,
-# not every installed one, as pip's way (--compile-bytecode) does (benchmarks/RESULTS.md).
-INSTALL = $(VENV)/bin/uv pip install --quiet --python $(PYTHON) \
+# where it cannot be had or cannot reach the index, pip does the same install.
+INSTALL = $(VENV)/bin/uv pip install --quiet --python $(PYTHON) --compile-bytecode \
 	--config-settings editable_mode=strict
 PIP_INSTALL = $(PYTHON) -m pip install --quiet --disable-pip-version-check \
 	--config-settings editable_mode=strict
