@@ -11,7 +11,7 @@ ifneq ($(FILES),$(shell cat $(VENV)/.files 2>/dev/null))
 .PHONY: $(STAMP)
 endif
 
-.PHONY: test test-slow reproduce studies-on-cluster studies-in-process docs bench clean
+.PHONY: test test-slow reproduce studies studies-on-cluster studies-in-process docs bench clean
 
 # uv installs what pip would, in a fraction of the time (it fetches and unpacks in parallel);
 # where it cannot be had or cannot reach the index, pip does the same install.
@@ -51,8 +51,7 @@ $(VENV)/.docs-installed: pyproject.toml | $(STAMP)
 
 # `make docs`: the studies' figures and report (what is missing or stale), the pages written
 # from the code, every example run, then the site in docs/_build/html; a warning is an error.
-docs: $(VENV)/.docs-installed
-	$(VENV)/bin/bearing-sweep study all
+docs: $(VENV)/.docs-installed studies
 	$(VENV)/bin/bearing-sweep report
 	$(PYTHON) -m sphinx -W --keep-going -q -b html docs docs/_build/html
 
@@ -62,8 +61,10 @@ CLUSTER_STUDIES := cage_dynamics_3d cage_slip
 OTHER_STUDIES := $(filter-out $(CLUSTER_STUDIES),\
 	$(patsubst studies/%/figures.py,%,$(sort $(wildcard studies/*/figures.py))))
 
-reproduce: $(STAMP)
+studies: $(STAMP)
 	$(MAKE) --no-print-directory -j2 studies-on-cluster studies-in-process
+
+reproduce: studies
 	$(VENV)/bin/bearing-sweep report
 
 studies-on-cluster: $(STAMP)
