@@ -234,12 +234,13 @@ def factor(diagonal, own, to_hub, from_hub, hub, own_inverse, own_to_hub, schur_
     _invert(schur, schur_inverse)
 
 
-@njit(cache=True, fastmath=REASSOCIATED)
+@njit(cache=True, fastmath=REASSOCIATED, error_model="numpy")  # 1 / 0 is inf, not an error
 def _invert(matrix, inverse):
     """``matrix``'s inverse into ``inverse`` by Gauss-Jordan elimination with partial
     pivoting; ``matrix`` is overwritten. In place and without LAPACK's call, whose overhead
-    is most of the cost at these sizes (12 and 17 rows); a singular matrix gives infinities,
-    and the step they enter is rejected."""
+    is most of the cost at these sizes (12 and 17 rows). A pivot of exactly zero gives
+    infinities, and the step they enter is rejected; a nearly singular matrix gives large
+    entries, as LAPACK's inverse does."""
     n = matrix.shape[0]
     inverse[:, :] = 0.0
     for r in range(n):

@@ -763,6 +763,22 @@ def test_the_implicit_integrators_block_solution_is_the_dense_one(jacobian_at):
                                atol=1e-12 * np.abs(np.linalg.solve(matrix, right)).max())
 
 
+@pytest.mark.parametrize("size", [12, 17])
+def test_a_block_is_inverted_in_place_as_numpy_inverts_it(size):
+    # a zero on the diagonal needs the rows swapped
+    matrix = np.random.default_rng(size).normal(size=(size, size))
+    matrix[0, 0] = 0.0
+    inverse = np.empty_like(matrix)
+    implicit._invert(matrix.copy(), inverse)
+    np.testing.assert_allclose(inverse @ matrix, np.eye(size), atol=1e-11)
+    np.testing.assert_allclose(inverse, np.linalg.inv(matrix), rtol=1e-9,
+                               atol=1e-12 * np.abs(inverse).max())
+    singular = matrix.copy()
+    singular[3] = 0.0  # a step with such a matrix: its solution not finite, the step rejected
+    implicit._invert(singular, inverse)
+    assert not np.isfinite(inverse).all()
+
+
 @pytest.mark.parametrize("method", ["rosenbrock", "imex"])
 def test_the_implicit_and_the_explicit_integrators_agree(method):
     # The same equations (the paper's shear-only end films, 800 N, 12000 r/min) over 2 ms by
