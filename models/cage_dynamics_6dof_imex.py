@@ -48,12 +48,12 @@ from .cage_dynamics_6dof_implicit import blocks, factor, samples_through, solve
 from .cage_dynamics_6dof_jacobian import closed_form_jacobian
 from .cage_dynamics_6dof_rhs import (_accumulators, _copy, _normalise, _observe,
                                      derivatives)
-from .compiled_cache import REASSOCIATED, njit
+from .compiled_cache import njit
 from .dormand_prince import FIRST_STEP, SMALLEST_STEP
 from .rosenbrock import next_step
 
 
-@njit(cache=True, fastmath=REASSOCIATED)
+@njit(cache=True)
 def integrate(state, times, p, count, geometry, record, settled_from, rtol, atol, max_steps):
     """The additive Runge-Kutta method, the implicit part's Jacobian at each step's start,
     the samples interpolated between steps
@@ -62,7 +62,7 @@ def integrate(state, times, p, count, geometry, record, settled_from, rtol, atol
     samples, arc_max, end_min, rib_min, last, events = _accumulators(times, state, record)
     y = state.copy()
     n = y.size
-    _, arc_theta, arc_z, _, _, _ = geometry
+    _, arc_theta, arc_z, _, _, _, _ = geometry
     gaps, alongs = np.empty((arc_theta.size, arc_z.size)), np.empty((arc_theta.size,
                                                                      arc_z.size))
     own, to_hub, from_hub, hub, own_inverse, own_to_hub, schur_inverse = blocks(count)
@@ -113,7 +113,7 @@ def integrate(state, times, p, count, geometry, record, settled_from, rtol, atol
     return samples, arc_max, end_min, rib_min, events, steps, True
 
 
-@njit(cache=True, fastmath=REASSOCIATED)
+@njit(cache=True)
 def _solution_and_error(y, rates, step, rtol, atol):
     """The step's fourth-order solution and the root-mean-square of its difference from the
     third-order one against ``atol + rtol max(|y|, |solution|)``: at most 1 accepts it."""

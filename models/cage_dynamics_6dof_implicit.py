@@ -41,7 +41,7 @@ from .cage_dynamics_6dof_rhs import (CAGE_SIZE, DRAG, END_FACES, END_PRESSURE, E
                                      RACEWAYS, RING, ROLLER_SIZE, _accumulators, _copy,
                                      _normalise, _observe, derivatives, rotation)
 from .cage_dynamics_6dof_jacobian import closed_form_jacobian
-from .compiled_cache import REASSOCIATED, njit
+from .compiled_cache import njit
 from .dormand_prince import FIRST_STEP, SMALLEST_STEP
 from .rosenbrock import (GAMMA, STAGES, next_step, solution_and_error, stage_argument,
                          stage_right_side)
@@ -49,7 +49,7 @@ from .rosenbrock import (GAMMA, STAGES, next_step, solution_and_error, stage_arg
 _RELATIVE_STEP = 1.4901161193847656e-08  # sqrt of the double's epsilon
 
 
-@njit(cache=True, fastmath=REASSOCIATED)
+@njit(cache=True)
 def hub_indices(count):
     """The hub's entries in the state: the inner ring's 4, then the cage's 13."""
     first_cage = RING + ROLLER_SIZE * count
@@ -61,7 +61,7 @@ def hub_indices(count):
     return indices
 
 
-@njit(cache=True, fastmath=REASSOCIATED)
+@njit(cache=True)
 def blocks(count):
     """The Jacobian's blocks for ``count`` rollers (see :func:`jacobian`) and the factors
     :func:`factor` writes, zeroed."""
@@ -87,7 +87,7 @@ def dense(own, to_hub, from_hub, hub):
     return matrix
 
 
-@njit(cache=True, fastmath=REASSOCIATED)
+@njit(cache=True)
 def switched(p, raceways, pockets, faces, ribs, drag):
     """``p`` with its terms switched, each 1.0 (on) or 0.0 (off): the raceway contacts, the
     pockets' arcs, the end terms against the pocket end faces and against the ribs, the
@@ -99,7 +99,7 @@ def switched(p, raceways, pockets, faces, ribs, drag):
     return q
 
 
-@njit(cache=True, fastmath=REASSOCIATED)
+@njit(cache=True)
 def _roller_columns(y, base, shares, p, count, geometry, record, scale, column):
     """Forward differences of :func:`derivatives` (with ``p``; ``base`` and ``shares`` its
     value and the rollers' shares at ``y``) for one component ``column`` of every roller at
@@ -119,7 +119,7 @@ def _roller_columns(y, base, shares, p, count, geometry, record, scale, column):
     return change, share_change
 
 
-@njit(cache=True, fastmath=REASSOCIATED)
+@njit(cache=True)
 def _hub_rows(share, turn, p, rows):
     """The hub's rows of a roller's column from its share of the hub's forces: the ring's and
     the cage's accelerations, and the cage's Euler equations in its body frame."""
@@ -131,7 +131,7 @@ def _hub_rows(share, turn, p, rows):
         rows[RING + 10 + a] = body / (p[J_CAGE_Z] if a == 2 else p[J_CAGE_X])
 
 
-@njit(cache=True, fastmath=REASSOCIATED)
+@njit(cache=True)
 def jacobian(y, p, count, geometry, record, scale, own, to_hub, from_hub, hub):
     """The Jacobian of :func:`derivatives`' stiff terms at ``y``, by forward differences of
     steps ``sqrt(eps) max(|y|, scale)``, into the blocks ``own`` ``(count, 12, 12)`` (a
@@ -199,7 +199,7 @@ def jacobian(y, p, count, geometry, record, scale, own, to_hub, from_hub, hub):
             hub[r, column] = change[indices[r]]
 
 
-@njit(cache=True, fastmath=REASSOCIATED)
+@njit(cache=True)
 def factor(diagonal, own, to_hub, from_hub, hub, own_inverse, own_to_hub, schur_inverse):
     """The blocks of ``(diagonal I - J)^-1`` the stages' solutions need (``diagonal`` =
     ``1 / (h gamma)``): each roller's block inverted, its product with the roller's hub
@@ -234,7 +234,7 @@ def factor(diagonal, own, to_hub, from_hub, hub, own_inverse, own_to_hub, schur_
     _invert(schur, schur_inverse)
 
 
-@njit(cache=True, fastmath=REASSOCIATED, error_model="numpy")  # 1 / 0 is inf, not an error
+@njit(cache=True, error_model="numpy")  # 1 / 0 is inf, not an error
 def _invert(matrix, inverse):
     """``matrix``'s inverse into ``inverse`` by Gauss-Jordan elimination with partial
     pivoting; ``matrix`` is overwritten. In place and without LAPACK's call, whose overhead
@@ -267,7 +267,7 @@ def _invert(matrix, inverse):
                 inverse[r, c] -= weight * inverse[column, c]
 
 
-@njit(cache=True, fastmath=REASSOCIATED)
+@njit(cache=True)
 def _zero_row(matrix, row):
     for c in range(matrix.shape[1]):
         if matrix[row, c] != 0.0:
@@ -275,7 +275,7 @@ def _zero_row(matrix, row):
     return True
 
 
-@njit(cache=True, fastmath=REASSOCIATED)
+@njit(cache=True)
 def solve(right, count, from_hub, own_inverse, own_to_hub, schur_inverse):
     """``u`` of ``(diagonal I - J) u = right`` from :func:`factor`'s blocks."""
     indices = hub_indices(count)
@@ -310,7 +310,7 @@ def solve(right, count, from_hub, own_inverse, own_to_hub, schur_inverse):
     return solution
 
 
-@njit(cache=True, fastmath=REASSOCIATED)
+@njit(cache=True)
 def integrate(state, times, p, count, geometry, record, settled_from, rtol, atol, max_steps):
     """The Rosenbrock-W method with the closed-form Jacobian
     (:func:`models.cage_dynamics_6dof_jacobian.closed_form_jacobian`) after every accepted
@@ -319,7 +319,7 @@ def integrate(state, times, p, count, geometry, record, settled_from, rtol, atol
     samples, arc_max, end_min, rib_min, last, events = _accumulators(times, state, record)
     y = state.copy()
     n = y.size
-    _, arc_theta, arc_z, _, _, _ = geometry
+    _, arc_theta, arc_z, _, _, _, _ = geometry
     gaps, alongs = np.empty((arc_theta.size, arc_z.size)), np.empty((arc_theta.size,
                                                                      arc_z.size))
     own, to_hub, from_hub, hub, own_inverse, own_to_hub, schur_inverse = blocks(count)
@@ -360,7 +360,7 @@ def integrate(state, times, p, count, geometry, record, settled_from, rtol, atol
     return samples, arc_max, end_min, rib_min, events, steps, True
 
 
-@njit(cache=True, fastmath=REASSOCIATED)
+@njit(cache=True)
 def samples_through(reached, index, step_ends, times, samples, sample, p, count, geometry,
                     record, settled_from, observed):
     """Write the samples from ``times[index]`` through ``reached`` [s], the end of a step
@@ -382,7 +382,7 @@ def samples_through(reached, index, step_ends, times, samples, sample, p, count,
     return index
 
 
-@njit(cache=True, fastmath=REASSOCIATED)
+@njit(cache=True)
 def between(y0, f0, y1, f1, step, theta, out):
     """The state a fraction ``theta`` of the way through a step of size ``step`` [s] from
     ``y0`` to ``y1`` (their derivatives ``f0``, ``f1``), into ``out``: the cubic Hermite

@@ -29,8 +29,8 @@ from __future__ import annotations
 
 import numpy as np
 
-from .cage_dynamics_6dof_rhs import (ARC_AREA, BED_POCKET, END_FACES, END_PRESSURE,
-                                     END_RIBS, ENDS, FILM_FILL, FILM_FLOOR, HUB, HUNT,
+from .cage_dynamics_6dof_rhs import (BED_POCKET, END_FACES, END_PRESSURE, END_RIBS,
+                                     ENDS, FILM_FILL, FILM_FLOOR, HUB, HUNT,
                                      J_AXIAL, J_CAGE_X, J_CAGE_Z, J_TRANSVERSE, K_SLICE,
                                      LENGTH, M_CAGE, M_RING, M_ROLLER, OMEGA_I, POCKETS,
                                      RACEWAYS, RADIUS, RING, ROLLER_SIZE, TRACTION_A,
@@ -39,7 +39,7 @@ from .cage_dynamics_6dof_rhs import (ARC_AREA, BED_POCKET, END_FACES, END_PRESSU
                                      _vector, arc_element, arc_slope, arc_wall, cage_frame,
                                      end_faces, pocket_frame, pocket_gaps, pocket_motion,
                                      raceway_slice, ring_axis, roller_end)
-from .compiled_cache import REASSOCIATED, njit
+from .compiled_cache import njit
 from .contact_laws import (PALMGREN_EXPONENT, palmgren_slice, traction_coefficient,
                            traction_slope)
 
@@ -50,13 +50,13 @@ _C, _V, _THETA, _OMEGA, _S, _W, _CAGE_OMEGA = 0, 3, 6, 9, 12, 15, 18
 _COLUMNS = 21
 
 
-@njit(cache=True, fastmath=REASSOCIATED)
+@njit(cache=True)
 def _put(vector, into, start, scale):
     for a in range(3):
         into[start + a] = scale * vector[a]
 
 
-@njit(cache=True, fastmath=REASSOCIATED)
+@njit(cache=True)
 def _cross_matrix(v):
     """``[v x]``: the matrix of ``w -> v x w``."""
     matrix = np.empty((3, 3))
@@ -64,7 +64,7 @@ def _cross_matrix(v):
     return matrix
 
 
-@njit(cache=True, fastmath=REASSOCIATED)
+@njit(cache=True)
 def _fill_cross_matrix(v, matrix):
     """``[v x]`` into ``matrix``."""
     matrix[0, 0], matrix[0, 1], matrix[0, 2] = 0.0, -v[2], v[1]
@@ -72,14 +72,14 @@ def _fill_cross_matrix(v, matrix):
     matrix[2, 0], matrix[2, 1], matrix[2, 2] = -v[1], v[0], 0.0
 
 
-@njit(cache=True, fastmath=REASSOCIATED)
+@njit(cache=True)
 def _roller_wrench_gradient(y, p, j, count, geometry, frame, gaps, alongs, wrench, gradient,
                             d_closing, d_spin, d_gap, d_slope):
     """The pushes of pocket ``j``'s elements on its roller (``wrench``: force [N], moment
     about its centre [N m]) and their gradient over :data:`_COLUMNS` (``gradient``, 6 x 21);
     the other arguments are work arrays. Returns the roller's centre, velocity, axis and
     angular velocity."""
-    _, arc_theta, arc_z, _, _, _ = geometry
+    _, arc_theta, arc_z, arc_area, _, _, _ = geometry
     mass_centre, cage_velocity, cage_rate, x_b, y_b, z_b, cage_centre = frame
     k = RING + ROLLER_SIZE * j
     centre, velocity = _vector(y, k), _vector(y, k + 3)
@@ -94,7 +94,7 @@ def _roller_wrench_gradient(y, p, j, count, geometry, frame, gaps, alongs, wrenc
     pressed = pocket_gaps(centre, axis, pocket, x_c, y_c, z_b, np.cos(arc_theta),
                           np.sin(arc_theta), arc_z, p, gaps, alongs)
     spin = _dot(_sub(omega, cage_rate), z_b)
-    radius, viscosity, area = p[RADIUS], p[VISCOSITY], p[ARC_AREA] * p[FILM_FILL]
+    radius, viscosity = p[RADIUS], p[VISCOSITY]
     d_spin[:] = 0.0
     _put(z_b, d_spin, _OMEGA, 1.0)
     _put(z_b, d_spin, _CAGE_OMEGA, -1.0)
@@ -115,7 +115,7 @@ def _roller_wrench_gradient(y, p, j, count, geometry, frame, gaps, alongs, wrenc
             # the push on the roller, -push n, and its weights on the closing speed, the
             # spin, the gap and the slope
             if pressed:
-                stiffness = p[BED_POCKET] * p[ARC_AREA]
+                stiffness = p[BED_POCKET] * arc_area[m, n]
                 push = stiffness * (-h) * (1.0 + p[HUNT] * closing)
                 if push <= 0.0:
                     continue
@@ -128,6 +128,7 @@ def _roller_wrench_gradient(y, p, j, count, geometry, frame, gaps, alongs, wrenc
                 pressure = (6.0 * viscosity * spin * slope - 12.0 * viscosity * closing) * reach
                 if pressure <= 0.0:
                     continue  # cavitated
+                area = arc_area[m, n] * p[FILM_FILL]
                 push = area * pressure
                 on_closing = -12.0 * viscosity * reach * area
                 on_spin = 6.0 * viscosity * slope * reach * area
@@ -173,7 +174,7 @@ def _roller_wrench_gradient(y, p, j, count, geometry, frame, gaps, alongs, wrenc
     return centre, velocity, axis, omega
 
 
-@njit(cache=True, fastmath=REASSOCIATED)
+@njit(cache=True)
 def _raceway_gradient(p, slice_z, centre, velocity, axis, omega, ring_centre, ring_velocity,
                       z_ring, ring_spin, gradient, ring_gradient):
     """The gradient of a roller's raceway contacts (eqs. 18-21): of the force on it and their
@@ -263,7 +264,7 @@ def _raceway_gradient(p, slice_z, centre, velocity, axis, omega, ring_centre, ri
                         ring_gradient[r, c] += column[r]
 
 
-@njit(cache=True, fastmath=REASSOCIATED)
+@njit(cache=True)
 def closed_form_jacobian(y, p, count, geometry, gaps, alongs, own, to_hub, from_hub, hub):
     """The Jacobian of the stiff terms of :func:`models.cage_dynamics_6dof_rhs.derivatives`
     at ``y`` in closed form (the module's text), with the kinematics that couple positions
@@ -299,7 +300,7 @@ def closed_form_jacobian(y, p, count, geometry, gaps, alongs, own, to_hub, from_
     ring_spin = _mul(p[OMEGA_I], z_ring)
     squeezed = p[ENDS] > 0.0 and p[END_PRESSURE] > 0.0
     faces = end_faces(frame, ring_centre, ring_velocity, z_ring, ring_spin, p)
-    face_cos, face_sin = np.cos(geometry[4]), np.sin(geometry[4])
+    face_cos, face_sin = np.cos(geometry[5]), np.sin(geometry[5])
     work = np.empty((1, 10))
     for j in range(count):
         centre, velocity, axis, omega = _roller_wrench_gradient(
@@ -366,7 +367,7 @@ def closed_form_jacobian(y, p, count, geometry, gaps, alongs, own, to_hub, from_
         [[-x, -yq, -z], [w, -z, yq], [z, w, -x], [-yq, x, w]])
 
 
-@njit(cache=True, fastmath=REASSOCIATED)
+@njit(cache=True)
 def _squeeze_gradient(roller, face, body, face_cos, face_sin, geometry, p, work, gradient,
                       ring_rows, velocity_column, rate_column):
     """Add to ``gradient`` (the force on the roller and its moment about its centre, 6 rows)
@@ -381,7 +382,7 @@ def _squeeze_gradient(roller, face, body, face_cos, face_sin, geometry, p, work,
     ``c closing m`` (``m = arm x n``) by ``closing``'s gradient ``(-n, -m, n, r x n)``, with
     ``r`` the element from the body's reference point. Left out, as not stiff: the wedge
     term's part (the sliding's along the roller's lean), the gap's change with a move."""
-    _, _, _, face_r, _, face_area = geometry
+    _, _, _, _, face_r, _, face_area = geometry
     sums = work[0]
     sums[:] = 0.0
     # with nothing observed, the element records (an empty array, the sums) are not written
@@ -417,7 +418,7 @@ def _squeeze_gradient(roller, face, body, face_cos, face_sin, geometry, p, work,
                 ring_rows[a, velocity_column + b] += by_velocity
 
 
-@njit(cache=True, fastmath=REASSOCIATED)
+@njit(cache=True)
 def _add_raceways(j, gradient, ring_gradient, axis, inverse, p, own, to_hub, from_hub, hub):
     """:func:`_raceway_gradient`'s into the blocks: the roller's accelerations (``inverse``
     its inertia's inverse) and the ring's, over the roller's state and the ring's x, y and
@@ -456,7 +457,7 @@ def _add_raceways(j, gradient, ring_gradient, axis, inverse, p, own, to_hub, fro
                 hub[2 + r, column - ROLLER_SIZE] += by_state[6 + r] / p[M_RING]
 
 
-@njit(cache=True, fastmath=REASSOCIATED)
+@njit(cache=True)
 def _outputs(gradient, wrench, offset, rows, forces):
     """The force and moment on the roller and on the cage (about its mass centre: ``-F``,
     ``-(M + offset x F)``, ``offset`` the roller's centre from it), and their gradients."""
@@ -470,7 +471,7 @@ def _outputs(gradient, wrench, offset, rows, forces):
             values[6 + a], values[9 + a] = -column[a], -(column[3 + a] + arm[a])
 
 
-@njit(cache=True, fastmath=REASSOCIATED)
+@njit(cache=True)
 def _cage_turned(rows, forces, centre, velocity, omega, mass_centre, cage_velocity, turned):
     """The outputs' derivatives over a small turn of the cage about its mass centre
     (``turned``, 12 x 3): the same as turning the roller back, the outputs turning with the
@@ -492,7 +493,7 @@ def _cage_turned(rows, forces, centre, velocity, omega, mass_centre, cage_veloci
                                  + rows[r, 3 * block + 2] * moved[block][2])
 
 
-@njit(cache=True, fastmath=REASSOCIATED)
+@njit(cache=True)
 def _by_state(rows, turned, axis, turn, to_quaternion, by_state):
     """The outputs' derivatives over the state's entries (``by_state``, 12 x 29): the
     roller's 12 (its axis' components from a small turn, ``d theta = a x d a``), then the

@@ -26,7 +26,7 @@ from __future__ import annotations
 
 import numpy as np
 
-from .compiled_cache import REASSOCIATED, njit
+from .compiled_cache import njit
 from .contact_laws import (damped_spring, palmgren_slice, regularised_direction,
                            short_bearing_pressure, traction_coefficient)
 from .dormand_prince import FIRST_STEP, SMALLEST_STEP, conclude, stage_argument
@@ -36,9 +36,9 @@ from .dormand_prince import FIRST_STEP, SMALLEST_STEP, conclude, stage_argument
  POCKET_PLAY, RIB_PLAY, RIB_RADIUS, CAGE_IN, CAGE_OUT, WINDAGE, CAGE_DRAG, M_RING, C_RING,
  M_CAGE, J_CAGE_X, J_CAGE_Z, ECC_RADIAL, ECC_AXIAL, GRAVITY, MISALIGN_X, MISALIGN_Y,
  TRACTION_A, TRACTION_B, TRACTION_C, TRACTION_D, RACEWAYS, POCKETS, ENDS, DRAG,
- SLIP_SMOOTHING, ARC_AREA, FILM_FILL, END_PRESSURE, FACE_RADIUS, END_FILL, END_FACES,
- END_RIBS) = range(51)
-PARAMETERS = 51
+ SLIP_SMOOTHING, FILM_FILL, END_PRESSURE, FACE_RADIUS, END_FILL, END_FACES,
+ END_RIBS) = range(50)
+PARAMETERS = 50
 #: RACEWAYS, POCKETS, ENDS and DRAG switch their terms on (1.0) or off (0.0); END_FACES and
 #: END_RIBS the two parts of the end terms (the pocket end faces, the ribs).
 RING, ROLLER_SIZE, CAGE_SIZE = 4, 12, 13
@@ -51,44 +51,44 @@ def state_size(count):
 
 # Vectors are tuples of three floats: they live in registers, where small arrays would be
 # allocated on the heap millions of times per run.
-@njit(cache=True, fastmath=REASSOCIATED)
+@njit(cache=True)
 def _add(a, b):
     return (a[0] + b[0], a[1] + b[1], a[2] + b[2])
 
 
-@njit(cache=True, fastmath=REASSOCIATED)
+@njit(cache=True)
 def _sub(a, b):
     return (a[0] - b[0], a[1] - b[1], a[2] - b[2])
 
 
-@njit(cache=True, fastmath=REASSOCIATED)
+@njit(cache=True)
 def _mul(k, a):
     return (k * a[0], k * a[1], k * a[2])
 
 
-@njit(cache=True, fastmath=REASSOCIATED)
+@njit(cache=True)
 def _cross(a, b):
     return (a[1] * b[2] - a[2] * b[1], a[2] * b[0] - a[0] * b[2], a[0] * b[1] - a[1] * b[0])
 
 
-@njit(cache=True, fastmath=REASSOCIATED)
+@njit(cache=True)
 def _dot(a, b):
     return a[0] * b[0] + a[1] * b[1] + a[2] * b[2]
 
 
-@njit(cache=True, fastmath=REASSOCIATED)
+@njit(cache=True)
 def _vector(array, start):
     return (array[start], array[start + 1], array[start + 2])
 
 
-@njit(cache=True, fastmath=REASSOCIATED)
+@njit(cache=True)
 def _tangential(v, normal):
     """``v`` less its component along the unit ``normal``, and that part's length."""
     t = _sub(v, _mul(_dot(v, normal), normal))
     return t, np.sqrt(_dot(t, t))
 
 
-@njit(cache=True, fastmath=REASSOCIATED)
+@njit(cache=True)
 def rotation(q):
     """Rotation matrix (body to inertial) of a quaternion ``(w, x, y, z)``, normalised."""
     w, x, y, z = q[0], q[1], q[2], q[3]
@@ -99,14 +99,14 @@ def rotation(q):
                      [2 * (x * z - w * y), 2 * (y * z + w * x), 1 - 2 * (x * x + y * y)]])
 
 
-@njit(cache=True, fastmath=REASSOCIATED)
+@njit(cache=True)
 def ring_axis(p):
     """The inner ring's axis: ``e_z`` turned about X by ``misalignment_x``, then about Y."""
     ax, ay = p[MISALIGN_X], p[MISALIGN_Y]
     return (np.sin(ay), -np.sin(ax) * np.cos(ay), np.cos(ax) * np.cos(ay))
 
 
-@njit(cache=True, fastmath=REASSOCIATED)
+@njit(cache=True)
 def cage_frame(state, count, p):
     """The cage's rotation matrix (body to inertial), its angular velocity in the body frame,
     and its frame: mass centre [m], velocity [m/s], inertial angular velocity [rad/s], body
@@ -126,10 +126,12 @@ def cage_frame(state, count, p):
                              cage_centre)
 
 
-@njit(cache=True, fastmath=REASSOCIATED)
-def derivatives(state, p, count, slice_z, arc_theta, arc_z, face_r, face_phi, face_area,
-                arc_force, end_gap, rib_gap, dry, shares, observe):
-    """Time derivative of ``state``. Each roller's share of the forces on the other bodies
+@njit(cache=True)
+def derivatives(state, p, count, slice_z, arc_theta, arc_z, arc_area, face_r, face_phi,
+                face_area, arc_force, end_gap, rib_gap, dry, shares, observe):
+    """Time derivative of ``state``, with the elements
+    :func:`models.cage_dynamics_6dof.geometry` gives (``arc_area``: each pocket-arc element's
+    area [m^2], angle x axial point). Each roller's share of the forces on the other bodies
     is written to ``shares`` (roller x {force on the cage [N], its moment about the cage's
     mass centre [N m], force on the inner ring in X and Y [N]}, 8 columns): the implicit
     integrator's Jacobian takes the rollers apart by them. With ``observe`` nonzero the
@@ -218,7 +220,7 @@ def derivatives(state, p, count, slice_z, arc_theta, arc_z, face_r, face_phi, fa
                     arm, normal, relative, closing = arc_element(
                         wall, base, arc_z[n], z_b, along, h, axis, motion, p)
                     if pressed:
-                        push = damped_spring(p[BED_POCKET] * p[ARC_AREA], -h, closing,
+                        push = damped_spring(p[BED_POCKET] * arc_area[m, n], -h, closing,
                                              p[HUNT])
                         # the roller's surface at the element less the cage there
                         sliding, speed = _tangential(_add(relative, _cross(
@@ -236,8 +238,8 @@ def derivatives(state, p, count, slice_z, arc_theta, arc_z, face_r, face_phi, fa
                         pressure = short_bearing_pressure(p[VISCOSITY], spin * slope, -closing,
                                                           film, along, length)
                         shear = p[VISCOSITY] * spin * radius / film
-                        on_roller = _mul(-p[ARC_AREA] * p[FILM_FILL], _add(_mul(pressure, normal),
-                                                            _mul(shear, u_prime)))
+                        on_roller = _mul(-arc_area[m, n] * p[FILM_FILL], _add(
+                            _mul(pressure, normal), _mul(shear, u_prime)))
                     pocket_force = _add(pocket_force, on_roller)
                     pocket_moment = _add(pocket_moment, _cross(arm, on_roller))
             force = _add(force, pocket_force)
@@ -317,7 +319,7 @@ def derivatives(state, p, count, slice_z, arc_theta, arc_z, face_r, face_phi, fa
     return out
 
 
-@njit(cache=True, fastmath=REASSOCIATED)
+@njit(cache=True)
 def raceway_slice(middle, inner, centre, velocity, omega, ring_centre, ring_velocity, z_ring,
                   ring_spin, p):
     """A raceway slice of a roller at its axis point ``middle`` against the inner (``inner``
@@ -346,7 +348,7 @@ def raceway_slice(middle, inner, centre, velocity, omega, ring_centre, ring_velo
     return approach, normal, point, relative
 
 
-@njit(cache=True, fastmath=REASSOCIATED)
+@njit(cache=True)
 def pocket_frame(j, count, x_b, y_b, cage_centre, p):
     """Pocket ``j``'s radial and tangential unit vectors and its centre [m]."""
     angle = 2.0 * np.pi * j / count
@@ -355,7 +357,7 @@ def pocket_frame(j, count, x_b, y_b, cage_centre, p):
     return x_c, y_c, _add(cage_centre, _mul(p[PITCH], x_c))
 
 
-@njit(cache=True, fastmath=REASSOCIATED)
+@njit(cache=True)
 def pocket_gaps(centre, axis, pocket, x_c, y_c, z_b, arc_cos, arc_sin, arc_z, p, gaps,
                 alongs):
     """Each pocket-arc element's gap to the roller [m] (``inf`` beyond the roller's ends)
@@ -379,7 +381,7 @@ def pocket_gaps(centre, axis, pocket, x_c, y_c, z_b, arc_cos, arc_sin, arc_z, p,
     return pressed
 
 
-@njit(cache=True, fastmath=REASSOCIATED)
+@njit(cache=True)
 def pocket_motion(centre, velocity, axis, omega, pocket, x_c, y_c, z_b, cage_velocity,
                   cage_rate, mass_centre):
     """What a roller's pocket-arc elements share: the pocket's centre from the roller's
@@ -393,7 +395,7 @@ def pocket_motion(centre, velocity, axis, omega, pocket, x_c, y_c, z_b, cage_vel
             _dot(axis, y_c), _dot(to_pocket, x_c), _dot(to_pocket, y_c))
 
 
-@njit(cache=True, fastmath=REASSOCIATED)
+@njit(cache=True)
 def arc_wall(u, motion, cage_rate, p):
     """The pocket wall's line at ``u`` round the arc: its point on the pocket's mid-plane
     from the roller's centre [m], and the roller's velocity less the cage's there [m/s]
@@ -402,7 +404,7 @@ def arc_wall(u, motion, cage_rate, p):
     return wall, _sub(motion[1], _cross(cage_rate, wall))
 
 
-@njit(cache=True, fastmath=REASSOCIATED)
+@njit(cache=True)
 def arc_element(wall, base, z, z_b, along, h, axis, motion, p):
     """A pocket-arc element on the wall line ``wall`` (:func:`arc_wall`, with ``base``) at
     ``z`` along the pocket, facing the roller across the gap ``h``, ``along`` the roller's
@@ -415,7 +417,7 @@ def arc_element(wall, base, z, z_b, along, h, axis, motion, p):
     return arm, normal, relative, _dot(relative, normal)
 
 
-@njit(cache=True, fastmath=REASSOCIATED)
+@njit(cache=True)
 def arc_slope(along, motion, cos_m, sin_m):
     """The pocket film's slope round the arc, ``dh/dtheta`` [m], at the element at
     ``(cos_m, sin_m)``, ``along`` the roller's axis: the roller's offset from the pocket's
@@ -424,7 +426,7 @@ def arc_slope(along, motion, cos_m, sin_m):
             - (along * motion[5] - motion[7]) * cos_m)
 
 
-@njit(cache=True, fastmath=REASSOCIATED)
+@njit(cache=True)
 def roller_end(centre, velocity, omega, axis, side, length):
     """A roller's end (``side`` 0 at ``-length/2`` along its axis, 1 at ``+length/2``) as
     :func:`_end_face` takes it: (centre, velocity, angular velocity, axis, the end disc's
@@ -436,7 +438,7 @@ def roller_end(centre, velocity, omega, axis, side, length):
             _add(centre, _mul(sign * 0.5 * length, axis)), sign)
 
 
-@njit(cache=True, fastmath=REASSOCIATED)
+@njit(cache=True)
 def end_faces(frame, ring_centre, ring_velocity, z_ring, ring_spin, p):
     """The flat faces a roller's ends meet, each as :func:`_end_face`'s ``(face, body)``:
     its pocket's end faces on the cage (:func:`cage_frame`'s ``frame``), the inner ring's
@@ -448,7 +450,7 @@ def end_faces(frame, ring_centre, ring_velocity, z_ring, ring_spin, p):
              (ring_centre, ring_velocity, ring_spin)))
 
 
-@njit(cache=True, fastmath=REASSOCIATED)
+@njit(cache=True)
 def _end_face(roller, face, body, face_r, face_cos, face_sin, face_area, p, gaps, dry, kind,
               observe, squeeze=None):
     """Force [N] and moment about the roller's centre [N m] on a roller of one flat face at
@@ -549,7 +551,7 @@ def _end_face(roller, face, body, face_r, face_cos, face_sin, face_area, p, gaps
     return force, moment
 
 
-@njit(cache=True, fastmath=REASSOCIATED)
+@njit(cache=True)
 def _add_squeeze(sums, damping, lever):
     """Add an element's squeeze damping ``c`` with its ``m`` to :func:`_end_face`'s sums."""
     sums[0] += damping
@@ -561,7 +563,7 @@ def _add_squeeze(sums, damping, lever):
             k += 1
 
 
-@njit(cache=True, fastmath=REASSOCIATED)
+@njit(cache=True)
 def _face_force(gap, normal, sliding, area, bed, p, band, axis):
     """Force on the roller of one end-face element [N]: the Winkler bed and Coulomb friction
     when pressed in (eqs. 1, 2); otherwise the oil's shear ``eta v A / h`` (eq. 7) and, unless
@@ -591,7 +593,7 @@ def _face_force(gap, normal, sliding, area, bed, p, band, axis):
     return force
 
 
-@njit(cache=True, fastmath=REASSOCIATED)
+@njit(cache=True)
 def _face_pressure(viscosity, closing, wedge, film, band):
     """Film pressure between a roller end and a flat face, from Reynolds' equation across the
     narrow band where they face each other (no pressure flow along it), cavitated below
@@ -612,7 +614,7 @@ def _face_pressure(viscosity, closing, wedge, film, band):
     return max(0.0, 6.0 * viscosity * (closing + 0.5 * wedge) * band / film**3)
 
 
-@njit(cache=True, fastmath=REASSOCIATED)
+@njit(cache=True)
 def _band(reach, low, high, across, along, p):
     """``(s - s_1)(s_2 - s)`` [m^2] of an end-face element at distance ``s = reach`` from
     the face's axis, ``across`` and ``along`` its coordinates on the roller's end disc (radial
@@ -626,7 +628,7 @@ def _band(reach, low, high, across, along, p):
     return max(0.0, (reach - first) * (last - reach))
 
 
-@njit(cache=True, fastmath=REASSOCIATED)
+@njit(cache=True)
 def _symmetric_top(omega, axis, moment, j_axial, j_transverse):
     """Angular acceleration of a rigid body symmetric about ``axis`` (inertial frame): the
     spin ``s = omega . a`` obeys ``J_a s' = M . a``, the transverse momentum
@@ -641,7 +643,7 @@ def _symmetric_top(omega, axis, moment, j_axial, j_transverse):
 
 
 # Dormand-Prince 5(4) tableau
-@njit(cache=True, fastmath=REASSOCIATED)
+@njit(cache=True)
 def _normalise(state, count):
     """Project the roller axes and the cage's quaternion back to unit length."""
     for j in range(count):
@@ -649,7 +651,7 @@ def _normalise(state, count):
     _unit(state, RING + ROLLER_SIZE * count + 6, 4)
 
 
-@njit(cache=True, fastmath=REASSOCIATED)
+@njit(cache=True)
 def _unit(state, start, size):
     """Divide ``state[start:start + size]`` by its length, element by element (see
     :func:`_observe`)."""
@@ -661,16 +663,16 @@ def _unit(state, start, size):
         state[i] /= length
 
 
-@njit(cache=True, fastmath=REASSOCIATED)
+@njit(cache=True)
 def _observe(state, p, count, geometry, record, settled, arc_max, end_min, rib_min, last,
              events):
     """Element values of one sample: the largest arc force, the smallest end and rib gaps
     over the settled samples, and the dry contacts that began since the last sample."""
-    slice_z, arc_theta, arc_z, face_r, face_phi, face_area = geometry
+    slice_z, arc_theta, arc_z, arc_area, face_r, face_phi, face_area = geometry
     arc_force, end_gap, rib_gap, dry, shares = record
     dry[:, :] = 0.0
-    derivatives(state, p, count, slice_z, arc_theta, arc_z, face_r, face_phi, face_area,
-                arc_force, end_gap, rib_gap, dry, shares, 1.0)
+    derivatives(state, p, count, slice_z, arc_theta, arc_z, arc_area, face_r, face_phi,
+                face_area, arc_force, end_gap, rib_gap, dry, shares, 1.0)
     if not settled:
         _copy(dry, last)
         return
@@ -689,7 +691,7 @@ def _observe(state, p, count, geometry, record, settled, arc_max, end_min, rib_m
     _copy(dry, last)
 
 
-@njit(cache=True, fastmath=REASSOCIATED)
+@njit(cache=True)
 def _copy(source, target):
     """``target[...] = source``, element by element (see :func:`_observe`)."""
     for index in np.ndindex(source.shape):
@@ -699,13 +701,13 @@ def _copy(source, target):
 def scratch(count, geometry):
     """The arrays :func:`derivatives` writes into (after ``dry``, ``shares``), for
     ``count`` rollers and the elements ``geometry``."""
-    _, arc_theta, arc_z, face_r, face_phi, _ = geometry
+    _, arc_theta, arc_z, _, face_r, face_phi, _ = geometry
     face = (count, 2, face_r.size, face_phi.size)
     return (np.zeros((count, arc_theta.size, arc_z.size)), np.zeros(face), np.zeros(face),
             np.zeros((count, 3)), np.zeros((count, 8)))
 
 
-@njit(cache=True, fastmath=REASSOCIATED)
+@njit(cache=True)
 def _accumulators(times, state, record):
     """The samples and the element extremes of a run, before its first sample."""
     arc_force, end_gap, rib_gap, dry, _ = record
@@ -714,7 +716,7 @@ def _accumulators(times, state, record):
             np.zeros_like(dry), np.zeros(3))
 
 
-@njit(cache=True, fastmath=REASSOCIATED)
+@njit(cache=True)
 def integrate(state, times, p, count, geometry, record, settled_from, rtol, atol, max_steps):
     """Dormand-Prince 5(4) with a PI step-size controller (:mod:`models.dormand_prince`),
     each sample time hit by a step; the controller keeps steps near the stability limit
@@ -752,7 +754,7 @@ def integrate(state, times, p, count, geometry, record, settled_from, rtol, atol
     return samples, arc_max, end_min, rib_min, events, steps, True
 
 
-@njit(cache=True, fastmath=REASSOCIATED)
+@njit(cache=True)
 def integrate_fixed(state, times, p, count, geometry, record, settled_from, step):
     """The classical fourth-order Runge-Kutta method at a fixed ``step`` (paper 002's
     method, 1e-7 s); the same samples and extremes as :func:`integrate`."""

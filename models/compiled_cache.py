@@ -16,6 +16,11 @@ to last are kept, and any written to within a day (another checkout may be runni
 
 The models take ``njit`` from here, which registers the locator first; it answers for the
 models' own files only, so numba caches any other function as before.
+
+No model is compiled with ``fastmath``: with its flags (fused multiply-adds, reassociated
+sums) a function compiled into its caller in a process that compiles both rounds otherwise
+than the caller's code loaded from this cache, so a point's numbers would depend on whether
+its process compiled the models or loaded them (a test holds the two to the bit).
 """
 from __future__ import annotations
 
@@ -29,12 +34,6 @@ from pathlib import Path
 import numba
 from numba import njit  # noqa: F401  (the models' njit: the locator registered below)
 from numba.core import caching
-
-#: numba's floating-point flags for the spatial cage model's code, whose sums run over
-#: hundreds of film elements: sums reassociated (and so vectorised), multiply-adds fused,
-#: divisions by a reciprocal, the sign of zero ignored; not "no NaN" nor "no infinity", as its
-#: gaps and its unconverged steps are written with them. Results move at rounding.
-REASSOCIATED = {"reassoc", "contract", "arcp", "nsz"}
 
 #: How many versions' folders are kept, and for how long at least [s].
 KEPT_VERSIONS, KEPT_SECONDS = 4, 86400.0

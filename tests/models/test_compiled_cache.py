@@ -1,12 +1,15 @@
 """The models' compiled code is kept once per machine, a folder for each version of their
 source (``models/compiled_cache.py``): another checkout of the same source loads it, a changed
 source compiles afresh, and functions outside the models are cached where numba keeps them."""
+import ast
 import os
 import shutil
 import subprocess
 import sys
 import time
 from pathlib import Path
+
+import pytest
 
 from bearing_sweep.models import compiled_cache
 
@@ -104,3 +107,34 @@ def test_the_newest_versions_are_kept_and_those_used_within_a_day(tmp_path):
     compiled_cache._prune(tmp_path / "a")  # "a" is the one in use
     kept = sorted(p.name for p in tmp_path.iterdir())
     assert compiled_cache.KEPT_VERSIONS == 4 and kept == ["a", "b", "c", "d", "e"]
+
+
+def test_no_model_is_compiled_with_fastmath():
+    # fastmath's fused multiply-adds and reassociated sums round a function compiled into its
+    # caller otherwise than the caller's code loaded from the cache (the test below).
+    for path in sorted(MODELS.glob("*.py")):
+        for node in ast.walk(ast.parse(path.read_text())):
+            if isinstance(node, ast.Call) and getattr(node.func, "id", None) == "njit":
+                assert "fastmath" not in [k.arg for k in node.keywords], path.name
+
+
+@pytest.mark.slow
+def test_a_point_computed_while_compiling_equals_one_computed_from_the_cache(tmp_path):
+    # The spatial cage model over 1 ms in a process that compiles every function it calls,
+    # then in one that loads them: the same bits.
+    mm = 1e-3  # the preset paper002-test (paper 002, Tables 2-3) at 800 N, 12000 r/min
+    bearing = dict(roller_count=13, inner_raceway_diameter=44 * mm, roller_diameter=10 * mm,
+                   roller_length=11 * mm, effective_length=7.2 * mm, clearance=0.02 * mm,
+                   cage_inner_diameter=48.5 * mm, cage_outer_diameter=59 * mm,
+                   cage_width=13 * mm, pocket_clearance=0.1 * mm)
+    script = ("import hashlib\n"
+              "from bearing_sweep.models.cage_dynamics_6dof import cage_dynamics_6dof\n"
+              f"out = cage_dynamics_6dof(800.0, 1256.6, **{bearing!r}, duration=1e-3,"
+              " output_interval=1e-4)\n"
+              "print(hashlib.sha256(b''.join(out[k].tobytes() for k in sorted(out)))"
+              ".hexdigest(), int(out['status'][0]))\n")
+    environment = {**os.environ, "BEARING_SWEEP_CACHE": str(tmp_path / "machine")}
+    environment.pop("NUMBA_CACHE_DIR", None)
+    found = [subprocess.run([sys.executable, "-c", script], env=environment, text=True,
+                            capture_output=True, check=True).stdout.split() for _ in range(2)]
+    assert found[0] == found[1] and found[0][1] == "0"
