@@ -281,9 +281,11 @@ def _arc_maps(runs: dict, data, figures: Path, file: str):
         figure.colorbar(image, ax=axis, label="largest dry force [N]")
         half = one.arc_angle.size // 2  # the arcs' outer edges meet in the middle
         axis.set(xlabel=f"arc element number across both arcs\n({half}, {half + 1}: at the "
-                        "cage's outside diameter)", ylabel="axial element number",
+                        "cage's outside diameter)",
+                 ylabel="axial element number\n(Gauss-Legendre points along the roller)",
                  title=f"{_name(case)}, pocket {pocket}")
         axis.xaxis.set_major_locator(MaxNLocator(integer=True))
+        axis.yaxis.set_major_locator(MaxNLocator(integer=True))
         axis.title.set_fontsize(9)
     figure.suptitle(_title(data, f"pocket arcs, settled half; {_film(data)}", figure),
                     fontsize=9)
