@@ -134,8 +134,9 @@ def cage_dynamics_6dof(radial_load, speed, roller_count, inner_raceway_diameter,
         summed exactly from two points on, where equal elements overstate it by ``1/(2 m^2)``
         (six of them put the mean cage slip over 10 ms 0.6-1.1 % low at 800 and 200 N).
         Three points give the mean slips over 10 ms within 0.2 % of sixteen, aligned or
-        misaligned by 1 deg. Round the arcs, 8 equal elements put it 0.7-1.3 % high
-        against 32 (Gauss-Legendre points gained nothing there, where the film cavitates).
+        misaligned by 1 deg. Round the arcs, 8 equal elements put the mean cage slip
+        0.7-1.3 % high against 32 (Gauss-Legendre points gained nothing there, where the
+        film cavitates).
         The end faces converge slowest, and not steadily (an element counts wholly or not at
         all where the face's annulus cuts the end disc): over 10 ms at 800 N, 12000 r/min
         the defaults put the mean roller slip 3.6 % below 24 x 72 end-face elements (the
