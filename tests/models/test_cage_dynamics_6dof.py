@@ -181,7 +181,7 @@ def test_a_perfect_bearing_slips_as_the_planar_model_does(perfect):
                           pocket_wrap_angle=1.0, pocket_film_fill=1.0,
                           end_film_thickness=one["end_film_thickness"], end_film_fill=0.25)
     _, wrapped = model.geometry({k: v[0] for k, v in terms.items() if k != "traction"},
-                                   one)
+                                one)
     planar = cage_dynamics(800.0, 12000 * RPM, **BEARING, pocket_wrap_angle=2 * wrapped,
                            duration=0.012, output_interval=2e-4)
     assert planar["status"][0] == 0
@@ -394,7 +394,6 @@ def test_a_centred_roller_in_a_winkler_bed_is_not_pushed(start):
     # rest), whatever the element count.
     on_roller, _, _ = bed_force(start, 1e-6, 0.9e-6, 0.3, 64)
     assert np.all(on_roller == 0.0)
-
 
 
 def test_the_pocket_film_pushes_as_ocvirks_short_bearing(start):
