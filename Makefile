@@ -56,7 +56,10 @@ docs: $(VENV)/.docs-installed studies
 	$(PYTHON) -m sphinx -W --keep-going -q -b html docs docs/_build/html
 
 # The studies of the spatial cage model keep both cores busy with their sweeps; the others
-# compute in their own process meanwhile (--workers 0), in the time the cluster leaves.
+# compute in their own process meanwhile (--workers 0), in the time the cluster leaves: at a
+# lower priority (nice), so that they fill the cores the cluster leaves idle (its figures,
+# its small sweeps, a worker waiting for the other's last point) rather than slow its
+# workers, whose sweeps wait for the slower of the two.
 CLUSTER_STUDIES := cage_dynamics_3d cage_slip
 OTHER_STUDIES := $(filter-out $(CLUSTER_STUDIES),\
 	$(patsubst studies/%/figures.py,%,$(sort $(wildcard studies/*/figures.py))))
@@ -71,7 +74,7 @@ studies-on-cluster: $(STAMP)
 	$(VENV)/bin/bearing-sweep study $(CLUSTER_STUDIES)
 
 studies-in-process: $(STAMP)
-	$(VENV)/bin/bearing-sweep study --workers 0 $(OTHER_STUDIES)
+	nice -n 10 $(VENV)/bin/bearing-sweep study --workers 0 $(OTHER_STUDIES)
 
 bench: $(STAMP)
 	$(PYTHON) benchmarks/run_all.py

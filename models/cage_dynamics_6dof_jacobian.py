@@ -73,12 +73,12 @@ def _fill_cross_matrix(v, matrix):
 
 
 @njit(cache=True)
-def _roller_wrench_gradient(y, p, j, count, geometry, frame, gaps, alongs, wrench, gradient,
-                            d_closing, d_spin, d_gap, d_slope):
+def _roller_wrench_gradient(y, p, j, count, geometry, arc_cos, arc_sin, frame, gaps, alongs,
+                            wrench, gradient, d_closing, d_spin, d_gap, d_slope):
     """The pushes of pocket ``j``'s elements on its roller (``wrench``: force [N], moment
     about its centre [N m]) and their gradient over :data:`_COLUMNS` (``gradient``, 6 x 21);
-    the other arguments are work arrays. Returns the roller's centre, velocity, axis and
-    angular velocity."""
+    ``arc_cos`` and ``arc_sin`` are the arc angles' cosines and sines, the other arguments
+    work arrays. Returns the roller's centre, velocity, axis and angular velocity."""
     _, arc_theta, arc_z, arc_area, _, _, _ = geometry
     mass_centre, cage_velocity, cage_rate, x_b, y_b, z_b, cage_centre = frame
     k = RING + ROLLER_SIZE * j
@@ -91,8 +91,8 @@ def _roller_wrench_gradient(y, p, j, count, geometry, frame, gaps, alongs, wrenc
     if p[POCKETS] <= 0.0:
         return centre, velocity, axis, omega
     x_c, y_c, pocket = pocket_frame(j, count, x_b, y_b, cage_centre, p)
-    pressed = pocket_gaps(centre, axis, pocket, x_c, y_c, z_b, np.cos(arc_theta),
-                          np.sin(arc_theta), arc_z, p, gaps, alongs)
+    pressed = pocket_gaps(centre, axis, pocket, x_c, y_c, z_b, arc_cos, arc_sin, arc_z, p,
+                          gaps, alongs)
     spin = _dot(_sub(omega, cage_rate), z_b)
     radius, viscosity = p[RADIUS], p[VISCOSITY]
     d_spin[:] = 0.0
@@ -101,7 +101,7 @@ def _roller_wrench_gradient(y, p, j, count, geometry, frame, gaps, alongs, wrenc
     motion = pocket_motion(centre, velocity, axis, omega, pocket, x_c, y_c, z_b,
                            cage_velocity, cage_rate, mass_centre)
     for m in range(arc_theta.size):
-        cos_m, sin_m = np.cos(arc_theta[m]), np.sin(arc_theta[m])
+        cos_m, sin_m = arc_cos[m], arc_sin[m]
         u = _add(_mul(cos_m, x_c), _mul(sin_m, y_c))
         u_prime = _sub(_mul(cos_m, y_c), _mul(sin_m, x_c))
         wall, base = arc_wall(u, motion, cage_rate, p)
@@ -301,11 +301,12 @@ def closed_form_jacobian(y, p, count, geometry, gaps, alongs, own, to_hub, from_
     squeezed = p[ENDS] > 0.0 and p[END_PRESSURE] > 0.0
     faces = end_faces(frame, ring_centre, ring_velocity, z_ring, ring_spin, p)
     face_cos, face_sin = np.cos(geometry[5]), np.sin(geometry[5])
+    arc_cos, arc_sin = np.cos(geometry[1]), np.sin(geometry[1])  # once, not per roller
     work = np.empty((1, 10))
     for j in range(count):
         centre, velocity, axis, omega = _roller_wrench_gradient(
-            y, p, j, count, geometry, frame, gaps, alongs, wrench, gradient, d_closing,
-            d_spin, d_gap, d_slope)
+            y, p, j, count, geometry, arc_cos, arc_sin, frame, gaps, alongs, wrench, gradient,
+            d_closing, d_spin, d_gap, d_slope)
         if squeezed and p[END_FACES] > 0.0:
             for side in range(2):
                 _squeeze_gradient(roller_end(centre, velocity, omega, axis, side, p[LENGTH]),
