@@ -86,7 +86,11 @@ def roller_angles(rotation, roller_count, roller_diameter, pitch_diameter, spin=
 
 
 def harmonics(angle, order, amplitude, phase):
-    """``sum_k C_k cos(n_k angle + psi_k)`` with the harmonics along the last axis [m]."""
+    """``sum_k C_k cos(n_k angle + psi_k)`` with the harmonics along the last axis [m]; zeros
+    without a cosine where every amplitude is zero (a round raceway)."""
+    if not np.any(amplitude):
+        return np.zeros(np.broadcast_shapes(np.shape(angle) + (1,), np.shape(order),
+                                            np.shape(amplitude), np.shape(phase))[:-1])
     return np.sum(amplitude * np.cos(order * angle[..., None] + phase), axis=-1)
 
 
@@ -302,10 +306,10 @@ def crb_runout(inner_raceway_diameter, outer_raceway_diameter, roller_diameter, 
     # inner raceway and the rollers touch along the same lines.
     reach = 0.5 * outer[:, None, None] + harmonics(azimuth, *outer_set) - roller_radius(azimuth)
     room = reach - roller_radius(azimuth + np.pi) - inner_radius(azimuth)  # c . e_j <= h_j
-    down = np.sin(azimuth)
+    across, down = np.cos(azimuth), np.sin(azimuth)  # the radius lines' directions
     active = down < -1e-9
     with np.errstate(divide="ignore", invalid="ignore"):
-        slope = np.where(active, -np.cos(azimuth) / down, 0.0)
+        slope = np.where(active, -across / down, 0.0)
         intercept = np.where(active, room / down, 0.0)
     x, y = lowest_centre(slope, intercept, active)
     distance = np.hypot(x, y)
@@ -313,14 +317,14 @@ def crb_runout(inner_raceway_diameter, outer_raceway_diameter, roller_diameter, 
     runout = distance.max(axis=-1) - distance.min(axis=-1)
     # Validity. Every roller, those of the upper half too, must find room between the rings
     # with the centre found: else the rings squeeze it, a preload the unloaded model lacks.
-    gap = room - (np.cos(azimuth) * x[..., None] + np.sin(azimuth) * y[..., None])
+    gap = room - (across * x[..., None] + down * y[..., None])
     squeezed = np.any(gap < -_TIE, axis=(-2, -1))
     # The gaps of the resting rollers at that centre with the distances between the centres
     # not linearised: the lowest is zero in the linear model; what it is instead bounds the
     # error of the centre's position (the second-order term |c_perp|^2 / (2 r) it drops).
     with np.errstate(invalid="ignore"):
-        exact = np.hypot(reach * np.cos(azimuth) - x[..., None], reach * np.sin(azimuth)
-                         - y[..., None]) - reach + room
+        exact = np.hypot(reach * across - x[..., None], reach * down - y[..., None]) \
+            - reach + room
         lowest = np.min(np.where(active, exact, np.inf), axis=-1)  # (N, S)
         # A gap common to every step moves the centre alike and leaves the runout as it is:
         # how much it changes from step to step bounds the runout's error.
