@@ -67,8 +67,9 @@ OTHER_STUDIES := $(filter-out $(CLUSTER_STUDIES),\
 studies: $(STAMP)
 	$(MAKE) --no-print-directory -j2 studies-on-cluster studies-in-process
 
+# Each study's run writes its page; the index is made from them.
 reproduce: studies
-	$(VENV)/bin/bearing-sweep report
+	$(VENV)/bin/bearing-sweep report --index
 
 studies-on-cluster: $(STAMP)
 	$(VENV)/bin/bearing-sweep study $(CLUSTER_STUDIES)

@@ -81,7 +81,11 @@ def _parser() -> argparse.ArgumentParser:
     run_study.add_argument("--force", action="store_true", help="rerun every sweep")
     cluster_options(run_study)
 
-    commands.add_parser("report", help="write figures/<study>/README.md and figures/README.md")
+    report = commands.add_parser("report", help="write figures/<study>/README.md and "
+                                 "figures/README.md")
+    report.add_argument("--index", action="store_true",
+                        help="write only figures/README.md, from the pages the studies' runs "
+                             "wrote (and any page that is missing)")
     commands.add_parser("models", help="list the models")
     describe = commands.add_parser("describe", help="show one model's inputs and outputs")
     describe.add_argument("model", help="a model's name (bearing-sweep models)")
@@ -303,7 +307,8 @@ def main(argv=None) -> int:
             folders = " ".join(f"--{name} {shlex.quote(str(value))}" for name, value in (
                 ("studies", args.studies), ("results", args.results), ("figures", args.figures))
                 if value is not None and value != Path(name))
-            for path in study.write_report(chosen, args.results, args.figures, folders):
+            for path in study.write_report(chosen, args.results, args.figures, folders,
+                                           from_pages=args.index):
                 print(f"wrote {path}")
     except SpecError as error:
         print(f"error: {error}", file=sys.stderr)

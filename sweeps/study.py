@@ -12,6 +12,7 @@ from __future__ import annotations
 
 import importlib.util
 import os
+import re
 import tomllib
 from dataclasses import dataclass
 from pathlib import Path
@@ -168,7 +169,8 @@ def is_stale(definition: Path, result: Path, sweep) -> bool:
 
 def run_study(study: Study, results: Path, figures: Path, executor: Executor,
               force: bool = False, log=print) -> None:
-    """Run the study's missing or stale sweeps, then draw its figures."""
+    """Run the study's missing or stale sweeps, then draw its figures and write its page
+    (:func:`write_page`)."""
     sweeps = [(d, spec_module.load(d)) for d in study.definitions]  # all valid before any run
     for definition, sweep in sweeps:
         result = study.result(results, definition)
@@ -180,46 +182,71 @@ def run_study(study: Study, results: Path, figures: Path, executor: Executor,
     target.mkdir(parents=True, exist_ok=True)
     study.figures_module().draw(results / study.name, target)
     log(f"{study.name}: figures in {target}")
+    write_page(study, results, figures)
+    log(f"wrote {target / 'README.md'}")
 
 
-def write_report(studies: list[Study], results: Path, figures: Path,
-                 folders: str = "") -> list[Path]:
-    """Write ``figures/<study>/README.md`` for each study and the index ``figures/README.md``;
-    ``folders``: the options that name the folders (``--results res``), repeated in the
-    command a page gives to run a study that has not been run yet."""
+def write_report(studies: list[Study], results: Path, figures: Path, folders: str = "",
+                 from_pages: bool = False) -> list[Path]:
+    """Write ``figures/<study>/README.md`` for each study (:func:`write_page`) and the index
+    ``figures/README.md``; ``folders``: the options that name the folders (``--results
+    res``), repeated in the command a page gives to run a study that has not been run yet.
+    ``from_pages``: index the pages as the studies' runs wrote them (:func:`run_study`), each
+    by its summary, writing only those that are missing."""
     written, index = [], ["# Reproduced figures and stated numbers", ""]
     for study in studies:
-        module = study.figures_module()
-        folder = figures / study.name
         missing = [d.name for d in study.definitions if not study.result(results, d).exists()]
         if missing:
             index.append(f"- {study.name}: not run yet (`bearing-sweep study {study.name}"
                          f"{' ' + folders if folders else ''}`)")
             continue
-        ours = module.ours(results / study.name)
-        kind, heading, column = (("expected trends", "What is expected beside ours", "expected")
-                                 if study.beyond_the_papers else
-                                 ("stated numbers", "The paper's numbers beside ours", "paper"))
-        rows, agreeing, comparable = _claim_rows(study.claims(), ours, column)
-        tables = getattr(module, "tables", None)
-        page = [study.about().rstrip(), ""]
-        if tables is not None:
-            page += [tables(results / study.name).rstrip(), ""]
-        page += [f"## {heading}", "",
-                 f"| {kind[:-1]} | source | {column} | ours | agreement | assumptions |",
-                 "|---|---|---|---|---|---|", *rows, "", "## Figures", ""]
-        for file, caption in module.FIGURES.items():
-            if (folder / file).exists():
-                page += [f"![{caption}]({file})", "", f"*{caption}*", ""]
-        folder.mkdir(parents=True, exist_ok=True)
-        (folder / "README.md").write_text("\n".join(page))
-        written.append(folder / "README.md")
-        index.append(f"- [{study.name}]({study.name}/README.md): {agreeing} of {comparable} "
-                     f"comparable {kind} agree within their tolerance ({len(rows)} stated)")
+        page = figures / study.name / "README.md"
+        summary = _summary(page) if from_pages else None
+        if summary is None:
+            summary = write_page(study, results, figures)
+            written.append(page)
+        index.append(f"- [{study.name}]({study.name}/README.md): {summary}")
     figures.mkdir(parents=True, exist_ok=True)
     (figures / "README.md").write_text("\n".join(index) + "\n")
     written.append(figures / "README.md")
     return written
+
+
+def write_page(study: Study, results: Path, figures: Path) -> str:
+    """Write ``figures/<study>/README.md``: the study's text, its tables, its stated numbers
+    beside ours (with a summary of how many agree, which it returns) and its figures."""
+    module = study.figures_module()
+    folder = figures / study.name
+    ours = module.ours(results / study.name)
+    kind, heading, column = (("expected trends", "What is expected beside ours", "expected")
+                             if study.beyond_the_papers else
+                             ("stated numbers", "The paper's numbers beside ours", "paper"))
+    rows, agreeing, comparable = _claim_rows(study.claims(), ours, column)
+    summary = (f"{agreeing} of {comparable} comparable {kind} agree within their tolerance "
+               f"({len(rows)} stated)")
+    tables = getattr(module, "tables", None)
+    page = [study.about().rstrip(), ""]
+    if tables is not None:
+        page += [tables(results / study.name).rstrip(), ""]
+    page += [f"## {heading}", "", f"{summary}.", "",
+             f"| {kind[:-1]} | source | {column} | ours | agreement | assumptions |",
+             "|---|---|---|---|---|---|", *rows, "", "## Figures", ""]
+    for file, caption in module.FIGURES.items():
+        if (folder / file).exists():
+            page += [f"![{caption}]({file})", "", f"*{caption}*", ""]
+    folder.mkdir(parents=True, exist_ok=True)
+    (folder / "README.md").write_text("\n".join(page))
+    return summary
+
+
+_SUMMARY = re.compile(r"^(\d+ of \d+ comparable (?:stated numbers|expected trends) agree "
+                      r"within their tolerance \(\d+ stated\))\.$", re.MULTILINE)
+
+
+def _summary(page: Path) -> str | None:
+    """The summary :func:`write_page` wrote on ``page``, None where there is no such page."""
+    found = _SUMMARY.search(page.read_text()) if page.is_file() else None
+    return found.group(1) if found else None
 
 
 def agreement(claim: dict, value):

@@ -91,6 +91,13 @@ def test_study_runs_what_is_stale_draws_and_reports(tmp_path, four_points, run_c
     assert first.returncode == 0, first.stderr
     assert (tmp_path / "results" / "tiny" / "loads.nc").exists()
     assert (tmp_path / "figures" / "tiny" / "stiffness.png").exists()
+    # the run writes the study's page, and the index is made from it
+    summary = "1 of 1 comparable stated numbers agree within their tolerance (1 stated)"
+    assert f"\n{summary}.\n" in (tmp_path / "figures" / "tiny" / "README.md").read_text()
+    indexed = run_cli("report", "--index", cwd=tmp_path)
+    assert indexed.returncode == 0, indexed.stderr
+    assert indexed.stdout == f"wrote {Path('figures', 'README.md')}\n"  # no page written
+    assert f"[tiny](tiny/README.md): {summary}" in (tmp_path / "figures" / "README.md").read_text()
     second = run_cli("study", "all", "--workers", "0", cwd=tmp_path)
     assert "loads.toml: up to date" in second.stdout
     (study / "loads.toml").write_text(four_points.replace('"4 kN"', '"5 kN"'))
@@ -106,6 +113,11 @@ def test_study_runs_what_is_stale_draws_and_reports(tmp_path, four_points, run_c
             < page.index("## The paper's numbers beside ours"))
     index = (tmp_path / "figures" / "README.md").read_text()
     assert "[tiny](tiny/README.md): 1 of 1 comparable stated numbers agree" in index
+    # a page without its summary (an earlier version's) is written again for the index
+    (tmp_path / "figures" / "tiny" / "README.md").write_text("# Tiny study\n")
+    again = run_cli("report", "--index", cwd=tmp_path)
+    assert again.returncode == 0 and "tiny" in again.stdout, again.stderr
+    assert (tmp_path / "figures" / "README.md").read_text() == index
     missing = run_cli("study", "nothing", cwd=tmp_path)
     assert missing.returncode == 2 and "no such study" in missing.stderr
 
