@@ -158,7 +158,7 @@ def gallery(studies: list[str], folder: Path) -> str:
     lines = ["# Gallery of studies", "",
              "Each study regenerates a paper's figures with the project's models, sets every "
              "number the paper states beside ours, and says what it assumes where the paper "
-             "is silent; `bearing-sweep report` writes these pages.", ""]
+             "is silent; each study's run (`bearing-sweep study`) writes its page.", ""]
     for name in studies:
         text = (folder / f"{name}.md").read_text()
         title = text.split("\n", 1)[0].lstrip("# ").strip()
