@@ -15,15 +15,36 @@ endif
 
 # uv installs what pip would, in a fraction of the time (it fetches and unpacks in parallel);
 # where it cannot be had or cannot reach the index, pip does the same install.
-INSTALL = $(VENV)/bin/uv pip install --quiet --python $(PYTHON) --compile-bytecode \
+INSTALL = $(VENV)/bin/uv pip install --quiet --python $(PYTHON) \
 	--config-settings editable_mode=strict
 PIP_INSTALL = $(PYTHON) -m pip install --quiet --disable-pip-version-check \
 	--config-settings editable_mode=strict
+# The bytecode of what the studies' and the tests' processes import, written by importing it
+# (two processes, a core each): compiling every module of the environment (uv's
+# --compile-bytecode, pip's default) takes three times as long, most of it for modules no run
+# imports, and where Python may not write bytecode as it runs (PYTHONDONTWRITEBYTECODE), every
+# process would compile its imports again.
+RUN_IMPORTS := bearing_sweep.cli, bearing_sweep.study, bearing_sweep.executor, dask.array, \
+	distributed.dashboard.scheduler, distributed.cli.dask_worker, distributed.http.health, \
+	distributed.http.statics, distributed.http.scheduler.info, \
+	distributed.http.scheduler.json, distributed.http.scheduler.prometheus, \
+	distributed.http.worker.prometheus, distributed.diagnostics.websocket, \
+	tornado.platform.asyncio, pytest, xdist, hypothesis
+MORE_RUN_IMPORTS := matplotlib.pyplot, matplotlib.backends.backend_agg, scipy.stats, \
+	scipy.optimize, scipy.integrate, scipy.interpolate, scipy.fftpack, netCDF4, h5py, zarr, \
+	pint, xarray, xarray.computation.nanops, numba.core.registry
+# numba's contexts import their implementations, as the first compiled call does.
+NUMBA_CONTEXTS := target = numba.core.registry.cpu_target; \
+	target.target_context.refresh(); target.typing_context.refresh()
+BYTECODE = env -u PYTHONDONTWRITEBYTECODE $(PYTHON) -c 'import $(RUN_IMPORTS)' & \
+	env -u PYTHONDONTWRITEBYTECODE $(PYTHON) -c 'import $(MORE_RUN_IMPORTS); $(NUMBA_CONTEXTS)' \
+	&& wait $$!
 
 $(STAMP): pyproject.toml
 	python3 -m venv $(VENV)
 	$(PYTHON) -m pip install --quiet --disable-pip-version-check uv 2>/dev/null || true
-	$(INSTALL) -e '.[test,explore]' 2>/dev/null || $(PIP_INSTALL) -e '.[test,explore]'
+	if $(INSTALL) -e '.[test,explore]' 2>/dev/null; then $(BYTECODE); \
+	else $(PIP_INSTALL) -e '.[test,explore]'; fi
 	echo '$(FILES)' > $(VENV)/.files
 	touch $(STAMP)
 
@@ -40,12 +61,13 @@ test-slow: $(STAMP) $(VENV)/.ross-installed
 # ross, for the slow tests of the rotor-dynamics coefficients (made again when pyproject.toml
 # changes).
 $(VENV)/.ross-installed: pyproject.toml | $(STAMP)
-	$(INSTALL) -e '.[test,explore,ross]' 2>/dev/null || $(PIP_INSTALL) -e '.[test,explore,ross]'
+	$(INSTALL) --compile-bytecode -e '.[test,explore,ross]' 2>/dev/null \
+		|| $(PIP_INSTALL) -e '.[test,explore,ross]'
 	touch $@
 
 # The documentation's tools, beside the test extras (made again when pyproject.toml changes).
 $(VENV)/.docs-installed: pyproject.toml | $(STAMP)
-	$(INSTALL) -e '.[test,explore,docs,ross]' 2>/dev/null \
+	$(INSTALL) --compile-bytecode -e '.[test,explore,docs,ross]' 2>/dev/null \
 		|| $(PIP_INSTALL) -e '.[test,explore,docs,ross]'
 	touch $@
 
