@@ -256,7 +256,17 @@ def point_seconds(values) -> np.ndarray:
 
 
 def _samples_fit(duration, output_interval):
-    return (output_interval <= duration) & (duration / output_interval <= 1e5)
+    """At least three samples, so that the settled half's whirl deviation ratio (a standard
+    deviation) has two, and at most 1e5 + 1."""
+    return ((2.0 * output_interval <= duration * (1.0 + 1e-9))
+            & (duration / output_interval <= 1e5))
+
+
+#: A run's samples (:func:`_samples_fit`).
+SAMPLES_FIT = Constraint(
+    ("duration", "output_interval"), _samples_fit,
+    "duration must hold from two to 1e5 output_intervals (the settled half's whirl "
+    "deviation ratio needs two samples)")
 
 
 MODELS = [Model(
@@ -319,8 +329,7 @@ MODELS = [Model(
     constraints=STEADY_MODELS[0].constraints + (
         Constraint(("cage_width",), _has_mass, "the transient needs a cage of some width"),
         CAGE_MASS_CENTRE,
-        Constraint(("duration", "output_interval"), _samples_fit,
-                   "output_interval must not exceed duration, and at most 1e5 samples"),
+        SAMPLES_FIT,
     ),
     seconds_per_point=point_seconds,
     points_per_call=1,

@@ -20,7 +20,7 @@ import numpy as np
 from . import cage_dynamics_6dof_imex as imex
 from . import cage_dynamics_6dof_implicit as implicit
 from . import cage_dynamics_6dof_rhs as rhs
-from .cage_dynamics import CAGE_MASS_CENTRE, GRAVITY, _samples, _samples_fit
+from .cage_dynamics import CAGE_MASS_CENTRE, GRAVITY, SAMPLES_FIT, _samples
 from .cage_dynamics_rhs import roller_loads
 from .cage_slip import MODELS as STEADY_MODELS
 from .cage_slip import VALIDITY as STEADY_VALIDITY
@@ -726,8 +726,7 @@ MODELS = [Model(
                    "end_chamfer must be less than the roller's radius"),
         Constraint(("inner_raceway_diameter", "rib_height", "cage_inner_diameter"),
                    _rib_below_cage, "the rib must stay below the cage's bore"),
-        Constraint(("duration", "output_interval"), _samples_fit,
-                   "output_interval must not exceed duration, and at most 1e5 samples"),
+        SAMPLES_FIT,
         Constraint(("duration", "rk4_step"), _rk4_steps_fit,
                    "duration / rk4_step must not exceed 1e9 steps"),
     ),
