@@ -41,12 +41,18 @@ BYTECODE = env -u PYTHONDONTWRITEBYTECODE $(PYTHON) -c 'import $(RUN_IMPORTS)' &
 	env -u PYTHONDONTWRITEBYTECODE $(PYTHON) -c 'import $(MORE_RUN_IMPORTS); $(NUMBA_CONTEXTS)' \
 	&& wait $$!
 NO_BYTECODE := make: an import above failed; runs compile what it left out as they import it
+ENSUREPIP = { $(PYTHON) -m pip --version >/dev/null 2>&1 || $(PYTHON) -m ensurepip --default-pip --upgrade >/dev/null; }
 
+# The venv is made without pip (ensurepip's install of it takes seconds): python3's own pip
+# puts uv in it, and uv pip with the rest. Where python3 has no pip that can, or uv cannot be
+# had, ensurepip gives the venv its pip and pip does the install.
 $(STAMP): pyproject.toml
-	python3 -m venv $(VENV)
-	$(PYTHON) -m pip install --quiet --disable-pip-version-check uv 2>/dev/null || true
-	if $(INSTALL) -e '.[test,explore]' 2>/dev/null; then $(BYTECODE) || echo '$(NO_BYTECODE)' >&2; \
-	else $(PIP_INSTALL) -e '.[test,explore]'; fi
+	python3 -m venv --without-pip $(VENV)
+	python3 -m pip --python $(PYTHON) install --quiet --disable-pip-version-check uv \
+		2>/dev/null || true
+	if $(INSTALL) pip -e '.[test,explore]' 2>/dev/null; then \
+		$(BYTECODE) || echo '$(NO_BYTECODE)' >&2; \
+	else $(ENSUREPIP) && $(PIP_INSTALL) -e '.[test,explore]'; fi
 	echo '$(FILES)' > $(VENV)/.files
 	touch $(STAMP)
 
