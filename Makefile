@@ -41,7 +41,8 @@ BYTECODE = env -u PYTHONDONTWRITEBYTECODE $(PYTHON) -c 'import $(RUN_IMPORTS)' &
 	env -u PYTHONDONTWRITEBYTECODE $(PYTHON) -c 'import $(MORE_RUN_IMPORTS); $(NUMBA_CONTEXTS)' \
 	&& wait $$!
 NO_BYTECODE := make: an import above failed; runs compile what it left out as they import it
-ENSUREPIP = { $(PYTHON) -m pip --version >/dev/null 2>&1 || $(PYTHON) -m ensurepip --default-pip --upgrade >/dev/null; }
+ENSUREPIP = { $(PYTHON) -m pip --version >/dev/null 2>&1 \
+	|| $(PYTHON) -m ensurepip --default-pip --upgrade >/dev/null; }
 
 # The venv is made without pip (ensurepip's install of it takes seconds): python3's own pip
 # puts uv in it, and uv pip with the rest. Where python3 has no pip that can, or uv cannot be
