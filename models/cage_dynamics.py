@@ -18,8 +18,8 @@ from .cage_slip import bearing_terms, cage_slip, cage_windage
 from .contact import palmgren_constant
 from .limits import CAGE_DENSITIES
 from .cylindrical import crb_radial
-from .registry import (CONVERGED, NOT_CONVERGED, Constraint, DimCoordinate, Input, Model,
-                       Output, VALIDITY_MASK, outcome)
+from .registry import (CONVERGED, NOT_CONVERGED, OUT_OF_VALIDITY, Constraint, DimCoordinate,
+                       Input, Model, Output, VALIDITY_MASK, outcome)
 
 GRAVITY = 9.81
 _SETTLED = 0.5  # the settled part: the last half of the run
@@ -76,8 +76,9 @@ def cage_dynamics(radial_load, speed, roller_count, inner_raceway_diameter, roll
         ``(N, samples)`` [m/s] (speed of the mass centre), ``whirl_deviation_ratio`` (eq. 28
         over the settled half) [-], ``roller_slip`` ``(N, samples, Z)`` [-], ``sample_time``
         ``(N, samples)`` [s], ``status``: the steady state's where it has none to start from;
-        ``out_of_validity`` where the steady state is (cage_slip's validity), beside the
-        transient's own outcome.
+        ``out_of_validity`` where the steady state is (cage_slip's validity) or the run's own
+        state is none the model holds (:data:`RUN_VALIDITY`), beside the transient's own
+        outcome.
 
     References
     ----------
@@ -172,7 +173,7 @@ def _run(one, count, t, traction, point, cage_density, eccentricity, ring_mass, 
     slip = 1 - y[cage + 5] / t["omega_kin"]
     speed_of_centre = np.hypot(y[cage + 2], y[cage + 3])
     settled_speed = speed_of_centre[settled]
-    return CONVERGED | validity, {
+    outputs = {
         "cage_slip": slip, "mean_cage_slip": slip[settled].mean(), "sample_time": times,
         "cage_x": y[cage], "cage_y": y[cage + 1],
         "cage_centre_x": y[cage] - eccentricity * np.cos(y[cage + 4]),
@@ -180,6 +181,10 @@ def _run(one, count, t, traction, point, cage_density, eccentricity, ring_mass, 
         "whirl_speed": speed_of_centre,
         "whirl_deviation_ratio": settled_speed.std(ddof=1) / settled_speed.mean(),
         "roller_slip": (1 - y[6:cage:3] / t["spin_kin"]).T}
+    validity |= run_validity(outputs["mean_cage_slip"], outputs["roller_slip"][settled].mean(),
+                             outputs["cage_centre_x"], outputs["cage_centre_y"],
+                             t["pocket_clearance"], t["play"])
+    return CONVERGED | validity, outputs
 
 
 def _start(count, steady, drop, omega_c, eccentricity, kinematic_spin):
@@ -262,6 +267,39 @@ def _samples_fit(duration, output_interval):
             & (duration / output_interval <= 1e5))
 
 
+#: How far a cage's geometric centre may leave the bearing's axis in a transient run, in
+#: pocket clearances and diametral clearances together (:func:`run_validity`).
+EXCURSION_LIMIT = 2.0
+#: What a transient run's own state puts outside the model's validity (:func:`run_validity`).
+RUN_VALIDITY = ("a settled mean cage or roller slip beyond -100 % or +100 % (a cage turning "
+                "backwards or at twice its kinematic speed, rollers spinning backwards: no "
+                "running state, but an integration too loose or a speed too low for the "
+                "traction to drive the rollers); a cage centre farther from the bearing's axis "
+                f"than {EXCURSION_LIMIT:g} x (pocket clearance + diametral clearance) at any "
+                "sample (its pockets would pass through the rollers)")
+
+
+def run_validity(mean_cage_slip, mean_roller_slip, centre_x, centre_y, pocket_clearance,
+                 clearance):
+    """``OUT_OF_VALIDITY`` where a transient run's own state is none the model holds
+    (:data:`RUN_VALIDITY`), else 0; NaN means count as beyond.
+
+    Parameters
+    ----------
+    mean_cage_slip, mean_roller_slip : float
+        Settled means [-].
+    centre_x, centre_y : numpy.ndarray
+        The cage's geometric centre at each sample [m].
+    pocket_clearance, clearance : float
+        Pocket clearance and the bearing's diametral clearance [m].
+    """
+    excursion = np.max(np.hypot(centre_x, centre_y))
+    limit = EXCURSION_LIMIT * (pocket_clearance + clearance)
+    inside = (abs(mean_cage_slip) <= 1.0 and abs(mean_roller_slip) <= 1.0
+              and excursion <= limit)
+    return 0 if inside else OUT_OF_VALIDITY
+
+
 #: A run's samples (:func:`_samples_fit`).
 SAMPLES_FIT = Constraint(
     ("duration", "output_interval"), _samples_fit,
@@ -275,7 +313,7 @@ MODELS = [Model(
     summary="Cylindrical roller bearing, planar transient: cage whirl, pocket contact, cage and "
             "roller slip in time, from the steady state.",
     reference="Paper 002, eq. 27-28 and section 3",
-    version="6",
+    version="7",
     inputs=tuple(i for i in STEADY_MODELS[0].inputs if i.name not in ("orbit_points", "branch"))
     + (
         Input("cage_density", "kg/m^3", "cage density (brass: 8600; cages: 900 for polymers "
@@ -333,5 +371,6 @@ MODELS = [Model(
     ),
     seconds_per_point=point_seconds,
     points_per_call=1,
-    validity="cage_slip's, for the steady state it starts from: " + STEADY_VALIDITY,
+    validity="cage_slip's, for the steady state it starts from: " + STEADY_VALIDITY
+    + "; of a run that reaches its end, " + RUN_VALIDITY,
 )]

@@ -3,7 +3,7 @@ import numpy as np
 import pytest
 
 from bearing_sweep.models import cage_dynamics_rhs as rhs
-from bearing_sweep.models.cage_dynamics import cage_dynamics
+from bearing_sweep.models.cage_dynamics import EXCURSION_LIMIT, cage_dynamics, run_validity
 from bearing_sweep.models.cage_slip import cage_slip
 
 MM, RPM = 1e-3, 2 * np.pi / 60
@@ -147,3 +147,51 @@ def test_the_steady_starts_validity_is_carried_through_the_transient():
 
     assert result["status"].tolist() == [CONVERGED | OUT_OF_VALIDITY]
     assert np.isfinite(result["cage_slip"]).all()
+
+
+# -- A run's own state out of the model's validity (both transient models: run_validity)
+
+def test_a_cage_with_no_pocket_stiffness_to_hold_it_falls_out_of_validity():
+    # A pocket contact of 1e-3 N/m cannot hold the cage up: over 0.1 s it falls through the
+    # rollers, far beyond its pocket and diametral clearances, and the run says so. The same
+    # run with the default stiffness stays within them.
+    falling, held = (cage_dynamics(800.0, 12000 * RPM, **TEST, pocket_stiffness=stiffness,
+                                   duration=0.1, output_interval=1e-3)
+                     for stiffness in (1e-3, 5e7))
+    from bearing_sweep.models.registry import CONVERGED, OUT_OF_VALIDITY
+
+    limit = EXCURSION_LIMIT * (0.1 * MM + TEST["clearance"])
+    assert np.hypot(falling["cage_centre_x"], falling["cage_centre_y"]).max() > limit
+    assert falling["status"].tolist() == [CONVERGED | OUT_OF_VALIDITY]
+    assert np.hypot(held["cage_centre_x"], held["cage_centre_y"]).max() < limit
+    assert held["status"].tolist() == [CONVERGED]
+
+
+def test_a_cage_run_at_a_crawl_is_out_of_validity():
+    # At 0.01 r/min, with the pockets' default friction, the traction cannot drive the
+    # rollers over 5 ms: the settled mean cage slip lies far beyond -100 %, which no running
+    # bearing has.
+    crawl = cage_dynamics(800.0, 0.01 * RPM, **dict(TEST, pocket_friction=0.1),
+                          duration=5e-3, output_interval=1e-4)
+    from bearing_sweep.models.registry import CONVERGED, OUT_OF_VALIDITY
+
+    assert abs(crawl["mean_cage_slip"][0]) > 1.0
+    assert crawl["status"].tolist() == [CONVERGED | OUT_OF_VALIDITY]
+
+
+@pytest.mark.parametrize("slips, centre, inside", [
+    ((0.02, 0.25), (0.0, 0.0), True),
+    ((-1.0, 1.0), (0.0, 0.0), True),  # the bounds themselves
+    ((-1.0001, 0.25), (0.0, 0.0), False),
+    ((0.02, 1.0001), (0.0, 0.0), False),
+    ((np.nan, 0.25), (0.0, 0.0), False),
+    ((0.02, 0.25), (0.24e-3, 0.0), True),  # within 2 x (0.1 + 0.02) mm
+    ((0.02, 0.25), (0.17e-3, 0.17e-3), False),  # 0.2404 mm from the axis
+    ((0.02, 0.25), (np.nan, 0.0), False),
+])
+def test_run_validity_bounds_the_slips_and_the_cages_excursion(slips, centre, inside):
+    from bearing_sweep.models.registry import OUT_OF_VALIDITY
+
+    found = run_validity(*slips, np.array([0.0, centre[0]]), np.array([0.0, centre[1]]),
+                         0.1 * MM, 0.02 * MM)
+    assert found == (0 if inside else OUT_OF_VALIDITY)

@@ -23,6 +23,7 @@ from bearing_sweep.models import cage_dynamics_6dof_implicit as implicit
 from bearing_sweep.models import cage_dynamics_6dof_rhs as rhs
 from bearing_sweep.models.cage_dynamics import cage_dynamics
 from bearing_sweep.models.cage_slip import bearing_terms, cage_slip
+from bearing_sweep.models.registry import CONVERGED, OUT_OF_VALIDITY
 from bearing_sweep.testing import assert_chunking_invariant
 
 MM, RPM = 1e-3, 2 * np.pi / 60
@@ -1032,3 +1033,36 @@ def test_the_end_faces_summed_by_moments_are_the_elements_sum(start, end_pressur
                 np.testing.assert_allclose(value, reference, rtol=1e-9,
                                            atol=1e-12 * np.abs(reference).max())
     assert dry > 0 and observed[1] == 1.0
+
+
+# -- 9. A run's own state out of the model's validity
+
+def test_a_spatial_run_at_a_crawl_is_out_of_validity():
+    # At 0.01 r/min the traction cannot drive the rollers: over 2 ms the settled mean cage
+    # slip lies far beyond -100 % (-2316 %) and the rollers' beyond +100 %, which no running
+    # bearing has.
+    crawl = model.cage_dynamics_6dof(800.0, 0.01 * RPM, **BEARING, duration=2e-3,
+                                     output_interval=1e-4)
+    assert abs(crawl["mean_cage_slip"][0]) > 1.0
+    assert crawl["status"].tolist() == [CONVERGED | OUT_OF_VALIDITY]
+
+
+@pytest.mark.parametrize("share, flagged", [(0.005, False), (0.015, True)])
+def test_a_roller_end_pressed_deep_into_its_rib_is_out_of_validity(monkeypatch, share,
+                                                                  flagged):
+    # The run's element records as the integrator returns them, the ribs' smallest gap
+    # replaced by a penetration of ``share`` of the Winkler layer's depth (1 % is the
+    # limit): the run is out of validity beyond it, its values kept.
+    one = point(duration=4e-4, output_interval=1e-4)
+    original = model.integrate
+
+    def pressed(run, one):
+        samples, arc, end, rib, events, steps, reached = original(run, one)
+        rib = rib.copy()
+        rib.flat[0] = -share * one["winkler_depth"]
+        return samples, arc, end, rib, events, steps, reached
+
+    monkeypatch.setattr(model, "integrate", pressed)
+    status, outputs = model._run(one)
+    assert status == (CONVERGED | OUT_OF_VALIDITY if flagged else CONVERGED)
+    assert np.isfinite(outputs["mean_cage_slip"])
