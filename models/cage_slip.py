@@ -502,6 +502,13 @@ def _cage_between_raceways(cage_inner_diameter, cage_outer_diameter, inner_racew
                                                        clearance))
 
 
+def _cage_across_pitch_circle(cage_inner_diameter, cage_outer_diameter,
+                              inner_raceway_diameter, roller_diameter, clearance):
+    pitch = 0.5 * (inner_raceway_diameter + _outer_raceway_diameter(
+        inner_raceway_diameter, roller_diameter, clearance))
+    return (cage_inner_diameter < pitch) & (pitch < cage_outer_diameter)
+
+
 def _pockets_fit(pocket_clearance, roller_count, inner_raceway_diameter, roller_diameter,
                  clearance):
     pitch = 0.5 * (inner_raceway_diameter + _outer_raceway_diameter(
@@ -567,7 +574,8 @@ MODELS = [Model(
               minimum=OIL_DENSITIES[0], maximum=OIL_DENSITIES[1]),
         Input("pressure_viscosity", "1/GPa", "pressure-viscosity coefficient alpha (film "
               "thickness only; 10-13; lubricants: about 5 for water-glycols to 40 for "
-              "traction fluids)", default=11.0, minimum=0.0, maximum=100.0),
+              "traction fluids)", default=11.0, minimum=0.0, exclusive_minimum=True,
+              maximum=100.0),
         Input("youngs_modulus", "GPa", "Young's modulus of rollers and rings", default=207.0,
               minimum=SOFTEST_BEARING_SOLID, maximum=STIFFEST_SOLID),
         Input("poisson_ratio", "1", "Poisson's ratio of rollers and rings", default=0.28,
@@ -646,6 +654,12 @@ MODELS = [Model(
                    "the cage must lie between the raceways: cage_inner_diameter at least "
                    "inner_raceway_diameter, cage_outer_diameter at most the outer raceway "
                    "(inner_raceway_diameter + 2 roller_diameter + clearance)"),
+        Constraint(("cage_inner_diameter", "cage_outer_diameter", "inner_raceway_diameter",
+                    "roller_diameter", "clearance"), _cage_across_pitch_circle,
+                   "the cage must reach across the rollers' pitch circle, whose diameter is "
+                   "inner_raceway_diameter + roller_diameter + clearance / 2, to hold their "
+                   "centres in its pockets: cage_inner_diameter below it, cage_outer_diameter "
+                   "above it"),
         Constraint(("pocket_clearance", "roller_count", "inner_raceway_diameter",
                     "roller_diameter", "clearance"), _pockets_fit,
                    "the pockets do not fit: each, roller_diameter + 2 pocket_clearance wide, "
