@@ -179,11 +179,18 @@ class Input:
         unit = "" if self.unit in ("1", "") else " " + self.unit
         low = high = ""
         if self.minimum is not None:
-            low = (">" if self.exclusive_minimum else ">=") + f" {self.minimum:g}{unit}"
+            low = (">" if self.exclusive_minimum else ">=") + f" {_bound(self.minimum)}{unit}"
         if self.maximum is not None:
-            high = f"<= {self.maximum:g}{unit}"
+            high = f"<= {_bound(self.maximum)}{unit}"
         kind = "an integer " if self.kind == "count" else ""
         return kind + (" and ".join(t for t in (low, high) if t) or "any value")
+
+
+def _bound(value) -> str:
+    """A bound as short as it reads back exactly (2 pi: 6.283185307179586, not 6.28319, which
+    a value the bound refuses would read as)."""
+    short = f"{value:g}"
+    return short if float(short) == value else repr(float(value))
 
 
 @dataclass(frozen=True)
