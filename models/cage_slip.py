@@ -502,17 +502,20 @@ def _cage_between_raceways(cage_inner_diameter, cage_outer_diameter, inner_racew
                                                        clearance))
 
 
+def _pitch_diameter(inner_raceway_diameter, roller_diameter, clearance):
+    return 0.5 * (inner_raceway_diameter + _outer_raceway_diameter(
+        inner_raceway_diameter, roller_diameter, clearance))
+
+
 def _cage_across_pitch_circle(cage_inner_diameter, cage_outer_diameter,
                               inner_raceway_diameter, roller_diameter, clearance):
-    pitch = 0.5 * (inner_raceway_diameter + _outer_raceway_diameter(
-        inner_raceway_diameter, roller_diameter, clearance))
+    pitch = _pitch_diameter(inner_raceway_diameter, roller_diameter, clearance)
     return (cage_inner_diameter < pitch) & (pitch < cage_outer_diameter)
 
 
 def _pockets_fit(pocket_clearance, roller_count, inner_raceway_diameter, roller_diameter,
                  clearance):
-    pitch = 0.5 * (inner_raceway_diameter + _outer_raceway_diameter(
-        inner_raceway_diameter, roller_diameter, clearance))
+    pitch = _pitch_diameter(inner_raceway_diameter, roller_diameter, clearance)
     return roller_diameter + 2.0 * pocket_clearance < pitch * np.sin(np.pi / roller_count)
 
 
