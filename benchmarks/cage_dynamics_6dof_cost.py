@@ -17,9 +17,10 @@ Rosenbrock-W) then run 0.1 s against a reference at a tolerance a hundred times 
 A third section says where the default run's time goes: its steps, the right-hand side timed
 alone, and the steps over 1 ms and the right-hand side's cost with each part of the physics
 switched off. A last one runs the end films with their pressure (``end_film="reynolds"``),
-whose stiffness holds the explicit methods' steps: the Rosenbrock-W method against the
-adaptive Dormand-Prince and additive methods at the default tolerance (1e-5) over the first
-2 ms, the paper's RK4 tried there, and the Rosenbrock-W method over 0.1 s. The machine is
+whose stiffness holds the explicit methods' steps: the multistep formulas (their default)
+and the Rosenbrock-W method against the adaptive Dormand-Prince and additive methods at the
+default tolerance (1e-5) over the first 2 ms, the paper's RK4 tried there, and the two
+implicit methods over 0.1 s against a reference a hundred times tighter. The machine is
 shared: the load average and the process's own CPU time beside the wall time say how much of
 the wall time was ours.
 """
@@ -215,35 +216,45 @@ def profile(default, seen):
 
 
 def end_film_pressure():
-    """The end films with their pressure (``end_film="reynolds"``): the Rosenbrock-W method
-    against the adaptive Dormand-Prince method and the additive method over the first 2 ms,
-    and over 0.1 s against the paper's RK4 (which the stiff films make unstable at its
-    1e-7 s)."""
+    """The end films with their pressure (``end_film="reynolds"``): the multistep formulas
+    (their default) and the Rosenbrock-W method against the adaptive Dormand-Prince method
+    and the additive method over the first 2 ms, the paper's RK4 tried there (the stiff films
+    make it unstable at its 1e-7 s); then the two implicit methods over 0.1 s against a
+    reference, the multistep formulas at a tolerance a hundred times tighter."""
     film = dict(end_film="reynolds")
-    for integrator in ("adaptive", "imex", "rosenbrock"):  # compile, or load: untimed
+    for integrator in ("adaptive", "imex", "rosenbrock", "bdf"):  # compile, or load: untimed
         timed_run(3 * INTERVAL, integrator, **film)
-    explicit, explicit_wall, _, _ = timed_run(SHORT, "adaptive", **film)
-    additive, additive_wall, _, _ = timed_run(SHORT, "imex", **film)
-    implicit, implicit_wall, _, _ = timed_run(SHORT, "rosenbrock", **film)
+    rows = [(name, *timed_run(SHORT, integrator, **film)[:2]) for name, integrator in (
+        ("adaptive Dormand-Prince", "adaptive"), ("additive", "imex"),
+        ("Rosenbrock-W", "rosenbrock"), ("multistep (the default)", "bdf"))]
     fixed, fixed_wall, _, fixed_seen = timed_run(SHORT, "rk4", check=False, **film)
     pct = 100.0
     print(f"cage_dynamics_6dof with the end films' pressure, the first {1e3 * SHORT:g} ms")
     print(f"  {'':<34} {'steps':>8} {'wall [s]':>9} {'mean cage slip [%]':>19} "
           f"{'mean roller slip [%]':>21}")
-    for name, found, wall in (("adaptive Dormand-Prince", explicit, explicit_wall),
-                              ("additive", additive, additive_wall),
-                              ("Rosenbrock-W", implicit, implicit_wall)):
+    for name, found, wall in rows:
         print(f"  {name:<34} {found['integration_steps'][0]:>8.0f} {wall:>9.2f} "
               f"{pct * found['mean_cage_slip'][0]:>19.4f} "
               f"{pct * found['mean_roller_slip'][0]:>21.4f}")
     reached = "reached" if fixed["status"][0] == 0 else "did not reach"
     print(f"  the paper's RK4 at {fixed_seen['one']['rk4_step']:.0e} s {reached} "
           f"{1e3 * SHORT:g} ms ({fixed_wall:.1f} s)")
-    print(f"  ratio, adaptive over Rosenbrock-W: {explicit_wall / implicit_wall:.1f}x")
+    explicit_wall = rows[0][2]
+    print(f"  ratio, adaptive over Rosenbrock-W: {explicit_wall / rows[2][2]:.1f}x, over the "
+          f"multistep formulas: {explicit_wall / rows[3][2]:.1f}x")
     before = load_text()
-    _, wall, cpu, _ = timed_run(DURATION, "rosenbrock", **film)
-    print(f"  Rosenbrock-W over {DURATION} s: {wall:.1f} s (CPU {cpu:.1f} s; load average "
-          f"{before} before, {load_text()} after)")
+    runs = [(name, *timed_run(DURATION, integrator, **film)[:3]) for name, integrator in (
+        ("Rosenbrock-W", "rosenbrock"), ("multistep (the default)", "bdf"))]
+    reference = timed_run(DURATION, "bdf", relative_tolerance=1e-7, **film)[0]
+    print(f"  over {DURATION} s (load average {before} before, {load_text()} after), against "
+          f"the multistep formulas at 1e-7:")
+    for name, found, wall, cpu in runs:
+        off = [pct * (found[k][0] / reference[k][0] - 1)
+               for k in ("mean_cage_slip", "mean_roller_slip")]
+        steps = found["integration_steps"][0]
+        print(f"  {name:<24} {wall:>7.1f} s (CPU {cpu:.1f} s) {steps:>7.0f} steps; mean cage "
+              f"slip {off[0]:+.2f} %, roller slip {off[1]:+.2f} % off")
+    print(f"  Rosenbrock-W over the multistep formulas: {runs[0][2] / runs[1][2]:.1f}x")
 
 
 if __name__ == "__main__":
