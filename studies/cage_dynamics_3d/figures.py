@@ -84,7 +84,8 @@ FIGURES = {
                                     "centred cage's skew grows from round-off to the "
                                     "eccentric cases' after 45-50 ms, and with the films' "
                                     "squeeze and wedge pressure (right), under which only "
-                                    "the axial eccentricity skews the rollers.",
+                                    "the axial eccentricity skews the rollers (the centred "
+                                    "cage's 1e-5 to 1e-4 µrad are the integrator's error).",
     "skew_stability.png": "The aligned bearing at 2 kN, 6000 r/min, every roller started "
                           "with 1e-6 rad of skew: the rollers' root mean square skew against "
                           "time with the paper's end films (shear only, eq. 7), under which it "
