@@ -25,9 +25,10 @@ from . import cage_dynamics_6dof_rhs as rhs
 from .cage_dynamics import (CAGE_MASS_CENTRE, GRAVITY, RUN_VALIDITY, SAMPLES_FIT, _samples,
                             run_validity)
 from .cage_dynamics_rhs import roller_loads
+from .cage_end_faces import coverage_holds, element_coverage, face_elements
 from .cage_slip import MODELS as STEADY_MODELS
 from .cage_slip import VALIDITY as STEADY_VALIDITY
-from .cage_slip import bearing_terms, cage_slip, cage_windage
+from .cage_slip import _pitch_diameter, bearing_terms, cage_slip, cage_windage
 from .contact import STIFFEST_SOLID, palmgren_constant
 from .contact_laws import qin_damping_coefficient, winkler_modulus
 from .limits import CAGE_DENSITIES, SOFTEST_BEARING_SOLID
@@ -149,7 +150,11 @@ def cage_dynamics_6dof(radial_load, speed, roller_count, inner_raceway_diameter,
         the defaults put the mean roller slip 3.6 % below 24 x 72 end-face elements (the
         cage slip 1.1 %), and with 1 deg of misalignment 6.1 % (cage 5.2 %); 10 x 36 lie
         within 0.8 % (roller) and 2.4 % (cage) of 24 x 72, at about twice the defaults'
-        cost.
+        cost. A face that covers a thin part of the end disc (a low rib, a thin cage) meets
+        few elements or none: a sweep is refused where the elements facing the cage or the
+        rib give the area of the end disc within it, or its centroid, wrong by more than a
+        quarter (:mod:`models.cage_end_faces`), and where the rib does not reach the flat
+        end face above the chamfer.
     relative_tolerance : float
         Of the adaptive integrators (the absolute ones follow from it: see
         :func:`_absolute_tolerances`), at most the default 1e-5: over 20 ms at 800 N,
@@ -303,11 +308,8 @@ def geometry(terms, one):
     nodes, weights = np.polynomial.legendre.leggauss(int(one["arc_axial_points"]))
     arc_z = 0.5 * length * nodes
     arc_area = np.outer(np.full(2 * n, pocket_radius * step), 0.5 * length * weights)
-    face_radius = radius - one["end_chamfer"]
-    rings, angles = int(one["face_rings"]), int(one["face_angles"])
-    face_r = face_radius * np.sqrt((np.arange(rings) + 0.5) / rings)  # rings of equal area
-    face_phi = 2 * np.pi * (np.arange(angles) + 0.5) / angles
-    face_area = np.full(rings, np.pi * face_radius**2 / (rings * angles))
+    face_r, face_phi, face_area = face_elements(radius - one["end_chamfer"],
+                                                int(one["face_rings"]), int(one["face_angles"]))
     return (slice_z, arc_theta, arc_z, arc_area, face_r, face_phi, face_area), 2 * (last - first)
 
 
@@ -576,6 +578,25 @@ def _rib_below_cage(inner_raceway_diameter, rib_height, cage_inner_diameter):
     return inner_raceway_diameter + 2 * rib_height < cage_inner_diameter
 
 
+def _rib_reaches_face(inner_raceway_diameter, roller_diameter, clearance, end_chamfer,
+                      rib_height):
+    pitch = 0.5 * _pitch_diameter(inner_raceway_diameter, roller_diameter, clearance)
+    return 0.5 * inner_raceway_diameter + rib_height > pitch - (0.5 * roller_diameter
+                                                                 - end_chamfer)
+
+
+def _end_faces_resolved(inner_raceway_diameter, roller_diameter, clearance, end_chamfer,
+                        rib_height, cage_inner_diameter, cage_outer_diameter, face_rings,
+                        face_angles):
+    pitch = 0.5 * _pitch_diameter(inner_raceway_diameter, roller_diameter, clearance)
+    face, ring = 0.5 * roller_diameter - end_chamfer, 0.5 * inner_raceway_diameter
+    cage, rib = (coverage_holds(*element_coverage(face, pitch, low, high, face_rings,
+                                                  face_angles))
+                 for low, high in ((0.5 * cage_inner_diameter, 0.5 * cage_outer_diameter),
+                                   (ring, ring + rib_height)))
+    return cage & rib
+
+
 def _rk4_steps_fit(duration, rk4_step):
     return duration / rk4_step <= 1e9
 
@@ -771,6 +792,18 @@ MODELS = [Model(
                    "end_chamfer must be less than the roller's radius"),
         Constraint(("inner_raceway_diameter", "rib_height", "cage_inner_diameter"),
                    _rib_below_cage, "the rib must stay below the cage's bore"),
+        Constraint(("inner_raceway_diameter", "roller_diameter", "clearance", "end_chamfer",
+                    "rib_height"), _rib_reaches_face,
+                   "rib_height must exceed end_chamfer + clearance / 4: the rib meets the "
+                   "roller's flat end face (the model has no contact on the chamfer)"),
+        Constraint(("inner_raceway_diameter", "roller_diameter", "clearance", "end_chamfer",
+                    "rib_height", "cage_inner_diameter", "cage_outer_diameter", "face_rings",
+                    "face_angles"), _end_faces_resolved,
+                   "face_rings x face_angles too coarse for the faces a roller's end meets: "
+                   "the end-face elements facing the cage (bore to outside diameter) and the "
+                   "rib must give the area of the end face within each to 25 % and its "
+                   "centroid to 25 % of its radial width; raise face_rings and face_angles "
+                   "(a 10 mm roller with a 0.5 mm chamfer beside a 1 mm rib: 10 x 24)"),
         SAMPLES_FIT,
         Constraint(("duration", "rk4_step"), _rk4_steps_fit,
                    "duration / rk4_step must not exceed 1e9 steps"),

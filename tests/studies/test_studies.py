@@ -276,7 +276,7 @@ def short_3d_results(tmp_path_factory):
     real output for its figure script, in seconds (its full sweeps take minutes)."""
     folder = tmp_path_factory.mktemp("cage_dynamics_3d")
     coarse = ('duration = "1 ms"\noutput_interval = "0.05 ms"\nslices = 4\narc_axial_points = 2\n'
-              'arc_angle_points = 2\nface_rings = 2\nface_angles = 6')
+              'arc_angle_points = 2\nface_rings = 3\nface_angles = 8')
     for definition in find_studies(STUDIES)["cage_dynamics_3d"].definitions:
         text = re.sub(r"^output_interval = .*\n", "", definition.read_text(), flags=re.M)
         short, replaced = re.subn(r"^duration = .*$", coarse, text, flags=re.M)
