@@ -183,7 +183,8 @@ def _run(one, count, t, traction, point, cage_density, eccentricity, ring_mass, 
         "roller_slip": (1 - y[6:cage:3] / t["spin_kin"]).T}
     validity |= run_validity(outputs["mean_cage_slip"], outputs["roller_slip"][settled].mean(),
                              outputs["cage_centre_x"], outputs["cage_centre_y"],
-                             t["pocket_clearance"], t["play"])
+                             t["pocket_clearance"], t["play"], times,
+                             roller_pass_period(count, t["omega_kin"]))
     return CONVERGED | validity, outputs
 
 
@@ -270,17 +271,29 @@ def _samples_fit(duration, output_interval):
 #: How far a cage's geometric centre may leave the bearing's axis in a transient run, in
 #: pocket clearances and diametral clearances together (:func:`run_validity`).
 EXCURSION_LIMIT = 2.0
+#: Roller passes the settled half must span: a mean over a shorter time does not average the
+#: load zone's cycle, and the cage has not left its start (:func:`run_validity`).
+SETTLED_PASSES = 2
+
 #: What a transient run's own state puts outside the model's validity (:func:`run_validity`).
 RUN_VALIDITY = ("a settled mean cage or roller slip beyond -100 % or +100 % (a cage turning "
                 "backwards or at twice its kinematic speed, rollers spinning backwards: no "
                 "running state, but an integration too loose or a speed too low for the "
                 "traction to drive the rollers); a cage centre farther from the bearing's axis "
                 f"than {EXCURSION_LIMIT:g} x (pocket clearance + diametral clearance) at any "
-                "sample (its pockets would pass through the rollers)")
+                "sample (its pockets would pass through the rollers); a settled half shorter "
+                f"than {SETTLED_PASSES} roller passes, 2 pi / (Z omega_c,kin) each (its means "
+                "are not yet the running state's)")
+
+
+def roller_pass_period(roller_count, kinematic_cage_speed):
+    """Time between two rollers passing a point of the cage's orbit at the kinematic cage
+    speed, ``2 pi / (Z omega_c,kin)`` [s]: the period of the load zone's cycle on the cage."""
+    return 2 * np.pi / (roller_count * kinematic_cage_speed)
 
 
 def run_validity(mean_cage_slip, mean_roller_slip, centre_x, centre_y, pocket_clearance,
-                 clearance):
+                 clearance, times, pass_period):
     """``OUT_OF_VALIDITY`` where a transient run's own state is none the model holds
     (:data:`RUN_VALIDITY`), else 0; NaN means count as beyond.
 
@@ -292,11 +305,16 @@ def run_validity(mean_cage_slip, mean_roller_slip, centre_x, centre_y, pocket_cl
         The cage's geometric centre at each sample [m].
     pocket_clearance, clearance : float
         Pocket clearance and the bearing's diametral clearance [m].
+    times : numpy.ndarray
+        The samples' times [s] (the settled ones from ``_SETTLED`` of the last on).
+    pass_period : float
+        :func:`roller_pass_period` [s].
     """
     excursion = np.max(np.hypot(centre_x, centre_y))
     limit = EXCURSION_LIMIT * (pocket_clearance + clearance)
+    settled_span = times[-1] - times[times >= _SETTLED * times[-1]][0]
     inside = (abs(mean_cage_slip) <= 1.0 and abs(mean_roller_slip) <= 1.0
-              and excursion <= limit)
+              and excursion <= limit and settled_span >= SETTLED_PASSES * pass_period)
     return 0 if inside else OUT_OF_VALIDITY
 
 
@@ -313,7 +331,7 @@ MODELS = [Model(
     summary="Cylindrical roller bearing, planar transient: cage whirl, pocket contact, cage and "
             "roller slip in time, from the steady state.",
     reference="Paper 002, eq. 27-28 and section 3",
-    version="7",
+    version="8",
     inputs=tuple(i for i in STEADY_MODELS[0].inputs if i.name not in ("orbit_points", "branch"))
     + (
         Input("cage_density", "kg/m^3", "cage density (brass: 8600; cages: 900 for polymers "

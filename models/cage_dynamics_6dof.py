@@ -22,8 +22,8 @@ from . import cage_dynamics_6dof_imex as imex
 from . import cage_dynamics_6dof_implicit as implicit
 from . import cage_dynamics_6dof_multistep as multistep
 from . import cage_dynamics_6dof_rhs as rhs
-from .cage_dynamics import (CAGE_MASS_CENTRE, GRAVITY, RUN_VALIDITY, SAMPLES_FIT, _samples,
-                            run_validity)
+from .cage_dynamics import (_SETTLED, CAGE_MASS_CENTRE, GRAVITY, RUN_VALIDITY, SAMPLES_FIT,
+                            _samples, roller_pass_period, run_validity)
 from .cage_dynamics_rhs import roller_loads
 from .cage_end_faces import coverage_holds, element_coverage, face_elements
 from .cage_slip import MODELS as STEADY_MODELS
@@ -37,7 +37,6 @@ from .profiles import slice_centres
 from .registry import (CONVERGED, NOT_CONVERGED, OUT_OF_VALIDITY, VALIDITY_MASK, Constraint,
                        DimCoordinate, Input, Model, Output, outcome)
 
-_SETTLED = 0.5  # the settled part: the last half of the run
 #: The deepest a dry end-face element may press into its face, as a share of the Winkler
 #: layer's depth: a linear elastic layer holds strains of that order, not a roller end
 #: crushed into a rib.
@@ -505,7 +504,8 @@ def _run(one):
                   for gaps in (end, rib))  # NaN: an element that never faced its face
     validity = run["validity"] | run_validity(
         outputs["mean_cage_slip"], outputs["mean_roller_slip"], outputs["cage_x"],
-        outputs["cage_y"], one["pocket_clearance"], one["clearance"])
+        outputs["cage_y"], one["pocket_clearance"], one["clearance"], run["times"],
+        roller_pass_period(run["count"], run["omega_kin"]))
     if not deepest >= -WINKLER_STRAIN_LIMIT * one["winkler_depth"]:
         validity |= OUT_OF_VALIDITY
     return CONVERGED | validity, dict(
@@ -645,7 +645,7 @@ MODELS = [Model(
             "cage with six degrees of freedom, Winkler pocket, end-face and rib contacts, cage "
             "mass eccentricity and ring misalignment (paper 002's own model).",
     reference="Paper 002, sections 1.3-1.5 (eqs. 1-26), eqs. 27-28, section 3",
-    version="14",
+    version="15",
     inputs=tuple(_PLANAR[name] for name in STEADY_INPUTS if name != "branch") + (
         _PLANAR["pocket_film_fill"],
         Input("end_film_thickness", "mm", "axial play of a roller between the ribs (Table 2: "

@@ -193,5 +193,31 @@ def test_run_validity_bounds_the_slips_and_the_cages_excursion(slips, centre, in
     from bearing_sweep.models.registry import OUT_OF_VALIDITY
 
     found = run_validity(*slips, np.array([0.0, centre[0]]), np.array([0.0, centre[1]]),
-                         0.1 * MM, 0.02 * MM)
+                         0.1 * MM, 0.02 * MM, np.linspace(0.0, 2.0, 21), 0.5)
     assert found == (0 if inside else OUT_OF_VALIDITY)
+
+
+@pytest.mark.parametrize("last, inside", [(4.0, True), (4.2, True), (3.9, False)])
+def test_run_validity_wants_a_settled_half_of_two_roller_passes(last, inside):
+    # Samples every 0.1 s to ``last``, a roller passing every 1 s: the settled half runs
+    # from the first sample at or after half the last one (2.0 s, 2.1 s, 2.0 s).
+    from bearing_sweep.models.registry import OUT_OF_VALIDITY
+
+    times = np.arange(round(last / 0.1) + 1) * 0.1
+    found = run_validity(0.02, 0.25, np.zeros(times.size), np.zeros(times.size), 0.1 * MM,
+                         0.02 * MM, times, 1.0)
+    assert found == (0 if inside else OUT_OF_VALIDITY)
+
+
+def test_a_slow_run_too_short_to_settle_is_out_of_validity():
+    # At 100 r/min the kinematic cage speed (1 - D/d_m) omega_i / 2 = 4.27 rad/s brings a
+    # roller past a point every 2 pi / (13 x 4.27) = 0.113 s. Over 5 ms the planar run's
+    # mean cage slip lies several per cent from its value over 2 s (about -0.1 %), and the
+    # run is flagged; at 12000 r/min (0.94 ms a roller pass) 5 ms settle.
+    from bearing_sweep.models.registry import CONVERGED, OUT_OF_VALIDITY
+
+    short, settled = (cage_dynamics(800.0, speed * RPM, **TEST, duration=5e-3,
+                                    output_interval=5e-5) for speed in (100, 12000))
+    assert abs(short["mean_cage_slip"][0]) > 0.02
+    assert short["status"].tolist() == [CONVERGED | OUT_OF_VALIDITY]
+    assert settled["status"].tolist() == [CONVERGED]

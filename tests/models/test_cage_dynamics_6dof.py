@@ -1078,8 +1078,9 @@ def test_a_roller_end_pressed_deep_into_its_rib_is_out_of_validity(monkeypatch, 
                                                                   flagged):
     # The run's element records as the integrator returns them, the ribs' smallest gap
     # replaced by a penetration of ``share`` of the Winkler layer's depth (1 % is the
-    # limit): the run is out of validity beyond it, its values kept.
-    one = point(duration=4e-4, output_interval=1e-4)
+    # limit): the run is out of validity beyond it, its values kept. The run spans 4 roller
+    # passes (0.94 ms each), as a settled run must.
+    one = point(duration=4e-3, output_interval=2e-4)
     original = model.integrate
 
     def pressed(run, one):
