@@ -263,9 +263,11 @@ def point_seconds(values) -> np.ndarray:
 
 def _samples_fit(duration, output_interval):
     """At least three samples, so that the settled half's whirl deviation ratio (a standard
-    deviation) has two, and at most 1e5 + 1."""
-    return ((2.0 * output_interval <= duration * (1.0 + 1e-9))
-            & (duration / output_interval <= 1e5))
+    deviation) has two, and at most 1e5 + 1; the last at ``duration`` (a run ends at its
+    last sample)."""
+    intervals = duration / output_interval
+    return ((2.0 * output_interval <= duration * (1.0 + 1e-9)) & (intervals <= 1e5)
+            & (np.abs(intervals - np.round(intervals)) <= 1e-9 * intervals))
 
 
 #: How far a cage's geometric centre may leave the bearing's axis in a transient run, in
@@ -321,8 +323,8 @@ def run_validity(mean_cage_slip, mean_roller_slip, centre_x, centre_y, pocket_cl
 #: A run's samples (:func:`_samples_fit`).
 SAMPLES_FIT = Constraint(
     ("duration", "output_interval"), _samples_fit,
-    "duration must hold from two to 1e5 output_intervals (the settled half's whirl "
-    "deviation ratio needs two samples)")
+    "duration must hold from two to 1e5 output_intervals, a whole number of them (the "
+    "settled half's whirl deviation ratio needs two samples; a run ends at its last sample)")
 
 
 MODELS = [Model(

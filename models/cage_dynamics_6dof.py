@@ -29,8 +29,9 @@ from .cage_end_faces import coverage_holds, element_coverage, face_elements
 from .cage_slip import MODELS as STEADY_MODELS
 from .cage_slip import VALIDITY as STEADY_VALIDITY
 from .cage_slip import _pitch_diameter, bearing_terms, cage_slip, cage_windage
-from .contact import STIFFEST_SOLID, palmgren_constant
-from .contact_laws import qin_damping_coefficient, winkler_modulus
+from .contact import (ROLLER_PRESSURE_LIMIT, STIFFEST_SOLID, effective_modulus,
+                      line_contact_pressure, palmgren_constant)
+from .contact_laws import palmgren_slice, qin_damping_coefficient, winkler_modulus
 from .limits import CAGE_DENSITIES, SOFTEST_BEARING_SOLID
 from .cylindrical import crb_radial
 from .profiles import slice_centres
@@ -278,7 +279,8 @@ def _empty(points, samples, sizes):
                                     "whirl_deviation_ratio", "centre_whirl_deviation_ratio",
                                     "rms_roller_skew",
                                     "rms_roller_tilt", "pocket_arc_events", "pocket_end_events",
-                                    "rib_events", "integration_steps")},
+                                    "rib_events", "integration_steps",
+                                    "largest_contact_pressure")},
         "pocket_arc_force": nan(z, sizes["axial"], sizes["angle"]),
         "pocket_end_clearance": nan(*face), "rib_clearance": nan(*face),
         "status": np.full(points, NOT_CONVERGED, dtype=np.int8),
@@ -399,7 +401,9 @@ def setup(one):
         * one["output_interval"]
     return CONVERGED, dict(p=p, elements=elements, state=state, times=times, count=count,
                            omega_kin=terms["omega_kin"], spin_kin=terms["spin_kin"],
-                           validity=steady["status"][0] & VALIDITY_MASK)
+                           validity=steady["status"][0] & VALIDITY_MASK,
+                           slice_length=terms["contact_length"] / one["slices"],
+                           modulus=effective_modulus(terms["modulus"], terms["poisson"]))
 
 
 def start(count, p, whole, steady, drop, omega_c, kinematic_spin, skew):
@@ -473,8 +477,11 @@ def integrate(run, one):
     settled_from = _SETTLED * times[-1]
     integrator = chosen(one["integrator"], one["end_film"])
     if integrator == "rk4":
-        return rhs.integrate_fixed(run["state"], times, run["p"], count, elements, record,
-                                   settled_from, float(one["rk4_step"]))
+        try:
+            return rhs.integrate_fixed(run["state"], times, run["p"], count, elements, record,
+                                       settled_from, float(one["rk4_step"]))
+        except ZeroDivisionError:  # an unstable step's stages: a length fallen to zero
+            return None, None, None, None, None, np.nan, False
     tolerance = float(one["relative_tolerance"])
     method = rhs.integrate
     if integrator in ("rosenbrock", "bdf"):  # each to a tenth: see relative_tolerance
@@ -506,12 +513,32 @@ def _run(one):
         outputs["mean_cage_slip"], outputs["mean_roller_slip"], outputs["cage_x"],
         outputs["cage_y"], one["pocket_clearance"], one["clearance"], run["times"],
         roller_pass_period(run["count"], run["omega_kin"]))
-    if not deepest >= -WINKLER_STRAIN_LIMIT * one["winkler_depth"]:
+    outputs["largest_contact_pressure"] = raceway_pressure(samples, run)
+    p = run["p"]
+    lands = (p[rhs.CAGE_IN] - p[rhs.RIB_RADIUS], p[rhs.R_OUTER] - p[rhs.CAGE_OUT])
+    if (not deepest >= -WINKLER_STRAIN_LIMIT * one["winkler_depth"]
+            or not outputs["largest_contact_pressure"] <= ROLLER_PRESSURE_LIMIT
+            or not np.max(np.hypot(outputs["cage_x"] - samples[:, 0],
+                                   outputs["cage_y"] - samples[:, 1])) < min(lands)):
         validity |= OUT_OF_VALIDITY
     return CONVERGED | validity, dict(
         outputs, pocket_arc_force=arc.transpose(0, 2, 1),
         pocket_end_clearance=end, rib_clearance=rib, pocket_arc_events=events[0],
         pocket_end_events=events[1], rib_events=events[2], integration_steps=float(steps))
+
+
+def raceway_pressure(samples, run):
+    """The largest Hertz line-contact pressure of any roller's raceway slice over the
+    settled samples [Pa]: a slice's load ``K_slice delta^(10/9)`` over its length, at the
+    inner raceway (curvature sum ``1/R + 1/r_i``) and the outer (``1/R - 1/r_o``)."""
+    p, times = run["p"], run["times"]
+    first = int(np.argmax(times >= _SETTLED * times[-1]))
+    deepest = rhs.deepest_raceway_approaches(samples, first, p, run["count"],
+                                             np.ascontiguousarray(run["elements"][0]))
+    curvatures = (1 / p[rhs.RADIUS] + 1 / p[rhs.R_INNER], 1 / p[rhs.RADIUS] - 1 / p[rhs.R_OUTER])
+    return max(float(line_contact_pressure(palmgren_slice(p[rhs.K_SLICE], approach)
+                                           / run["slice_length"], curvature, run["modulus"]))
+               for approach, curvature in zip(deepest, curvatures))
 
 
 def results(samples, run):
@@ -595,6 +622,18 @@ def _end_faces_resolved(inner_raceway_diameter, roller_diameter, clearance, end_
                  for low, high in ((0.5 * cage_inner_diameter, 0.5 * cage_outer_diameter),
                                    (ring, ring + rib_height)))
     return cage & rib
+
+
+def _layer_within_bodies(winkler_depth, cage_inner_diameter, cage_outer_diameter,
+                         rib_height):
+    return winkler_depth <= np.minimum(0.5 * (cage_outer_diameter - cage_inner_diameter),
+                                       rib_height)
+
+
+def _floor_below_films(film_breakdown, pocket_clearance, end_film_thickness,
+                       pocket_axial_clearance):
+    return film_breakdown < 0.5 * np.minimum(np.minimum(pocket_clearance, end_film_thickness),
+                                             pocket_axial_clearance)
 
 
 def _rk4_steps_fit(duration, rk4_step):
@@ -695,8 +734,8 @@ MODELS = [Model(
               "load)", default=0.0, minimum=-5.0, maximum=5.0),
         Input("misalignment_y", "deg", "inner ring turned about Y (along the load)",
               default=0.0, minimum=-5.0, maximum=5.0),
-        Input("inner_ring_mass", "kg", "inner ring mass", default=0.1, minimum=0.0,
-              exclusive_minimum=True),
+        Input("inner_ring_mass", "kg", "inner ring mass (its weight loads the bearing "
+              "besides radial_load)", default=0.1, minimum=0.0, exclusive_minimum=True),
         Input("damping_ratio", "1", "damping ratio of the inner ring's radial motion",
               default=0.1, minimum=0.0, maximum=2.0),
         Input("duration", "s", "bearing time simulated", default=0.05, minimum=0.0,
@@ -723,7 +762,8 @@ MODELS = [Model(
               "(variable-order multistep formulas, for stiff end films) or rk4 (the paper's "
               "fixed step)",
               default="auto", kind="choice", choices=INTEGRATORS),
-        Input("rk4_step", "s", "step of the rk4 integrator (the paper: 1e-7 s)", default=1e-7,
+        Input("rk4_step", "s", "step of the rk4 integrator (the paper: 1e-7 s; a step too "
+              "long for the contacts' stiffness is unstable: not converged)", default=1e-7,
               minimum=0.0, exclusive_minimum=True),
         _PLANAR["branch"],
     ),
@@ -759,6 +799,9 @@ MODELS = [Model(
         Output("rms_roller_skew", "deg", "root mean square roller skew, settled half",
                counted=("points with rms skew above 0.05 deg", _skewed)),
         Output("rms_roller_tilt", "deg", "root mean square roller tilt, settled half"),
+        Output("largest_contact_pressure", "MPa", "largest Hertz line-contact pressure of "
+               "any roller's raceway slice over the settled samples",
+               label="largest raceway contact pressure"),
         Output("pocket_arc_force", "N", "largest dry contact force of each pocket-arc "
                "element over the settled samples", dims=("roller", "arc_axial", "arc_angle"),
                label="largest dry pocket-arc force"),
@@ -804,6 +847,16 @@ MODELS = [Model(
                    "rib must give the area of the end face within each to 25 % and its "
                    "centroid to 25 % of its radial width; raise face_rings and face_angles "
                    "(a 10 mm roller with a 0.5 mm chamfer beside a 1 mm rib: 10 x 24)"),
+        Constraint(("winkler_depth", "cage_inner_diameter", "cage_outer_diameter",
+                    "rib_height"), _layer_within_bodies,
+                   "winkler_depth must not exceed the cage's wall (cage_outer_diameter - "
+                   "cage_inner_diameter) / 2 nor rib_height: the elastic layer lies within "
+                   "the bodies it stands for"),
+        Constraint(("film_breakdown", "pocket_clearance", "end_film_thickness",
+                    "pocket_axial_clearance"), _floor_below_films,
+                   "film_breakdown must be below half of pocket_clearance, end_film_thickness "
+                   "and pocket_axial_clearance: the smallest film lies below a centred "
+                   "roller's films"),
         SAMPLES_FIT,
         Constraint(("duration", "rk4_step"), _rk4_steps_fit,
                    "duration / rk4_step must not exceed 1e9 steps"),
@@ -811,6 +864,11 @@ MODELS = [Model(
     seconds_per_point=point_seconds,
     points_per_call=1,
     validity="cage_slip's, for the steady state it starts from: " + STEADY_VALIDITY
-    + "; of a run that reaches its end, " + RUN_VALIDITY + ", or a roller end pressed into a "
-    f"pocket end face or a rib deeper than {WINKLER_STRAIN_LIMIT:g} of winkler_depth",
+    + "; of a run that reaches its end, " + RUN_VALIDITY + ", a roller end pressed into a "
+    f"pocket end face or a rib deeper than {WINKLER_STRAIN_LIMIT:g} of winkler_depth, a "
+    "raceway slice's contact pressure above 4000 MPa (ISO 76's reference stress for roller "
+    "bearings) at a settled sample (the inner ring's weight loads the bearing besides "
+    "radial_load), or the cage's centre as far from the ring's as the gap between the cage's "
+    "bore and the rib or its outside diameter and the outer raceway (the model has no contact "
+    "between them)",
 )]

@@ -349,6 +349,32 @@ def raceway_slice(middle, inner, centre, velocity, omega, ring_centre, ring_velo
 
 
 @njit(cache=True)
+def deepest_raceway_approaches(samples, first, p, count, slice_z):
+    """The largest approach [m] of any roller's raceway slice over ``samples[first:]``
+    (states, one per row): at the inner raceway and at the outer (:func:`raceway_slice`)."""
+    deepest = np.zeros(2)
+    z_ring = ring_axis(p)
+    ring_spin = _mul(p[OMEGA_I], z_ring)
+    for s in range(first, samples.shape[0]):
+        state = samples[s]
+        ring_centre, ring_velocity = (state[0], state[1], 0.0), (state[2], state[3], 0.0)
+        for j in range(count):
+            k = RING + ROLLER_SIZE * j
+            centre, velocity = _vector(state, k), _vector(state, k + 3)
+            axis = _vector(state, k + 6)
+            axis = _mul(1.0 / np.sqrt(_dot(axis, axis)), axis)
+            omega = _vector(state, k + 9)
+            for z in slice_z:
+                middle = _add(centre, _mul(z, axis))
+                for side in range(2):
+                    approach = raceway_slice(middle, side == 0, centre, velocity, omega,
+                                             ring_centre, ring_velocity, z_ring, ring_spin,
+                                             p)[0]
+                    deepest[side] = max(deepest[side], approach)
+    return deepest
+
+
+@njit(cache=True)
 def pocket_frame(j, count, x_b, y_b, cage_centre, p):
     """Pocket ``j``'s radial and tangential unit vectors and its centre [m]."""
     angle = 2.0 * np.pi * j / count
