@@ -15,7 +15,8 @@ from . import cage_dynamics_rhs as rhs
 from .cage_slip import MODELS as STEADY_MODELS
 from .cage_slip import VALIDITY as STEADY_VALIDITY
 from .cage_slip import bearing_terms, cage_slip, cage_windage
-from .contact import palmgren_constant
+from .contact import (ROLLER_PRESSURE_LIMIT, effective_modulus, line_contact_pressure,
+                      palmgren_constant)
 from .limits import CAGE_DENSITIES
 from .cylindrical import crb_radial
 from .registry import (CONVERGED, NOT_CONVERGED, OUT_OF_VALIDITY, Constraint, DimCoordinate,
@@ -74,7 +75,8 @@ def cage_dynamics(radial_load, speed, roller_count, inner_raceway_diameter, roll
         ``cage_x``, ``cage_y`` ``(N, samples)`` [m] (mass centre), ``cage_centre_x``,
         ``cage_centre_y`` ``(N, samples)`` [m] (geometric centre), ``whirl_speed``
         ``(N, samples)`` [m/s] (speed of the mass centre), ``whirl_deviation_ratio`` (eq. 28
-        over the settled half) [-], ``roller_slip`` ``(N, samples, Z)`` [-], ``sample_time``
+        over the settled half) [-], ``largest_contact_pressure`` over the settled half [Pa],
+        ``roller_slip`` ``(N, samples, Z)`` [-], ``sample_time``
         ``(N, samples)`` [s], ``status``: the steady state's where it has none to start from;
         ``out_of_validity`` where the steady state is (cage_slip's validity) or the run's own
         state is none the model holds (:data:`RUN_VALIDITY`), beside the transient's own
@@ -101,6 +103,7 @@ def cage_dynamics(radial_load, speed, roller_count, inner_raceway_diameter, roll
                "cage_centre_y": np.full((points, samples), np.nan),
                "whirl_speed": np.full((points, samples), np.nan),
                "whirl_deviation_ratio": np.full(points, np.nan),
+               "largest_contact_pressure": np.full(points, np.nan),
                "roller_slip": np.full((points, samples, roller_count), np.nan),
                "sample_time": np.full((points, samples), np.nan),
                "status": np.full(points, NOT_CONVERGED, dtype=np.int8)}
@@ -181,11 +184,32 @@ def _run(one, count, t, traction, point, cage_density, eccentricity, ring_mass, 
         "whirl_speed": speed_of_centre,
         "whirl_deviation_ratio": settled_speed.std(ddof=1) / settled_speed.mean(),
         "roller_slip": (1 - y[6:cage:3] / t["spin_kin"]).T}
+    outputs["largest_contact_pressure"] = _largest_pressure(samples[settled], p, count, t)
     validity |= run_validity(outputs["mean_cage_slip"], outputs["roller_slip"][settled].mean(),
                              outputs["cage_centre_x"], outputs["cage_centre_y"],
                              t["pocket_clearance"], t["play"], times,
-                             roller_pass_period(count, t["omega_kin"]))
+                             roller_pass_period(count, t["omega_kin"]),
+                             outputs["largest_contact_pressure"])
     return CONVERGED | validity, outputs
+
+
+def _largest_pressure(states, p, count, t):
+    """The largest Hertz line-contact pressure of any roller at either raceway over
+    ``states`` (one per row) [Pa]: each roller's loads as the right-hand side finds them
+    (:func:`models.cage_dynamics_rhs.roller_loads`), over its contact length, at the inner
+    raceway (curvature sum ``1/R + 1/r_i``) and the outer (``1/R - 1/r_o``)."""
+    orbit, orbit_speed = states[:, 4:4 + 3 * count:3], states[:, 5:5 + 3 * count:3]
+    approach = (states[:, :1] * np.cos(orbit) + states[:, 1:2] * np.sin(orbit)
+                - p[rhs.HALF_PLAY])
+    centrifugal = p[rhs.M_ROLLER] * p[rhs.R_PITCH] * orbit_speed**2
+    loads = np.array([rhs.roller_loads(a, f, p[rhs.CONTACT])
+                      for a, f in zip(approach.ravel(), centrifugal.ravel())])
+    modulus = effective_modulus(t["modulus"], t["poisson"])
+    radius = t["radius"]
+    return max(float(line_contact_pressure(loads[:, side].max() / t["contact_length"],
+                                           curvature, modulus))
+               for side, curvature in ((0, 1 / radius + 1 / t["r_i"]),
+                                       (1, 1 / radius - 1 / t["r_o"])))
 
 
 def _start(count, steady, drop, omega_c, eccentricity, kinematic_spin):
@@ -285,7 +309,9 @@ RUN_VALIDITY = ("a settled mean cage or roller slip beyond -100 % or +100 % (a c
                 f"than {EXCURSION_LIMIT:g} x (pocket clearance + diametral clearance) at any "
                 "sample (its pockets would pass through the rollers); a settled half shorter "
                 f"than {SETTLED_PASSES} roller passes, 2 pi / (Z omega_c,kin) each (its means "
-                "are not yet the running state's)")
+                "are not yet the running state's); a raceway contact pressure above 4000 MPa "
+                "(ISO 76's reference stress for roller bearings) at a settled sample (the "
+                "inner ring's weight loads the bearing besides radial_load)")
 
 
 def roller_pass_period(roller_count, kinematic_cage_speed):
@@ -295,7 +321,7 @@ def roller_pass_period(roller_count, kinematic_cage_speed):
 
 
 def run_validity(mean_cage_slip, mean_roller_slip, centre_x, centre_y, pocket_clearance,
-                 clearance, times, pass_period):
+                 clearance, times, pass_period, largest_pressure):
     """``OUT_OF_VALIDITY`` where a transient run's own state is none the model holds
     (:data:`RUN_VALIDITY`), else 0; NaN means count as beyond.
 
@@ -311,12 +337,15 @@ def run_validity(mean_cage_slip, mean_roller_slip, centre_x, centre_y, pocket_cl
         The samples' times [s] (the settled ones from ``_SETTLED`` of the last on).
     pass_period : float
         :func:`roller_pass_period` [s].
+    largest_pressure : float
+        The largest raceway contact pressure over the settled samples [Pa].
     """
     excursion = np.max(np.hypot(centre_x, centre_y))
     limit = EXCURSION_LIMIT * (pocket_clearance + clearance)
     settled_span = times[-1] - times[times >= _SETTLED * times[-1]][0]
     inside = (abs(mean_cage_slip) <= 1.0 and abs(mean_roller_slip) <= 1.0
-              and excursion <= limit and settled_span >= SETTLED_PASSES * pass_period)
+              and excursion <= limit and settled_span >= SETTLED_PASSES * pass_period
+              and largest_pressure <= ROLLER_PRESSURE_LIMIT)
     return 0 if inside else OUT_OF_VALIDITY
 
 
@@ -342,8 +371,8 @@ MODELS = [Model(
         Input("cage_eccentricity", "mm", "distance of the cage's mass centre from its "
               "geometric centre", default=0.0, minimum=0.0,
               label="cage mass eccentricity"),
-        Input("inner_ring_mass", "kg", "inner ring mass", default=0.1, minimum=0.0,
-              exclusive_minimum=True),
+        Input("inner_ring_mass", "kg", "inner ring mass (its weight loads the bearing "
+              "besides radial_load)", default=0.1, minimum=0.0, exclusive_minimum=True),
         Input("pocket_stiffness", "N/m", "pocket contact stiffness", default=5e7, minimum=0.0,
               exclusive_minimum=True),
         # A linear spring-dashpot contact rebounds with restitution exp(-pi z / sqrt(1 - z^2))
@@ -378,6 +407,9 @@ MODELS = [Model(
                label="whirl speed deviation ratio"),
         Output("roller_slip", "percent", "roller spin slip against kinematic spin",
                dims=("elapsed_time", "roller")),
+        Output("largest_contact_pressure", "MPa", "largest Hertz line-contact pressure of "
+               "any roller at either raceway over the settled samples",
+               label="largest raceway contact pressure"),
         Output("sample_time", "ms", "bearing time of each sample", dims=("elapsed_time",)),
     ),
     dim_sizes={"elapsed_time": _samples, "roller": "roller_count"},

@@ -29,8 +29,8 @@ from .cage_end_faces import coverage_holds, element_coverage, face_elements
 from .cage_slip import MODELS as STEADY_MODELS
 from .cage_slip import VALIDITY as STEADY_VALIDITY
 from .cage_slip import _pitch_diameter, bearing_terms, cage_slip, cage_windage
-from .contact import (ROLLER_PRESSURE_LIMIT, STIFFEST_SOLID, effective_modulus,
-                      line_contact_pressure, palmgren_constant)
+from .contact import (STIFFEST_SOLID, effective_modulus, line_contact_pressure,
+                      palmgren_constant)
 from .contact_laws import palmgren_slice, qin_damping_coefficient, winkler_modulus
 from .limits import CAGE_DENSITIES, SOFTEST_BEARING_SOLID
 from .cylindrical import crb_radial
@@ -509,15 +509,14 @@ def _run(one):
     outputs = results(samples, run)
     deepest = min(np.min(np.where(np.isnan(gaps), np.inf, gaps), initial=np.inf)
                   for gaps in (end, rib))  # NaN: an element that never faced its face
+    outputs["largest_contact_pressure"] = raceway_pressure(samples, run)
     validity = run["validity"] | run_validity(
         outputs["mean_cage_slip"], outputs["mean_roller_slip"], outputs["cage_x"],
         outputs["cage_y"], one["pocket_clearance"], one["clearance"], run["times"],
-        roller_pass_period(run["count"], run["omega_kin"]))
-    outputs["largest_contact_pressure"] = raceway_pressure(samples, run)
+        roller_pass_period(run["count"], run["omega_kin"]), outputs["largest_contact_pressure"])
     p = run["p"]
     lands = (p[rhs.CAGE_IN] - p[rhs.RIB_RADIUS], p[rhs.R_OUTER] - p[rhs.CAGE_OUT])
     if (not deepest >= -WINKLER_STRAIN_LIMIT * one["winkler_depth"]
-            or not outputs["largest_contact_pressure"] <= ROLLER_PRESSURE_LIMIT
             or not np.max(np.hypot(outputs["cage_x"] - samples[:, 0],
                                    outputs["cage_y"] - samples[:, 1])) < min(lands)):
         validity |= OUT_OF_VALIDITY
@@ -865,10 +864,8 @@ MODELS = [Model(
     points_per_call=1,
     validity="cage_slip's, for the steady state it starts from: " + STEADY_VALIDITY
     + "; of a run that reaches its end, " + RUN_VALIDITY + ", a roller end pressed into a "
-    f"pocket end face or a rib deeper than {WINKLER_STRAIN_LIMIT:g} of winkler_depth, a "
-    "raceway slice's contact pressure above 4000 MPa (ISO 76's reference stress for roller "
-    "bearings) at a settled sample (the inner ring's weight loads the bearing besides "
-    "radial_load), or the cage's centre as far from the ring's as the gap between the cage's "
+    f"pocket end face or a rib deeper than {WINKLER_STRAIN_LIMIT:g} of winkler_depth (a "
+    "raceway contact's pressure is a slice's), or the cage's centre as far from the ring's as the gap between the cage's "
     "bore and the rib or its outside diameter and the outer raceway (the model has no contact "
     "between them)",
 )]

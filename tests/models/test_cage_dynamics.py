@@ -193,7 +193,7 @@ def test_run_validity_bounds_the_slips_and_the_cages_excursion(slips, centre, in
     from bearing_sweep.models.registry import OUT_OF_VALIDITY
 
     found = run_validity(*slips, np.array([0.0, centre[0]]), np.array([0.0, centre[1]]),
-                         0.1 * MM, 0.02 * MM, np.linspace(0.0, 2.0, 21), 0.5)
+                         0.1 * MM, 0.02 * MM, np.linspace(0.0, 2.0, 21), 0.5, 1e9)
     assert found == (0 if inside else OUT_OF_VALIDITY)
 
 
@@ -205,8 +205,34 @@ def test_run_validity_wants_a_settled_half_of_two_roller_passes(last, inside):
 
     times = np.arange(round(last / 0.1) + 1) * 0.1
     found = run_validity(0.02, 0.25, np.zeros(times.size), np.zeros(times.size), 0.1 * MM,
-                         0.02 * MM, times, 1.0)
+                         0.02 * MM, times, 1.0, 1e9)
     assert found == (0 if inside else OUT_OF_VALIDITY)
+
+
+@pytest.mark.parametrize("pressure, inside", [(3999e6, True), (4000e6, True), (4001e6, False),
+                                              (np.nan, False)])
+def test_run_validity_bounds_the_raceway_pressure_at_iso_76s_4000_mpa(pressure, inside):
+    from bearing_sweep.models.registry import OUT_OF_VALIDITY
+
+    found = run_validity(0.02, 0.25, np.zeros(2), np.zeros(2), 0.1 * MM, 0.02 * MM,
+                         np.linspace(0.0, 2.0, 21), 0.5, pressure)
+    assert found == (0 if inside else OUT_OF_VALIDITY)
+
+
+def test_the_planar_raceway_pressure_is_the_load_distributions_and_a_heavy_ring_shows():
+    # The planar run's largest roller pressure against crb_radial's static load distribution
+    # of the same bearing (one slice: the planar model's uncrowned roller); a 60 kg inner
+    # ring's weight, 589 N beside the 800 N load, raises it as 1389 N would.
+    from bearing_sweep.models.cylindrical import crb_radial
+
+    runs = [cage_dynamics(800.0, 12000 * RPM, **TEST, inner_ring_mass=mass, duration=0.02,
+                          output_interval=1e-4) for mass in (0.1, 60.0)]
+    static = [float(crb_radial(load, 13, 54.01 * MM, 10 * MM, 7.2 * MM, clearance=0.02 * MM,
+                               slices=1, speed=12000 * RPM, roller_density=7850.0,
+                               )["largest_contact_pressure"])
+              for load in (800.0 + 0.1 * 9.81, 800.0 + 60 * 9.81)]
+    for run, expected in zip(runs, static):
+        assert run["largest_contact_pressure"][0] == pytest.approx(expected, rel=0.03)
 
 
 def test_a_slow_run_too_short_to_settle_is_out_of_validity():
