@@ -865,7 +865,7 @@ MODELS = [Model(
     validity="cage_slip's, for the steady state it starts from: " + STEADY_VALIDITY
     + "; of a run that reaches its end, " + RUN_VALIDITY + ", a roller end pressed into a "
     f"pocket end face or a rib deeper than {WINKLER_STRAIN_LIMIT:g} of winkler_depth (a "
-    "raceway contact's pressure is a slice's), or the cage's centre as far from the ring's as the gap between the cage's "
-    "bore and the rib or its outside diameter and the outer raceway (the model has no contact "
-    "between them)",
+    "raceway contact's pressure is a slice's), or the cage's centre as far from the ring's "
+    "as the gap between the cage's bore and the rib or its outside diameter and the outer "
+    "raceway (the model has no contact between them)",
 )]
