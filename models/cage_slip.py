@@ -59,6 +59,10 @@ BRANCHES = ("high_slip", "low_slip")
 #: curvature neglected (an error of the order of the ratio, Hamrock, Schmid and Jacobson,
 #: Fundamentals of Fluid Film Lubrication, 2nd ed. (2004), ch. 8, Petroff's equation) [-].
 THIN_FILM_LIMIT = 0.1
+#: Smallest pocket clearance and end film [m]: thinner, a film is no thicker than the
+#: surfaces' composite roughness (ground roller ends and faces, machined pockets: some
+#: 0.1-1 um), and Petroff's full film, whose drag grows as its inverse, no longer forms.
+SMALLEST_FILM = 1e-6
 #: Largest drag coefficient of the roller windage [-]: a cylinder across a flow has C_D of
 #: about 0.3 (beyond the drag crisis) to 1.2 over Reynolds numbers of 1e3-2e5, 3 at 10 and
 #: 10 at about 1 (F. M. White, Fluid Mechanics, 7th ed., McGraw-Hill (2011), Fig. 7.16a);
@@ -158,7 +162,8 @@ def cage_slip(radial_load, speed, roller_count, inner_raceway_diameter, roller_d
         small against the torques it balances; the status of the load distribution
         (:func:`models.cylindrical.crb_radial`) is combined in, its validity with it;
         ``out_of_validity`` also where the pocket clearance or the end film exceeds
-        :data:`THIN_FILM_LIMIT` of the roller radius (the films' thin-film form) and,
+        :data:`THIN_FILM_LIMIT` of the roller radius (the films' thin-film form) or lies
+        below :data:`SMALLEST_FILM` (no full film) and,
         whatever the outcome, where a speed factor ``n d_m`` above 4e6 mm r/min or an oil
         whose viscosity index no lubricant has describe no bearing
         (:func:`models.limits.outside_operation`).
@@ -216,7 +221,7 @@ def cage_slip(radial_load, speed, roller_count, inner_raceway_diameter, roller_d
         "film_thickness": film_thickness * missing,
         "max_roller_load": balance.inner_load.max(axis=1),
         "equilibrium_count": count.astype(float),
-        "status": combine_status(status, balance.load_status, np.where(thick_films(
+        "status": combine_status(status, balance.load_status, np.where(films_out_of_form(
             terms["diameter"], terms["pocket_clearance"], terms["end_film_thickness"])
             | no_bearing, OUT_OF_VALIDITY, CONVERGED)).astype(np.int8),
     }
@@ -519,12 +524,14 @@ def _pockets_fit(pocket_clearance, roller_count, inner_raceway_diameter, roller_
     return roller_diameter + 2.0 * pocket_clearance < pitch * np.sin(np.pi / roller_count)
 
 
-def thick_films(roller_diameter, pocket_clearance, end_film_thickness):
+def films_out_of_form(roller_diameter, pocket_clearance, end_film_thickness):
     """Where the pocket clearance or the end film exceeds :data:`THIN_FILM_LIMIT` of the
-    roller radius, outside the thin films' validity."""
+    roller radius (outside the thin films' form) or lies below :data:`SMALLEST_FILM` (no
+    full film)."""
     radius = 0.5 * np.asarray(roller_diameter)
-    return (np.asarray(pocket_clearance) > THIN_FILM_LIMIT * radius) | (
-        np.asarray(end_film_thickness) > THIN_FILM_LIMIT * radius)
+    films = np.asarray(pocket_clearance), np.asarray(end_film_thickness)
+    return ((films[0] > THIN_FILM_LIMIT * radius) | (films[1] > THIN_FILM_LIMIT * radius)
+            | (films[0] < SMALLEST_FILM) | (films[1] < SMALLEST_FILM))
 
 
 #: The validity cage_slip applies, and the transient models after it.
@@ -533,7 +540,8 @@ VALIDITY = ("the load distribution's (crb_radial at each cage position: a roller
             "approach above 2 % of the roller diameter; whatever the outcome, "
             f"{STEEL_VALIDITY} (Palmgren's), {CLEARANCE_VALIDITY}); a pocket clearance or "
             "end film thicker than 10 % of the roller radius (the pocket and end films are "
-            "Petroff's thin Couette films); whatever the outcome, "
+            "Petroff's thin Couette films) or thinner than 1 um (no thicker than the "
+            "surfaces' roughness: no full film); whatever the outcome, "
             f"{SPEED_VALIDITY}, or {OIL_VALIDITY}")
 
 MODELS = [Model(
@@ -543,7 +551,7 @@ MODELS = [Model(
             "orbit and roller spin from traction, oil films and windage.",
     reference="Paper 002 (eq. 27, roller windage); Harris (1966); Gupta (1984); "
               "CAGE_SLIP_PHYSICS.md for the published forms and typical values",
-    version="5",
+    version="6",
     inputs=(
         Input("radial_load", "N", "radial load Fr", minimum=0.0, exclusive_minimum=True),
         Input("speed", "rpm", "inner-ring speed", minimum=0.0, exclusive_minimum=True),

@@ -265,6 +265,17 @@ def test_thick_films_are_out_of_validity_beside_the_other_status():
     assert thin["status"].tolist() == [CONVERGED]
 
 
+@pytest.mark.parametrize("film, flagged", [
+    ({"end_film_thickness": 1e-9}, True), ({"end_film_thickness": 0.99e-6}, True),
+    ({"end_film_thickness": 1.01e-6}, False), ({"pocket_clearance": 0.5e-6}, True),
+    ({"pocket_clearance": 2e-6}, False)])
+def test_films_thinner_than_the_surfaces_roughness_are_out_of_validity(film, flagged):
+    # A 1 nm end film took 98 % of the cage's speed away, within validity: Petroff's drag
+    # grows as the film's inverse, and a film below a micrometre is no full film.
+    result = cage_slip(np.array([800.0]), 6000 * RPM, **dict(TEST, **film))
+    assert bool(result["status"][0] & OUT_OF_VALIDITY) == flagged
+
+
 def test_describe_states_the_validity_it_inherits_from_the_load_distribution():
     from bearing_sweep import describe
 
