@@ -54,6 +54,11 @@ def test_an_unstable_fixed_step_is_not_converged():
 
 
 @pytest.mark.parametrize("changes, refused", [
+    ({}, None),
+    ({"rib_height": "1 mm"}, "face_rings x face_angles too coarse"),
+    ({"rib_height": "1 mm", "face_rings": 10, "face_angles": 24}, None),
+    ({"rib_height": "0.5 mm"}, "rib_height must exceed end_chamfer"),
+    ({"face_rings": 1, "face_angles": 3}, "face_rings x face_angles too coarse"),
     ({"winkler_depth": "2 mm"}, None),
     ({"winkler_depth": "6 mm"}, "winkler_depth must not exceed the cage's wall"),
     ({"winkler_depth": "2.5 mm"}, "winkler_depth must not exceed"),  # the rib: 2 mm
@@ -62,7 +67,8 @@ def test_an_unstable_fixed_step_is_not_converged():
     ({"duration": "1 ms", "output_interval": "0.3 ms"}, "a whole number of them"),
 ])
 def test_inputs_the_model_cannot_stand_for_are_refused(changes, refused):
-    # The cage's wall (59 - 48.5) / 2 = 5.25 mm; the end film 15 um.
+    # The cage's wall (59 - 48.5) / 2 = 5.25 mm; the end film 15 um; the end-face elements
+    # against the faces: models.cage_end_faces (test_cage_end_faces).
     fixed = "\n".join(f'{k} = "{v}"' if isinstance(v, str) else f"{k} = {v}"
                       for k, v in changes.items())
     text = ('[sweep]\nmodel = "cage_dynamics_6dof"\nbearing = "paper002-test"\n'

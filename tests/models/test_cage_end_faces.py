@@ -1,9 +1,9 @@
 """The spatial cage model's end-face elements and the check that they resolve the faces a
-roller's end meets (the cage's pocket face, the rib)."""
+roller's end meets (the cage's pocket face, the rib); the refusals it gives are with the
+model's others in test_cage_dynamics_6dof_validity."""
 import numpy as np
 import pytest
 
-from bearing_sweep import spec
 from bearing_sweep.models import cage_end_faces as faces
 
 MM = 1e-3
@@ -73,21 +73,3 @@ def test_the_defaults_resolve_the_test_bearings_faces():
     for low, high in ((24.25 * MM, 29.5 * MM), (RACEWAY, RACEWAY + 2 * MM)):
         share, shift = faces.element_coverage(FACE, PITCH, low, high, 5, 12)
         assert abs(share - 1) < 0.03 and abs(shift) < 0.03
-
-
-@pytest.mark.parametrize("changes, refused", [
-    ({}, None),
-    ({"rib_height": "1 mm"}, "face_rings x face_angles too coarse"),
-    ({"rib_height": "1 mm", "face_rings": 10, "face_angles": 24}, None),
-    ({"rib_height": "0.5 mm"}, "rib_height must exceed end_chamfer"),
-    ({"face_rings": 1, "face_angles": 3}, "face_rings x face_angles too coarse"),
-])
-def test_a_sweep_whose_end_faces_are_not_resolved_is_refused(changes, refused):
-    fixed = "\n".join(f"{k} = {v!r}".replace("'", '"') for k, v in changes.items())
-    text = ('[sweep]\nmodel = "cage_dynamics_6dof"\nbearing = "paper002-test"\n'
-            f'[fixed]\nradial_load = "800 N"\nspeed = "12000 rpm"\n{fixed}\n')
-    if refused is None:
-        spec.parse(text)
-        return
-    with pytest.raises(spec.SpecError, match=refused):
-        spec.parse(text)
