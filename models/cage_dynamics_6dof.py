@@ -658,22 +658,27 @@ _RK4_SECONDS_PER_MS = 3.0
 #: r/min: 28 against 13 s, 52 000 against 22 000 steps). Only 1 deg is measured: the extra
 #: cost is taken in proportion to the angle up to it, and as at 1 deg beyond.
 _MISALIGNED_EXTRA, _MISALIGNED_MEASURED = 1.2, np.radians(1.0)
+#: A pocket clearance below the test bearing's 0.1 mm stiffens the pocket films: the steps
+#: grow as about (0.1 mm / c_p)^2.7 (benchmarks/RESULTS.md, cage dynamics: 0.05 to 0.01 mm).
+_POCKET_MEASURED, _POCKET_EXPONENT = 1e-4, 2.7
 
 
 def point_seconds(values) -> np.ndarray:
     """Each point's rough cost on one core [s], from its bearing time, end film,
-    integrator and misalignment (the model's ``seconds_per_point``)."""
-    duration_ms, film, integrator, step, about_x, about_y = np.broadcast_arrays(
+    integrator, misalignment and pocket clearance (the model's ``seconds_per_point``)."""
+    duration_ms, film, integrator, step, about_x, about_y, pocket = np.broadcast_arrays(
         1e3 * np.asarray(values["duration"], dtype=float),
         *(np.asarray(values[name]) for name in ("end_film", "integrator", "rk4_step")),
         *(np.asarray(values.get(name, 0.0), dtype=float)
-          for name in ("misalignment_x", "misalignment_y")))
+          for name in ("misalignment_x", "misalignment_y")),
+        np.asarray(values.get("pocket_clearance", _POCKET_MEASURED), dtype=float))
     methods = [chosen(i, f) for i, f in zip(integrator.ravel(), film.ravel())]
     rate = np.array([_RK4_SECONDS_PER_MS * 1e-7 / float(s) if i == "rk4"
                      else _SECONDS_PER_MS.get((f, i), 1.0)
                      for f, i, s in zip(film.ravel(), methods, step.ravel())])
     tilt = np.minimum(np.hypot(about_x, about_y).ravel() / _MISALIGNED_MEASURED, 1.0)
-    return duration_ms.ravel() * rate * (1.0 + _MISALIGNED_EXTRA * tilt)
+    tight = np.maximum(_POCKET_MEASURED / pocket.ravel(), 1.0) ** _POCKET_EXPONENT
+    return duration_ms.ravel() * rate * (1.0 + _MISALIGNED_EXTRA * tilt) * tight
 
 
 MODELS = [Model(
