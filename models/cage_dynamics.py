@@ -196,20 +196,14 @@ def _run(one, count, t, traction, point, cage_density, eccentricity, ring_mass, 
 def _largest_pressure(states, p, count, t):
     """The largest Hertz line-contact pressure of any roller at either raceway over
     ``states`` (one per row) [Pa]: each roller's loads as the right-hand side finds them
-    (:func:`models.cage_dynamics_rhs.roller_loads`), over its contact length, at the inner
+    (:func:`models.cage_dynamics_rhs.contact_loads`), over its contact length, at the inner
     raceway (curvature sum ``1/R + 1/r_i``) and the outer (``1/R - 1/r_o``)."""
-    orbit, orbit_speed = states[:, 4:4 + 3 * count:3], states[:, 5:5 + 3 * count:3]
-    approach = (states[:, :1] * np.cos(orbit) + states[:, 1:2] * np.sin(orbit)
-                - p[rhs.HALF_PLAY])
-    centrifugal = p[rhs.M_ROLLER] * p[rhs.R_PITCH] * orbit_speed**2
-    loads = np.array([rhs.roller_loads(a, f, p[rhs.CONTACT])
-                      for a, f in zip(approach.ravel(), centrifugal.ravel())])
+    loads = rhs.largest_contact_loads(np.ascontiguousarray(states), p, count)
     modulus = effective_modulus(t["modulus"], t["poisson"])
     radius = t["radius"]
-    return max(float(line_contact_pressure(loads[:, side].max() / t["contact_length"],
-                                           curvature, modulus))
-               for side, curvature in ((0, 1 / radius + 1 / t["r_i"]),
-                                       (1, 1 / radius - 1 / t["r_o"])))
+    return max(float(line_contact_pressure(load / t["contact_length"], curvature, modulus))
+               for load, curvature in zip(loads, (1 / radius + 1 / t["r_i"],
+                                                  1 / radius - 1 / t["r_o"])))
 
 
 def _start(count, steady, drop, omega_c, eccentricity, kinematic_spin):

@@ -64,6 +64,31 @@ def roller_loads(approach, centrifugal, constant):
 
 
 @njit(cache=True)
+def contact_loads(x, y, cos_orbit, sin_orbit, orbit_speed, p):
+    """Inner and outer contact loads [N] of a roller at the orbit angle whose cosine and
+    sine are given, with the ring's centre at ``(x, y)``: its contacts' shared approach and
+    its centrifugal force (:func:`roller_loads`)."""
+    approach = x * cos_orbit + y * sin_orbit - p[HALF_PLAY]
+    centrifugal = p[M_ROLLER] * p[R_PITCH] * orbit_speed * orbit_speed
+    return roller_loads(approach, centrifugal, p[CONTACT])
+
+
+@njit(cache=True)
+def largest_contact_loads(states, p, count):
+    """The largest inner and outer contact load [N] of any roller over ``states`` (one per
+    row)."""
+    largest = np.zeros(2)
+    for state in states:
+        for j in range(count):
+            theta, dtheta = state[4 + 3 * j], state[5 + 3 * j]
+            q_inner, q_outer = contact_loads(state[0], state[1], np.cos(theta), np.sin(theta),
+                                             dtheta, p)
+            largest[0] = max(largest[0], q_inner)
+            largest[1] = max(largest[1], q_outer)
+    return largest
+
+
+@njit(cache=True)
 def roller_terms(state, j, p, count, geometric, rates):
     """Roller ``j``'s own rates (its orbit angle, orbit speed and spin, into ``rates``) and
     what it puts on the ring and the cage: the inner contact's load components, the pocket's
@@ -77,9 +102,7 @@ def roller_terms(state, j, p, count, geometric, rates):
                                                             geometric[2], geometric[3])
     theta, dtheta, spin = state[k], state[k + 1], state[k + 2]
     c, s = np.cos(theta), np.sin(theta)
-    approach = x * c + y * s - p[HALF_PLAY]
-    centrifugal = p[M_ROLLER] * p[R_PITCH] * dtheta * dtheta
-    q_inner, q_outer = roller_loads(approach, centrifugal, p[CONTACT])
+    q_inner, q_outer = contact_loads(x, y, c, s, dtheta, p)
     f_inner = traction((p[OMEGA_I] - dtheta) * p[R_INNER] - spin * p[R_ROLLER], p) * q_inner
     f_outer = traction(spin * p[R_ROLLER] - dtheta * p[R_OUTER], p) * q_outer
     # Pocket j: a circle of radius R + c_p/2 around its centre on the cage.
